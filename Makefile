@@ -1,0 +1,70 @@
+# CBF toolkit. Two commands for a fresh machine: `make` and `make test`.
+# Every target bootstraps what it needs (.venv, npm ci, Debian packages) and
+# is idempotent. Fragments in mk/*.mk add the targets of each binding.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := all
+MAKEFLAGS += --no-print-directory
+
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+export PYTHONPATH := $(CURDIR)/generator:$(CURDIR)/generated/python:$(CURDIR)
+export PYTHONDONTWRITEBYTECODE := 1
+export PIP_DISABLE_PIP_VERSION_CHECK := 1
+
+# Hooks the fragments in mk/*.mk append to (before the rules that use them).
+GENERATE_POST :=
+TEST_DEPS :=
+-include mk/*.mk
+.PHONY: all venv generate generate-py check-generated check-spec lint typecheck test test-py clean help
+
+all: generate check-generated lint conformance  ## regenerate everything from the spec and check it
+
+help:
+	@grep -hE '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | sort
+
+# -- Python environment -------------------------------------------------------
+$(VENV)/.stamp: pyproject.toml
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade "pip==24.3.1"
+	$(PY) -m pip install -q -e ".[dev]"
+	@touch $@
+
+venv: $(VENV)/.stamp  ## create .venv with the pinned dependencies
+
+# -- generation ---------------------------------------------------------------
+check-spec: venv  ## load and check spec/cbf.yaml only
+	$(PY) -m cbfgen --check-spec
+
+generate-py: venv  ## run every Python emitter (no ksc)
+	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated
+
+generate: generate-py  ## regenerate generated/ from the spec
+	@$(MAKE) generate-post
+
+# Later build steps (ksc, docs rendering) hook in here from mk/*.mk.
+.PHONY: generate-post
+generate-post: $(GENERATE_POST)
+
+check-generated: generate  ## fail when generated/ differs from what the spec gives
+	@if ! git diff --exit-code --stat -- generated/ || [ -n "$$(git status --porcelain --untracked-files=all -- generated/)" ]; then \
+	  git status --short -- generated/ | head -20; \
+	  echo "generated/ is stale: run 'make generate' and commit the result" >&2; exit 1; fi
+	@echo "generated/ is fresh"
+
+# -- quality ------------------------------------------------------------------
+lint: venv  ## ruff + mypy --strict on hand-written Python
+	$(PY) -m ruff check generator conformance tests generated/python
+	$(PY) -m mypy --strict generator/cbfgen generated/python/cbf conformance/runner conformance/assembler
+
+test-py: venv
+	$(PY) -m pytest -q -p no:cacheprovider
+
+test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what CI runs)
+	@$(MAKE) test-py
+	@$(MAKE) conformance
+
+clean:
+	rm -rf $(VENV) node_modules build .pytest_cache .mypy_cache .ruff_cache

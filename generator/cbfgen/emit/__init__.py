@@ -1,0 +1,1 @@
+"""One subpackage per target; each exposes emit(spec) -> {relative path: bytes}."""

@@ -1,0 +1,348 @@
+"""The typed model of spec/cbf.yaml.
+
+Every emitter reads the format from these frozen dataclasses and from
+nothing else. The loader (loader.py) builds them and refuses a spec that
+contradicts itself. `line` attributes point back into the YAML.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+
+def camel(name: str) -> str:
+    """LINE5B -> Line5b, CUTTER_ON -> CutterOn, v1 -> V1."""
+    return "".join(part[:1].upper() + part[1:].lower() for part in re.split(r"[_\W]+", name) if part)
+
+
+def ident(name: str) -> str:
+    """A lower_snake identifier for any spec id ("6.4.4" -> "c6_4_4", "1.x" -> "v1_x")."""
+    s = re.sub(r"\W+", "_", name).strip("_").lower()
+    return s if s and not s[0].isdigit() else "c" + s
+
+
+@dataclass(frozen=True)
+class PrimitiveType:
+    name: str
+    kind: str  # uint | float | string | bytes
+    size: int | None
+    doc: str
+
+
+@dataclass(frozen=True)
+class Field:
+    """A header field, a record-head field or a command argument."""
+
+    name: str
+    type: str
+    kind: str  # uint | float | string | bytes
+    offset: int
+    elem_size: int
+    count: int
+    doc: str
+    line: int
+    clause: str | None = None
+    unit: str | None = None
+    role: str | None = None
+    magic: int | None = None
+    checksum: str | None = None
+    reserved: bool = False
+    text: bool = False
+
+    @property
+    def size(self) -> int:
+        return self.elem_size * self.count
+
+    @property
+    def end(self) -> int:
+        return self.offset + self.size
+
+    @property
+    def is_vector(self) -> bool:
+        return self.kind == "float" and self.count > 1
+
+
+@dataclass(frozen=True)
+class Layout:
+    command: str
+    variant: str  # "" for the primary layout
+    versions: tuple[str, ...]
+    size: int
+    args: tuple[Field, ...]
+    profiles: tuple[str, ...]  # empty: accepted under every profile
+    doc: str
+    clause: str | None
+    line: int
+
+    @property
+    def class_name(self) -> str:
+        return camel(self.command) + camel(self.variant)
+
+    def arg(self, name: str) -> Field | None:
+        for a in self.args:
+            if a.name == name:
+                return a
+        return None
+
+    def accepted_under(self, profile: str) -> bool:
+        return not self.profiles or profile in self.profiles
+
+
+@dataclass(frozen=True)
+class Command:
+    name: str
+    code: int
+    doc: str
+    clause: str
+    layouts: tuple[Layout, ...]
+    line: int
+    motion: dict[str, str] | None = None
+    orientation: dict[str, str] | None = None
+    shape: dict[str, str] | None = None
+    cutter: dict[str, str] | None = None
+    progress: str | None = None
+    declared_size: int | None = None
+    listed_size: int | None = None
+    erratum: str | None = None
+
+    @property
+    def primary(self) -> Layout:
+        return self.layouts[0]
+
+    @property
+    def class_name(self) -> str:
+        return camel(self.name)
+
+    @property
+    def versions(self) -> tuple[str, ...]:
+        seen: list[str] = []
+        for lay in self.layouts:
+            for v in lay.versions:
+                if v not in seen:
+                    seen.append(v)
+        return tuple(seen)
+
+    def layouts_for(self, version: str) -> tuple[Layout, ...]:
+        return tuple(lay for lay in self.layouts if version in lay.versions)
+
+    def available_in(self, version: str) -> bool:
+        return bool(self.layouts_for(version))
+
+
+@dataclass(frozen=True)
+class Version:
+    id: str
+    major: int
+    minor: int | None
+    header: str
+    clause: str
+    writable: bool
+    doc: str
+    line: int
+    since: str | None = None
+
+    def matches(self, major: int, minor: int) -> bool:
+        return major == self.major and (self.minor is None or minor == self.minor)
+
+
+@dataclass(frozen=True)
+class HeaderLayout:
+    id: str
+    size: int
+    clause: str
+    doc: str
+    fields: tuple[Field, ...]
+    line: int
+
+    def by_role(self, role: str) -> Field | None:
+        for f in self.fields:
+            if f.role == role:
+                return f
+        return None
+
+    def field(self, name: str) -> Field | None:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        return None
+
+
+@dataclass(frozen=True)
+class RecordLayout:
+    head_size: int
+    clause: str
+    doc: str
+    fields: tuple[Field, ...]
+
+    def by_role(self, role: str) -> Field:
+        for f in self.fields:
+            if f.role == role:
+                return f
+        raise KeyError(role)
+
+
+@dataclass(frozen=True)
+class Segment:
+    region: str  # file | header | records | args
+    start: int | None = None
+    end: int | None = None
+    exclude: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Coverage:
+    name: str
+    doc: str
+    segments: tuple[Segment, ...]
+
+
+@dataclass(frozen=True)
+class Algorithm:
+    name: str
+    kind: str  # sum | crc32
+    doc: str
+
+
+@dataclass(frozen=True)
+class ChecksumField:
+    field: str  # args | header | file (the `checksum:` tag of a layout field)
+    algorithm: str
+    coverage: str
+    clause: str
+
+
+@dataclass(frozen=True)
+class Checksums:
+    algorithms: dict[str, Algorithm]
+    coverages: dict[str, Coverage]
+    fields: tuple[ChecksumField, ...]
+    fill_order: tuple[str, ...]
+
+    def for_field(self, name: str) -> ChecksumField:
+        for f in self.fields:
+            if f.field == name:
+                return f
+        raise KeyError(name)
+
+
+@dataclass(frozen=True)
+class Profile:
+    id: str
+    doc: str
+    file_coverages: tuple[str, ...]
+    hint_coverages: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Target:
+    command: str
+    args: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Check:
+    id: str
+    kind: str
+    severity: str
+    text: str
+    fails: str
+    line: int
+    clause: str | None = None
+    decision: str | None = None
+    input: str | None = None
+    versions: tuple[str, ...] = ()
+    targets: tuple[Target, ...] = ()
+    min: float | None = None
+    max: float | None = None
+
+    @property
+    def anchor(self) -> str:
+        return "check-" + ident(self.id).replace("_", "-")
+
+
+@dataclass(frozen=True)
+class Note:
+    """A decision, an erratum or a change-history entry."""
+
+    id: str
+    topic: str
+    text: str
+    evidence: str = ""
+    clause: str | None = None
+    date: str | None = None
+
+
+@dataclass(frozen=True)
+class Spec:
+    path: str
+    meta: dict[str, Any]
+    types: dict[str, PrimitiveType]
+    units: dict[str, str]
+    versions: tuple[Version, ...]
+    default_version: str
+    fallback_version: str
+    headers: dict[str, HeaderLayout]
+    record: RecordLayout
+    commands: tuple[Command, ...]
+    checksums: Checksums
+    profiles: tuple[Profile, ...]
+    tolerances: dict[str, float]
+    limits: dict[str, int]
+    checks: tuple[Check, ...]
+    cut: dict[str, Any]
+    decisions: tuple[Note, ...]
+    errata: tuple[Note, ...]
+    history: tuple[Note, ...]
+    raw: dict[str, Any] = field(repr=False, compare=False, default_factory=dict)
+
+    # -- look-ups used by every emitter -------------------------------------
+    def command(self, name: str) -> Command:
+        for c in self.commands:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+    def version(self, vid: str) -> Version:
+        for v in self.versions:
+            if v.id == vid:
+                return v
+        raise KeyError(vid)
+
+    def check(self, cid: str) -> Check:
+        for c in self.checks:
+            if c.id == cid:
+                return c
+        raise KeyError(cid)
+
+    def checks_of_kind(self, kind: str) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if c.kind == kind)
+
+    def header_for(self, vid: str) -> HeaderLayout:
+        return self.headers[self.version(vid).header]
+
+    @property
+    def header_size(self) -> int:
+        return next(iter(self.headers.values())).size
+
+    def common_header_field(self, role: str) -> Field:
+        """A field with the same place in every header layout (magic, checksums, version, count)."""
+        f = next(iter(self.headers.values())).by_role(role)
+        if f is None:
+            raise KeyError(role)
+        return f
+
+    def header_checksum_field(self, tag: str) -> Field:
+        for f in next(iter(self.headers.values())).fields:
+            if f.checksum == tag:
+                return f
+        raise KeyError(tag)
+
+    @property
+    def writable_versions(self) -> tuple[Version, ...]:
+        return tuple(v for v in self.versions if v.writable)
+
+    @property
+    def sorted_commands(self) -> tuple[Command, ...]:
+        return tuple(sorted(self.commands, key=lambda c: c.code))
