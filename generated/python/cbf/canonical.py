@@ -1,0 +1,226 @@
+"""Canonical JSON (conformance/PROTOCOL.md) in both directions, float bits exact."""
+
+from __future__ import annotations
+
+import math
+import struct
+from typing import Any
+
+from . import tables as T
+from .errors import JsonShapeError
+from .model import Cbf, Record
+
+_F = struct.Struct("<f")
+_I = struct.Struct("<I")
+
+
+def float_json(bits: int) -> float | str:
+    """A binary32 bit pattern as canonical JSON: a number, or "0x..." for -0, inf, NaN."""
+    v = _F.unpack(_I.pack(bits))[0]
+    if not math.isfinite(v) or (v == 0.0 and bits >> 31):
+        return f"0x{bits:08x}"
+    return v
+
+
+def float_bits(value: Any, where: str) -> int:
+    if isinstance(value, str):
+        if len(value) == 10 and value.startswith("0x"):
+            try:
+                return int(value[2:], 16)
+            except ValueError:
+                pass
+        raise JsonShapeError(f"{where}: {value!r} is neither a number nor a 0x-prefixed 8-digit bit pattern")
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise JsonShapeError(f"{where}: expected a float, got {type(value).__name__}")
+    try:
+        return int(_I.unpack(_F.pack(value))[0])
+    except (OverflowError, struct.error):
+        raise JsonShapeError(f"{where}: {value!r} is out of binary32 range") from None
+
+
+def _str_json(raw: bytes) -> str:
+    return raw.rstrip(T.PAD).decode("latin-1")
+
+
+def _fields_json(fields: tuple[T.FieldInfo, ...], vals: tuple[Any, ...]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    j = 0
+    for f in fields:
+        if f.kind == "float":
+            items = [float_json(b) for b in vals[j:j + f.count]]
+            out[f.name] = items if f.count > 1 else items[0]
+        elif f.kind == "string":
+            out[f.name] = _str_json(vals[j])
+        elif f.kind == "bytes":
+            out[f.name] = vals[j].hex()
+        else:
+            out[f.name] = vals[j]
+        j += f.count
+    return out
+
+
+def to_canonical(model: Cbf) -> dict[str, Any]:
+    from .codec import pack_fields
+
+    vid = model.version_id
+    info = T.HEADERS[T.VERSION_BY_ID[vid].header]
+    hbytes = pack_fields(info.fields, info.struct, model.header, "header")
+    header = _fields_json(info.fields, info.struct.unpack(hbytes))
+    names = {f.role: f.name for f in T.RECORD_FIELDS}
+    chk_name = T.ARG_CHECKSUM.name
+    records = []
+    for r in model.records:
+        rec: dict[str, Any] = {}
+        if r.offset is not None:
+            rec["offset"] = r.offset
+        rec[names["sequence"]] = r.sequence
+        rec[names["code"]] = r.code
+        rec[names["code_copy"]] = r.code if r.code_copy is None else r.code_copy
+        rec[names["arg_size"]] = len(r.raw_args)
+        rec[names["reserved"]] = r.reserved
+        rec[chk_name] = r.arg_checksum
+        cmd = T.BY_CODE.get(r.code)
+        rec["command"] = cmd.name if cmd else None
+        lay = cmd.layout_for_size(vid, len(r.raw_args)) if cmd else None
+        if lay is None:
+            rec["args"] = None
+            rec["raw_args"] = bytes(r.raw_args).hex()
+        else:
+            rec["args"] = _fields_json(lay.args, lay.bits.unpack(r.raw_args))
+        records.append(rec)
+    return {"header": header, "records": records, "trailing": model.trailing.hex()}
+
+
+# -- JSON -> model ----------------------------------------------------------------
+def _hex(value: Any, where: str, size: int | None = None) -> bytes:
+    if not isinstance(value, str):
+        raise JsonShapeError(f"{where}: expected a hex string")
+    try:
+        raw = bytes.fromhex(value)
+    except ValueError:
+        raise JsonShapeError(f"{where}: {value!r} is not hex") from None
+    if size is not None and len(raw) != size:
+        raise JsonShapeError(f"{where}: {len(raw)} bytes, the field holds {size}")
+    return raw
+
+
+def _uint(value: Any, where: str, size: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 1 << (8 * size):
+        raise JsonShapeError(f"{where}: expected an unsigned {8 * size}-bit integer, got {value!r}")
+    return value
+
+
+def _str(value: Any, where: str, size: int) -> bytes:
+    if not isinstance(value, str):
+        raise JsonShapeError(f"{where}: expected a string")
+    try:
+        raw = value.encode("latin-1")
+    except UnicodeEncodeError:
+        raise JsonShapeError(f"{where}: character outside U+0000..U+00FF") from None
+    if len(raw) > size:
+        raise JsonShapeError(f"{where}: {len(raw)} characters, the field holds {size}")
+    return raw + T.PAD * (size - len(raw))
+
+
+def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str, Any], where: str) -> bytes:
+    vals: list[Any] = []
+    for f in fields:
+        w = f"{where}.{f.name}"
+        v = obj[f.name]
+        if f.kind == "float":
+            items = v if f.count > 1 else [v]
+            if not isinstance(items, list) or len(items) != f.count:
+                raise JsonShapeError(f"{w}: expected {f.count} floats")
+            vals.extend(float_bits(x, f"{w}[{k}]") for k, x in enumerate(items))
+        elif f.kind == "uint":
+            vals.append(_uint(v, w, f.elem_size))
+        elif f.kind == "string":
+            vals.append(_str(v, w, f.size))
+        else:
+            vals.append(_hex(v, w, f.size))
+    return st.pack(*vals)
+
+
+def _obj(value: Any, where: str) -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise JsonShapeError(f"{where}: expected an object, got {type(value).__name__}")
+    return value
+
+
+def from_canonical(doc: Any) -> Cbf:
+    """A model from canonical JSON. Stored fields may be left out; encode fills them."""
+    from .codec import decode_header
+
+    d = _obj(doc, "$")
+    extra = set(d) - {"header", "records", "trailing"}
+    if extra:
+        raise JsonShapeError(f"$: unknown key {sorted(extra)[0]!r}")
+    h = _obj(d.get("header"), "$.header")
+    major = _uint(h.get(T.VMAJOR.name, 0), f"$.header.{T.VMAJOR.name}", 1)
+    minor = _uint(h.get(T.VMINOR.name, 0), f"$.header.{T.VMINOR.name}", 1)
+    vid = T.version_id(major, minor) or T.FALLBACK_VERSION
+    info = T.HEADERS[T.VERSION_BY_ID[vid].header]
+    hv: dict[str, Any] = {}
+    for f in info.fields:
+        if f.name in h:
+            hv[f.name] = h[f.name]
+        elif f.role in ("checksum", "command_count") or f.magic is not None:
+            hv[f.name] = (f.magic or 0)
+        elif f.kind == "string":
+            hv[f.name] = ""
+        elif f.kind == "bytes":
+            hv[f.name] = "00" * f.size
+        else:
+            raise JsonShapeError(f"$.header: missing {f.name}")
+    unknown = set(h) - {f.name for f in info.fields}
+    if unknown:
+        raise JsonShapeError(f"$.header: unknown key {sorted(unknown)[0]!r} for header layout {info.id}")
+    header = decode_header(_pack_json(info.fields, info.struct, hv, "$.header"))
+    recs = d.get("records", [])
+    if not isinstance(recs, list):
+        raise JsonShapeError("$.records: expected a list")
+    names = {f.role: f.name for f in T.RECORD_FIELDS}
+    known = set(names.values()) | {"offset", "command", "args", "raw_args"}
+    out: list[Record] = []
+    for i, rv in enumerate(recs):
+        w = f"$.records[{i}]"
+        r = _obj(rv, w)
+        bad = set(r) - known
+        if bad:
+            raise JsonShapeError(f"{w}: unknown key {sorted(bad)[0]!r}")
+        code = r.get(names["code"])
+        if code is None:
+            cname = r.get("command")
+            if cname not in T.BY_NAME:
+                raise JsonShapeError(f"{w}: needs {names['code']} or a known command name, got {cname!r}")
+            code = T.BY_NAME[cname].code
+        code = _uint(code, f"{w}.{names['code']}", 1)
+        cmd = T.BY_CODE.get(code)
+        if r.get("command") is not None and (cmd is None or r["command"] != cmd.name):
+            raise JsonShapeError(f"{w}.command: {r['command']!r} does not match code 0x{code:02X}")
+        args = r.get("args")
+        if args is not None:
+            a = _obj(args, f"{w}.args")
+            if cmd is None:
+                raise JsonShapeError(f"{w}.args: unknown code 0x{code:02X} takes raw_args only")
+            want_size = r.get(names["arg_size"])
+            lay = next((x for x in cmd.candidates(vid) + cmd.layouts
+                        if {f.name for f in x.args} == set(a) and (want_size is None or want_size == x.size)), None)
+            if lay is None:
+                raise JsonShapeError(f"{w}.args: keys {sorted(a)} match no layout of {cmd.name}")
+            raw = _pack_json(lay.args, lay.struct.__class__(lay.bits.format), a, f"{w}.args")
+        else:
+            raw = _hex(r.get("raw_args", ""), f"{w}.raw_args")
+        size = r.get(names["arg_size"])
+        if size is not None and size != len(raw):
+            raise JsonShapeError(f"{w}.{names['arg_size']}: {size}, but the arguments are {len(raw)} bytes")
+
+        def opt(role: str, size: int) -> int | None:
+            v = r.get(names[role])
+            return None if v is None else _uint(v, f"{w}.{names[role]}", size)
+
+        out.append(Record(code=code, raw_args=raw, sequence=opt("sequence", 2) or 0,
+                          code_copy=opt("code_copy", 1), reserved=opt("reserved", 1) or 0,
+                          arg_checksum=opt("checksum", T.ARG_CHECKSUM.size)))
+    trailing = _hex(d.get("trailing", ""), "$.trailing")
+    return Cbf(header, tuple(out), trailing)

@@ -1,0 +1,266 @@
+"""decode and encode: bytes <-> Cbf, lossless (``encode(decode(b)) == b``)."""
+
+from __future__ import annotations
+
+import struct
+import zlib
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+from . import tables as T
+from .errors import EncodeError, TruncatedError
+from .model import Cbf, Record
+
+Buffer = bytes | bytearray | memoryview
+
+
+# -- framing -------------------------------------------------------------------
+def frame(buf: Buffer) -> tuple[list[int], int]:
+    """Record offsets from the header to the end (D1), and where framing stopped."""
+    n = len(buf)
+    pos = T.HEADER_SIZE
+    head, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
+    offsets: list[int] = []
+    append = offsets.append
+    while n - pos >= head:
+        nb = buf[pos + at]
+        if n - pos - head < nb:
+            break
+        append(pos)
+        pos += head + nb
+    return offsets, pos
+
+
+def header_info(buf: Buffer) -> tuple[str | None, T.HeaderInfo]:
+    vid = T.version_id(buf[T.VMAJOR.offset], buf[T.VMINOR.offset])
+    return vid, T.HEADERS[T.VERSION_BY_ID[vid or T.FALLBACK_VERSION].header]
+
+
+def _convert(fields: Sequence[T.FieldInfo], values: Sequence[Any]) -> list[Any]:
+    out: list[Any] = []
+    i = 0
+    for f in fields:
+        if f.kind == "float" and f.count > 1:
+            out.append(tuple(values[i:i + f.count]))
+            i += f.count
+            continue
+        v = values[i]
+        i += 1
+        if f.kind == "string":
+            v = v.rstrip(T.PAD).decode("latin-1")
+        out.append(v)
+    return out
+
+
+def decode_header(buf: Buffer) -> Any:
+    _, info = header_info(buf)
+    vals = _convert(info.fields, info.struct.unpack_from(buf, 0))
+    return info.cls(**{f.name: v for f, v in zip(info.fields, vals, strict=True)})
+
+
+def unpack_args(lay: T.LayoutInfo, raw: Buffer) -> Any:
+    vals = _convert(lay.args, lay.struct.unpack_from(raw, 0))
+    return lay.cls(**{f.name: v for f, v in zip(lay.args, vals, strict=True)})
+
+
+def decode(data: Buffer) -> Cbf:
+    """Parse the structure, keeping every byte. Raises TruncatedError when framing breaks."""
+    buf = bytes(data)
+    n = len(buf)
+    if n < T.HEADER_SIZE:
+        raise TruncatedError(f"file is {n} bytes, the header needs {T.HEADER_SIZE}", offset=0,
+                             kind="truncated_header")
+    header = decode_header(buf)
+    offsets, end = frame(buf)
+    count = getattr(header, T.COUNT.name)
+    trailing = b""
+    if end < n:
+        if len(offsets) < count:
+            left = n - end
+            part = "record head" if left < T.HEAD_SIZE else "arguments"
+            raise TruncatedError(
+                f"record {len(offsets)} is cut: {left} byte(s) left, its {part} need more "
+                f"({len(offsets)} of {count} records complete)", offset=end, kind="truncated_record")
+        trailing = buf[end:]
+    unpack = T.HEAD_STRUCT.unpack_from
+    hs = T.HEAD_SIZE
+    i_seq, i_code, i_copy, i_res, i_chk, i_size = T.I_SEQ, T.I_CODE, T.I_COPY, T.I_RES, T.I_CHK, T.I_SIZE
+    records = []
+    for off in offsets:
+        h = unpack(buf, off)
+        records.append(Record(h[i_code], buf[off + hs:off + hs + h[i_size]], h[i_seq], h[i_copy], h[i_res],
+                              h[i_chk], off))
+    return Cbf(header, tuple(records), trailing)
+
+
+# -- checksums -----------------------------------------------------------------
+def _width(tag: str) -> int:
+    f = T.ARG_CHECKSUM if tag == "args" else T.HEADER_CHECKSUM_FIELDS[tag]
+    return f.size
+
+
+def checksum(algorithm: str, parts: Iterable[Buffer], width: int) -> int:
+    kind = T.CHECKSUMS["algorithms"][algorithm]
+    if kind == "sum":
+        return sum(sum(p) for p in parts) & ((1 << (8 * width)) - 1)
+    if kind == "crc32":
+        crc = 0
+        for p in parts:
+            crc = zlib.crc32(p, crc)
+        return crc & ((1 << (8 * width)) - 1)
+    raise ValueError(f"unknown checksum algorithm kind {kind!r}")
+
+
+def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None) -> list[Buffer]:
+    """The byte ranges a coverage feeds, in order."""
+    mv = memoryview(buf)
+    parts: list[Buffer] = []
+    for seg in T.CHECKSUMS["coverages"][coverage]:
+        region = seg["region"]
+        if region == "file":
+            parts.append(mv[seg["start"]:])
+        elif region == "header":
+            parts.append(mv[seg["start"]:seg["end"]])
+        elif region == "args":
+            parts.append(args if args is not None else b"")
+        elif region == "records":
+            skip = sorted((T.RECORD_BY_ROLE_NAME[n].offset, T.RECORD_BY_ROLE_NAME[n].size) for n in seg["exclude"])
+            hs, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
+            for off in offsets:
+                end = off + hs + buf[off + at]
+                cur = off
+                for s_off, s_size in skip:
+                    parts.append(mv[cur:off + s_off])
+                    cur = off + s_off + s_size
+                parts.append(mv[cur:end])
+    return parts
+
+
+def field_checksum(tag: str, buf: Buffer, offsets: Sequence[int], coverage: str | None = None,
+                   args: Buffer | None = None) -> int:
+    spec = T.CHECKSUMS["fields"][tag]
+    return checksum(spec["algorithm"], coverage_parts(coverage or spec["coverage"], buf, offsets, args), _width(tag))
+
+
+def arg_checksum(raw: Buffer) -> int:
+    return field_checksum("args", b"", (), args=raw)
+
+
+# -- encode --------------------------------------------------------------------
+def _pack_value(f: T.FieldInfo, value: Any, where: str) -> list[Any]:
+    if f.kind == "uint":
+        if not isinstance(value, int) or isinstance(value, bool) or not 0 <= value < 1 << (8 * f.elem_size):
+            raise EncodeError(f"{where}: {value!r} is not an unsigned {8 * f.elem_size}-bit integer")
+        return [value]
+    if f.kind == "float":
+        vals = list(value) if f.count > 1 else [value]
+        if len(vals) != f.count or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in vals):
+            raise EncodeError(f"{where}: expected {f.count} float(s), got {value!r}")
+        for v in vals:
+            try:
+                struct.pack("<f", v)
+            except OverflowError:
+                raise EncodeError(f"{where}: {v!r} is out of binary32 range") from None
+        return vals
+    if f.kind == "string":
+        if not isinstance(value, str):
+            raise EncodeError(f"{where}: expected a string, got {type(value).__name__}")
+        try:
+            raw = value.encode("latin-1")
+        except UnicodeEncodeError:
+            raise EncodeError(f"{where}: {value!r} has a character outside one byte") from None
+        if len(raw) > f.size:
+            raise EncodeError(f"{where}: {len(raw)} characters, the field holds {f.size}")
+        return [raw + T.PAD * (f.size - len(raw))]
+    if not isinstance(value, (bytes, bytearray)) or len(value) != f.size:
+        raise EncodeError(f"{where}: expected {f.size} bytes")
+    return [bytes(value)]
+
+
+def pack_fields(fields: Sequence[T.FieldInfo], st: struct.Struct, obj: Any, where: str) -> bytes:
+    vals: list[Any] = []
+    for f in fields:
+        vals.extend(_pack_value(f, getattr(obj, f.name), f"{where} field {f.name}"))
+    return st.pack(*vals)
+
+
+def pack_args(lay: T.LayoutInfo, args: Any) -> bytes:
+    return pack_fields(lay.args, lay.struct, args, lay.command)
+
+
+def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -> bytes:
+    """Write a Cbf. By default fills sequence numbers, code copies, the count,
+    the magic numbers and every checksum, then refuses a result that does not
+    validate. ``keep_stored=True`` writes every stored value as given, so a
+    faulty file is reproduced byte for byte."""
+    if profile not in T.PROFILES:
+        raise EncodeError(f"unknown profile {profile!r}")
+    major, minor = model.version
+    vid = T.version_id(major, minor)
+    info = T.HEADERS[T.VERSION_BY_ID[vid or T.FALLBACK_VERSION].header]
+    if not isinstance(model.header, info.cls):
+        raise EncodeError(f"header: version {major}.{minor} needs layout {info.id}, got {type(model.header).__name__}")
+    records = model.records
+    if not keep_stored:
+        if vid is None or not T.VERSION_BY_ID[vid].writable:
+            writable = ", ".join(v.id for v in T.VERSIONS if v.writable)
+            raise EncodeError(f"header: version {major}.{minor} is not writable (writable: {writable})")
+        if len(records) > T.LIMITS["max_commands"]:
+            raise EncodeError(f"{len(records)} commands, at most {T.LIMITS['max_commands']} fit the count")
+        if model.trailing:
+            raise EncodeError("trailing bytes can only be written with keep_stored")
+    out = bytearray(pack_fields(info.fields, info.struct, model.header, "header"))
+    pack_head = T.HEAD_STRUCT.pack
+    head_vals: list[Any] = [0] * len(T.RECORD_FIELDS)
+    offsets: list[int] = []
+    for i, r in enumerate(records):
+        raw = r.raw_args
+        if len(raw) > T.LIMITS["max_arg_size"]:
+            raise EncodeError(f"record {i}: {len(raw)} argument bytes, at most {T.LIMITS['max_arg_size']}")
+        if keep_stored:
+            seq, copy, chk = r.sequence, r.code if r.code_copy is None else r.code_copy, r.arg_checksum
+            if chk is None:
+                chk = arg_checksum(raw)
+        else:
+            seq, copy, chk = i & 0xFFFF, r.code, arg_checksum(raw)
+            cmd = T.BY_CODE.get(r.code)
+            if cmd is None:
+                raise EncodeError(f"record {i}: unknown command code 0x{r.code:02X}")
+            if not T.available(cmd, vid):
+                raise EncodeError(f"record {i}: {cmd.name} is not available in version {vid}")
+            if cmd.layout_for_size(vid or "", len(raw)) is None:
+                raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
+        head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
+        head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk
+        try:
+            offsets.append(len(out))
+            out += pack_head(*head_vals)
+        except struct.error as exc:
+            raise EncodeError(f"record {i}: head field out of range ({exc})") from None
+        out += raw
+    out += model.trailing
+    if not keep_stored:
+        _fill_header(out, offsets, len(records), profile)
+        from .validation import validate
+
+        errors = [f for f in validate(bytes(out), profile=profile) if f.severity == "error"]
+        if errors:
+            e = errors[0]
+            where = f"record {e.record}" if e.record is not None else "file"
+            raise EncodeError(f"{where}: the result would fail check {e.check}: {e.message}", offset=e.offset)
+    return bytes(out)
+
+
+def _put(out: bytearray, f: T.FieldInfo, value: int) -> None:
+    struct.pack_into(T.BO + f.fmt, out, f.offset, value)
+
+
+def _fill_header(out: bytearray, offsets: list[int], count: int, profile: str) -> None:
+    _put(out, T.START, T.START.magic or 0)
+    _put(out, T.END, T.END.magic or 0)
+    _put(out, T.COUNT, count)
+    for tag in T.CHECKSUMS["fill_order"]:
+        if tag == "args":
+            continue  # written with each record
+        cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
+        _put(out, T.HEADER_CHECKSUM_FIELDS[tag], field_checksum(tag, out, offsets, cov))

@@ -1,0 +1,150 @@
+"""Python codec emitter: typed layouts and spec tables rendered from the
+model, plus the hand-written runtime (runtime/*.py) copied beside them into
+generated/python/cbf/."""
+
+from __future__ import annotations
+
+import json
+import pprint
+from pathlib import Path
+from typing import Any
+
+from ...model import Field, Spec
+from ...render import environment
+
+HERE = Path(__file__).parent
+PKG = "python/cbf"
+
+
+def _py_type(f: Field) -> str:
+    if f.kind == "float":
+        return "float" if f.count == 1 else "tuple[" + ", ".join(["float"] * f.count) + "]"
+    return {"uint": "int", "string": "str", "bytes": "bytes"}[f.kind]
+
+
+def _field_data(f: Field) -> dict[str, Any]:
+    return {
+        "name": f.name, "type": f.type, "kind": f.kind, "offset": f.offset, "elem_size": f.elem_size,
+        "count": f.count, "role": f.role, "magic": f.magic, "checksum": f.checksum,
+        "reserved": f.reserved, "text": f.text, "unit": f.unit,
+    }
+
+
+def spec_data(spec: Spec) -> dict[str, Any]:
+    """The slice of the model the runtime needs, as plain data."""
+    return {
+        "title": spec.meta["title"],
+        "part_number": spec.meta["part_number"],
+        "revision": spec.meta["revision"],
+        "byte_order": spec.meta["byte_order"],
+        "string_padding": spec.meta["string_padding"],
+        "versions": [
+            {"id": v.id, "major": v.major, "minor": v.minor, "header": v.header, "writable": v.writable}
+            for v in spec.versions
+        ],
+        "default_version": spec.default_version,
+        "fallback_version": spec.fallback_version,
+        "headers": {
+            h.id: {"size": h.size, "fields": [_field_data(f) for f in h.fields]} for h in spec.headers.values()
+        },
+        "record": {"head_size": spec.record.head_size, "fields": [_field_data(f) for f in spec.record.fields]},
+        "commands": [
+            {
+                "name": c.name, "code": c.code, "motion": c.motion, "orientation": c.orientation, "shape": c.shape,
+                "cutter": c.cutter, "progress": c.progress,
+                "layouts": [
+                    {"variant": lay.variant, "class": lay.class_name, "versions": list(lay.versions),
+                     "size": lay.size, "profiles": list(lay.profiles), "args": [_field_data(a) for a in lay.args]}
+                    for lay in c.layouts
+                ],
+            }
+            for c in spec.commands
+        ],
+        "checksums": {
+            "algorithms": {k: a.kind for k, a in spec.checksums.algorithms.items()},
+            "coverages": {
+                k: [{"region": s.region, "start": s.start, "end": s.end, "exclude": list(s.exclude)}
+                    for s in cov.segments]
+                for k, cov in spec.checksums.coverages.items()
+            },
+            "fields": {f.field: {"algorithm": f.algorithm, "coverage": f.coverage} for f in spec.checksums.fields},
+            "fill_order": list(spec.checksums.fill_order),
+        },
+        "profiles": {p.id: {"file_coverages": list(p.file_coverages), "hint_coverages": list(p.hint_coverages)}
+                     for p in spec.profiles},
+        "tolerances": spec.tolerances,
+        "limits": spec.limits,
+        "checks": [
+            {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
+             "targets": [{"command": t.command, "args": list(t.args)} for t in c.targets],
+             "min": c.min, "max": c.max, "input": c.input}
+            for c in spec.checks
+        ],
+        "cut": spec.cut,
+    }
+
+
+def canonical_schema(spec: Spec) -> dict[str, Any]:
+    """JSON Schema of the canonical JSON (PROTOCOL.md), from the model."""
+    f32: dict[str, Any] = {"oneOf": [{"type": "number"}, {"type": "string", "pattern": "^0x[0-9a-f]{8}$"}]}
+
+    def value(f: Field) -> dict[str, Any]:
+        if f.kind == "float":
+            return f32 if f.count == 1 else {"type": "array", "items": f32, "minItems": f.count, "maxItems": f.count}
+        if f.kind == "uint":
+            return {"type": "integer", "minimum": 0, "maximum": (1 << (8 * f.elem_size)) - 1}
+        if f.kind == "string":
+            return {"type": "string", "maxLength": f.size, "description": f.doc}
+        return {"type": "string", "pattern": "^([0-9a-f]{2}){%d}$" % f.size, "description": f.doc}
+
+    headers = [
+        {"type": "object", "title": f"header {h.id}", "additionalProperties": False,
+         "required": [f.name for f in h.fields], "properties": {f.name: value(f) for f in h.fields}}
+        for h in spec.headers.values()
+    ]
+    layouts = []
+    for c in spec.commands:
+        for lay in c.layouts:
+            layouts.append({
+                "title": lay.class_name, "type": "object", "additionalProperties": False,
+                "required": [a.name for a in lay.args], "properties": {a.name: value(a) for a in lay.args},
+            })
+    rec_props: dict[str, Any] = {f.name: value(f) for f in spec.record.fields}
+    rec_props.update({
+        "offset": {"type": "integer", "minimum": 0},
+        "command": {"oneOf": [{"enum": [c.name for c in spec.commands]}, {"type": "null"}]},
+        "args": {"oneOf": [{"type": "null"}, *layouts]},
+        "raw_args": {"type": "string", "pattern": "^([0-9a-f]{2})*$"},
+    })
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": f"{spec.meta['title']} ({spec.meta['part_number']} rev {spec.meta['revision']}), canonical JSON",
+        "type": "object",
+        "additionalProperties": False,
+        "required": ["header", "records"],
+        "properties": {
+            "header": {"oneOf": headers},
+            "records": {"type": "array", "maxItems": spec.limits["max_commands"] + 1_000_000,
+                        "items": {"type": "object", "additionalProperties": False,
+                                  "required": ["command"], "properties": rec_props}},
+            "trailing": {"type": "string", "pattern": "^([0-9a-f]{2})*$"},
+        },
+    }
+
+
+def emit(spec: Spec) -> dict[str, bytes]:
+    env = environment(HERE / "templates")
+    env.filters["pytype"] = _py_type
+    out: dict[str, bytes] = {}
+    data = pprint.pformat(spec_data(spec), indent=1, width=110, sort_dicts=False)
+    out[f"{PKG}/_spec_data.py"] = (
+        '"""The CBF spec as data for the runtime. Generated from spec/cbf.yaml; do not edit."""\n\n'
+        "from typing import Any, Final\n\n"
+        f"SPEC: Final[dict[str, Any]] = {data}\n"
+    ).encode()
+    out[f"{PKG}/layouts.py"] = env.get_template("layouts.py.j2").render(spec=spec).encode()
+    out[f"{PKG}/canonical.schema.json"] = (json.dumps(canonical_schema(spec), indent=1) + "\n").encode()
+    out[f"{PKG}/py.typed"] = b""
+    for src in sorted((HERE / "runtime").glob("*.py")):
+        out[f"{PKG}/{src.name}"] = src.read_bytes()
+    return out

@@ -1,0 +1,49 @@
+"""CBF codec: the Cutfile Binary Format (spec 300071 rev 03), generated from spec/cbf.yaml.
+
+    import cbf
+    model = cbf.decode(open("part.cbf", "rb").read())   # raises cbf.CbfError on broken framing
+    findings = cbf.validate(data, profile="default")     # list of cbf.Finding
+    data = cbf.encode(model)                              # fills sequence numbers, count, checksums
+    text = cbf.to_cut(model); model = cbf.from_cut(text)
+    doc = cbf.to_canonical(model); model = cbf.from_canonical(doc)
+
+Imports are lazy so that the command line starts fast.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .canonical import from_canonical, to_canonical
+    from .codec import decode, encode
+    from .cut import from_cut, to_cut
+    from .errors import CbfError, CutSyntaxError, EncodeError, JsonShapeError, TruncatedError
+    from .layouts import CommandCode
+    from .model import Cbf, Record, new_header
+    from .validation import Finding, validate
+    from .cutters import load_cutter_table
+
+_EXPORTS = {
+    "decode": "codec", "encode": "codec",
+    "validate": "validation", "Finding": "validation",
+    "to_canonical": "canonical", "from_canonical": "canonical",
+    "to_cut": "cut", "from_cut": "cut",
+    "Cbf": "model", "Record": "model", "new_header": "model",
+    "CommandCode": "layouts",
+    "CbfError": "errors", "TruncatedError": "errors", "EncodeError": "errors", "JsonShapeError": "errors",
+    "CutSyntaxError": "errors",
+    "load_cutter_table": "cutters",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'cbf' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value
+    return value

@@ -1,0 +1,111 @@
+"""The decoded file: a header, the records, and any trailing bytes.
+
+Records keep their argument bytes verbatim (``raw_args``); the typed
+arguments (``Record.args``) are decoded from them on demand, so nothing is
+lost and big files stay small in memory.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import tables as T
+
+
+@dataclass(frozen=True, slots=True)
+class Record:
+    """One command record. Head fields are named by their spec roles."""
+
+    code: int
+    raw_args: bytes = b""
+    sequence: int = 0
+    code_copy: int | None = None
+    reserved: int = 0
+    arg_checksum: int | None = None
+    offset: int | None = field(default=None, compare=False)
+
+    @property
+    def arg_size(self) -> int:
+        return len(self.raw_args)
+
+    @property
+    def command(self) -> T.CommandInfo | None:
+        return T.BY_CODE.get(self.code)
+
+    @property
+    def name(self) -> str | None:
+        c = T.BY_CODE.get(self.code)
+        return c.name if c else None
+
+    def layout(self, version: str = T.DEFAULT_VERSION) -> T.LayoutInfo | None:
+        c = T.BY_CODE.get(self.code)
+        return c.layout_for_size(version, len(self.raw_args)) if c else None
+
+    def decode_args(self, version: str = T.DEFAULT_VERSION) -> Any | None:
+        """The typed arguments (a dataclass of cbf.layouts), or None when no layout fits."""
+        from .codec import unpack_args
+
+        lay = self.layout(version)
+        return unpack_args(lay, self.raw_args) if lay else None
+
+    @property
+    def args(self) -> Any | None:
+        return self.decode_args()
+
+    @classmethod
+    def of(cls, args: Any, **head: Any) -> Record:
+        """A record for a typed argument object, e.g. ``Record.of(Line(start=..., end=...))``."""
+        from .codec import pack_args
+
+        lay = layout_of(args)
+        return cls(code=lay.code, raw_args=pack_args(lay, args), **head)
+
+
+def layout_of(args: Any) -> T.LayoutInfo:
+    for c in T.COMMANDS:
+        for lay in c.layouts:
+            if type(args) is lay.cls:
+                return lay
+    raise TypeError(f"{type(args).__name__} is not a command layout of cbf.layouts")
+
+
+@dataclass(frozen=True)
+class Cbf:
+    """A CBF file. ``header`` is a dataclass of cbf.layouts (Header<layout>)."""
+
+    header: Any
+    records: tuple[Record, ...]
+    trailing: bytes = b""
+
+    @property
+    def version(self) -> tuple[int, int]:
+        return int(getattr(self.header, T.VMAJOR.name)), int(getattr(self.header, T.VMINOR.name))
+
+    @property
+    def version_id(self) -> str:
+        return T.version_id(*self.version) or T.FALLBACK_VERSION
+
+    def typed_records(self) -> list[tuple[Record, Any | None]]:
+        vid = self.version_id
+        return [(r, r.decode_args(vid)) for r in self.records]
+
+
+def new_header(version: str = T.DEFAULT_VERSION, **values: Any) -> Any:
+    """A header of the layout ``version`` selects, every field zero/empty unless given."""
+    major, minor = T.parse_version(version)
+    vid = T.version_id(major, minor) or T.FALLBACK_VERSION
+    info = T.HEADERS[T.VERSION_BY_ID[vid].header]
+    init: dict[str, Any] = {}
+    for f in info.fields:
+        if f.kind == "string":
+            init[f.name] = ""
+        elif f.kind == "bytes":
+            init[f.name] = bytes(f.size)
+        elif f.magic is not None:
+            init[f.name] = f.magic
+        else:
+            init[f.name] = 0
+    init[T.VMAJOR.name], init[T.VMINOR.name] = major, minor
+    init.update(values)
+    return info.cls(**init)
