@@ -36,6 +36,10 @@ class FieldInfo:
         return self.elem_size * self.count
 
     @property
+    def end(self) -> int:
+        return self.offset + self.size
+
+    @property
     def fmt(self) -> str:
         if self.kind == "uint":
             return _UINT[self.elem_size]
@@ -221,3 +225,4 @@ RECORD_BY_ROLE_NAME = {f.name: f for f in RECORD_FIELDS}
 
 def available(cmd: CommandInfo, version: str | None) -> bool:
     return version is not None and bool(cmd.layouts_for(version))
+SPEC_TITLE: str = SPEC["title"]
