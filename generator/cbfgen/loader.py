@@ -67,16 +67,16 @@ def _construct_map(loader: _Loader, node: yaml.MappingNode) -> _Map:
     m.line = node.start_mark.line + 1
     m.key_lines = {}
     for k_node, v_node in node.value:
-        key = loader.construct_object(k_node, deep=True)
+        key = loader.construct_object(k_node, deep=True)  # type: ignore[no-untyped-call]
         if key in m:
             raise SpecError(loader.name, k_node.start_mark.line + 1, f"duplicate key {key!r}")
-        m[key] = loader.construct_object(v_node, deep=True)
+        m[key] = loader.construct_object(v_node, deep=True)  # type: ignore[no-untyped-call]
         m.key_lines[key] = k_node.start_mark.line + 1
     return m
 
 
 def _construct_seq(loader: _Loader, node: yaml.SequenceNode) -> _Seq:
-    s = _Seq(loader.construct_object(n, deep=True) for n in node.value)
+    s = _Seq(loader.construct_object(n, deep=True) for n in node.value)  # type: ignore[no-untyped-call]
     s.line = node.start_mark.line + 1
     return s
 
@@ -181,7 +181,7 @@ def load(path: str | Path) -> Spec:
         try:
             raw = loader.get_single_data()
         finally:
-            loader.dispose()
+            loader.dispose()  # type: ignore[no-untyped-call]
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
         raise SpecError(spath, (mark.line + 1) if mark else 0, f"YAML: {exc.problem}") from None
@@ -235,7 +235,8 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
     shared_roles = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count", "checksum")
     for h in headers.values():
         if h.size != first.size:
-            raise ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}", "size")
+            raise ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}",
+                           "size")
         for f in h.fields:
             if f.role in shared_roles:
                 twin = next((g for g in first.fields if g.name == f.name), None)
@@ -375,11 +376,11 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
             raise ctx.fail(ch, f"duplicate check id {ch['id']!r}", "id")
         targets = []
         for t in ch.get("targets", []):
-            cmd = cmd_by_name.get(t["command"])
-            if cmd is None:
+            tcmd = cmd_by_name.get(t["command"])
+            if tcmd is None:
                 raise ctx.fail(t, f"check {ch['id']}: unknown command {t['command']}", "command")
-            for a in t["args"]:
-                _require_arg(ctx, t, cmd, a, f"check {ch['id']}")
+            for argname in t["args"]:
+                _require_arg(ctx, t, tcmd, argname, f"check {ch['id']}")
             targets.append(Target(t["command"], tuple(t["args"])))
         for v in ch.get("versions", []):
             if v not in vids:

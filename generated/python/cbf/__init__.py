@@ -19,11 +19,11 @@ if TYPE_CHECKING:
     from .canonical import from_canonical, to_canonical
     from .codec import decode, encode
     from .cut import from_cut, to_cut
+    from .cutters import load_cutter_table
     from .errors import CbfError, CutSyntaxError, EncodeError, JsonShapeError, TruncatedError
     from .layouts import CommandCode
     from .model import Cbf, Record, new_header
     from .validation import Finding, validate
-    from .cutters import load_cutter_table
 
 _EXPORTS = {
     "decode": "codec", "encode": "codec",
@@ -37,7 +37,11 @@ _EXPORTS = {
     "load_cutter_table": "cutters",
 }
 
-__all__ = sorted(_EXPORTS)
+__all__ = [
+    "Cbf", "CbfError", "CommandCode", "CutSyntaxError", "EncodeError", "Finding", "JsonShapeError", "Record",
+    "TruncatedError", "decode", "encode", "from_canonical", "from_cut", "load_cutter_table", "new_header",
+    "to_canonical", "to_cut", "validate",
+]
 
 
 def __getattr__(name: str) -> Any:

@@ -37,7 +37,7 @@ _BY_KEYWORD = {keyword(c): c for c in T.COMMANDS}
 
 def format_float(bits: int) -> str:
     """Fewest digits that give back the same binary32, positional notation."""
-    v = _F.unpack(_I.pack(bits))[0]
+    v: float = _F.unpack(_I.pack(bits))[0]
     s = repr(v)
     for p in range(1, 10):
         cand = f"{v:.{p}g}"
@@ -45,7 +45,7 @@ def format_float(bits: int) -> str:
             s = cand
             break
     if "e" in s or "E" in s:
-        s = format(Decimal(s), "f")
+        s = str(format(Decimal(s), "f"))
     return s
 
 
@@ -63,7 +63,8 @@ def _plain_layout(cmd: T.CommandInfo, version: str, profile: str) -> T.LayoutInf
     """The layout a CUT reader picks for this command, version and profile."""
     own = [lay for lay in cmd.layouts_for(version) if lay.accepted_under(profile)]
     special = [lay for lay in own if profile in lay.profiles]
-    return (special or own or [None])[0]
+    chosen = special or own
+    return chosen[0] if chosen else None
 
 
 def _record_line(r: Record, version: str, profile: str) -> str:

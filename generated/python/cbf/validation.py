@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import tables as T
-from .codec import Buffer, coverage_parts, checksum, frame, header_info
+from .codec import Buffer, checksum, coverage_parts, frame, header_info
 from .model import Cbf
 
 
@@ -65,7 +65,8 @@ def _value_of_string(raw: bytes) -> bytes:
 def _string_checks(out: _Out, raw: bytes, record: int | None, offset: int, name: str) -> None:
     head, sep, tail = raw.partition(b"\0")
     if sep and tail.strip(b"\0"):
-        out.add(_one("string_tail"), record, offset, f"{name}: bytes after the first NUL: {tail.rstrip(bytes(1)).hex()}")
+        out.add(_one("string_tail"), record, offset,
+                f"{name}: bytes after the first NUL: {tail.rstrip(bytes(1)).hex()}")
     bad = [b for b in head if not 0x20 <= b <= 0x7E]
     if bad:
         out.add(_one("string_ascii"), record, offset, f"{name}: non-ASCII byte 0x{bad[0]:02X}")
@@ -160,7 +161,8 @@ def _part_number(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any], part_
     words = _value_of_string(header[f.name]).decode("latin-1").split()
     first = words[0] if words else ""
     if first != part_number:
-        out.add(_one("part_number"), None, f.offset, f"implant descriptor starts with {first!r}, expected {part_number!r}")
+        out.add(_one("part_number"), None, f.offset,
+                f"implant descriptor starts with {first!r}, expected {part_number!r}")
 
 
 def _vec_sub(a: tuple[float, ...], b: tuple[float, ...]) -> tuple[float, ...]:
@@ -325,7 +327,7 @@ def _targeted(out: _Out, ch: dict[str, Any], names: tuple[str, ...], cname: str,
     if kind == "ordered":
         if len(present) == len(names) and all(_finite(a[n]) for n in names):
             vals = [a[n] for n in names]
-            if any(x > y for x, y in zip(vals, vals[1:])):
+            if any(x > y for x, y in zip(vals, vals[1:], strict=False)):
                 out.add(ch, i, aoff, f"{cname}: {' <= '.join(f'{n}={a[n]:g}' for n in names)} does not hold")
         return
     for n in present:

@@ -95,7 +95,7 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
             return {"type": "integer", "minimum": 0, "maximum": (1 << (8 * f.elem_size)) - 1}
         if f.kind == "string":
             return {"type": "string", "maxLength": f.size, "description": f.doc}
-        return {"type": "string", "pattern": "^([0-9a-f]{2}){%d}$" % f.size, "description": f.doc}
+        return {"type": "string", "pattern": "^([0-9a-f]{2}){" + str(f.size) + "}$", "description": f.doc}
 
     headers = [
         {"type": "object", "title": f"header {h.id}", "additionalProperties": False,

@@ -16,7 +16,7 @@ _I = struct.Struct("<I")
 
 def float_json(bits: int) -> float | str:
     """A binary32 bit pattern as canonical JSON: a number, or "0x..." for -0, inf, NaN."""
-    v = _F.unpack(_I.pack(bits))[0]
+    v: float = _F.unpack(_I.pack(bits))[0]
     if not math.isfinite(v) or (v == 0.0 and bits >> 31):
         return f"0x{bits:08x}"
     return v
@@ -107,7 +107,7 @@ def _hex(value: Any, where: str, size: int | None = None) -> bytes:
 def _uint(value: Any, where: str, size: int) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 1 << (8 * size):
         raise JsonShapeError(f"{where}: expected an unsigned {8 * size}-bit integer, got {value!r}")
-    return value
+    return int(value)
 
 
 def _str(value: Any, where: str, size: int) -> bytes:
@@ -215,7 +215,7 @@ def from_canonical(doc: Any) -> Cbf:
         if size is not None and size != len(raw):
             raise JsonShapeError(f"{w}.{names['arg_size']}: {size}, but the arguments are {len(raw)} bytes")
 
-        def opt(role: str, size: int) -> int | None:
+        def opt(role: str, size: int, r: dict[str, Any] = r, w: str = w) -> int | None:
             v = r.get(names[role])
             return None if v is None else _uint(v, f"{w}.{names[role]}", size)
 

@@ -7,6 +7,7 @@ kinds and layouts of ``_spec_data.SPEC``.
 from __future__ import annotations
 
 import struct
+from struct import Struct
 from dataclasses import dataclass
 from typing import Any
 
@@ -73,8 +74,8 @@ class LayoutInfo:
     size: int
     profiles: frozenset[str]
     args: tuple[FieldInfo, ...]
-    struct: struct.Struct
-    bits: struct.Struct
+    struct: Struct
+    bits: Struct
 
     def accepted_under(self, profile: str) -> bool:
         return not self.profiles or profile in self.profiles
@@ -112,7 +113,7 @@ class HeaderInfo:
     size: int
     fields: tuple[FieldInfo, ...]
     cls: type
-    struct: struct.Struct
+    struct: Struct
 
     def by_role(self, role: str) -> FieldInfo | None:
         for f in self.fields:
