@@ -24,7 +24,7 @@ EXT = C["extensions"]
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
 _FLOAT = re.compile(C["float_pattern"])
-_SEP = C["arg_separator"]
+_SEP: str = C["arg_separator"]
 _DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
 
 

@@ -7,8 +7,8 @@ kinds and layouts of ``_spec_data.SPEC``.
 from __future__ import annotations
 
 import struct
-from struct import Struct
 from dataclasses import dataclass
+from struct import Struct
 from typing import Any
 
 from . import layouts
