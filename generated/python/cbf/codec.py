@@ -9,7 +9,7 @@ from typing import Any
 
 from . import tables as T
 from .errors import EncodeError, TruncatedError
-from .model import Cbf, Record
+from .model import Cbf, RecordList
 
 Buffer = bytes | bytearray | memoryview
 
@@ -82,15 +82,7 @@ def decode(data: Buffer) -> Cbf:
                 f"record {len(offsets)} is cut: {left} byte(s) left, its {part} need more "
                 f"({len(offsets)} of {count} records complete)", offset=end, kind="truncated_record")
         trailing = buf[end:]
-    unpack = T.HEAD_STRUCT.unpack_from
-    hs = T.HEAD_SIZE
-    i_seq, i_code, i_copy, i_res, i_chk, i_size = T.I_SEQ, T.I_CODE, T.I_COPY, T.I_RES, T.I_CHK, T.I_SIZE
-    records = []
-    for off in offsets:
-        h = unpack(buf, off)
-        records.append(Record(h[i_code], buf[off + hs:off + hs + h[i_size]], h[i_seq], h[i_copy], h[i_res],
-                              h[i_chk], off))
-    return Cbf(header, tuple(records), trailing)
+    return Cbf(header, RecordList(buf, offsets), trailing)
 
 
 # -- checksums -----------------------------------------------------------------

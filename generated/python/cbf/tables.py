@@ -6,13 +6,22 @@ kinds and layouts of ``_spec_data.SPEC``.
 
 from __future__ import annotations
 
+import json
 import struct
 from dataclasses import dataclass
+from importlib import import_module
+from pathlib import Path
 from struct import Struct
 from typing import Any
 
-from . import layouts
-from ._spec_data import SPEC
+# The spec as data, generated from spec/cbf.yaml beside this module.
+SPEC: dict[str, Any] = json.loads(Path(__file__).with_name("spec_data.json").read_text(encoding="utf-8"))
+
+
+def _layouts_class(registry: str, key: Any) -> type:
+    """A generated dataclass of cbf.layouts, imported on first use (keeps start-up fast)."""
+    table: dict[Any, type] = getattr(import_module(f"{__package__}.layouts"), registry)
+    return table[key]
 
 BO = "<" if SPEC["byte_order"] == "little" else ">"
 PAD = bytes([SPEC["string_padding"]])
@@ -69,7 +78,6 @@ class LayoutInfo:
     command: str
     code: int
     variant: str
-    cls: type
     versions: frozenset[str]
     size: int
     profiles: frozenset[str]
@@ -79,6 +87,10 @@ class LayoutInfo:
 
     def accepted_under(self, profile: str) -> bool:
         return not self.profiles or profile in self.profiles
+
+    @property
+    def cls(self) -> type:
+        return _layouts_class("ARGS_CLASSES", (self.command, self.variant))
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,9 +103,10 @@ class CommandInfo:
     shape: dict[str, str] | None
     cutter: dict[str, str] | None
     progress: str | None
+    by_version: dict[str, tuple[LayoutInfo, ...]]
 
     def layouts_for(self, version: str) -> tuple[LayoutInfo, ...]:
-        return tuple(lay for lay in self.layouts if version in lay.versions)
+        return self.by_version.get(version, ())
 
     def candidates(self, version: str) -> tuple[LayoutInfo, ...]:
         """Layouts to decode with: the version's own, else all, newest first (PROTOCOL.md)."""
@@ -112,8 +125,11 @@ class HeaderInfo:
     id: str
     size: int
     fields: tuple[FieldInfo, ...]
-    cls: type
     struct: Struct
+
+    @property
+    def cls(self) -> type:
+        return _layouts_class("HEADER_CLASSES", self.id)
 
     def by_role(self, role: str) -> FieldInfo | None:
         for f in self.fields:
@@ -158,7 +174,7 @@ def parse_version(text: str) -> tuple[int, int]:
 HEADERS: dict[str, HeaderInfo] = {}
 for _hid, _h in SPEC["headers"].items():
     _fields = tuple(_field(f) for f in _h["fields"])
-    HEADERS[_hid] = HeaderInfo(_hid, _h["size"], _fields, layouts.HEADER_CLASSES[_hid], _struct(_fields))
+    HEADERS[_hid] = HeaderInfo(_hid, _h["size"], _fields, _struct(_fields))
 HEADER_SIZE: int = next(iter(HEADERS.values())).size
 _H0 = next(iter(HEADERS.values()))
 
@@ -191,21 +207,18 @@ I_SIZE = ROLE_INDEX["arg_size"]
 I_RES = ROLE_INDEX["reserved"]
 I_CHK = RECORD_FIELDS.index(ARG_CHECKSUM)
 
-COMMANDS: tuple[CommandInfo, ...] = tuple(
-    CommandInfo(
-        c["name"], c["code"],
-        tuple(
-            LayoutInfo(c["name"], c["code"], lay["variant"], layouts.ARGS_CLASSES[(c["name"], lay["variant"])],
-                       frozenset(lay["versions"]), lay["size"], frozenset(lay["profiles"]),
-                       tuple(_field(a) for a in lay["args"]),
-                       _struct(tuple(_field(a) for a in lay["args"])),
-                       _struct(tuple(_field(a) for a in lay["args"]), bits=True))
-            for lay in c["layouts"]
-        ),
-        c["motion"], c["orientation"], c["shape"], c["cutter"], c["progress"],
-    )
-    for c in SPEC["commands"]
-)
+def _command(c: dict[str, Any]) -> CommandInfo:
+    lays = []
+    for lay in c["layouts"]:
+        args = tuple(_field(a) for a in lay["args"])
+        lays.append(LayoutInfo(c["name"], c["code"], lay["variant"], frozenset(lay["versions"]), lay["size"],
+                               frozenset(lay["profiles"]), args, _struct(args), _struct(args, bits=True)))
+    by_version = {v["id"]: tuple(x for x in lays if v["id"] in x.versions) for v in SPEC["versions"]}
+    return CommandInfo(c["name"], c["code"], tuple(lays), c["motion"], c["orientation"], c["shape"], c["cutter"],
+                       c["progress"], {k: v for k, v in by_version.items() if v})
+
+
+COMMANDS: tuple[CommandInfo, ...] = tuple(_command(c) for c in SPEC["commands"])
 BY_CODE = {c.code: c for c in COMMANDS}
 BY_NAME = {c.name: c for c in COMMANDS}
 

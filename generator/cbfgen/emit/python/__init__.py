@@ -5,7 +5,6 @@ generated/python/cbf/."""
 from __future__ import annotations
 
 import json
-import pprint
 from pathlib import Path
 from typing import Any
 
@@ -136,12 +135,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env = environment(HERE / "templates")
     env.filters["pytype"] = _py_type
     out: dict[str, bytes] = {}
-    data = pprint.pformat(spec_data(spec), indent=1, width=110, sort_dicts=False)
-    out[f"{PKG}/_spec_data.py"] = (
-        '"""The CBF spec as data for the runtime. Generated from spec/cbf.yaml; do not edit."""\n\n'
-        "from typing import Any, Final\n\n"
-        f"SPEC: Final[dict[str, Any]] = {data}\n"
-    ).encode()
+    out[f"{PKG}/spec_data.json"] = (json.dumps(spec_data(spec), indent=1) + "\n").encode()
     out[f"{PKG}/layouts.py"] = env.get_template("layouts.py.j2").render(spec=spec).encode()
     out[f"{PKG}/canonical.schema.json"] = (json.dumps(canonical_schema(spec), indent=1) + "\n").encode()
     out[f"{PKG}/py.typed"] = b""

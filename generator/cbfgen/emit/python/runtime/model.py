@@ -7,8 +7,9 @@ lost and big files stay small in memory.
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, overload
 
 from . import tables as T
 
@@ -70,12 +71,59 @@ def layout_of(args: Any) -> T.LayoutInfo:
     raise TypeError(f"{type(args).__name__} is not a command layout of cbf.layouts")
 
 
+class RecordList(Sequence[Record]):
+    """The records of a decoded file: a view on its bytes that makes each
+    Record when asked, so decoding a big file costs one framing pass."""
+
+    __slots__ = ("_buf", "_offsets")
+
+    def __init__(self, buf: bytes, offsets: Sequence[int]) -> None:
+        self._buf = buf
+        self._offsets = offsets
+
+    def __len__(self) -> int:
+        return len(self._offsets)
+
+    def _make(self, off: int) -> Record:
+        h = T.HEAD_STRUCT.unpack_from(self._buf, off)
+        start = off + T.HEAD_SIZE
+        return Record(h[T.I_CODE], self._buf[start:start + h[T.I_SIZE]], h[T.I_SEQ], h[T.I_COPY], h[T.I_RES],
+                      h[T.I_CHK], off)
+
+    @overload
+    def __getitem__(self, index: int) -> Record: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Record]: ...
+
+    def __getitem__(self, index: int | slice) -> Record | Sequence[Record]:
+        if isinstance(index, slice):
+            return RecordList(self._buf, self._offsets[index])
+        return self._make(self._offsets[index])
+
+    def __iter__(self) -> Iterator[Record]:
+        make = self._make
+        for off in self._offsets:
+            yield make(off)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Sequence):
+            return NotImplemented
+        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"RecordList({len(self)} records)"
+
+
 @dataclass(frozen=True)
 class Cbf:
-    """A CBF file. ``header`` is a dataclass of cbf.layouts (Header<layout>)."""
+    """A CBF file. ``header`` is a dataclass of cbf.layouts (Header<layout>);
+    ``records`` any sequence of Record (a lazy RecordList when decoded)."""
 
     header: Any
-    records: tuple[Record, ...]
+    records: Sequence[Record]
     trailing: bytes = b""
 
     @property
