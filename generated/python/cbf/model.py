@@ -75,11 +75,17 @@ class RecordList(Sequence[Record]):
     """The records of a decoded file: a view on its bytes that makes each
     Record when asked, so decoding a big file costs one framing pass."""
 
-    __slots__ = ("_buf", "_offsets")
+    __slots__ = ("_buf", "_offsets", "framed")
 
-    def __init__(self, buf: bytes, offsets: Sequence[int]) -> None:
+    def __init__(self, buf: bytes, offsets: Sequence[int], framed: int | None = None) -> None:
         self._buf = buf
         self._offsets = offsets
+        # When these are all the records of ``buf`` (as decode made them): where framing stopped.
+        self.framed = framed
+
+    @property
+    def source(self) -> tuple[bytes, Sequence[int]]:
+        return self._buf, self._offsets
 
     def __len__(self) -> int:
         return len(self._offsets)
