@@ -82,8 +82,8 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
         cs = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(a, dtype=np.int64)))
         want = (cs[off + hs + nb] - cs[off + hs]) & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)
     else:
-        want = np.array([V._field_sum("args", buf, [], args=buf[o + hs:o + hs + s]) for o, s in zip(offsets, nb, strict=True)],
-                        dtype=np.int64)
+        want = np.array([V._field_sum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
+                         for o, s in zip(offsets, nb, strict=True)], dtype=np.int64)
     bad = np.nonzero(chk != want)[0]
     add(one("arg_checksum"), bad, 3, off[bad] + T.ARG_CHECKSUM.offset,
         (f"stored argument checksum {chk[i]}, computed {want[i]}" for i in bad))
