@@ -1,0 +1,3358 @@
+/* cbf.h - Cutfile Binary Format (300071 rev 03), C99 single-header codec.
+ *
+ * GENERATED from spec/cbf.yaml by cbfgen (emitter generator/cbfgen/emit/c).
+ * Do not edit: change the spec and run `make generate`.
+ *
+ * Usage: #include "cbf.h" anywhere for the declarations; in exactly one C or
+ * C++ file write
+ *
+ *     #define CBF_IMPLEMENTATION
+ *     #include "cbf.h"
+ *
+ * for the implementation. No function allocates memory: every buffer is the
+ * caller's. Functions return a size or count (>= 0) or a negative CBF_ERR_*.
+ *
+ * Byte order: little-endian (N1). Floats: IEEE-754 binary32 (N2).
+ * Strings: string(N) is N bytes, NUL-padded, no terminator when full (N4);
+ * the structs hold the N bytes plus a terminating NUL, so the C string is the
+ * value (the part before the first NUL) and every byte is still there.
+ */
+#ifndef CBF_H
+#define CBF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ======================================================================= ids */
+
+/** Format versions (7.1); the header's version field selects one. */
+enum cbf_version {
+    CBF_V1_X = 0, /**< CBF File Format Version 1.01 and other 1.x (read only, N10). (major 1; clause 7.2.1) */
+    CBF_V2_X = 1, /**< CBF File Format Version 2.0 (read only, N10). (major 2; clause 7.2.2) */
+    CBF_V3_0 = 2, /**< Version 3.0, specified by 300071 rev 03. (major 3, minor 0; clause 2.1; writable) */
+    CBF_V4_0 = 3, /**< Version 4.0; does not support ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX, HELIX5B (7.2.3.1). (major 4, minor 0; clause 7.2.3; writable) */
+    CBF_V__COUNT = 4, /**< sentinel: number of versions */
+    CBF_V__UNKNOWN = -1 /**< the header's version matches no entry */
+};
+#define CBF_VERSION_BIT(v) (1u << (unsigned)(v))
+#define CBF_DEFAULT_VERSION CBF_V3_0
+#define CBF_FALLBACK_VERSION CBF_V4_0
+
+/** Validation profiles. */
+enum cbf_profile {
+    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with FORMAT-NOTES. */
+    CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum may cover implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. */
+    CBF_PROFILE__COUNT = 2
+};
+
+/** Command codes (5.1, 5.2): the symbolic names with their hex values. */
+enum cbf_command {
+    CBF_CMD_GUIDE = 0x11, /**< Guide message. (clause 5.1) */
+    CBF_CMD_PHASE = 0x21, /**< Cutting phase. (clause 5.1) */
+    CBF_CMD_ENABLE_SKIP = 0x22, /**< Enable skip to phase. (clause 5.1) */
+    CBF_CMD_DECEL_OFF = 0x2B, /**< Turn on motion blending (i.e., don't decelerate). (clause 5.1) */
+    CBF_CMD_POINT = 0x33, /**< Starting goal point. (clause 5.1) */
+    CBF_CMD_CHECKPOINT = 0x3C, /**< Check-point. (clause 5.1) */
+    CBF_CMD_ACCEL = 0x47, /**< Acceleration and deceleration. (clause 5.1) */
+    CBF_CMD_DECEL_ON = 0x4E, /**< Turn off motion blending (i.e., decelerate). (clause 5.1) */
+    CBF_CMD_VERSION = 0x55, /**< Version numbers. (clause 5.1) */
+    CBF_CMD_ORIENT = 0x58, /**< Orientation change. (clause 5.1) */
+    CBF_CMD_ORIENT5B = 0x59, /**< Orientation change, 5 axis. (clause 5.1) */
+    CBF_CMD_COMMENT = 0x5A, /**< Comment. (clause 5.1) */
+    CBF_CMD_ENDSHAPE = 0x65, /**< End of a shape; same arguments as STARTSHAPE (redundancy). (clause 5.1) */
+    CBF_CMD_CUTTER_OFF = 0x66, /**< Turn cutter off. (clause 5.1) */
+    CBF_CMD_CIRCLE = 0x7A, /**< Circle. (clause 5.1) */
+    CBF_CMD_CIRCLE5B = 0x7B, /**< Circle, 5 axis. (clause 5.1) */
+    CBF_CMD_SPEED = 0x8B, /**< Speed. (clause 5.1) */
+    CBF_CMD_ARC = 0x94, /**< Arc move. (clause 5.1) */
+    CBF_CMD_ARC5B = 0x95, /**< Arc move, 5 axis. (clause 5.1) */
+    CBF_CMD_CUTTER = 0xA3, /**< Change cutter. (clause 5.1) */
+    CBF_CMD_LINE = 0xB6, /**< Straight line motion. (clause 5.1) */
+    CBF_CMD_LINE5B = 0xB7, /**< Straight line motion, 5 axis. (clause 5.1) */
+    CBF_CMD_CUTTER_ON = 0xBB, /**< Turn cutter on. (clause 5.1) */
+    CBF_CMD_STARTSHAPE = 0xC9, /**< Start of a shape. (clause 5.1) */
+    CBF_CMD_HELIX = 0xE2, /**< Helix. (clause 5.1) */
+    CBF_CMD_HELIX5B = 0xE3, /**< Helix, 5 axis. (clause 5.1) */
+    CBF_CMD_FCPARMS = 0xFC, /**< Force control parameters. (clause 5.1) */
+    CBF_CMD__UNKNOWN = 0x100 /**< sentinel: not a command code (codes are 0x00..0xFF) */
+};
+#define CBF_COMMAND_COUNT 27
+
+/** Argument layouts, one per command and variant. */
+enum cbf_layout {
+    CBF_LAYOUT_CHECKPOINT = 0, /**< CHECKPOINT: 32 bytes */
+    CBF_LAYOUT_CHECKPOINT_V1 = 1, /**< CHECKPOINT variant v1: 16 bytes */
+    CBF_LAYOUT_CUTTER = 2, /**< CUTTER: 32 bytes */
+    CBF_LAYOUT_CUTTER_V1 = 3, /**< CUTTER variant v1: 32 bytes */
+    CBF_LAYOUT_ORIENT = 4, /**< ORIENT: 24 bytes */
+    CBF_LAYOUT_ORIENT5B = 5, /**< ORIENT5B: 24 bytes */
+    CBF_LAYOUT_PHASE = 6, /**< PHASE: 16 bytes */
+    CBF_LAYOUT_ENABLE_SKIP = 7, /**< ENABLE_SKIP: 16 bytes */
+    CBF_LAYOUT_STARTSHAPE = 8, /**< STARTSHAPE: 6 bytes */
+    CBF_LAYOUT_ENDSHAPE = 9, /**< ENDSHAPE: 6 bytes */
+    CBF_LAYOUT_DECEL_OFF = 10, /**< DECEL_OFF: 0 bytes */
+    CBF_LAYOUT_DECEL_ON = 11, /**< DECEL_ON: 0 bytes */
+    CBF_LAYOUT_POINT = 12, /**< POINT: 12 bytes */
+    CBF_LAYOUT_LINE = 13, /**< LINE: 24 bytes */
+    CBF_LAYOUT_LINE5B = 14, /**< LINE5B: 48 bytes */
+    CBF_LAYOUT_ARC = 15, /**< ARC: 36 bytes */
+    CBF_LAYOUT_ARC5B = 16, /**< ARC5B: 60 bytes */
+    CBF_LAYOUT_CIRCLE = 17, /**< CIRCLE: 40 bytes */
+    CBF_LAYOUT_CIRCLE5B = 18, /**< CIRCLE5B: 64 bytes */
+    CBF_LAYOUT_HELIX = 19, /**< HELIX: 44 bytes */
+    CBF_LAYOUT_HELIX5B = 20, /**< HELIX5B: 68 bytes */
+    CBF_LAYOUT_SPEED = 21, /**< SPEED: 4 bytes */
+    CBF_LAYOUT_ACCEL = 22, /**< ACCEL: 8 bytes */
+    CBF_LAYOUT_CUTTER_ON = 23, /**< CUTTER_ON: 0 bytes */
+    CBF_LAYOUT_CUTTER_OFF = 24, /**< CUTTER_OFF: 0 bytes */
+    CBF_LAYOUT_GUIDE = 25, /**< GUIDE: 32 bytes */
+    CBF_LAYOUT_FCPARMS = 26, /**< FCPARMS: 16 bytes */
+    CBF_LAYOUT_VERSION = 27, /**< VERSION: 32 bytes */
+    CBF_LAYOUT_VERSION_IMPLIB = 28, /**< VERSION variant implib: 16 bytes */
+    CBF_LAYOUT_COMMENT = 29, /**< COMMENT: 40 bytes */
+    CBF_LAYOUT__COUNT = 30,
+    CBF_LAYOUT__NONE = -1 /**< arguments not decoded */
+};
+
+/** Header layouts. */
+enum cbf_header_layout {
+    CBF_HEADER_V2 = 0, /**< File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1). */
+    CBF_HEADER_V1 = 1, /**< File header of version 1.x, before 7.2.2.1 shortened the implant descriptor. */
+    CBF_HEADER__COUNT = 2
+};
+
+/* Check ids: the same ids in every binding (findings carry them). */
+#define CBF_CHECK_4_2 "4.2" /**< error: The file header is 128 bytes long. */
+#define CBF_CHECK_4_3 "4.3" /**< error: The cutting data consists of variable length records. */
+#define CBF_CHECK_6_1_1 "6.1.1" /**< error: The first word in the Implant Descriptor field in the file header should be the implant part number. */
+#define CBF_CHECK_6_1_2 "6.1.2" /**< error: The length and radius of every cutter (specified by the CUTTER command) should agree, within 0.01 millimeters, with the values specified in the robot's cutter database. */
+#define CBF_CHECK_6_2_1 "6.2.1" /**< error: The checksum of the entire file should match the value specified in the file header. */
+#define CBF_CHECK_6_2_2 "6.2.2" /**< error: The number of commands in the file should match the value specified in the file header. */
+#define CBF_CHECK_6_3_1 "6.3.1" /**< error: The checksum of the file header should match the specified value. */
+#define CBF_CHECK_6_3_2 "6.3.2" /**< error: The first and last fields of the header should match the special values specified in Section 4.2 (the spec says 5.1, erratum E2). */
+#define CBF_CHECK_6_4_1 "6.4.1" /**< error: The sequence number should be one greater than the previous sequence number (first record should have sequence number 0). */
+#define CBF_CHECK_6_4_2 "6.4.2" /**< error: Both command code fields should be identical. */
+#define CBF_CHECK_6_4_3 "6.4.3" /**< error: The number of bytes for the command arguments should be as specified in the table in Section 5.1 (the spec says 6.1, erratum E1). */
+#define CBF_CHECK_6_4_4 "6.4.4" /**< error: The checksum of the command argument bytes should match the specified value. */
+#define CBF_CHECK_6_4_5 "6.4.5" /**< error: The starting point of a motion command (e.g., LINE, ARC, CIRCLE, etc.) should match the ending point of the previous motion command. */
+#define CBF_CHECK_7_2_3_1 "7.2.3.1" /**< error: Version 4.0 does not support Arc, arc5b, circle, circle5b, helix, helix5b. */
+#define CBF_CHECK_7_2_2_4 "7.2.2.4" /**< error: The FCPARMS, DECEL_OFF, DECEL_ON, HELIX, VERSION, and PHASE commands were added in 2.0. */
+#define CBF_CHECK_VERSION_SUPPORTED "version_supported" /**< error: The processing software can read the version number and adjust the parsing logic appropriately. */
+#define CBF_CHECK_UNKNOWN_COMMAND "unknown_command" /**< error: An unknown command code is an error; its record is kept whole. */
+#define CBF_CHECK_TRAILING_BYTES "trailing_bytes" /**< error: No byte follows the last record. */
+#define CBF_CHECK_RESERVED_NONZERO "reserved_nonzero" /**< warning: The record's reserved byte should be 0. */
+#define CBF_CHECK_STRING_TAIL "string_tail" /**< warning: A string ends at its first NUL; the bytes after it are padding. */
+#define CBF_CHECK_STRING_ASCII "string_ascii" /**< warning: Strings are ASCII. */
+#define CBF_CHECK_NON_FINITE "non_finite" /**< error: Floats are finite. */
+#define CBF_CHECK_SPEED_POSITIVE "speed_positive" /**< error: SPEED is greater than 0. */
+#define CBF_CHECK_ACCEL_POSITIVE "accel_positive" /**< error: Acceleration and deceleration are greater than 0. */
+#define CBF_CHECK_CUTTER_POSITIVE "cutter_positive" /**< error: Cutter length and radius are greater than 0. */
+#define CBF_CHECK_NORMAL_NONZERO "normal_nonzero" /**< error: A circle or helix normal has non-zero length. */
+#define CBF_CHECK_CHECKPOINT_RANGE "checkpoint_range" /**< warning: CHECKPOINT completion lies in 0..100. */
+#define CBF_CHECK_CHECKPOINT_FALLING "checkpoint_falling" /**< warning: CHECKPOINT completion does not fall. */
+#define CBF_CHECK_FCPARMS_ORDER "fcparms_order" /**< warning: FCPARMS speeds satisfy min <= nom <= max. */
+#define CBF_CHECK_ORIENTATION_JUMP "orientation_jump" /**< warning: A 5-axis command starts at the current tool orientation. */
+#define CBF_CHECK_SHAPE "shape" /**< error: STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion commands; shapes do not nest. */
+#define CBF_CHECK__COUNT 31
+
+/* =================================================================== lengths */
+
+#define CBF_HEADER_SIZE 128
+#define CBF_RECORD_HEAD_SIZE 8
+#define CBF_LIMIT_MAX_COMMANDS 65535
+#define CBF_LIMIT_MAX_ARG_SIZE 255
+#define CBF_MAX_ARG_SIZE 68 /**< the largest layout */
+#define CBF_TOLERANCE_POSITION_MM 0.001
+#define CBF_TOLERANCE_CUTTER_MM 0.01
+#define CBF_TOLERANCE_ORIENTATION_DEG 0.1
+
+/* Header field offsets and sizes, per header layout. */
+#define CBF_HEADER_V2_START_PATTERN_OFFSET 0
+#define CBF_HEADER_V2_START_PATTERN_SIZE 4
+#define CBF_HEADER_V2_FILE_CHECKSUM_OFFSET 4
+#define CBF_HEADER_V2_FILE_CHECKSUM_SIZE 4
+#define CBF_HEADER_V2_HEADER_CHECKSUM_OFFSET 8
+#define CBF_HEADER_V2_HEADER_CHECKSUM_SIZE 2
+#define CBF_HEADER_V2_RESERVED_ECC_OFFSET 10
+#define CBF_HEADER_V2_RESERVED_ECC_SIZE 6
+#define CBF_HEADER_V2_VERSION_MAJOR_OFFSET 16
+#define CBF_HEADER_V2_VERSION_MAJOR_SIZE 1
+#define CBF_HEADER_V2_VERSION_MINOR_OFFSET 17
+#define CBF_HEADER_V2_VERSION_MINOR_SIZE 1
+#define CBF_HEADER_V2_IMPLANT_DESCRIPTOR_OFFSET 18
+#define CBF_HEADER_V2_IMPLANT_DESCRIPTOR_SIZE 70
+#define CBF_HEADER_V2_CONFIGURATION_DESCRIPTOR_OFFSET 88
+#define CBF_HEADER_V2_CONFIGURATION_DESCRIPTOR_SIZE 34
+#define CBF_HEADER_V2_COMMAND_COUNT_OFFSET 122
+#define CBF_HEADER_V2_COMMAND_COUNT_SIZE 2
+#define CBF_HEADER_V2_END_PATTERN_OFFSET 124
+#define CBF_HEADER_V2_END_PATTERN_SIZE 4
+#define CBF_HEADER_V1_START_PATTERN_OFFSET 0
+#define CBF_HEADER_V1_START_PATTERN_SIZE 4
+#define CBF_HEADER_V1_FILE_CHECKSUM_OFFSET 4
+#define CBF_HEADER_V1_FILE_CHECKSUM_SIZE 4
+#define CBF_HEADER_V1_HEADER_CHECKSUM_OFFSET 8
+#define CBF_HEADER_V1_HEADER_CHECKSUM_SIZE 2
+#define CBF_HEADER_V1_RESERVED_ECC_OFFSET 10
+#define CBF_HEADER_V1_RESERVED_ECC_SIZE 6
+#define CBF_HEADER_V1_VERSION_MAJOR_OFFSET 16
+#define CBF_HEADER_V1_VERSION_MAJOR_SIZE 1
+#define CBF_HEADER_V1_VERSION_MINOR_OFFSET 17
+#define CBF_HEADER_V1_VERSION_MINOR_SIZE 1
+#define CBF_HEADER_V1_IMPLANT_DESCRIPTOR_OFFSET 18
+#define CBF_HEADER_V1_IMPLANT_DESCRIPTOR_SIZE 80
+#define CBF_HEADER_V1_RESERVED_98_OFFSET 98
+#define CBF_HEADER_V1_RESERVED_98_SIZE 24
+#define CBF_HEADER_V1_COMMAND_COUNT_OFFSET 122
+#define CBF_HEADER_V1_COMMAND_COUNT_SIZE 2
+#define CBF_HEADER_V1_END_PATTERN_OFFSET 124
+#define CBF_HEADER_V1_END_PATTERN_SIZE 4
+
+/* Magic numbers (header fields with a fixed value). */
+#define CBF_MAGIC_START_PATTERN 0x53A1B792u
+#define CBF_MAGIC_END_PATTERN 0xAC5E486Du
+
+/* Record head field offsets and sizes (4.3). */
+#define CBF_RECORD_SEQUENCE_OFFSET 0
+#define CBF_RECORD_SEQUENCE_SIZE 2
+#define CBF_RECORD_CODE_OFFSET 2
+#define CBF_RECORD_CODE_SIZE 1
+#define CBF_RECORD_CODE_COPY_OFFSET 3
+#define CBF_RECORD_CODE_COPY_SIZE 1
+#define CBF_RECORD_ARG_SIZE_OFFSET 4
+#define CBF_RECORD_ARG_SIZE_SIZE 1
+#define CBF_RECORD_RESERVED_OFFSET 5
+#define CBF_RECORD_RESERVED_SIZE 1
+#define CBF_RECORD_ARG_CHECKSUM_OFFSET 6
+#define CBF_RECORD_ARG_CHECKSUM_SIZE 2
+
+/* Argument sizes per layout, and the versions each layout applies to. */
+#define CBF_ARGS_CHECKPOINT_SIZE 32
+#define CBF_ARGS_CHECKPOINT_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_CHECKPOINT_V1_SIZE 16
+#define CBF_ARGS_CHECKPOINT_V1_VERSIONS (CBF_VERSION_BIT(CBF_V1_X))
+#define CBF_ARGS_CUTTER_SIZE 32
+#define CBF_ARGS_CUTTER_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_CUTTER_V1_SIZE 32
+#define CBF_ARGS_CUTTER_V1_VERSIONS (CBF_VERSION_BIT(CBF_V1_X))
+#define CBF_ARGS_ORIENT_SIZE 24
+#define CBF_ARGS_ORIENT_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_ORIENT5B_SIZE 24
+#define CBF_ARGS_ORIENT5B_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_PHASE_SIZE 16
+#define CBF_ARGS_PHASE_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_ENABLE_SKIP_SIZE 16
+#define CBF_ARGS_ENABLE_SKIP_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_STARTSHAPE_SIZE 6
+#define CBF_ARGS_STARTSHAPE_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_ENDSHAPE_SIZE 6
+#define CBF_ARGS_ENDSHAPE_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_DECEL_OFF_SIZE 0
+#define CBF_ARGS_DECEL_OFF_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_DECEL_ON_SIZE 0
+#define CBF_ARGS_DECEL_ON_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_POINT_SIZE 12
+#define CBF_ARGS_POINT_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_LINE_SIZE 24
+#define CBF_ARGS_LINE_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_LINE5B_SIZE 48
+#define CBF_ARGS_LINE5B_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_ARC_SIZE 36
+#define CBF_ARGS_ARC_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_ARC5B_SIZE 60
+#define CBF_ARGS_ARC5B_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_CIRCLE_SIZE 40
+#define CBF_ARGS_CIRCLE_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_CIRCLE5B_SIZE 64
+#define CBF_ARGS_CIRCLE5B_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_HELIX_SIZE 44
+#define CBF_ARGS_HELIX_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_HELIX5B_SIZE 68
+#define CBF_ARGS_HELIX5B_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0))
+#define CBF_ARGS_SPEED_SIZE 4
+#define CBF_ARGS_SPEED_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_ACCEL_SIZE 8
+#define CBF_ARGS_ACCEL_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_CUTTER_ON_SIZE 0
+#define CBF_ARGS_CUTTER_ON_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_CUTTER_OFF_SIZE 0
+#define CBF_ARGS_CUTTER_OFF_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_GUIDE_SIZE 32
+#define CBF_ARGS_GUIDE_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_FCPARMS_SIZE 16
+#define CBF_ARGS_FCPARMS_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_VERSION_SIZE 32
+#define CBF_ARGS_VERSION_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_VERSION_IMPLIB_SIZE 16
+#define CBF_ARGS_VERSION_IMPLIB_VERSIONS (CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+#define CBF_ARGS_COMMENT_SIZE 40
+#define CBF_ARGS_COMMENT_VERSIONS (CBF_VERSION_BIT(CBF_V1_X) | CBF_VERSION_BIT(CBF_V2_X) | CBF_VERSION_BIT(CBF_V3_0) | CBF_VERSION_BIT(CBF_V4_0))
+
+/* Per-version availability (1: the command has a layout in that version)
+ * and argument sizes of each command in each version. */
+#define CBF_CMD_CHECKPOINT_IN_V1_X 1
+#define CBF_ARGS_CHECKPOINT_V1_SIZE_V1_X 16
+#define CBF_CMD_CHECKPOINT_IN_V2_X 1
+#define CBF_ARGS_CHECKPOINT_SIZE_V2_X 32
+#define CBF_CMD_CHECKPOINT_IN_V3_0 1
+#define CBF_ARGS_CHECKPOINT_SIZE_V3_0 32
+#define CBF_CMD_CHECKPOINT_IN_V4_0 1
+#define CBF_ARGS_CHECKPOINT_SIZE_V4_0 32
+#define CBF_CMD_CUTTER_IN_V1_X 1
+#define CBF_ARGS_CUTTER_V1_SIZE_V1_X 32
+#define CBF_CMD_CUTTER_IN_V2_X 1
+#define CBF_ARGS_CUTTER_SIZE_V2_X 32
+#define CBF_CMD_CUTTER_IN_V3_0 1
+#define CBF_ARGS_CUTTER_SIZE_V3_0 32
+#define CBF_CMD_CUTTER_IN_V4_0 1
+#define CBF_ARGS_CUTTER_SIZE_V4_0 32
+#define CBF_CMD_ORIENT_IN_V1_X 1
+#define CBF_ARGS_ORIENT_SIZE_V1_X 24
+#define CBF_CMD_ORIENT_IN_V2_X 1
+#define CBF_ARGS_ORIENT_SIZE_V2_X 24
+#define CBF_CMD_ORIENT_IN_V3_0 1
+#define CBF_ARGS_ORIENT_SIZE_V3_0 24
+#define CBF_CMD_ORIENT_IN_V4_0 1
+#define CBF_ARGS_ORIENT_SIZE_V4_0 24
+#define CBF_CMD_ORIENT5B_IN_V1_X 1
+#define CBF_ARGS_ORIENT5B_SIZE_V1_X 24
+#define CBF_CMD_ORIENT5B_IN_V2_X 1
+#define CBF_ARGS_ORIENT5B_SIZE_V2_X 24
+#define CBF_CMD_ORIENT5B_IN_V3_0 1
+#define CBF_ARGS_ORIENT5B_SIZE_V3_0 24
+#define CBF_CMD_ORIENT5B_IN_V4_0 1
+#define CBF_ARGS_ORIENT5B_SIZE_V4_0 24
+#define CBF_CMD_PHASE_IN_V1_X 0
+#define CBF_CMD_PHASE_IN_V2_X 1
+#define CBF_ARGS_PHASE_SIZE_V2_X 16
+#define CBF_CMD_PHASE_IN_V3_0 1
+#define CBF_ARGS_PHASE_SIZE_V3_0 16
+#define CBF_CMD_PHASE_IN_V4_0 1
+#define CBF_ARGS_PHASE_SIZE_V4_0 16
+#define CBF_CMD_ENABLE_SKIP_IN_V1_X 1
+#define CBF_ARGS_ENABLE_SKIP_SIZE_V1_X 16
+#define CBF_CMD_ENABLE_SKIP_IN_V2_X 1
+#define CBF_ARGS_ENABLE_SKIP_SIZE_V2_X 16
+#define CBF_CMD_ENABLE_SKIP_IN_V3_0 1
+#define CBF_ARGS_ENABLE_SKIP_SIZE_V3_0 16
+#define CBF_CMD_ENABLE_SKIP_IN_V4_0 1
+#define CBF_ARGS_ENABLE_SKIP_SIZE_V4_0 16
+#define CBF_CMD_STARTSHAPE_IN_V1_X 1
+#define CBF_ARGS_STARTSHAPE_SIZE_V1_X 6
+#define CBF_CMD_STARTSHAPE_IN_V2_X 1
+#define CBF_ARGS_STARTSHAPE_SIZE_V2_X 6
+#define CBF_CMD_STARTSHAPE_IN_V3_0 1
+#define CBF_ARGS_STARTSHAPE_SIZE_V3_0 6
+#define CBF_CMD_STARTSHAPE_IN_V4_0 1
+#define CBF_ARGS_STARTSHAPE_SIZE_V4_0 6
+#define CBF_CMD_ENDSHAPE_IN_V1_X 1
+#define CBF_ARGS_ENDSHAPE_SIZE_V1_X 6
+#define CBF_CMD_ENDSHAPE_IN_V2_X 1
+#define CBF_ARGS_ENDSHAPE_SIZE_V2_X 6
+#define CBF_CMD_ENDSHAPE_IN_V3_0 1
+#define CBF_ARGS_ENDSHAPE_SIZE_V3_0 6
+#define CBF_CMD_ENDSHAPE_IN_V4_0 1
+#define CBF_ARGS_ENDSHAPE_SIZE_V4_0 6
+#define CBF_CMD_DECEL_OFF_IN_V1_X 0
+#define CBF_CMD_DECEL_OFF_IN_V2_X 1
+#define CBF_ARGS_DECEL_OFF_SIZE_V2_X 0
+#define CBF_CMD_DECEL_OFF_IN_V3_0 1
+#define CBF_ARGS_DECEL_OFF_SIZE_V3_0 0
+#define CBF_CMD_DECEL_OFF_IN_V4_0 1
+#define CBF_ARGS_DECEL_OFF_SIZE_V4_0 0
+#define CBF_CMD_DECEL_ON_IN_V1_X 0
+#define CBF_CMD_DECEL_ON_IN_V2_X 1
+#define CBF_ARGS_DECEL_ON_SIZE_V2_X 0
+#define CBF_CMD_DECEL_ON_IN_V3_0 1
+#define CBF_ARGS_DECEL_ON_SIZE_V3_0 0
+#define CBF_CMD_DECEL_ON_IN_V4_0 1
+#define CBF_ARGS_DECEL_ON_SIZE_V4_0 0
+#define CBF_CMD_POINT_IN_V1_X 1
+#define CBF_ARGS_POINT_SIZE_V1_X 12
+#define CBF_CMD_POINT_IN_V2_X 1
+#define CBF_ARGS_POINT_SIZE_V2_X 12
+#define CBF_CMD_POINT_IN_V3_0 1
+#define CBF_ARGS_POINT_SIZE_V3_0 12
+#define CBF_CMD_POINT_IN_V4_0 1
+#define CBF_ARGS_POINT_SIZE_V4_0 12
+#define CBF_CMD_LINE_IN_V1_X 1
+#define CBF_ARGS_LINE_SIZE_V1_X 24
+#define CBF_CMD_LINE_IN_V2_X 1
+#define CBF_ARGS_LINE_SIZE_V2_X 24
+#define CBF_CMD_LINE_IN_V3_0 1
+#define CBF_ARGS_LINE_SIZE_V3_0 24
+#define CBF_CMD_LINE_IN_V4_0 1
+#define CBF_ARGS_LINE_SIZE_V4_0 24
+#define CBF_CMD_LINE5B_IN_V1_X 1
+#define CBF_ARGS_LINE5B_SIZE_V1_X 48
+#define CBF_CMD_LINE5B_IN_V2_X 1
+#define CBF_ARGS_LINE5B_SIZE_V2_X 48
+#define CBF_CMD_LINE5B_IN_V3_0 1
+#define CBF_ARGS_LINE5B_SIZE_V3_0 48
+#define CBF_CMD_LINE5B_IN_V4_0 1
+#define CBF_ARGS_LINE5B_SIZE_V4_0 48
+#define CBF_CMD_ARC_IN_V1_X 1
+#define CBF_ARGS_ARC_SIZE_V1_X 36
+#define CBF_CMD_ARC_IN_V2_X 1
+#define CBF_ARGS_ARC_SIZE_V2_X 36
+#define CBF_CMD_ARC_IN_V3_0 1
+#define CBF_ARGS_ARC_SIZE_V3_0 36
+#define CBF_CMD_ARC_IN_V4_0 0
+#define CBF_CMD_ARC5B_IN_V1_X 1
+#define CBF_ARGS_ARC5B_SIZE_V1_X 60
+#define CBF_CMD_ARC5B_IN_V2_X 1
+#define CBF_ARGS_ARC5B_SIZE_V2_X 60
+#define CBF_CMD_ARC5B_IN_V3_0 1
+#define CBF_ARGS_ARC5B_SIZE_V3_0 60
+#define CBF_CMD_ARC5B_IN_V4_0 0
+#define CBF_CMD_CIRCLE_IN_V1_X 1
+#define CBF_ARGS_CIRCLE_SIZE_V1_X 40
+#define CBF_CMD_CIRCLE_IN_V2_X 1
+#define CBF_ARGS_CIRCLE_SIZE_V2_X 40
+#define CBF_CMD_CIRCLE_IN_V3_0 1
+#define CBF_ARGS_CIRCLE_SIZE_V3_0 40
+#define CBF_CMD_CIRCLE_IN_V4_0 0
+#define CBF_CMD_CIRCLE5B_IN_V1_X 1
+#define CBF_ARGS_CIRCLE5B_SIZE_V1_X 64
+#define CBF_CMD_CIRCLE5B_IN_V2_X 1
+#define CBF_ARGS_CIRCLE5B_SIZE_V2_X 64
+#define CBF_CMD_CIRCLE5B_IN_V3_0 1
+#define CBF_ARGS_CIRCLE5B_SIZE_V3_0 64
+#define CBF_CMD_CIRCLE5B_IN_V4_0 0
+#define CBF_CMD_HELIX_IN_V1_X 0
+#define CBF_CMD_HELIX_IN_V2_X 1
+#define CBF_ARGS_HELIX_SIZE_V2_X 44
+#define CBF_CMD_HELIX_IN_V3_0 1
+#define CBF_ARGS_HELIX_SIZE_V3_0 44
+#define CBF_CMD_HELIX_IN_V4_0 0
+#define CBF_CMD_HELIX5B_IN_V1_X 1
+#define CBF_ARGS_HELIX5B_SIZE_V1_X 68
+#define CBF_CMD_HELIX5B_IN_V2_X 1
+#define CBF_ARGS_HELIX5B_SIZE_V2_X 68
+#define CBF_CMD_HELIX5B_IN_V3_0 1
+#define CBF_ARGS_HELIX5B_SIZE_V3_0 68
+#define CBF_CMD_HELIX5B_IN_V4_0 0
+#define CBF_CMD_SPEED_IN_V1_X 1
+#define CBF_ARGS_SPEED_SIZE_V1_X 4
+#define CBF_CMD_SPEED_IN_V2_X 1
+#define CBF_ARGS_SPEED_SIZE_V2_X 4
+#define CBF_CMD_SPEED_IN_V3_0 1
+#define CBF_ARGS_SPEED_SIZE_V3_0 4
+#define CBF_CMD_SPEED_IN_V4_0 1
+#define CBF_ARGS_SPEED_SIZE_V4_0 4
+#define CBF_CMD_ACCEL_IN_V1_X 1
+#define CBF_ARGS_ACCEL_SIZE_V1_X 8
+#define CBF_CMD_ACCEL_IN_V2_X 1
+#define CBF_ARGS_ACCEL_SIZE_V2_X 8
+#define CBF_CMD_ACCEL_IN_V3_0 1
+#define CBF_ARGS_ACCEL_SIZE_V3_0 8
+#define CBF_CMD_ACCEL_IN_V4_0 1
+#define CBF_ARGS_ACCEL_SIZE_V4_0 8
+#define CBF_CMD_CUTTER_ON_IN_V1_X 1
+#define CBF_ARGS_CUTTER_ON_SIZE_V1_X 0
+#define CBF_CMD_CUTTER_ON_IN_V2_X 1
+#define CBF_ARGS_CUTTER_ON_SIZE_V2_X 0
+#define CBF_CMD_CUTTER_ON_IN_V3_0 1
+#define CBF_ARGS_CUTTER_ON_SIZE_V3_0 0
+#define CBF_CMD_CUTTER_ON_IN_V4_0 1
+#define CBF_ARGS_CUTTER_ON_SIZE_V4_0 0
+#define CBF_CMD_CUTTER_OFF_IN_V1_X 1
+#define CBF_ARGS_CUTTER_OFF_SIZE_V1_X 0
+#define CBF_CMD_CUTTER_OFF_IN_V2_X 1
+#define CBF_ARGS_CUTTER_OFF_SIZE_V2_X 0
+#define CBF_CMD_CUTTER_OFF_IN_V3_0 1
+#define CBF_ARGS_CUTTER_OFF_SIZE_V3_0 0
+#define CBF_CMD_CUTTER_OFF_IN_V4_0 1
+#define CBF_ARGS_CUTTER_OFF_SIZE_V4_0 0
+#define CBF_CMD_GUIDE_IN_V1_X 1
+#define CBF_ARGS_GUIDE_SIZE_V1_X 32
+#define CBF_CMD_GUIDE_IN_V2_X 1
+#define CBF_ARGS_GUIDE_SIZE_V2_X 32
+#define CBF_CMD_GUIDE_IN_V3_0 1
+#define CBF_ARGS_GUIDE_SIZE_V3_0 32
+#define CBF_CMD_GUIDE_IN_V4_0 1
+#define CBF_ARGS_GUIDE_SIZE_V4_0 32
+#define CBF_CMD_FCPARMS_IN_V1_X 0
+#define CBF_CMD_FCPARMS_IN_V2_X 1
+#define CBF_ARGS_FCPARMS_SIZE_V2_X 16
+#define CBF_CMD_FCPARMS_IN_V3_0 1
+#define CBF_ARGS_FCPARMS_SIZE_V3_0 16
+#define CBF_CMD_FCPARMS_IN_V4_0 1
+#define CBF_ARGS_FCPARMS_SIZE_V4_0 16
+#define CBF_CMD_VERSION_IN_V1_X 0
+#define CBF_CMD_VERSION_IN_V2_X 1
+#define CBF_ARGS_VERSION_SIZE_V2_X 32
+#define CBF_ARGS_VERSION_IMPLIB_SIZE_V2_X 16
+#define CBF_CMD_VERSION_IN_V3_0 1
+#define CBF_ARGS_VERSION_SIZE_V3_0 32
+#define CBF_ARGS_VERSION_IMPLIB_SIZE_V3_0 16
+#define CBF_CMD_VERSION_IN_V4_0 1
+#define CBF_ARGS_VERSION_SIZE_V4_0 32
+#define CBF_ARGS_VERSION_IMPLIB_SIZE_V4_0 16
+#define CBF_CMD_COMMENT_IN_V1_X 1
+#define CBF_ARGS_COMMENT_SIZE_V1_X 40
+#define CBF_CMD_COMMENT_IN_V2_X 1
+#define CBF_ARGS_COMMENT_SIZE_V2_X 40
+#define CBF_CMD_COMMENT_IN_V3_0 1
+#define CBF_ARGS_COMMENT_SIZE_V3_0 40
+#define CBF_CMD_COMMENT_IN_V4_0 1
+#define CBF_ARGS_COMMENT_SIZE_V4_0 40
+
+/* ===================================================================== enums */
+
+enum cbf_error {
+    CBF_OK = 0,
+    CBF_ERR_TRUNCATED_HEADER = -1, /**< fewer bytes than the header (4.2) */
+    CBF_ERR_TRUNCATED_RECORD = -2, /**< the last record is cut and the count says more follow (4.3, D1) */
+    CBF_ERR_BUFFER = -3,           /**< the caller's buffer is too small */
+    CBF_ERR_ARGUMENT = -4,         /**< a bad argument (NULL, unknown layout, profile or version) */
+    CBF_ERR_RANGE = -5,            /**< a value that the format cannot hold */
+    CBF_ERR_NOT_WRITABLE = -6,     /**< the version, command or size cannot be written */
+    CBF_ERR_INVALID = -7           /**< the encoded file would fail an error-severity check */
+};
+
+/** Roles of header and record fields (cbf_field_info.role). */
+enum cbf_role {
+    CBF_ROLE_NONE = 0,
+    CBF_ROLE_START_PATTERN,
+    CBF_ROLE_CHECKSUM,
+    CBF_ROLE_RESERVED,
+    CBF_ROLE_VERSION_MAJOR,
+    CBF_ROLE_VERSION_MINOR,
+    CBF_ROLE_IMPLANT_DESCRIPTOR,
+    CBF_ROLE_CONFIGURATION_DESCRIPTOR,
+    CBF_ROLE_COMMAND_COUNT,
+    CBF_ROLE_END_PATTERN,
+    CBF_ROLE_SEQUENCE,
+    CBF_ROLE_CODE,
+    CBF_ROLE_CODE_COPY,
+    CBF_ROLE_ARG_SIZE
+};
+
+enum cbf_field_kind { CBF_KIND_UINT = 1, CBF_KIND_FLOAT = 2, CBF_KIND_STRING = 3, CBF_KIND_BYTES = 4 };
+
+enum cbf_severity { CBF_SEVERITY_WARNING = 0, CBF_SEVERITY_ERROR = 1 };
+
+/* =================================================================== structs */
+
+/** File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1). (clause 4.2, 128 bytes) */
+struct cbf_header_v2 {
+    uint32_t start_pattern; /**< Special pattern indicating cutting file (N5, bytes 92 B7 A1 53). [u32; offset 0; clause 4.2] */
+    uint32_t file_checksum; /**< Checksum for entire file (starting at byte 8). [u32; offset 4; clause 4.2] */
+    uint16_t header_checksum; /**< Checksum for rest of header. [u16; offset 8; clause 4.2] */
+    uint8_t reserved_ecc[6]; /**< Reserved for future checksum usage (Error Correcting Codes); kept verbatim (N7). [6 raw bytes; offset 10; clause 4.2] */
+    uint8_t version_major; /**< Version number for cutfile format, major (N3). [u8; offset 16; clause 4.2] */
+    uint8_t version_minor; /**< Version number for cutfile format, minor (N3). [u8; offset 17; clause 4.2] */
+    char implant_descriptor[70 + 1]; /**< Implant descriptor (part number, manufacturer, type, size); the part number must be the first item (6.1.1). [string(70), NUL-terminated copy; offset 18; clause 4.2] */
+    char configuration_descriptor[34 + 1]; /**< Configuration descriptor. [string(34), NUL-terminated copy; offset 88; clause 7.2.2.1] */
+    uint16_t command_count; /**< Number of commands in cutting data section (6.2.2). [u16; offset 122; clause 4.2] */
+    uint32_t end_pattern; /**< Special pattern indicating end of header, the complement of the start pattern (N5, bytes 6D 48 5E AC). [u32; offset 124; clause 4.2] */
+};
+
+/** File header of version 1.x, before 7.2.2.1 shortened the implant descriptor. (clause 7.2.2.1, 128 bytes) */
+struct cbf_header_v1 {
+    uint32_t start_pattern; /**< Special pattern indicating cutting file. [u32; offset 0; clause 4.2] */
+    uint32_t file_checksum; /**< Checksum for entire file (starting at byte 8). [u32; offset 4; clause 4.2] */
+    uint16_t header_checksum; /**< Checksum for rest of header. [u16; offset 8; clause 4.2] */
+    uint8_t reserved_ecc[6]; /**< Reserved for future checksum usage; kept verbatim (N7). [6 raw bytes; offset 10; clause 4.2] */
+    uint8_t version_major; /**< Version number, major (N3). [u8; offset 16; clause 4.2] */
+    uint8_t version_minor; /**< Version number, minor (N3). [u8; offset 17; clause 4.2] */
+    char implant_descriptor[80 + 1]; /**< Implant descriptor of 80 bytes (1.x). [string(80), NUL-terminated copy; offset 18; clause 7.2.2.1] */
+    uint8_t reserved_98[24]; /**< Reserved field at offset 98 (1.x); renamed Configuration Descriptor in 2.0. [24 raw bytes; offset 98; clause 7.2.2.1] */
+    uint16_t command_count; /**< Number of commands in cutting data section. [u16; offset 122; clause 4.2] */
+    uint32_t end_pattern; /**< Complement of the start pattern (N5). [u32; offset 124; clause 4.2] */
+};
+
+/** A decoded file header. */
+typedef struct cbf_header {
+    int version;  /**< enum cbf_version, or CBF_V__UNKNOWN (then read as CBF_FALLBACK_VERSION) */
+    int layout;   /**< enum cbf_header_layout: which member of u is valid */
+    unsigned major, minor; /**< the version field */
+    unsigned long count;   /**< the header's command count */
+    union {
+        struct cbf_header_v2 v2;
+        struct cbf_header_v1 v1;
+    } u;
+} cbf_header;
+
+/** A cutting-data record; the records follow the header back to back. (clause 4.3, 8 bytes) */
+typedef struct cbf_record_head {
+    uint16_t sequence; /**< Command sequence number (0 - 65535); 6.4.1. [u16; offset 0; clause 4.3] */
+    uint8_t code; /**< Command code (5.1). [u8; offset 2; clause 4.3] */
+    uint8_t code_copy; /**< Backup copy of command code (redundancy); 6.4.2. [u8; offset 3; clause 4.3] */
+    uint8_t arg_size; /**< Number of bytes used by command arguments (nb); 6.4.3. [u8; offset 4; clause 4.3] */
+    uint8_t reserved; /**< Reserved, should be 0 (N7). [u8; offset 5; clause 4.3] */
+    uint16_t arg_checksum; /**< Checksum of command arguments; 6.4.4. [u16; offset 6; clause 4.3] */
+} cbf_record_head;
+
+/** CHECKPOINT: Check-point. 32 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_checkpoint_args {
+    char name[16 + 1]; /**< Check-point name. [string(16), NUL-terminated copy; offset 0] */
+    float recovery_point[3]; /**< Recovery point. [binary32 x 3; offset 16; unit mm (millimetre (N11))] */
+    float completion; /**< Completion percentage. [binary32; offset 28; unit percent (percent of completion)] */
+};
+
+/** CHECKPOINT (v1): Check-point. 16 argument bytes; versions 1.x; clause 7.2.2.2. */
+struct cbf_checkpoint_v1_args {
+    char name[16 + 1]; /**< Check-point name. [string(16), NUL-terminated copy; offset 0] */
+};
+
+/** CUTTER: Change cutter. 32 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_cutter_args {
+    char name[16 + 1]; /**< Cutter name (part number). [string(16), NUL-terminated copy; offset 0] */
+    float length; /**< Cutter length (6.1.2). [binary32; offset 16; unit mm (millimetre (N11))] */
+    float radius; /**< Cutter radius (6.1.2). [binary32; offset 20; unit mm (millimetre (N11))] */
+    float head_length; /**< Cutter head length (7.2.2.3). [binary32; offset 24; unit mm (millimetre (N11))] */
+    uint8_t reserved[4]; /**< 4 bytes reserved (N7). [4 raw bytes; offset 28; reserved, kept verbatim] */
+};
+
+/** CUTTER (v1): Change cutter. 32 argument bytes; versions 1.x; clause 7.2.2.3. */
+struct cbf_cutter_v1_args {
+    char name[16 + 1]; /**< Cutter name (part number). [string(16), NUL-terminated copy; offset 0] */
+    float length; /**< Cutter length (6.1.2). [binary32; offset 16; unit mm (millimetre (N11))] */
+    float radius; /**< Cutter radius (6.1.2). [binary32; offset 20; unit mm (millimetre (N11))] */
+    uint8_t reserved[8]; /**< 8 bytes reserved; head length came in 2.0 (7.2.2.3). [8 raw bytes; offset 24; reserved, kept verbatim] */
+};
+
+/** ORIENT: Orientation change. 24 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_orient_args {
+    float approach[3]; /**< Tool approach. [binary32 x 3; offset 0] */
+    uint8_t reserved[12]; /**< reserved: float(3); kept verbatim (N7). [12 raw bytes; offset 12; reserved, kept verbatim] */
+};
+
+/** ORIENT5B: Orientation change, 5 axis. 24 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_orient5b_args {
+    float start_approach[3]; /**< Start approach. [binary32 x 3; offset 0] */
+    float end_approach[3]; /**< End approach. [binary32 x 3; offset 12] */
+};
+
+/** PHASE: Cutting phase. 16 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_phase_args {
+    char name[16 + 1]; /**< Phase name. [string(16), NUL-terminated copy; offset 0] */
+};
+
+/** ENABLE_SKIP: Enable skip to phase. 16 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_enable_skip_args {
+    char name[16 + 1]; /**< Name of the phase to skip to. [string(16), NUL-terminated copy; offset 0] */
+};
+
+/** STARTSHAPE: Start of a shape. 6 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_startshape_args {
+    char name[5 + 1]; /**< Shape name. [string(5), NUL-terminated copy; offset 0] */
+    uint8_t moves; /**< Number of (move) commands in the shape. [u8; offset 5; unit count (a number of commands)] */
+};
+
+/** ENDSHAPE: End of a shape; same arguments as STARTSHAPE (redundancy). 6 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_endshape_args {
+    char name[5 + 1]; /**< Shape name, as in STARTSHAPE. [string(5), NUL-terminated copy; offset 0] */
+    uint8_t moves; /**< Number of (move) commands, as in STARTSHAPE. [u8; offset 5; unit count (a number of commands)] */
+};
+
+/** DECEL_OFF: Turn on motion blending (i.e., don't decelerate). 0 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_decel_off_args {
+    char unused_; /**< no arguments (C needs a member) */
+};
+
+/** DECEL_ON: Turn off motion blending (i.e., decelerate). 0 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_decel_on_args {
+    char unused_; /**< no arguments (C needs a member) */
+};
+
+/** POINT: Starting goal point. 12 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_point_args {
+    float point[3]; /**< Goal point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+};
+
+/** LINE: Straight line motion. 24 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_line_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float end[3]; /**< End point. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+};
+
+/** LINE5B: Straight line motion, 5 axis. 48 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_line5b_args {
+    float start_pos[3]; /**< Start position. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float end_pos[3]; /**< End position. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float start_orient[3]; /**< Start orientation. [binary32 x 3; offset 24] */
+    float end_orient[3]; /**< End orientation. [binary32 x 3; offset 36] */
+};
+
+/** ARC: Arc move. 36 argument bytes; versions 1.x, 2.x, 3.0; clause 5.1. */
+struct cbf_arc_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float middle[3]; /**< A point in the middle of the arc. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float end[3]; /**< End point. [binary32 x 3; offset 24; unit mm (millimetre (N11))] */
+};
+
+/** ARC5B: Arc move, 5 axis. 60 argument bytes; versions 1.x, 2.x, 3.0; clause 5.1. */
+struct cbf_arc5b_args {
+    float start_pos[3]; /**< Start position. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float mid_pos[3]; /**< Middle position. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float end_pos[3]; /**< End position. [binary32 x 3; offset 24; unit mm (millimetre (N11))] */
+    float start_orient[3]; /**< Start orientation. [binary32 x 3; offset 36] */
+    float end_orient[3]; /**< End orientation. [binary32 x 3; offset 48] */
+};
+
+/** CIRCLE: Circle. 40 argument bytes; versions 1.x, 2.x, 3.0; clause 5.1. */
+struct cbf_circle_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float center[3]; /**< Centre point. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float normal[3]; /**< Axis direction (need not be unit length); rotation by the right-hand rule. [binary32 x 3; offset 24] */
+    float ndegrees; /**< Angle swept about the normal. [binary32; offset 36; unit deg (degree of arc)] */
+};
+
+/** CIRCLE5B: Circle, 5 axis. 64 argument bytes; versions 1.x, 2.x, 3.0; clause 5.1. */
+struct cbf_circle5b_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float center[3]; /**< Centre point. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float normal[3]; /**< Axis direction (need not be unit length); rotation by the right-hand rule. [binary32 x 3; offset 24] */
+    float ndegrees; /**< Angle swept about the normal. [binary32; offset 36; unit deg (degree of arc)] */
+    float start_orient[3]; /**< Start orientation. [binary32 x 3; offset 40] */
+    float end_orient[3]; /**< End orientation. [binary32 x 3; offset 52] */
+};
+
+/** HELIX: Helix. 44 argument bytes; versions 2.x, 3.0; clause 5.1. */
+struct cbf_helix_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float center[3]; /**< Centre point. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float normal[3]; /**< Axis direction (need not be unit length); rotation by the right-hand rule. [binary32 x 3; offset 24] */
+    float ndegrees; /**< Angle swept about the normal. [binary32; offset 36; unit deg (degree of arc)] */
+    float length; /**< Axial advance along the unit normal. [binary32; offset 40; unit mm (millimetre (N11))] */
+};
+
+/** HELIX5B: Helix, 5 axis. 68 argument bytes; versions 1.x, 2.x, 3.0; clause 5.1. */
+struct cbf_helix5b_args {
+    float start[3]; /**< Start point. [binary32 x 3; offset 0; unit mm (millimetre (N11))] */
+    float center[3]; /**< Centre point. [binary32 x 3; offset 12; unit mm (millimetre (N11))] */
+    float normal[3]; /**< Axis direction (need not be unit length); rotation by the right-hand rule. [binary32 x 3; offset 24] */
+    float ndegrees; /**< Angle swept about the normal. [binary32; offset 36; unit deg (degree of arc)] */
+    float length; /**< Axial advance along the unit normal. [binary32; offset 40; unit mm (millimetre (N11))] */
+    float start_orient[3]; /**< Start orientation. [binary32 x 3; offset 44] */
+    float end_orient[3]; /**< End orientation. [binary32 x 3; offset 56] */
+};
+
+/** SPEED: Speed. 4 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_speed_args {
+    float speed; /**< Speed. [binary32; offset 0; unit m/s (metre per second (N11))] */
+};
+
+/** ACCEL: Acceleration and deceleration. 8 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_accel_args {
+    float accel; /**< Acceleration. [binary32; offset 0; unit m/s^2 (metre per second squared (N11))] */
+    float decel; /**< Deceleration. [binary32; offset 4; unit m/s^2 (metre per second squared (N11))] */
+};
+
+/** CUTTER_ON: Turn cutter on. 0 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_cutter_on_args {
+    char unused_; /**< no arguments (C needs a member) */
+};
+
+/** CUTTER_OFF: Turn cutter off. 0 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_cutter_off_args {
+    char unused_; /**< no arguments (C needs a member) */
+};
+
+/** GUIDE: Guide message. 32 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_guide_args {
+    char message[32 + 1]; /**< Message. [string(32), NUL-terminated copy; offset 0] */
+};
+
+/** FCPARMS: Force control parameters. 16 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_fcparms_args {
+    float nom_speed; /**< Nominal speed. [binary32; offset 0; unit m/s (metre per second (N11))] */
+    float max_speed; /**< Maximum speed. [binary32; offset 4; unit m/s (metre per second (N11))] */
+    float min_speed; /**< Minimum speed. [binary32; offset 8; unit m/s (metre per second (N11))] */
+    float max_force; /**< Maximum force. [binary32; offset 12; unit N (newton)] */
+};
+
+/** VERSION: Default layout (N8); the 16 listed bytes and 16 reserved bytes make up the declared 32. 32 argument bytes; versions 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_version_args {
+    char cutfile[8 + 1]; /**< Cutfile version. [string(8), NUL-terminated copy; offset 0] */
+    char format[8 + 1]; /**< Format version. [string(8), NUL-terminated copy; offset 8] */
+    uint8_t reserved[16]; /**< Not listed by 5.1; reserved to reach the declared 32 bytes (N8). [16 raw bytes; offset 16; reserved, kept verbatim] */
+};
+
+/** VERSION (implib): The 16 listed bytes only, as implib writes them (N8); accepted under the implib profile. 16 argument bytes; versions 2.x, 3.0, 4.0; accepted only under profile implib; clause 5.1. */
+struct cbf_version_implib_args {
+    char cutfile[8 + 1]; /**< Cutfile version. [string(8), NUL-terminated copy; offset 0] */
+    char format[8 + 1]; /**< Format version. [string(8), NUL-terminated copy; offset 8] */
+};
+
+/** COMMENT: Comment. 40 argument bytes; versions 1.x, 2.x, 3.0, 4.0; clause 5.1. */
+struct cbf_comment_args {
+    char text[40 + 1]; /**< Comment text. [string(40), NUL-terminated copy; offset 0] */
+};
+
+/** Decoded arguments of any layout; the record's layout says which member. */
+typedef union cbf_args {
+    struct cbf_checkpoint_args checkpoint;
+    struct cbf_checkpoint_v1_args checkpoint_v1;
+    struct cbf_cutter_args cutter;
+    struct cbf_cutter_v1_args cutter_v1;
+    struct cbf_orient_args orient;
+    struct cbf_orient5b_args orient5b;
+    struct cbf_phase_args phase;
+    struct cbf_enable_skip_args enable_skip;
+    struct cbf_startshape_args startshape;
+    struct cbf_endshape_args endshape;
+    struct cbf_decel_off_args decel_off;
+    struct cbf_decel_on_args decel_on;
+    struct cbf_point_args point;
+    struct cbf_line_args line;
+    struct cbf_line5b_args line5b;
+    struct cbf_arc_args arc;
+    struct cbf_arc5b_args arc5b;
+    struct cbf_circle_args circle;
+    struct cbf_circle5b_args circle5b;
+    struct cbf_helix_args helix;
+    struct cbf_helix5b_args helix5b;
+    struct cbf_speed_args speed;
+    struct cbf_accel_args accel;
+    struct cbf_cutter_on_args cutter_on;
+    struct cbf_cutter_off_args cutter_off;
+    struct cbf_guide_args guide;
+    struct cbf_fcparms_args fcparms;
+    struct cbf_version_args version;
+    struct cbf_version_implib_args version_implib;
+    struct cbf_comment_args comment;
+} cbf_args;
+
+/** One record, as cbf_next_record gives it. */
+typedef struct cbf_record {
+    size_t index;          /**< 0-based record index */
+    size_t offset;         /**< file offset of the record */
+    cbf_record_head head;  /**< the head fields as stored */
+    const uint8_t *args;   /**< the argument bytes, inside the caller's buffer */
+    size_t nargs;          /**< number of argument bytes (nb) */
+    int command;           /**< enum cbf_command (the code), or CBF_CMD__UNKNOWN */
+    int layout;            /**< enum cbf_layout used for `decoded`, or CBF_LAYOUT__NONE */
+    cbf_args decoded;      /**< valid when layout != CBF_LAYOUT__NONE */
+} cbf_record;
+
+/** Record iterator over a caller's buffer (framing by nb from the header to EOF, D1). */
+typedef struct cbf_reader {
+    const uint8_t *buf;
+    size_t len;
+    size_t pos;            /**< offset of the next record */
+    size_t index;          /**< index of the next record */
+    cbf_header header;
+    int eff_version;       /**< the version whose tables are used */
+    size_t trailing;       /**< after the end: number of trailing bytes at pos */
+} cbf_reader;
+
+/** Describes a header field, record head field or argument (for generic consumers). */
+typedef struct cbf_field_info {
+    const char *name;
+    const char *unit;      /**< NULL when none */
+    unsigned char kind;    /**< enum cbf_field_kind */
+    unsigned char role;    /**< private role number */
+    unsigned char flags;   /**< CBF_FIELD_RESERVED | CBF_FIELD_TEXT | CBF_FIELD_MAGIC */
+    unsigned char checksum;/**< private checksum tag, 0 when none */
+    unsigned short offset; /**< byte offset in the header, record head or arguments */
+    unsigned short elem;   /**< element size */
+    unsigned short count;  /**< number of elements (3 for a vector) */
+    size_t member;         /**< offsetof in the struct */
+    uint32_t magic;        /**< the fixed value when flags has CBF_FIELD_MAGIC */
+} cbf_field_info;
+#define CBF_FIELD_RESERVED 1u
+#define CBF_FIELD_TEXT 2u
+#define CBF_FIELD_MAGIC 4u
+
+/** Writer state for cbf_encode_*: the file is built in the caller's buffer. */
+typedef struct cbf_writer {
+    uint8_t *buf;
+    size_t cap;
+    size_t len;
+    size_t records_end;    /**< end of the last record (before trailing bytes) */
+    unsigned long count;   /**< records written */
+    int version;           /**< enum cbf_version of the header, or CBF_V__UNKNOWN */
+    int eff_version;
+    int error;             /**< first error, sticky */
+} cbf_writer;
+
+/** A finding of cbf_validate. */
+typedef struct cbf_finding {
+    const char *check;     /**< a CBF_CHECK_* id */
+    int severity;          /**< enum cbf_severity */
+    long record;           /**< 0-based record index, or -1 for the header and the file */
+    size_t offset;         /**< file offset of the field concerned */
+    const char *message;   /**< for people; valid during the callback only */
+} cbf_finding;
+
+typedef void (*cbf_finding_fn)(void *user, const cbf_finding *finding);
+
+/** One entry of the robot's cutter table (6.1.2). */
+typedef struct cbf_cutter {
+    const char *name;
+    double length;
+    double radius;
+} cbf_cutter;
+
+typedef struct cbf_options {
+    int profile;               /**< enum cbf_profile */
+    const char *part_number;   /**< 6.1.1 input, or NULL */
+    const cbf_cutter *cutters; /**< 6.1.2 input, or NULL (no table given) */
+    size_t ncutters;
+} cbf_options;
+
+/* ================================================================ prototypes */
+
+const char *cbf_strerror(int err);
+/** Name of a command code, or NULL when the code is unknown. */
+const char *cbf_command_name(int code);
+/** 1 when the command has a layout in the version, else 0. */
+int cbf_command_available(int code, int version);
+/** enum cbf_version for a version field, or CBF_V__UNKNOWN. */
+int cbf_version_find(unsigned major, unsigned minor);
+const char *cbf_version_name(int version);
+int cbf_version_writable(int version);
+/** enum cbf_profile for a name, or CBF_ERR_ARGUMENT. */
+int cbf_profile_find(const char *name);
+const char *cbf_layout_command_name(int layout);
+const char *cbf_layout_variant(int layout);
+int cbf_layout_code(int layout);
+long cbf_layout_size(int layout);
+/** Field tables: number of fields, *out set to the first. */
+size_t cbf_layout_fields(int layout, const cbf_field_info **out);
+size_t cbf_header_fields(int header_layout, const cbf_field_info **out);
+size_t cbf_record_fields(const cbf_field_info **out);
+/** Field values in a byte image (header, record head or argument bytes): */
+uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);
+float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i);
+uint32_t cbf_float_bits(float f);
+/** Field values in a struct (cbf_record_head, header or argument struct) by member offset. */
+uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj);
+void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v);
+/** Header layout of a version (the fallback's for CBF_V__UNKNOWN). */
+int cbf_version_header_layout(int version);
+/** Decode candidates of a code in a version, in order (PROTOCOL.md): the
+ *  version's own layouts, else every layout newest first. Returns the number written. */
+int cbf_args_candidates(int code, int version, int *out, int cap);
+/** Layout that decodes nb argument bytes of a code in a version (PROTOCOL.md), or CBF_LAYOUT__NONE. */
+int cbf_args_layout(int code, int version, size_t nb);
+
+/** Decode the header: returns CBF_HEADER_SIZE or CBF_ERR_TRUNCATED_HEADER. */
+long cbf_header_decode(const uint8_t *buf, size_t len, cbf_header *out);
+/** A zeroed header of a version with its magic numbers set. */
+int cbf_header_init(cbf_header *h, int version);
+/** Write the header fields (as stored in h) to out: returns CBF_HEADER_SIZE or an error. */
+long cbf_header_encode(const cbf_header *h, uint8_t *out, size_t cap);
+
+/** Start iterating: decodes the header. CBF_OK or CBF_ERR_TRUNCATED_HEADER. */
+int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len);
+/** Next record: 1 and *rec filled; 0 at the end (r->trailing bytes remain at r->pos);
+ *  CBF_ERR_TRUNCATED_RECORD when the last record is cut before the header count is reached. */
+int cbf_next_record(cbf_reader *r, cbf_record *rec);
+
+/** Decode argument bytes with a layout: returns the layout size or an error. */
+long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out);
+/** Encode a layout's struct into bytes: returns the layout size or an error. */
+long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap);
+/** Checksum of argument bytes, as the spec computes the record's argument checksum. */
+uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
+
+/** Begin a file in buf with the header h (its fields as given). */
+int cbf_encode_begin(cbf_writer *w, uint8_t *buf, size_t cap, const cbf_header *h);
+/** Append a record; fills sequence (the index), the code copy, nb, reserved 0 and the argument checksum. */
+int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs);
+/** Append a record with every head field as given in head (nb must equal nargs). */
+int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const uint8_t *args, size_t nargs);
+/** Append raw bytes (trailing bytes of a faulty file). */
+int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
+/** Finish: with fill != 0 set the count, the magic numbers and the checksums
+ *  in the spec's fill order (the file checksum with the profile's coverage).
+ *  Returns the file size or the writer's first error. */
+long cbf_encode_end(cbf_writer *w, int profile, int fill);
+int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
+int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
+int cbf_encode_cutter(cbf_writer *w, const struct cbf_cutter_args *args);
+int cbf_encode_cutter_v1(cbf_writer *w, const struct cbf_cutter_v1_args *args);
+int cbf_encode_orient(cbf_writer *w, const struct cbf_orient_args *args);
+int cbf_encode_orient5b(cbf_writer *w, const struct cbf_orient5b_args *args);
+int cbf_encode_phase(cbf_writer *w, const struct cbf_phase_args *args);
+int cbf_encode_enable_skip(cbf_writer *w, const struct cbf_enable_skip_args *args);
+int cbf_encode_startshape(cbf_writer *w, const struct cbf_startshape_args *args);
+int cbf_encode_endshape(cbf_writer *w, const struct cbf_endshape_args *args);
+int cbf_encode_decel_off(cbf_writer *w, const struct cbf_decel_off_args *args);
+int cbf_encode_decel_on(cbf_writer *w, const struct cbf_decel_on_args *args);
+int cbf_encode_point(cbf_writer *w, const struct cbf_point_args *args);
+int cbf_encode_line(cbf_writer *w, const struct cbf_line_args *args);
+int cbf_encode_line5b(cbf_writer *w, const struct cbf_line5b_args *args);
+int cbf_encode_arc(cbf_writer *w, const struct cbf_arc_args *args);
+int cbf_encode_arc5b(cbf_writer *w, const struct cbf_arc5b_args *args);
+int cbf_encode_circle(cbf_writer *w, const struct cbf_circle_args *args);
+int cbf_encode_circle5b(cbf_writer *w, const struct cbf_circle5b_args *args);
+int cbf_encode_helix(cbf_writer *w, const struct cbf_helix_args *args);
+int cbf_encode_helix5b(cbf_writer *w, const struct cbf_helix5b_args *args);
+int cbf_encode_speed(cbf_writer *w, const struct cbf_speed_args *args);
+int cbf_encode_accel(cbf_writer *w, const struct cbf_accel_args *args);
+int cbf_encode_cutter_on(cbf_writer *w, const struct cbf_cutter_on_args *args);
+int cbf_encode_cutter_off(cbf_writer *w, const struct cbf_cutter_off_args *args);
+int cbf_encode_guide(cbf_writer *w, const struct cbf_guide_args *args);
+int cbf_encode_fcparms(cbf_writer *w, const struct cbf_fcparms_args *args);
+int cbf_encode_version(cbf_writer *w, const struct cbf_version_args *args);
+int cbf_encode_version_implib(cbf_writer *w, const struct cbf_version_implib_args *args);
+int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args);
+
+/** Run every check of the spec; each finding goes to fn. Returns the number
+ *  of error-severity findings, or CBF_ERR_ARGUMENT. */
+long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* CBF_H */
+
+/* ============================================================ implementation */
+#ifdef CBF_IMPLEMENTATION
+#ifndef CBF_IMPLEMENTATION_DONE
+#define CBF_IMPLEMENTATION_DONE
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* binary32 goes through uint32_t with memcpy: the sizes must agree. */
+typedef char cbf__assert_float_size[(sizeof(float) == sizeof(uint32_t)) ? 1 : -1];
+typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define CBF__PRINTF(f, a)
+#endif
+
+/* ---- the model's vocabulary, numbered --------------------------------- */
+enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
+enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC32 };
+enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS };
+enum { CBF__MOTION_NONE = 0, CBF__MOTION_POINT, CBF__MOTION_LINE, CBF__MOTION_CIRCLE, CBF__MOTION_HELIX };
+enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M__COUNT };
+enum { CBF__ORIENT_NONE = 0, CBF__ORIENT_SET, CBF__ORIENT_PATH };
+enum { CBF__O_START = 0, CBF__O_END = 1, CBF__O__COUNT };
+enum { CBF__SHAPE_NONE = 0, CBF__SHAPE_START, CBF__SHAPE_END };
+enum { CBF__S_NAME = 0, CBF__S_COUNT = 1, CBF__S__COUNT };
+enum { CBF__C_NAME = 0, CBF__C_LENGTH = 1, CBF__C_RADIUS = 2, CBF__C__COUNT };
+enum {
+    CBF__KIND_NONE = 0,
+    CBF__KIND_TRUNCATED_HEADER,
+    CBF__KIND_TRUNCATED_RECORD,
+    CBF__KIND_PART_NUMBER,
+    CBF__KIND_CUTTER_TABLE,
+    CBF__KIND_FILE_CHECKSUM,
+    CBF__KIND_COMMAND_COUNT,
+    CBF__KIND_HEADER_CHECKSUM,
+    CBF__KIND_MAGIC,
+    CBF__KIND_SEQUENCE,
+    CBF__KIND_CODE_COPY,
+    CBF__KIND_ARG_SIZE,
+    CBF__KIND_ARG_CHECKSUM,
+    CBF__KIND_CONTINUITY,
+    CBF__KIND_AVAILABILITY,
+    CBF__KIND_VERSION,
+    CBF__KIND_UNKNOWN_CODE,
+    CBF__KIND_TRAILING,
+    CBF__KIND_RESERVED_BYTE,
+    CBF__KIND_STRING_TAIL,
+    CBF__KIND_STRING_ASCII,
+    CBF__KIND_FINITE,
+    CBF__KIND_POSITIVE,
+    CBF__KIND_NONZERO_VECTOR,
+    CBF__KIND_RANGE,
+    CBF__KIND_NONDECREASING,
+    CBF__KIND_ORDERED,
+    CBF__KIND_ORIENTATION,
+    CBF__KIND_SHAPE
+};
+#define CBF__F_RESERVED CBF_FIELD_RESERVED
+#define CBF__F_TEXT CBF_FIELD_TEXT
+#define CBF__F_MAGIC CBF_FIELD_MAGIC
+#define CBF__K_UINT CBF_KIND_UINT
+#define CBF__K_FLOAT CBF_KIND_FLOAT
+#define CBF__K_STRING CBF_KIND_STRING
+#define CBF__K_BYTES CBF_KIND_BYTES
+#define CBF__VBIT(v) CBF_VERSION_BIT(v)
+#define CBF__PBIT(p) (1u << (p))
+#define CBF__PAD 0u
+#define CBF__NVERSIONS 4
+#define CBF__NCOMMANDS 27
+#define CBF__NCHECKS 31
+#define CBF__NTARGETS 10
+#define CBF__MAX_CANDIDATES 2
+#define CBF__MAX_COVERAGES 2
+#define CBF__PI 3.14159265358979323846
+
+/* ---- the spec as tables ------------------------------------------------- */
+typedef struct cbf__version {
+    const char *id;
+    int major, minor; /* minor -1: any */
+    int header;
+    int writable;
+} cbf__version;
+
+static const cbf__version cbf__versions[CBF__NVERSIONS] = {
+    { "1.x", 1, -1, 1, 0 },
+    { "2.x", 2, -1, 0, 0 },
+    { "3.0", 3, 0, 0, 1 },
+    { "4.0", 4, 0, 0, 1 },
+};
+
+static const cbf_field_info cbf__header_v2_fields[10] = {
+    { "start_pattern", NULL, CBF__K_UINT, CBF_ROLE_START_PATTERN, CBF__F_MAGIC, CBF__CK_NONE, 0, 4, 1, offsetof(struct cbf_header_v2, start_pattern), 0x53A1B792u },
+    { "file_checksum", NULL, CBF__K_UINT, CBF_ROLE_CHECKSUM, 0, CBF__CK_FILE, 4, 4, 1, offsetof(struct cbf_header_v2, file_checksum), 0u },
+    { "header_checksum", NULL, CBF__K_UINT, CBF_ROLE_CHECKSUM, 0, CBF__CK_HEADER, 8, 2, 1, offsetof(struct cbf_header_v2, header_checksum), 0u },
+    { "reserved_ecc", NULL, CBF__K_BYTES, CBF_ROLE_RESERVED, 0, CBF__CK_NONE, 10, 6, 1, offsetof(struct cbf_header_v2, reserved_ecc), 0u },
+    { "version_major", NULL, CBF__K_UINT, CBF_ROLE_VERSION_MAJOR, 0, CBF__CK_NONE, 16, 1, 1, offsetof(struct cbf_header_v2, version_major), 0u },
+    { "version_minor", NULL, CBF__K_UINT, CBF_ROLE_VERSION_MINOR, 0, CBF__CK_NONE, 17, 1, 1, offsetof(struct cbf_header_v2, version_minor), 0u },
+    { "implant_descriptor", NULL, CBF__K_STRING, CBF_ROLE_IMPLANT_DESCRIPTOR, 0, CBF__CK_NONE, 18, 70, 1, offsetof(struct cbf_header_v2, implant_descriptor), 0u },
+    { "configuration_descriptor", NULL, CBF__K_STRING, CBF_ROLE_CONFIGURATION_DESCRIPTOR, 0, CBF__CK_NONE, 88, 34, 1, offsetof(struct cbf_header_v2, configuration_descriptor), 0u },
+    { "command_count", NULL, CBF__K_UINT, CBF_ROLE_COMMAND_COUNT, 0, CBF__CK_NONE, 122, 2, 1, offsetof(struct cbf_header_v2, command_count), 0u },
+    { "end_pattern", NULL, CBF__K_UINT, CBF_ROLE_END_PATTERN, CBF__F_MAGIC, CBF__CK_NONE, 124, 4, 1, offsetof(struct cbf_header_v2, end_pattern), 0xAC5E486Du },
+};
+static const cbf_field_info cbf__header_v1_fields[10] = {
+    { "start_pattern", NULL, CBF__K_UINT, CBF_ROLE_START_PATTERN, CBF__F_MAGIC, CBF__CK_NONE, 0, 4, 1, offsetof(struct cbf_header_v1, start_pattern), 0x53A1B792u },
+    { "file_checksum", NULL, CBF__K_UINT, CBF_ROLE_CHECKSUM, 0, CBF__CK_FILE, 4, 4, 1, offsetof(struct cbf_header_v1, file_checksum), 0u },
+    { "header_checksum", NULL, CBF__K_UINT, CBF_ROLE_CHECKSUM, 0, CBF__CK_HEADER, 8, 2, 1, offsetof(struct cbf_header_v1, header_checksum), 0u },
+    { "reserved_ecc", NULL, CBF__K_BYTES, CBF_ROLE_RESERVED, 0, CBF__CK_NONE, 10, 6, 1, offsetof(struct cbf_header_v1, reserved_ecc), 0u },
+    { "version_major", NULL, CBF__K_UINT, CBF_ROLE_VERSION_MAJOR, 0, CBF__CK_NONE, 16, 1, 1, offsetof(struct cbf_header_v1, version_major), 0u },
+    { "version_minor", NULL, CBF__K_UINT, CBF_ROLE_VERSION_MINOR, 0, CBF__CK_NONE, 17, 1, 1, offsetof(struct cbf_header_v1, version_minor), 0u },
+    { "implant_descriptor", NULL, CBF__K_STRING, CBF_ROLE_IMPLANT_DESCRIPTOR, 0, CBF__CK_NONE, 18, 80, 1, offsetof(struct cbf_header_v1, implant_descriptor), 0u },
+    { "reserved_98", NULL, CBF__K_BYTES, CBF_ROLE_RESERVED, 0, CBF__CK_NONE, 98, 24, 1, offsetof(struct cbf_header_v1, reserved_98), 0u },
+    { "command_count", NULL, CBF__K_UINT, CBF_ROLE_COMMAND_COUNT, 0, CBF__CK_NONE, 122, 2, 1, offsetof(struct cbf_header_v1, command_count), 0u },
+    { "end_pattern", NULL, CBF__K_UINT, CBF_ROLE_END_PATTERN, CBF__F_MAGIC, CBF__CK_NONE, 124, 4, 1, offsetof(struct cbf_header_v1, end_pattern), 0xAC5E486Du },
+};
+
+typedef struct cbf__header_layout {
+    const cbf_field_info *fields;
+    size_t nfields;
+    size_t size;
+    size_t member; /* offsetof in cbf_header */
+} cbf__header_layout;
+
+static const cbf__header_layout cbf__headers[2] = {
+    { cbf__header_v2_fields, 10, 128, offsetof(cbf_header, u.v2) },
+    { cbf__header_v1_fields, 10, 128, offsetof(cbf_header, u.v1) },
+};
+
+static const cbf_field_info cbf__record_fields[6] = {
+    { "sequence", NULL, CBF__K_UINT, CBF_ROLE_SEQUENCE, 0, CBF__CK_NONE, 0, 2, 1, offsetof(struct cbf_record_head, sequence), 0u },
+    { "code", NULL, CBF__K_UINT, CBF_ROLE_CODE, 0, CBF__CK_NONE, 2, 1, 1, offsetof(struct cbf_record_head, code), 0u },
+    { "code_copy", NULL, CBF__K_UINT, CBF_ROLE_CODE_COPY, 0, CBF__CK_NONE, 3, 1, 1, offsetof(struct cbf_record_head, code_copy), 0u },
+    { "arg_size", NULL, CBF__K_UINT, CBF_ROLE_ARG_SIZE, 0, CBF__CK_NONE, 4, 1, 1, offsetof(struct cbf_record_head, arg_size), 0u },
+    { "reserved", NULL, CBF__K_UINT, CBF_ROLE_RESERVED, 0, CBF__CK_NONE, 5, 1, 1, offsetof(struct cbf_record_head, reserved), 0u },
+    { "arg_checksum", NULL, CBF__K_UINT, CBF_ROLE_CHECKSUM, 0, CBF__CK_ARGS, 6, 2, 1, offsetof(struct cbf_record_head, arg_checksum), 0u },
+};
+#define CBF__NRECORD_FIELDS 6
+
+static const cbf_field_info cbf__args[74] = {
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_checkpoint_args, name), 0u },
+    { "recovery_point", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 16, 4, 3, offsetof(struct cbf_checkpoint_args, recovery_point), 0u },
+    { "completion", "percent", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 28, 4, 1, offsetof(struct cbf_checkpoint_args, completion), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_checkpoint_v1_args, name), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_cutter_args, name), 0u },
+    { "length", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 16, 4, 1, offsetof(struct cbf_cutter_args, length), 0u },
+    { "radius", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 20, 4, 1, offsetof(struct cbf_cutter_args, radius), 0u },
+    { "head_length", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 1, offsetof(struct cbf_cutter_args, head_length), 0u },
+    { "reserved", NULL, CBF__K_BYTES, CBF_ROLE_NONE, CBF__F_RESERVED, CBF__CK_NONE, 28, 4, 1, offsetof(struct cbf_cutter_args, reserved), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_cutter_v1_args, name), 0u },
+    { "length", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 16, 4, 1, offsetof(struct cbf_cutter_v1_args, length), 0u },
+    { "radius", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 20, 4, 1, offsetof(struct cbf_cutter_v1_args, radius), 0u },
+    { "reserved", NULL, CBF__K_BYTES, CBF_ROLE_NONE, CBF__F_RESERVED, CBF__CK_NONE, 24, 8, 1, offsetof(struct cbf_cutter_v1_args, reserved), 0u },
+    { "approach", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_orient_args, approach), 0u },
+    { "reserved", NULL, CBF__K_BYTES, CBF_ROLE_NONE, CBF__F_RESERVED, CBF__CK_NONE, 12, 12, 1, offsetof(struct cbf_orient_args, reserved), 0u },
+    { "start_approach", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_orient5b_args, start_approach), 0u },
+    { "end_approach", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_orient5b_args, end_approach), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_phase_args, name), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 16, 1, offsetof(struct cbf_enable_skip_args, name), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 5, 1, offsetof(struct cbf_startshape_args, name), 0u },
+    { "moves", "count", CBF__K_UINT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 5, 1, 1, offsetof(struct cbf_startshape_args, moves), 0u },
+    { "name", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 5, 1, offsetof(struct cbf_endshape_args, name), 0u },
+    { "moves", "count", CBF__K_UINT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 5, 1, 1, offsetof(struct cbf_endshape_args, moves), 0u },
+    { "point", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_point_args, point), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_line_args, start), 0u },
+    { "end", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_line_args, end), 0u },
+    { "start_pos", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_line5b_args, start_pos), 0u },
+    { "end_pos", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_line5b_args, end_pos), 0u },
+    { "start_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_line5b_args, start_orient), 0u },
+    { "end_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 3, offsetof(struct cbf_line5b_args, end_orient), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_arc_args, start), 0u },
+    { "middle", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_arc_args, middle), 0u },
+    { "end", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_arc_args, end), 0u },
+    { "start_pos", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_arc5b_args, start_pos), 0u },
+    { "mid_pos", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_arc5b_args, mid_pos), 0u },
+    { "end_pos", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_arc5b_args, end_pos), 0u },
+    { "start_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 3, offsetof(struct cbf_arc5b_args, start_orient), 0u },
+    { "end_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 48, 4, 3, offsetof(struct cbf_arc5b_args, end_orient), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_circle_args, start), 0u },
+    { "center", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_circle_args, center), 0u },
+    { "normal", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_circle_args, normal), 0u },
+    { "ndegrees", "deg", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 1, offsetof(struct cbf_circle_args, ndegrees), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_circle5b_args, start), 0u },
+    { "center", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_circle5b_args, center), 0u },
+    { "normal", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_circle5b_args, normal), 0u },
+    { "ndegrees", "deg", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 1, offsetof(struct cbf_circle5b_args, ndegrees), 0u },
+    { "start_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 40, 4, 3, offsetof(struct cbf_circle5b_args, start_orient), 0u },
+    { "end_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 52, 4, 3, offsetof(struct cbf_circle5b_args, end_orient), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_helix_args, start), 0u },
+    { "center", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_helix_args, center), 0u },
+    { "normal", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_helix_args, normal), 0u },
+    { "ndegrees", "deg", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 1, offsetof(struct cbf_helix_args, ndegrees), 0u },
+    { "length", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 40, 4, 1, offsetof(struct cbf_helix_args, length), 0u },
+    { "start", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 3, offsetof(struct cbf_helix5b_args, start), 0u },
+    { "center", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 3, offsetof(struct cbf_helix5b_args, center), 0u },
+    { "normal", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 24, 4, 3, offsetof(struct cbf_helix5b_args, normal), 0u },
+    { "ndegrees", "deg", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 36, 4, 1, offsetof(struct cbf_helix5b_args, ndegrees), 0u },
+    { "length", "mm", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 40, 4, 1, offsetof(struct cbf_helix5b_args, length), 0u },
+    { "start_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 44, 4, 3, offsetof(struct cbf_helix5b_args, start_orient), 0u },
+    { "end_orient", NULL, CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 56, 4, 3, offsetof(struct cbf_helix5b_args, end_orient), 0u },
+    { "speed", "m/s", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 1, offsetof(struct cbf_speed_args, speed), 0u },
+    { "accel", "m/s^2", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 1, offsetof(struct cbf_accel_args, accel), 0u },
+    { "decel", "m/s^2", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 4, 4, 1, offsetof(struct cbf_accel_args, decel), 0u },
+    { "message", NULL, CBF__K_STRING, CBF_ROLE_NONE, CBF__F_TEXT, CBF__CK_NONE, 0, 32, 1, offsetof(struct cbf_guide_args, message), 0u },
+    { "nom_speed", "m/s", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 4, 1, offsetof(struct cbf_fcparms_args, nom_speed), 0u },
+    { "max_speed", "m/s", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 4, 4, 1, offsetof(struct cbf_fcparms_args, max_speed), 0u },
+    { "min_speed", "m/s", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 8, 4, 1, offsetof(struct cbf_fcparms_args, min_speed), 0u },
+    { "max_force", "N", CBF__K_FLOAT, CBF_ROLE_NONE, 0, CBF__CK_NONE, 12, 4, 1, offsetof(struct cbf_fcparms_args, max_force), 0u },
+    { "cutfile", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 8, 1, offsetof(struct cbf_version_args, cutfile), 0u },
+    { "format", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 8, 8, 1, offsetof(struct cbf_version_args, format), 0u },
+    { "reserved", NULL, CBF__K_BYTES, CBF_ROLE_NONE, CBF__F_RESERVED, CBF__CK_NONE, 16, 16, 1, offsetof(struct cbf_version_args, reserved), 0u },
+    { "cutfile", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 0, 8, 1, offsetof(struct cbf_version_implib_args, cutfile), 0u },
+    { "format", NULL, CBF__K_STRING, CBF_ROLE_NONE, 0, CBF__CK_NONE, 8, 8, 1, offsetof(struct cbf_version_implib_args, format), 0u },
+    { "text", NULL, CBF__K_STRING, CBF_ROLE_NONE, CBF__F_TEXT, CBF__CK_NONE, 0, 40, 1, offsetof(struct cbf_comment_args, text), 0u },
+};
+
+typedef struct cbf__layout {
+    int command;        /* index into cbf__commands */
+    const char *variant;
+    unsigned versions;  /* CBF__VBIT mask */
+    unsigned profiles;  /* CBF__PBIT mask; 0: every profile */
+    size_t size;
+    size_t first_arg, nargs;
+    size_t member;      /* offsetof in cbf_args (always 0: a union) */
+    signed char motion[CBF__M__COUNT];
+    signed char orient[CBF__O__COUNT];
+    signed char shape[CBF__S__COUNT];
+    signed char cutter[CBF__C__COUNT];
+    signed char progress;
+} cbf__layout;
+
+static const cbf__layout cbf__layouts[30] = {
+    { 0, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 0, 3, offsetof(cbf_args, checkpoint),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2 }, /* CHECKPOINT */
+    { 0, "v1", CBF__VBIT(CBF_V1_X), 0, 16, 3, 1, offsetof(cbf_args, checkpoint_v1),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CHECKPOINT_V1 */
+    { 1, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 4, 5, offsetof(cbf_args, cutter),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1 }, /* CUTTER */
+    { 1, "v1", CBF__VBIT(CBF_V1_X), 0, 32, 9, 4, offsetof(cbf_args, cutter_v1),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1 }, /* CUTTER_V1 */
+    { 2, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 13, 2, offsetof(cbf_args, orient),
+      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ORIENT */
+    { 3, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 15, 2, offsetof(cbf_args, orient5b),
+      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ORIENT5B */
+    { 4, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 17, 1, offsetof(cbf_args, phase),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* PHASE */
+    { 5, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 18, 1, offsetof(cbf_args, enable_skip),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ENABLE_SKIP */
+    { 6, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 19, 2, offsetof(cbf_args, startshape),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1 }, /* STARTSHAPE */
+    { 7, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 21, 2, offsetof(cbf_args, endshape),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1 }, /* ENDSHAPE */
+    { 8, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_off),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* DECEL_OFF */
+    { 9, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_on),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* DECEL_ON */
+    { 10, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 12, 23, 1, offsetof(cbf_args, point),
+      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* POINT */
+    { 11, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 24, 2, offsetof(cbf_args, line),
+      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* LINE */
+    { 12, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 48, 26, 4, offsetof(cbf_args, line5b),
+      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* LINE5B */
+    { 13, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 36, 30, 3, offsetof(cbf_args, arc),
+      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ARC */
+    { 14, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 60, 33, 5, offsetof(cbf_args, arc5b),
+      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ARC5B */
+    { 15, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 40, 38, 4, offsetof(cbf_args, circle),
+      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CIRCLE */
+    { 16, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 64, 42, 6, offsetof(cbf_args, circle5b),
+      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CIRCLE5B */
+    { 17, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 44, 48, 5, offsetof(cbf_args, helix),
+      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* HELIX */
+    { 18, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 68, 53, 7, offsetof(cbf_args, helix5b),
+      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* HELIX5B */
+    { 19, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 4, 60, 1, offsetof(cbf_args, speed),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* SPEED */
+    { 20, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 8, 61, 2, offsetof(cbf_args, accel),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ACCEL */
+    { 21, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_on),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CUTTER_ON */
+    { 22, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_off),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CUTTER_OFF */
+    { 23, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 63, 1, offsetof(cbf_args, guide),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* GUIDE */
+    { 24, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 64, 4, offsetof(cbf_args, fcparms),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* FCPARMS */
+    { 25, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 68, 3, offsetof(cbf_args, version),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* VERSION */
+    { 25, "implib", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__PBIT(1), 16, 71, 2, offsetof(cbf_args, version_implib),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* VERSION_IMPLIB */
+    { 26, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 40, 73, 1, offsetof(cbf_args, comment),
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* COMMENT */
+};
+
+typedef struct cbf__command {
+    int code;
+    const char *name;
+    int first_layout, nlayouts;
+    unsigned versions;
+    int motion, orient, shape, cutter;
+    signed char candidates[CBF__NVERSIONS][CBF__MAX_CANDIDATES]; /* decode order per version, -1 ends */
+} cbf__command;
+
+static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
+    { 0x3C, "CHECKPOINT", 0, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } } },
+    { 0xA3, "CUTTER", 2, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 1,
+      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } } },
+    { 0x58, "ORIENT", 4, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_SET, CBF__SHAPE_NONE, 0,
+      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } } },
+    { 0x59, "ORIENT5B", 5, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
+      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } } },
+    { 0x21, "PHASE", 6, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } } },
+    { 0x22, "ENABLE_SKIP", 7, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } } },
+    { 0xC9, "STARTSHAPE", 8, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_START, 0,
+      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } } },
+    { 0x65, "ENDSHAPE", 9, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_END, 0,
+      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } } },
+    { 0x2B, "DECEL_OFF", 10, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } } },
+    { 0x4E, "DECEL_ON", 11, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } } },
+    { 0x33, "POINT", 12, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_POINT, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } } },
+    { 0xB6, "LINE", 13, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } } },
+    { 0xB7, "LINE5B", 14, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
+      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } } },
+    { 0x94, "ARC", 15, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } } },
+    { 0x95, "ARC5B", 16, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
+      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } } },
+    { 0x7A, "CIRCLE", 17, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } } },
+    { 0x7B, "CIRCLE5B", 18, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
+      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } } },
+    { 0xE2, "HELIX", 19, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } } },
+    { 0xE3, "HELIX5B", 20, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
+      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } } },
+    { 0x8B, "SPEED", 21, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } } },
+    { 0x47, "ACCEL", 22, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } } },
+    { 0xBB, "CUTTER_ON", 23, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } } },
+    { 0x66, "CUTTER_OFF", 24, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } } },
+    { 0x11, "GUIDE", 25, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } } },
+    { 0xFC, "FCPARMS", 26, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } } },
+    { 0x55, "VERSION", 27, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } } },
+    { 0x5A, "COMMENT", 29, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
+      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } } },
+};
+
+typedef struct cbf__segment {
+    int region;
+    size_t start;
+    long end;          /* -1: none */
+    unsigned exclude;  /* record head fields left out (bit = index in cbf__record_fields) */
+} cbf__segment;
+
+static const cbf__segment cbf__segments[5] = {
+    { CBF__REGION_ARGS, 0, -1, 0u },
+    { CBF__REGION_HEADER, 10, 128, 0u },
+    { CBF__REGION_FILE, 8, -1, 0u },
+    { CBF__REGION_HEADER, 8, 128, 0u },
+    { CBF__REGION_RECORDS, 0, -1, (1u << 0) },
+};
+
+typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
+static const cbf__coverage cbf__coverages[4] = {
+    { "args", 0, 1 }, /* The record's argument bytes; 0 when there are none. */
+    { "header", 1, 1 }, /* Header bytes 10..127. */
+    { "file", 2, 1 }, /* Every byte from offset 8 to the end of the file (4.2, "starting at byte 8"). */
+    { "file_implib", 3, 2 }, /* implib's writer, header bytes 8..127 plus every record without its two sequence-number bytes. */
+};
+
+typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+static const cbf__ckfield cbf__ckfields[3] = {
+    { CBF__CK_ARGS, CBF__ALG_SUM, 0 },
+    { CBF__CK_HEADER, CBF__ALG_SUM, 1 },
+    { CBF__CK_FILE, CBF__ALG_SUM, 2 },
+};
+static const int cbf__fill_order[3] = { CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
+
+typedef struct cbf__profile {
+    const char *id;
+    int file[CBF__MAX_COVERAGES]; /* coverages accepted for the file checksum, -1 ends */
+    int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
+} cbf__profile;
+static const cbf__profile cbf__profiles[2] = {
+    { "default", { 2, -1 }, { 3, -1 } },
+    { "implib", { 3, 2 }, { -1, -1 } },
+};
+
+typedef struct cbf__target { int command; size_t first, n; } cbf__target;
+static const cbf__target cbf__targets[10] = {
+    { 19, 0, 1 }, /* SPEED speed */
+    { 20, 1, 2 }, /* ACCEL accel decel */
+    { 1, 3, 2 }, /* CUTTER length radius */
+    { 15, 5, 1 }, /* CIRCLE normal */
+    { 16, 6, 1 }, /* CIRCLE5B normal */
+    { 17, 7, 1 }, /* HELIX normal */
+    { 18, 8, 1 }, /* HELIX5B normal */
+    { 0, 9, 1 }, /* CHECKPOINT completion */
+    { 0, 10, 1 }, /* CHECKPOINT completion */
+    { 24, 11, 3 }, /* FCPARMS min_speed nom_speed max_speed */
+};
+static const char *const cbf__target_args[14] = {
+    "speed",
+    "accel",
+    "decel",
+    "length",
+    "radius",
+    "normal",
+    "normal",
+    "normal",
+    "normal",
+    "completion",
+    "completion",
+    "min_speed",
+    "nom_speed",
+    "max_speed",
+};
+
+typedef struct cbf__check {
+    const char *id;
+    int kind;
+    int severity;
+    unsigned versions;
+    size_t first_target, ntargets;
+    int has_min; double min;
+    int has_max; double max;
+} cbf__check;
+
+static const cbf__check cbf__checks[CBF__NCHECKS] = {
+    /* 4.2 (clause 4.2): The file is shorter than the header. No other check runs. */
+    { CBF_CHECK_4_2, CBF__KIND_TRUNCATED_HEADER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 4.3 (clause 4.3): The bytes after the last complete record do not hold a whole record head or its nb argument bytes, and fewer complete records than the header count precede them. 6.2.2 is then not judged. The finding's record is the index the incomplete record would have had. */
+    { CBF_CHECK_4_3, CBF__KIND_TRUNCATED_RECORD, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.1.1 (clause 6.1.1): A part number is given and differs from the first whitespace-separated word of the implant descriptor. */
+    { CBF_CHECK_6_1_1, CBF__KIND_PART_NUMBER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.1.2 (clause 6.1.2): A cutter table is given, and a cutter's name is not in it, or its length or radius differs from the table by more than tolerances.cutter_mm. */
+    { CBF_CHECK_6_1_2, CBF__KIND_CUTTER_TABLE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.2.1 (clause 6.2.1): The stored file checksum matches none of the profile's file coverages. The message names a hint coverage that matches. */
+    { CBF_CHECK_6_2_1, CBF__KIND_FILE_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.2.2 (clause 6.2.2): The number of records differs from the header's command count (N6). */
+    { CBF_CHECK_6_2_2, CBF__KIND_COMMAND_COUNT, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.3.1 (clause 6.3.1): The stored header checksum differs from the sum over its coverage. */
+    { CBF_CHECK_6_3_1, CBF__KIND_HEADER_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.3.2 (clause 6.3.2): The start pattern or the end pattern differs from its value; one finding per field. */
+    { CBF_CHECK_6_3_2, CBF__KIND_MAGIC, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.4.1 (clause 6.4.1): Record i does not carry sequence number i modulo 65536. */
+    { CBF_CHECK_6_4_1, CBF__KIND_SEQUENCE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.4.2 (clause 6.4.2): The backup copy differs from the command code. */
+    { CBF_CHECK_6_4_2, CBF__KIND_CODE_COPY, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.4.3 (clause 6.4.3): A known command's nb is not the size of a layout for the file's version (for a command the version lacks, of any of its layouts) that the profile accepts. */
+    { CBF_CHECK_6_4_3, CBF__KIND_ARG_SIZE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.4.4 (clause 6.4.4): The stored argument checksum differs from the sum of the argument bytes. */
+    { CBF_CHECK_6_4_4, CBF__KIND_ARG_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 6.4.5 (clause 6.4.5): A motion command other than a point starts farther than tolerances.position_mm from the current position. POINT sets the current position; every motion command then moves it to its end point. Nothing is compared before the first motion command, and after a motion whose values are not finite or whose normal is zero. */
+    { CBF_CHECK_6_4_5, CBF__KIND_CONTINUITY, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* 7.2.3.1 (clause 7.2.3.1): A record's command has no layout for the file's version 4.0 (N9). */
+    { CBF_CHECK_7_2_3_1, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V4_0), 0, 0, 0, 0.0, 0, 0.0 },
+    /* 7.2.2.4 (clause 7.2.2.4): A record's command has no layout for the file's version 1.x (N10). */
+    { CBF_CHECK_7_2_2_4, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V1_X), 0, 0, 0, 0.0, 0, 0.0 },
+    /* version_supported (clause 7.1): The header's version matches no version of this spec; the file is read with fallback_version. */
+    { CBF_CHECK_VERSION_SUPPORTED, CBF__KIND_VERSION, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* unknown_command (clause 5.2) (N6): The command code is not in the command table. */
+    { CBF_CHECK_UNKNOWN_COMMAND, CBF__KIND_UNKNOWN_CODE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* trailing_bytes (N6): Bytes follow the last complete record that do not form a whole record, and at least as many complete records as the header count precede them. The finding's record is null. */
+    { CBF_CHECK_TRAILING_BYTES, CBF__KIND_TRAILING, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* reserved_nonzero (N7): The record head's reserved byte is not 0. */
+    { CBF_CHECK_RESERVED_NONZERO, CBF__KIND_RESERVED_BYTE, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* string_tail (N4): A string field of the header or of a record has a non-NUL byte after its first NUL; one finding per field. */
+    { CBF_CHECK_STRING_TAIL, CBF__KIND_STRING_TAIL, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* string_ascii (N4): A string field of the header or of a record has a byte outside 0x20..0x7E before its first NUL; one finding per field. */
+    { CBF_CHECK_STRING_ASCII, CBF__KIND_STRING_ASCII, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* non_finite (X1): A float argument is NaN or infinite; one finding per argument (a vector counts once). */
+    { CBF_CHECK_NON_FINITE, CBF__KIND_FINITE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* speed_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
+    { CBF_CHECK_SPEED_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 0, 1, 0, 0.0, 0, 0.0 },
+    /* accel_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
+    { CBF_CHECK_ACCEL_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 1, 1, 0, 0.0, 0, 0.0 },
+    /* cutter_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
+    { CBF_CHECK_CUTTER_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 2, 1, 0, 0.0, 0, 0.0 },
+    /* normal_nonzero (X1): All components of a finite target vector are zero (one finding per argument). */
+    { CBF_CHECK_NORMAL_NONZERO, CBF__KIND_NONZERO_VECTOR, 1, 0, 3, 4, 0, 0.0, 0, 0.0 },
+    /* checkpoint_range (X1): A finite target argument is below min or above max (one finding per argument). */
+    { CBF_CHECK_CHECKPOINT_RANGE, CBF__KIND_RANGE, 0, 0, 7, 1, 1, 0.0, 1, 100.0 },
+    /* checkpoint_falling (X1): A finite target argument is less than the same argument of the previous record of that command whose value was finite. */
+    { CBF_CHECK_CHECKPOINT_FALLING, CBF__KIND_NONDECREASING, 0, 0, 8, 1, 0, 0.0, 0, 0.0 },
+    /* fcparms_order (X1): The target arguments, all finite, are not in non-decreasing order. */
+    { CBF_CHECK_FCPARMS_ORDER, CBF__KIND_ORDERED, 0, 0, 9, 1, 0, 0.0, 0, 0.0 },
+    /* orientation_jump (X1): The angle between a path command's start orientation and the current orientation exceeds tolerances.orientation_deg. A set command sets the current orientation; a path command moves it to its end. Nothing is compared before the first orientation command, and after a zero-length or non-finite orientation. */
+    { CBF_CHECK_ORIENTATION_JUMP, CBF__KIND_ORIENTATION, 0, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    /* shape (X2): A STARTSHAPE inside an open shape, an ENDSHAPE without an open shape, an ENDSHAPE whose name or count differs from its STARTSHAPE, a shape whose number of motion commands differs from its count (at most one finding per ENDSHAPE, reported there), or a shape still open at the end of the file (reported at its STARTSHAPE). A STARTSHAPE inside an open shape opens a new shape. Motion commands are the records of commands with a motion role (POINT included). */
+    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 10, 0, 0, 0.0, 0, 0.0 },
+};
+
+static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
+static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
+static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
+
+/* ---- bytes -------------------------------------------------------------- */
+static uint32_t cbf__get_u(const uint8_t *p, unsigned n)
+{
+    uint32_t v = 0;
+    unsigned i;
+    for (i = 0; i < n; i++) {
+        v |= (uint32_t)p[i] << (8u * i);
+    }
+    return v;
+}
+
+static void cbf__put_u(uint8_t *p, uint32_t v, unsigned n)
+{
+    unsigned i;
+    for (i = 0; i < n; i++) {
+        p[i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
+    }
+}
+
+static float cbf__get_f4(const uint8_t *p)
+{
+    uint32_t u = cbf__get_u(p, 4);
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+static uint32_t cbf__f4_bits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static int cbf__bits_finite(uint32_t u) { return (u & 0x7F800000u) != 0x7F800000u; }
+
+/* The element i of a float field as double (binary32 widens exactly). */
+static double cbf__fget(const uint8_t *base, const cbf_field_info *f, unsigned i)
+{
+    return (double)cbf__get_f4(base + f->offset + 4u * i);
+}
+
+static int cbf__ffinite(const uint8_t *base, const cbf_field_info *f)
+{
+    unsigned i;
+    for (i = 0; i < f->count; i++)
+        if (!cbf__bits_finite(cbf__get_u(base + f->offset + 4u * i, 4)))
+            return 0;
+    return 1;
+}
+
+/* Load fields from bytes into a struct (byte-wise through memcpy). */
+static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src, unsigned char *dst)
+{
+    size_t k;
+    for (k = 0; k < n; k++) {
+        const cbf_field_info *f = &fields[k];
+        unsigned char *m = dst + f->member;
+        const uint8_t *s = src + f->offset;
+        size_t size = (size_t)f->elem * f->count;
+        unsigned i;
+        switch (f->kind) {
+        case CBF__K_UINT:
+            if (f->elem == 1) { uint8_t v = (uint8_t)cbf__get_u(s, 1); memcpy(m, &v, sizeof v); }
+            else if (f->elem == 2) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
+            else { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
+            break;
+        case CBF__K_FLOAT:
+            for (i = 0; i < f->count; i++) {
+                float v = cbf__get_f4(s + 4u * i);
+                memcpy(m + sizeof(float) * i, &v, sizeof v);
+            }
+            break;
+        case CBF__K_STRING:
+            memcpy(m, s, size);
+            m[size] = 0;
+            break;
+        default:
+            memcpy(m, s, size);
+            break;
+        }
+    }
+}
+
+/* Store fields from a struct into bytes. */
+static void cbf__store(const cbf_field_info *fields, size_t n, const unsigned char *src, uint8_t *dst)
+{
+    size_t k;
+    for (k = 0; k < n; k++) {
+        const cbf_field_info *f = &fields[k];
+        const unsigned char *m = src + f->member;
+        uint8_t *d = dst + f->offset;
+        size_t size = (size_t)f->elem * f->count;
+        unsigned i;
+        switch (f->kind) {
+        case CBF__K_UINT:
+            if (f->elem == 1) { uint8_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 1); }
+            else if (f->elem == 2) { uint16_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 2); }
+            else { uint32_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 4); }
+            break;
+        case CBF__K_FLOAT:
+            for (i = 0; i < f->count; i++) {
+                float v;
+                memcpy(&v, m + sizeof(float) * i, sizeof v);
+                cbf__put_u(d + 4u * i, cbf__f4_bits(v), 4);
+            }
+            break;
+        default:
+            memcpy(d, m, size);
+            break;
+        }
+    }
+}
+
+uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base)
+{
+    return (f && base && f->kind == CBF__K_UINT) ? cbf__get_u(base + f->offset, f->elem) : 0u;
+}
+
+float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    return (f && base && f->kind == CBF__K_FLOAT && i < f->count) ? cbf__get_f4(base + f->offset + 4u * i) : 0.0f;
+}
+
+uint32_t cbf_float_bits(float f) { return cbf__f4_bits(f); }
+
+uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj)
+{
+    const unsigned char *m;
+    if (!f || !obj || f->kind != CBF__K_UINT)
+        return 0u;
+    m = (const unsigned char *)obj + f->member;
+    if (f->elem == 1) { uint8_t x; memcpy(&x, m, 1); return x; }
+    if (f->elem == 2) { uint16_t x; memcpy(&x, m, 2); return x; }
+    { uint32_t x; memcpy(&x, m, 4); return x; }
+}
+
+void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
+{
+    unsigned char *m;
+    if (!f || !obj || f->kind != CBF__K_UINT)
+        return;
+    m = (unsigned char *)obj + f->member;
+    if (f->elem == 1) { uint8_t x = (uint8_t)v; memcpy(m, &x, 1); }
+    else if (f->elem == 2) { uint16_t x = (uint16_t)v; memcpy(m, &x, 2); }
+    else memcpy(m, &v, 4);
+}
+
+/* ---- look-ups ------------------------------------------------------------ */
+static int cbf__cmd_index(int code)
+{
+    int i;
+    for (i = 0; i < CBF__NCOMMANDS; i++)
+        if (cbf__commands[i].code == code)
+            return i;
+    return -1;
+}
+
+static const cbf_field_info *cbf__header_field_by_role(int layout, int role)
+{
+    size_t i;
+    for (i = 0; i < cbf__headers[layout].nfields; i++)
+        if (cbf__headers[layout].fields[i].role == role)
+            return &cbf__headers[layout].fields[i];
+    return NULL;
+}
+
+static const cbf_field_info *cbf__header_field_by_tag(int layout, int tag)
+{
+    size_t i;
+    for (i = 0; i < cbf__headers[layout].nfields; i++)
+        if (cbf__headers[layout].fields[i].checksum == tag)
+            return &cbf__headers[layout].fields[i];
+    return NULL;
+}
+
+static const cbf_field_info *cbf__record_field_by_role(int role)
+{
+    size_t i;
+    for (i = 0; i < CBF__NRECORD_FIELDS; i++)
+        if (cbf__record_fields[i].role == role)
+            return &cbf__record_fields[i];
+    return NULL;
+}
+
+static const cbf_field_info *cbf__record_field_by_tag(int tag)
+{
+    size_t i;
+    for (i = 0; i < CBF__NRECORD_FIELDS; i++)
+        if (cbf__record_fields[i].checksum == tag)
+            return &cbf__record_fields[i];
+    return NULL;
+}
+
+static uint32_t cbf__head_get(const uint8_t *rec, int role)
+{
+    const cbf_field_info *f = cbf__record_field_by_role(role);
+    return f ? cbf__get_u(rec + f->offset, f->elem) : 0u;
+}
+
+static const cbf__ckfield *cbf__ckfield_of(int tag)
+{
+    size_t i;
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++)
+        if (cbf__ckfields[i].tag == tag)
+            return &cbf__ckfields[i];
+    return NULL;
+}
+
+static const cbf_field_info *cbf__layout_arg(int layout, int i)
+{
+    if (i < 0)
+        return NULL;
+    return &cbf__args[cbf__layouts[layout].first_arg + (size_t)i];
+}
+
+static const cbf_field_info *cbf__layout_arg_named(int layout, const char *name)
+{
+    size_t i;
+    for (i = 0; i < cbf__layouts[layout].nargs; i++)
+        if (strcmp(cbf__args[cbf__layouts[layout].first_arg + i].name, name) == 0)
+            return &cbf__args[cbf__layouts[layout].first_arg + i];
+    return NULL;
+}
+
+const char *cbf_strerror(int err)
+{
+    switch (err) {
+    case CBF_OK: return "ok";
+    case CBF_ERR_TRUNCATED_HEADER: return "truncated_header";
+    case CBF_ERR_TRUNCATED_RECORD: return "truncated_record";
+    case CBF_ERR_BUFFER: return "buffer too small";
+    case CBF_ERR_ARGUMENT: return "bad argument";
+    case CBF_ERR_RANGE: return "value out of range";
+    case CBF_ERR_NOT_WRITABLE: return "not writable";
+    case CBF_ERR_INVALID: return "the result would not validate";
+    default: return "unknown error";
+    }
+}
+
+const char *cbf_command_name(int code)
+{
+    int i = cbf__cmd_index(code);
+    return i < 0 ? NULL : cbf__commands[i].name;
+}
+
+int cbf_command_available(int code, int version)
+{
+    int i = cbf__cmd_index(code);
+    if (i < 0 || version < 0 || version >= CBF__NVERSIONS)
+        return 0;
+    return (cbf__commands[i].versions & CBF__VBIT(version)) != 0u;
+}
+
+int cbf_version_find(unsigned major, unsigned minor)
+{
+    int i;
+    for (i = 0; i < CBF__NVERSIONS; i++)
+        if ((unsigned)cbf__versions[i].major == major
+            && (cbf__versions[i].minor < 0 || (unsigned)cbf__versions[i].minor == minor))
+            return i;
+    return CBF_V__UNKNOWN;
+}
+
+const char *cbf_version_name(int version)
+{
+    return (version >= 0 && version < CBF__NVERSIONS) ? cbf__versions[version].id : NULL;
+}
+
+int cbf_version_writable(int version)
+{
+    return (version >= 0 && version < CBF__NVERSIONS) ? cbf__versions[version].writable : 0;
+}
+
+int cbf_profile_find(const char *name)
+{
+    int i;
+    if (!name)
+        return CBF_ERR_ARGUMENT;
+    for (i = 0; i < CBF_PROFILE__COUNT; i++)
+        if (strcmp(cbf__profiles[i].id, name) == 0)
+            return i;
+    return CBF_ERR_ARGUMENT;
+}
+
+static int cbf__layout_ok(int layout) { return layout >= 0 && layout < CBF_LAYOUT__COUNT; }
+
+const char *cbf_layout_command_name(int layout)
+{
+    return cbf__layout_ok(layout) ? cbf__commands[cbf__layouts[layout].command].name : NULL;
+}
+
+const char *cbf_layout_variant(int layout)
+{
+    return cbf__layout_ok(layout) ? cbf__layouts[layout].variant : NULL;
+}
+
+int cbf_layout_code(int layout)
+{
+    return cbf__layout_ok(layout) ? cbf__commands[cbf__layouts[layout].command].code : CBF_ERR_ARGUMENT;
+}
+
+long cbf_layout_size(int layout)
+{
+    return cbf__layout_ok(layout) ? (long)cbf__layouts[layout].size : (long)CBF_ERR_ARGUMENT;
+}
+
+size_t cbf_layout_fields(int layout, const cbf_field_info **out)
+{
+    if (!cbf__layout_ok(layout) || !out)
+        return 0;
+    *out = &cbf__args[cbf__layouts[layout].first_arg];
+    return cbf__layouts[layout].nargs;
+}
+
+size_t cbf_header_fields(int header_layout, const cbf_field_info **out)
+{
+    if (header_layout < 0 || header_layout >= CBF_HEADER__COUNT || !out)
+        return 0;
+    *out = cbf__headers[header_layout].fields;
+    return cbf__headers[header_layout].nfields;
+}
+
+size_t cbf_record_fields(const cbf_field_info **out)
+{
+    if (!out)
+        return 0;
+    *out = cbf__record_fields;
+    return CBF__NRECORD_FIELDS;
+}
+
+static int cbf__eff_version(int version)
+{
+    return version < 0 ? CBF_FALLBACK_VERSION : version;
+}
+
+int cbf_version_header_layout(int version)
+{
+    if (version >= CBF__NVERSIONS)
+        return CBF_ERR_ARGUMENT;
+    return cbf__versions[cbf__eff_version(version)].header;
+}
+
+int cbf_args_layout(int code, int version, size_t nb)
+{
+    int ci = cbf__cmd_index(code);
+    int k;
+    if (ci < 0)
+        return CBF_LAYOUT__NONE;
+    version = cbf__eff_version(version);
+    if (version >= CBF__NVERSIONS)
+        return CBF_LAYOUT__NONE;
+    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+        int lay = cbf__commands[ci].candidates[version][k];
+        if (lay < 0)
+            break;
+        if (cbf__layouts[lay].size == nb)
+            return lay;
+    }
+    return CBF_LAYOUT__NONE;
+}
+
+int cbf_args_candidates(int code, int version, int *out, int cap)
+{
+    int ci = cbf__cmd_index(code), k, n = 0;
+    if (ci < 0 || !out || version >= CBF__NVERSIONS)
+        return 0;
+    version = cbf__eff_version(version);
+    for (k = 0; k < CBF__MAX_CANDIDATES && n < cap; k++) {
+        int lay = cbf__commands[ci].candidates[version][k];
+        if (lay < 0)
+            break;
+        out[n++] = lay;
+    }
+    return n;
+}
+
+/* ---- checksums ----------------------------------------------------------- */
+typedef struct cbf__ck { int alg; uint32_t acc; } cbf__ck;
+
+static void cbf__ck_init(cbf__ck *c, int alg)
+{
+    c->alg = alg;
+    c->acc = alg == CBF__ALG_CRC32 ? 0xFFFFFFFFu : 0u;
+}
+
+static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
+{
+    size_t i;
+    if (c->alg == CBF__ALG_CRC32) {
+        for (i = 0; i < n; i++) {
+            unsigned b;
+            c->acc ^= p[i];
+            for (b = 0; b < 8u; b++)
+                c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ 0xEDB88320u) : (c->acc >> 1);
+        }
+    } else {
+        for (i = 0; i < n; i++)
+            c->acc += p[i];
+    }
+}
+
+static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
+{
+    uint32_t v = c->alg == CBF__ALG_CRC32 ? (c->acc ^ 0xFFFFFFFFu) : c->acc;
+    return width >= 4u ? v : (v & ((1u << (8u * width)) - 1u));
+}
+
+/* A coverage over a file image buf[0..len): records lie in [header, records_end). */
+static uint32_t cbf__cover(int cov, int alg, unsigned width, const uint8_t *buf, size_t len,
+                              size_t records_end, const uint8_t *args, size_t nargs)
+{
+    cbf__ck c;
+    size_t s;
+    cbf__ck_init(&c, alg);
+    for (s = cbf__coverages[cov].first; s < cbf__coverages[cov].first + cbf__coverages[cov].n; s++) {
+        const cbf__segment *seg = &cbf__segments[s];
+        if (seg->region == CBF__REGION_FILE) {
+            if (seg->start < len)
+                cbf__ck_feed(&c, buf + seg->start, len - seg->start);
+        } else if (seg->region == CBF__REGION_HEADER) {
+            size_t end = (size_t)seg->end;
+            if (end > len)
+                end = len;
+            if (seg->start < end)
+                cbf__ck_feed(&c, buf + seg->start, end - seg->start);
+        } else if (seg->region == CBF__REGION_ARGS) {
+            if (args && nargs)
+                cbf__ck_feed(&c, args, nargs);
+        } else if (seg->region == CBF__REGION_RECORDS) {
+            const cbf_field_info *nbf = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+            size_t pos = CBF_HEADER_SIZE;
+            if (records_end > len)
+                records_end = len;
+            while (nbf && records_end - pos >= CBF_RECORD_HEAD_SIZE && pos <= records_end) {
+                size_t nb = cbf__get_u(buf + pos + nbf->offset, nbf->elem);
+                size_t cur = 0, k;
+                if (records_end - pos - CBF_RECORD_HEAD_SIZE < nb)
+                    break;
+                for (k = 0; k < CBF__NRECORD_FIELDS; k++) {
+                    const cbf_field_info *f = &cbf__record_fields[k];
+                    if (!(seg->exclude & (1u << k)))
+                        continue;
+                    if (f->offset > cur)
+                        cbf__ck_feed(&c, buf + pos + cur, f->offset - cur);
+                    cur = (size_t)f->offset + (size_t)f->elem * f->count;
+                }
+                cbf__ck_feed(&c, buf + pos + cur, CBF_RECORD_HEAD_SIZE + nb - cur);
+                pos += CBF_RECORD_HEAD_SIZE + nb;
+            }
+        }
+    }
+    return cbf__ck_value(&c, width);
+}
+
+uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
+{
+    const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_ARGS);
+    const cbf_field_info *f = cbf__record_field_by_tag(CBF__CK_ARGS);
+    if (!k || !f)
+        return 0u;
+    return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
+}
+
+/* ---- header and records --------------------------------------------------- */
+long cbf_header_decode(const uint8_t *buf, size_t len, cbf_header *out)
+{
+    const cbf_field_info *fmaj, *fmin, *fcnt;
+    int lay;
+    if (!buf || !out)
+        return CBF_ERR_ARGUMENT;
+    if (len < CBF_HEADER_SIZE)
+        return CBF_ERR_TRUNCATED_HEADER;
+    memset(out, 0, sizeof *out);
+    fmaj = cbf__header_field_by_role(0, CBF_ROLE_VERSION_MAJOR);
+    fmin = cbf__header_field_by_role(0, CBF_ROLE_VERSION_MINOR);
+    out->major = fmaj ? (unsigned)cbf__get_u(buf + fmaj->offset, fmaj->elem) : 0u;
+    out->minor = fmin ? (unsigned)cbf__get_u(buf + fmin->offset, fmin->elem) : 0u;
+    out->version = cbf_version_find(out->major, out->minor);
+    lay = cbf__versions[cbf__eff_version(out->version)].header;
+    out->layout = lay;
+    fcnt = cbf__header_field_by_role(lay, CBF_ROLE_COMMAND_COUNT);
+    out->count = fcnt ? (unsigned long)cbf__get_u(buf + fcnt->offset, fcnt->elem) : 0ul;
+    cbf__load(cbf__headers[lay].fields, cbf__headers[lay].nfields, buf,
+              (unsigned char *)out + cbf__headers[lay].member);
+    return CBF_HEADER_SIZE;
+}
+
+int cbf_header_init(cbf_header *h, int version)
+{
+    const cbf_field_info *f;
+    size_t i;
+    int lay;
+    if (!h || version < 0 || version >= CBF__NVERSIONS)
+        return CBF_ERR_ARGUMENT;
+    memset(h, 0, sizeof *h);
+    h->version = version;
+    lay = cbf__versions[version].header;
+    h->layout = lay;
+    h->major = (unsigned)cbf__versions[version].major;
+    h->minor = cbf__versions[version].minor < 0 ? 0u : (unsigned)cbf__versions[version].minor;
+    for (i = 0; i < cbf__headers[lay].nfields; i++) {
+        uint32_t v;
+        f = &cbf__headers[lay].fields[i];
+        if (f->role == CBF_ROLE_VERSION_MAJOR) v = h->major;
+        else if (f->role == CBF_ROLE_VERSION_MINOR) v = h->minor;
+        else if (f->flags & CBF__F_MAGIC) v = f->magic;
+        else continue;
+        if (f->kind != CBF__K_UINT)
+            continue;
+        if (f->elem == 1) { uint8_t x = (uint8_t)v; memcpy((unsigned char *)h + cbf__headers[lay].member + f->member, &x, 1); }
+        else if (f->elem == 2) { uint16_t x = (uint16_t)v; memcpy((unsigned char *)h + cbf__headers[lay].member + f->member, &x, 2); }
+        else memcpy((unsigned char *)h + cbf__headers[lay].member + f->member, &v, 4);
+    }
+    return CBF_OK;
+}
+
+long cbf_header_encode(const cbf_header *h, uint8_t *out, size_t cap)
+{
+    if (!h || !out || h->layout < 0 || h->layout >= CBF_HEADER__COUNT)
+        return CBF_ERR_ARGUMENT;
+    if (cap < CBF_HEADER_SIZE)
+        return CBF_ERR_BUFFER;
+    memset(out, 0, CBF_HEADER_SIZE);
+    cbf__store(cbf__headers[h->layout].fields, cbf__headers[h->layout].nfields,
+               (const unsigned char *)h + cbf__headers[h->layout].member, out);
+    return CBF_HEADER_SIZE;
+}
+
+int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len)
+{
+    long rc;
+    if (!r || !buf)
+        return CBF_ERR_ARGUMENT;
+    memset(r, 0, sizeof *r);
+    rc = cbf_header_decode(buf, len, &r->header);
+    if (rc < 0)
+        return (int)rc;
+    r->buf = buf;
+    r->len = len;
+    r->pos = CBF_HEADER_SIZE;
+    r->eff_version = cbf__eff_version(r->header.version);
+    return CBF_OK;
+}
+
+long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out)
+{
+    if (!cbf__layout_ok(layout) || !out || (!args && n))
+        return CBF_ERR_ARGUMENT;
+    if (n != cbf__layouts[layout].size)
+        return CBF_ERR_RANGE;
+    memset(out, 0, sizeof *out);
+    cbf__load(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs, args,
+              (unsigned char *)out + cbf__layouts[layout].member);
+    return (long)n;
+}
+
+long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
+{
+    size_t n;
+    if (!cbf__layout_ok(layout) || !in || !out)
+        return CBF_ERR_ARGUMENT;
+    n = cbf__layouts[layout].size;
+    if (cap < n)
+        return CBF_ERR_BUFFER;
+    memset(out, 0, n);
+    cbf__store(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs,
+               (const unsigned char *)in + cbf__layouts[layout].member, out);
+    return (long)n;
+}
+
+int cbf_next_record(cbf_reader *r, cbf_record *rec)
+{
+    const uint8_t *p;
+    size_t nb;
+    size_t k;
+    if (!r || !rec || !r->buf)
+        return CBF_ERR_ARGUMENT;
+    if (r->pos > r->len)
+        return CBF_ERR_ARGUMENT;
+    r->trailing = 0;
+    if (r->len - r->pos < CBF_RECORD_HEAD_SIZE) {
+        nb = 0;
+    } else {
+        nb = cbf__head_get(r->buf + r->pos, CBF_ROLE_ARG_SIZE);
+        if (r->len - r->pos - CBF_RECORD_HEAD_SIZE >= nb)
+            goto whole;
+    }
+    /* no further complete record */
+    if (r->len == r->pos)
+        return 0;
+    if (r->index < r->header.count)
+        return CBF_ERR_TRUNCATED_RECORD;
+    r->trailing = r->len - r->pos;
+    return 0;
+whole:
+    p = r->buf + r->pos;
+    memset(rec, 0, sizeof *rec);
+    rec->index = r->index;
+    rec->offset = r->pos;
+    for (k = 0; k < CBF__NRECORD_FIELDS; k++) {
+        const cbf_field_info *f = &cbf__record_fields[k];
+        uint32_t v = cbf__get_u(p + f->offset, f->elem);
+        unsigned char *m = (unsigned char *)&rec->head + f->member;
+        if (f->elem == 1) { uint8_t x = (uint8_t)v; memcpy(m, &x, 1); }
+        else if (f->elem == 2) { uint16_t x = (uint16_t)v; memcpy(m, &x, 2); }
+        else memcpy(m, &v, 4);
+    }
+    rec->args = p + CBF_RECORD_HEAD_SIZE;
+    rec->nargs = nb;
+    {
+        int code = (int)cbf__head_get(p, CBF_ROLE_CODE);
+        rec->command = cbf__cmd_index(code) < 0 ? CBF_CMD__UNKNOWN : code;
+        rec->layout = cbf__cmd_index(code) < 0 ? CBF_LAYOUT__NONE : cbf_args_layout(code, r->eff_version, nb);
+    }
+    if (rec->layout != CBF_LAYOUT__NONE)
+        (void)cbf_args_decode(rec->layout, rec->args, nb, &rec->decoded);
+    r->pos += CBF_RECORD_HEAD_SIZE + nb;
+    r->index++;
+    return 1;
+}
+
+/* ---- writer ---------------------------------------------------------------- */
+static int cbf__wfail(cbf_writer *w, int err)
+{
+    if (w->error == CBF_OK)
+        w->error = err;
+    return w->error;
+}
+
+int cbf_encode_begin(cbf_writer *w, uint8_t *buf, size_t cap, const cbf_header *h)
+{
+    long rc;
+    if (!w)
+        return CBF_ERR_ARGUMENT;
+    memset(w, 0, sizeof *w);
+    if (!buf || !h)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    w->buf = buf;
+    w->cap = cap;
+    rc = cbf_header_encode(h, buf, cap);
+    if (rc < 0)
+        return cbf__wfail(w, (int)rc);
+    w->version = cbf_version_find(h->major, h->minor);
+    if (w->version == CBF_V__UNKNOWN) {
+        /* the version field as stored in the header image decides */
+        const cbf_field_info *fmaj = cbf__header_field_by_role(0, CBF_ROLE_VERSION_MAJOR);
+        const cbf_field_info *fmin = cbf__header_field_by_role(0, CBF_ROLE_VERSION_MINOR);
+        if (fmaj && fmin)
+            w->version = cbf_version_find(cbf__get_u(buf + fmaj->offset, fmaj->elem),
+                                          cbf__get_u(buf + fmin->offset, fmin->elem));
+    }
+    w->eff_version = cbf__eff_version(w->version);
+    w->len = CBF_HEADER_SIZE;
+    w->records_end = CBF_HEADER_SIZE;
+    return CBF_OK;
+}
+
+int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const uint8_t *args, size_t nargs)
+{
+    size_t k;
+    uint8_t *p;
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (!head || (!args && nargs))
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    if (w->len != w->records_end)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT); /* records after trailing bytes */
+    if (w->cap - w->len < CBF_RECORD_HEAD_SIZE || w->cap - w->len - CBF_RECORD_HEAD_SIZE < nargs)
+        return cbf__wfail(w, CBF_ERR_BUFFER);
+    p = w->buf + w->len;
+    for (k = 0; k < CBF__NRECORD_FIELDS; k++) {
+        const cbf_field_info *f = &cbf__record_fields[k];
+        const unsigned char *m = (const unsigned char *)head + f->member;
+        uint32_t v;
+        if (f->elem == 1) { uint8_t x; memcpy(&x, m, 1); v = x; }
+        else if (f->elem == 2) { uint16_t x; memcpy(&x, m, 2); v = x; }
+        else memcpy(&v, m, 4);
+        if (f->role == CBF_ROLE_ARG_SIZE && v != nargs)
+            return cbf__wfail(w, CBF_ERR_RANGE);
+        cbf__put_u(p + f->offset, v, f->elem);
+    }
+    if (nargs)
+        memcpy(p + CBF_RECORD_HEAD_SIZE, args, nargs);
+    w->len += CBF_RECORD_HEAD_SIZE + nargs;
+    w->records_end = w->len;
+    w->count++;
+    return CBF_OK;
+}
+
+int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs)
+{
+    cbf_record_head head;
+    size_t k;
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (code < 0 || code > 0xFF || (!args && nargs))
+        return cbf__wfail(w, CBF_ERR_RANGE);
+    memset(&head, 0, sizeof head);
+    for (k = 0; k < CBF__NRECORD_FIELDS; k++) {
+        const cbf_field_info *f = &cbf__record_fields[k];
+        unsigned char *m = (unsigned char *)&head + f->member;
+        uint32_t v = 0u, max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
+        if (f->role == CBF_ROLE_SEQUENCE) v = (uint32_t)(w->count & max);
+        else if (f->role == CBF_ROLE_CODE || f->role == CBF_ROLE_CODE_COPY) v = (uint32_t)code;
+        else if (f->role == CBF_ROLE_ARG_SIZE) {
+            if (nargs > max)
+                return cbf__wfail(w, CBF_ERR_RANGE);
+            v = (uint32_t)nargs;
+        } else if (f->checksum == CBF__CK_ARGS) v = cbf_args_checksum(args, nargs);
+        if (v > max)
+            return cbf__wfail(w, CBF_ERR_RANGE);
+        if (f->elem == 1) { uint8_t x = (uint8_t)v; memcpy(m, &x, 1); }
+        else if (f->elem == 2) { uint16_t x = (uint16_t)v; memcpy(m, &x, 2); }
+        else memcpy(m, &v, 4);
+    }
+    return cbf_encode_record_stored(w, &head, args, nargs);
+}
+
+int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n)
+{
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (!bytes && n)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    if (w->cap - w->len < n)
+        return cbf__wfail(w, CBF_ERR_BUFFER);
+    if (n)
+        memcpy(w->buf + w->len, bytes, n);
+    w->len += n;
+    return CBF_OK;
+}
+
+long cbf_encode_end(cbf_writer *w, int profile, int fill)
+{
+    int lay;
+    size_t i;
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (profile < 0 || profile >= CBF_PROFILE__COUNT)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    if (!fill)
+        return (long)w->len;
+    lay = cbf__versions[w->eff_version].header;
+    for (i = 0; i < cbf__headers[lay].nfields; i++) {
+        const cbf_field_info *f = &cbf__headers[lay].fields[i];
+        if (f->kind != CBF__K_UINT)
+            continue;
+        if (f->flags & CBF__F_MAGIC)
+            cbf__put_u(w->buf + f->offset, f->magic, f->elem);
+        if (f->role == CBF_ROLE_COMMAND_COUNT) {
+            uint32_t max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
+            if (w->count > max)
+                return cbf__wfail(w, CBF_ERR_RANGE);
+            cbf__put_u(w->buf + f->offset, (uint32_t)w->count, f->elem);
+        }
+    }
+    for (i = 0; i < sizeof cbf__fill_order / sizeof cbf__fill_order[0]; i++) {
+        int tag = cbf__fill_order[i];
+        const cbf__ckfield *k = cbf__ckfield_of(tag);
+        const cbf_field_info *f = cbf__header_field_by_tag(lay, tag);
+        int cov;
+        if (tag == CBF__CK_ARGS || !k || !f)
+            continue; /* argument checksums are written with each record */
+        cov = (tag == CBF__CK_FILE && cbf__profiles[profile].file[0] >= 0) ? cbf__profiles[profile].file[0]
+                                                                             : k->coverage;
+        cbf__put_u(w->buf + f->offset,
+                   cbf__cover(cov, k->alg, f->elem, w->buf, w->len, w->records_end, NULL, 0), f->elem);
+    }
+    return (long)w->len;
+}
+
+int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
+{
+    uint8_t bytes[32];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.checkpoint, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CHECKPOINT, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CHECKPOINT, bytes, (size_t)n);
+}
+
+int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args)
+{
+    uint8_t bytes[16];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.checkpoint_v1, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CHECKPOINT_V1, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CHECKPOINT, bytes, (size_t)n);
+}
+
+int cbf_encode_cutter(cbf_writer *w, const struct cbf_cutter_args *args)
+{
+    uint8_t bytes[32];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.cutter, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CUTTER, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CUTTER, bytes, (size_t)n);
+}
+
+int cbf_encode_cutter_v1(cbf_writer *w, const struct cbf_cutter_v1_args *args)
+{
+    uint8_t bytes[32];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.cutter_v1, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CUTTER_V1, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CUTTER, bytes, (size_t)n);
+}
+
+int cbf_encode_orient(cbf_writer *w, const struct cbf_orient_args *args)
+{
+    uint8_t bytes[24];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.orient, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ORIENT, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ORIENT, bytes, (size_t)n);
+}
+
+int cbf_encode_orient5b(cbf_writer *w, const struct cbf_orient5b_args *args)
+{
+    uint8_t bytes[24];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.orient5b, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ORIENT5B, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ORIENT5B, bytes, (size_t)n);
+}
+
+int cbf_encode_phase(cbf_writer *w, const struct cbf_phase_args *args)
+{
+    uint8_t bytes[16];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.phase, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_PHASE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_PHASE, bytes, (size_t)n);
+}
+
+int cbf_encode_enable_skip(cbf_writer *w, const struct cbf_enable_skip_args *args)
+{
+    uint8_t bytes[16];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.enable_skip, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ENABLE_SKIP, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ENABLE_SKIP, bytes, (size_t)n);
+}
+
+int cbf_encode_startshape(cbf_writer *w, const struct cbf_startshape_args *args)
+{
+    uint8_t bytes[6];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.startshape, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_STARTSHAPE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_STARTSHAPE, bytes, (size_t)n);
+}
+
+int cbf_encode_endshape(cbf_writer *w, const struct cbf_endshape_args *args)
+{
+    uint8_t bytes[6];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.endshape, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ENDSHAPE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ENDSHAPE, bytes, (size_t)n);
+}
+
+int cbf_encode_decel_off(cbf_writer *w, const struct cbf_decel_off_args *args)
+{
+    uint8_t bytes[1];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.decel_off, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_DECEL_OFF, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_DECEL_OFF, bytes, (size_t)n);
+}
+
+int cbf_encode_decel_on(cbf_writer *w, const struct cbf_decel_on_args *args)
+{
+    uint8_t bytes[1];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.decel_on, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_DECEL_ON, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_DECEL_ON, bytes, (size_t)n);
+}
+
+int cbf_encode_point(cbf_writer *w, const struct cbf_point_args *args)
+{
+    uint8_t bytes[12];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.point, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_POINT, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_POINT, bytes, (size_t)n);
+}
+
+int cbf_encode_line(cbf_writer *w, const struct cbf_line_args *args)
+{
+    uint8_t bytes[24];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.line, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_LINE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_LINE, bytes, (size_t)n);
+}
+
+int cbf_encode_line5b(cbf_writer *w, const struct cbf_line5b_args *args)
+{
+    uint8_t bytes[48];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.line5b, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_LINE5B, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_LINE5B, bytes, (size_t)n);
+}
+
+int cbf_encode_arc(cbf_writer *w, const struct cbf_arc_args *args)
+{
+    uint8_t bytes[36];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.arc, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ARC, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ARC, bytes, (size_t)n);
+}
+
+int cbf_encode_arc5b(cbf_writer *w, const struct cbf_arc5b_args *args)
+{
+    uint8_t bytes[60];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.arc5b, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ARC5B, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ARC5B, bytes, (size_t)n);
+}
+
+int cbf_encode_circle(cbf_writer *w, const struct cbf_circle_args *args)
+{
+    uint8_t bytes[40];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.circle, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CIRCLE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CIRCLE, bytes, (size_t)n);
+}
+
+int cbf_encode_circle5b(cbf_writer *w, const struct cbf_circle5b_args *args)
+{
+    uint8_t bytes[64];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.circle5b, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CIRCLE5B, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CIRCLE5B, bytes, (size_t)n);
+}
+
+int cbf_encode_helix(cbf_writer *w, const struct cbf_helix_args *args)
+{
+    uint8_t bytes[44];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.helix, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_HELIX, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_HELIX, bytes, (size_t)n);
+}
+
+int cbf_encode_helix5b(cbf_writer *w, const struct cbf_helix5b_args *args)
+{
+    uint8_t bytes[68];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.helix5b, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_HELIX5B, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_HELIX5B, bytes, (size_t)n);
+}
+
+int cbf_encode_speed(cbf_writer *w, const struct cbf_speed_args *args)
+{
+    uint8_t bytes[4];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.speed, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_SPEED, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_SPEED, bytes, (size_t)n);
+}
+
+int cbf_encode_accel(cbf_writer *w, const struct cbf_accel_args *args)
+{
+    uint8_t bytes[8];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.accel, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_ACCEL, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_ACCEL, bytes, (size_t)n);
+}
+
+int cbf_encode_cutter_on(cbf_writer *w, const struct cbf_cutter_on_args *args)
+{
+    uint8_t bytes[1];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.cutter_on, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CUTTER_ON, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CUTTER_ON, bytes, (size_t)n);
+}
+
+int cbf_encode_cutter_off(cbf_writer *w, const struct cbf_cutter_off_args *args)
+{
+    uint8_t bytes[1];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.cutter_off, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_CUTTER_OFF, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_CUTTER_OFF, bytes, (size_t)n);
+}
+
+int cbf_encode_guide(cbf_writer *w, const struct cbf_guide_args *args)
+{
+    uint8_t bytes[32];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.guide, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_GUIDE, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_GUIDE, bytes, (size_t)n);
+}
+
+int cbf_encode_fcparms(cbf_writer *w, const struct cbf_fcparms_args *args)
+{
+    uint8_t bytes[16];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.fcparms, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_FCPARMS, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_FCPARMS, bytes, (size_t)n);
+}
+
+int cbf_encode_version(cbf_writer *w, const struct cbf_version_args *args)
+{
+    uint8_t bytes[32];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.version, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_VERSION, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_VERSION, bytes, (size_t)n);
+}
+
+int cbf_encode_version_implib(cbf_writer *w, const struct cbf_version_implib_args *args)
+{
+    uint8_t bytes[16];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.version_implib, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_VERSION_IMPLIB, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_VERSION, bytes, (size_t)n);
+}
+
+int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args)
+{
+    uint8_t bytes[40];
+    cbf_args a;
+    long n;
+    if (!w || !args)
+        return CBF_ERR_ARGUMENT;
+    memset(&a, 0, sizeof a);
+    memcpy(&a.comment, args, sizeof *args);
+    n = cbf_args_encode(CBF_LAYOUT_COMMENT, &a, bytes, sizeof bytes);
+    if (n < 0)
+        return (int)n;
+    return cbf_encode_record(w, CBF_CMD_COMMENT, bytes, (size_t)n);
+}
+
+/* ---- validation ------------------------------------------------------------ */
+typedef struct cbf__vctx {
+    const uint8_t *buf;
+    size_t len;
+    const cbf_options *opt;
+    cbf_finding_fn fn;
+    void *user;
+    long errors;
+    int version, eff, hlayout;
+    int pos_ok;
+    double pos[3];
+    int ori_ok;
+    double ori[3];
+    int shape_open;
+    long shape_rec;
+    size_t shape_off;
+    int shape_layout;
+    const uint8_t *shape_args;
+    unsigned long shape_moves;
+    int nd_ok[CBF__NTARGETS > 0 ? CBF__NTARGETS : 1];
+    double nd_prev[CBF__NTARGETS > 0 ? CBF__NTARGETS : 1];
+} cbf__vctx;
+
+static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap) CBF__PRINTF(5, 0);
+static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap)
+{
+    char msg[256];
+    cbf_finding f;
+    (void)vsnprintf(msg, sizeof msg, fmt, ap);
+    f.check = cbf__checks[ci].id;
+    f.severity = cbf__checks[ci].severity;
+    f.record = rec;
+    f.offset = off;
+    f.message = msg;
+    if (f.severity == CBF_SEVERITY_ERROR)
+        v->errors++;
+    if (v->fn)
+        v->fn(v->user, &f);
+}
+
+static void cbf__say(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, ...) CBF__PRINTF(5, 6);
+static void cbf__say(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    cbf__vsay(v, ci, rec, off, fmt, ap);
+    va_end(ap);
+}
+
+/* A finding for every check of a kind. */
+static void cbf__each(cbf__vctx *v, int kind, long rec, size_t off, const char *fmt, ...) CBF__PRINTF(5, 6);
+static void cbf__each(cbf__vctx *v, int kind, long rec, size_t off, const char *fmt, ...)
+{
+    int ci;
+    for (ci = 0; ci < CBF__NCHECKS; ci++) {
+        va_list ap;
+        if (cbf__checks[ci].kind != kind)
+            continue;
+        va_start(ap, fmt);
+        cbf__vsay(v, ci, rec, off, fmt, ap);
+        va_end(ap);
+    }
+}
+
+/* The string's value: the bytes before the first NUL. */
+static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
+{
+    size_t i;
+    for (i = 0; i < size; i++)
+        if (s[i] == CBF__PAD)
+            return i;
+    return size;
+}
+
+static void cbf__check_string(cbf__vctx *v, const cbf_field_info *f, const uint8_t *base, size_t base_off, long rec)
+{
+    const uint8_t *s = base + f->offset;
+    size_t size = (size_t)f->elem * f->count;
+    size_t n = cbf__strvalue_len(s, size), i;
+    for (i = n; i < size; i++) {
+        if (s[i] != CBF__PAD) {
+            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset,
+                      "string %s has a non-NUL byte 0x%02x after its first NUL (offset %lu)", f->name,
+                      (unsigned)s[i], (unsigned long)(base_off + f->offset + i));
+            break;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        if (s[i] < 0x20u || s[i] > 0x7Eu) {
+            cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset,
+                      "string %s has byte 0x%02x, not printable ASCII (offset %lu)", f->name, (unsigned)s[i],
+                      (unsigned long)(base_off + f->offset + i));
+            break;
+        }
+    }
+}
+
+/* Python's str.split() whitespace, for the ISO-8859-1 code points. */
+static int cbf__space(uint8_t c)
+{
+    return c == 0x20u || (c >= 0x09u && c <= 0x0Du) || (c >= 0x1Cu && c <= 0x1Fu) || c == 0x85u || c == 0xA0u;
+}
+
+static void cbf__check_part_number(cbf__vctx *v)
+{
+    const cbf_field_info *f = cbf__header_field_by_role(v->hlayout, CBF_ROLE_IMPLANT_DESCRIPTOR);
+    const uint8_t *s;
+    size_t n, a, b, plen;
+    if (!v->opt || !v->opt->part_number || !f)
+        return;
+    s = v->buf + f->offset;
+    n = cbf__strvalue_len(s, (size_t)f->elem * f->count);
+    for (a = 0; a < n && cbf__space(s[a]); a++) {}
+    for (b = a; b < n && !cbf__space(s[b]); b++) {}
+    plen = strlen(v->opt->part_number);
+    if (plen != b - a || (plen && memcmp(s + a, v->opt->part_number, plen) != 0))
+        cbf__each(v, CBF__KIND_PART_NUMBER, -1, f->offset,
+                  "implant descriptor's first word is not the part number %.64s", v->opt->part_number);
+}
+
+static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+static int cbf__vec(const uint8_t *args, int layout, int idx, double out[3])
+{
+    const cbf_field_info *f = cbf__layout_arg(layout, idx);
+    unsigned i;
+    if (!f || f->kind != CBF__K_FLOAT || f->count != 3u)
+        return 0;
+    for (i = 0; i < 3u; i++)
+        out[i] = cbf__fget(args, f, i);
+    return cbf__ffinite(args, f) ? 1 : -1;
+}
+
+static int cbf__scalar(const uint8_t *args, int layout, int idx, double *out)
+{
+    const cbf_field_info *f = cbf__layout_arg(layout, idx);
+    if (!f || f->kind != CBF__K_FLOAT)
+        return 0;
+    *out = cbf__fget(args, f, 0);
+    return cbf__ffinite(args, f) ? 1 : -1;
+}
+
+/* 6.4.5: continuity of motion commands (M1). POINT sets the current
+ * position; every other motion command is compared with it when its start is
+ * finite, then moves it to its end (none when a value is not finite or the
+ * normal is zero). Double precision, operations in the reference order. */
+static int cbf__motion_end(int kind, int layout, const uint8_t *args, double end[3])
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    double start[3], center[3], normal[3], k[3], p[3], kxv[3], rot[3], deg = 0.0, length = 0.0, c, s, th, kdv, nn;
+    int i;
+    if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE)
+        return cbf__vec(args, layout, L->motion[CBF__M_END], end) > 0;
+    if (cbf__vec(args, layout, L->motion[CBF__M_START], start) <= 0
+        || cbf__vec(args, layout, L->motion[CBF__M_CENTER], center) <= 0
+        || cbf__vec(args, layout, L->motion[CBF__M_NORMAL], normal) <= 0
+        || cbf__scalar(args, layout, L->motion[CBF__M_DEGREES], &deg) <= 0)
+        return 0;
+    if (kind == CBF__MOTION_HELIX && cbf__scalar(args, layout, L->motion[CBF__M_LENGTH], &length) <= 0)
+        return 0;
+    nn = cbf__norm(normal);
+    if (nn == 0.0)
+        return 0;
+    for (i = 0; i < 3; i++) {
+        k[i] = normal[i] / nn;
+        p[i] = start[i] - center[i];
+    }
+    th = deg * (CBF__PI / 180.0);
+    c = cos(th);
+    s = sin(th);
+    kxv[0] = k[1] * p[2] - k[2] * p[1];
+    kxv[1] = k[2] * p[0] - k[0] * p[2];
+    kxv[2] = k[0] * p[1] - k[1] * p[0];
+    kdv = k[0] * p[0] + k[1] * p[1] + k[2] * p[2];
+    for (i = 0; i < 3; i++)
+        rot[i] = p[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c);
+    for (i = 0; i < 3; i++)
+        end[i] = center[i] + rot[i] + length * k[i];
+    return 1;
+}
+
+static void cbf__continuity(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    int kind = cbf__commands[cmd].motion, i;
+    double start[3], end[3];
+    if (kind == CBF__MOTION_NONE)
+        return;
+    if (kind != CBF__MOTION_POINT && v->pos_ok && cbf__vec(args, layout, L->motion[CBF__M_START], start) > 0) {
+        double d[3], dist;
+        for (i = 0; i < 3; i++)
+            d[i] = start[i] - v->pos[i];
+        dist = cbf__norm(d);
+        if (dist > cbf__tol_position) {
+            const cbf_field_info *f = cbf__layout_arg(layout, L->motion[CBF__M_START]);
+            cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + f->offset,
+                      "%s starts %.6g mm from the current position (%.9g, %.9g, %.9g)",
+                      cbf__commands[cmd].name, dist, v->pos[0], v->pos[1], v->pos[2]);
+        }
+    }
+    v->pos_ok = cbf__motion_end(kind, layout, args, end);
+    if (v->pos_ok)
+        for (i = 0; i < 3; i++)
+            v->pos[i] = end[i];
+}
+
+/* orientation_jump (D2): the angle atan2(|a x b|, a . b) between a path
+ * command's start and the current orientation (the last set/end vector that
+ * was finite and non-zero). */
+static void cbf__orientation(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    int kind = cbf__commands[cmd].orient, i;
+    double a[3], b[3];
+    if (kind == CBF__ORIENT_NONE)
+        return;
+    if (kind == CBF__ORIENT_PATH && v->ori_ok && cbf__vec(args, layout, L->orient[CBF__O_START], a) > 0
+        && cbf__norm(a) > 0.0) {
+        double cx[3], ang;
+        cx[0] = a[1] * v->ori[2] - a[2] * v->ori[1];
+        cx[1] = a[2] * v->ori[0] - a[0] * v->ori[2];
+        cx[2] = a[0] * v->ori[1] - a[1] * v->ori[0];
+        ang = atan2(cbf__norm(cx), a[0] * v->ori[0] + a[1] * v->ori[1] + a[2] * v->ori[2]) * (180.0 / CBF__PI);
+        if (ang > cbf__tol_orientation)
+            cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g degrees from the current orientation",
+                      cbf__commands[cmd].name, ang);
+    }
+    v->ori_ok = cbf__vec(args, layout, L->orient[CBF__O_END], b) > 0 && cbf__norm(b) > 0.0;
+    if (v->ori_ok)
+        for (i = 0; i < 3; i++)
+            v->ori[i] = b[i];
+}
+
+static int cbf__same_string(const uint8_t *a, size_t na, const uint8_t *b, size_t nb)
+{
+    /* equal after removing trailing NULs */
+    while (na && a[na - 1] == CBF__PAD) na--;
+    while (nb && b[nb - 1] == CBF__PAD) nb--;
+    return na == nb && (na == 0 || memcmp(a, b, na) == 0);
+}
+
+static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    int kind = cbf__commands[cmd].shape;
+    if (cbf__commands[cmd].motion != CBF__MOTION_NONE && v->shape_open)
+        v->shape_moves++;
+    if (kind == CBF__SHAPE_START) {
+        if (v->shape_open)
+            cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s inside the open shape of record %ld",
+                      cbf__commands[cmd].name, v->shape_rec);
+        v->shape_open = 1;
+        v->shape_rec = rec;
+        v->shape_off = off;
+        v->shape_layout = layout;
+        v->shape_args = args;
+        v->shape_moves = 0;
+    } else if (kind == CBF__SHAPE_END) {
+        const cbf_field_info *fn, *fc, *sn, *sc;
+        if (!v->shape_open) {
+            cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s without an open shape", cbf__commands[cmd].name);
+            return;
+        }
+        v->shape_open = 0;
+        fn = cbf__layout_arg(layout, L->shape[CBF__S_NAME]);
+        fc = cbf__layout_arg(layout, L->shape[CBF__S_COUNT]);
+        sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);
+        sc = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_COUNT]);
+        if (fn && sn && !cbf__same_string(args + fn->offset, (size_t)fn->elem * fn->count,
+                                          v->shape_args + sn->offset, (size_t)sn->elem * sn->count)) {
+            cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s name differs from the shape opened at record %ld",
+                      cbf__commands[cmd].name, v->shape_rec);
+            return;
+        }
+        if (fc && sc) {
+            uint32_t ce = cbf__get_u(args + fc->offset, fc->elem);
+            uint32_t cs = cbf__get_u(v->shape_args + sc->offset, sc->elem);
+            if (ce != cs) {
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s count %lu differs from %lu at record %ld",
+                          cbf__commands[cmd].name, (unsigned long)ce, (unsigned long)cs, v->shape_rec);
+                return;
+            }
+            if (v->shape_moves != cs)
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "shape of record %ld holds %lu motion commands, not %lu",
+                          v->shape_rec, v->shape_moves, (unsigned long)cs);
+        }
+    }
+}
+
+static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec, size_t off)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    const cbf_field_info *fn = cbf__layout_arg(layout, L->cutter[CBF__C_NAME]);
+    const cbf_field_info *fv[2];
+    size_t i, n, found = (size_t)-1;
+    int k;
+    if (!v->opt || !v->opt->cutters || !fn)
+        return;
+    fv[0] = cbf__layout_arg(layout, L->cutter[CBF__C_LENGTH]);
+    fv[1] = cbf__layout_arg(layout, L->cutter[CBF__C_RADIUS]);
+    n = cbf__strvalue_len(args + fn->offset, (size_t)fn->elem * fn->count);
+    for (i = 0; i < v->opt->ncutters; i++) {
+        const char *name = v->opt->cutters[i].name;
+        if (name && strlen(name) == n && (n == 0 || memcmp(name, args + fn->offset, n) == 0))
+            found = i; /* the last entry of a name counts */
+    }
+    if (found == (size_t)-1) {
+        cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s is not in the cutter table", (int)n,
+                  (const char *)(args + fn->offset));
+        return;
+    }
+    for (k = 0; k < 2; k++) {
+        double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
+        if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffinite(args, fv[k]))
+            continue;
+        x = cbf__fget(args, fv[k], 0);
+        if (fabs(x - ref) > cbf__tol_cutter)
+            cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s %s %.9g mm, the table says %.9g mm", (int)n,
+                      (const char *)(args + fn->offset), fv[k]->name, x, ref);
+    }
+}
+
+/* Checks with targets: positive, nonzero_vector, range, nondecreasing, ordered. */
+static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+{
+    int ci;
+    for (ci = 0; ci < CBF__NCHECKS; ci++) {
+        const cbf__check *ch = &cbf__checks[ci];
+        size_t t;
+        for (t = ch->first_target; t < ch->first_target + ch->ntargets; t++) {
+            const cbf__target *tg = &cbf__targets[t];
+            size_t a;
+            if (tg->command != cmd)
+                continue;
+            if (ch->kind == CBF__KIND_ORDERED) {
+                double prev = 0.0;
+                int ok = 1, bad = 0;
+                for (a = 0; a < tg->n; a++) {
+                    const cbf_field_info *f = cbf__layout_arg_named(layout, cbf__target_args[tg->first + a]);
+                    double x;
+                    if (!f || f->kind != CBF__K_FLOAT || !cbf__ffinite(args, f)) { ok = 0; break; }
+                    x = cbf__fget(args, f, 0);
+                    if (a > 0 && x < prev)
+                        bad = 1;
+                    prev = x;
+                }
+                if (ok && bad)
+                    cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order",
+                             cbf__commands[cmd].name);
+                continue;
+            }
+            for (a = 0; a < tg->n; a++) {
+                const cbf_field_info *f = cbf__layout_arg_named(layout, cbf__target_args[tg->first + a]);
+                double x;
+                unsigned i;
+                int any_le = 0, all_zero = 1;
+                if (!f || f->kind != CBF__K_FLOAT || !cbf__ffinite(args, f))
+                    continue;
+                x = cbf__fget(args, f, 0);
+                for (i = 0; i < f->count; i++) {
+                    double y = cbf__fget(args, f, i);
+                    if (y <= 0.0) any_le = 1;
+                    if (y != 0.0) all_zero = 0;
+                }
+                switch (ch->kind) {
+                case CBF__KIND_POSITIVE:
+                    if (any_le)
+                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, not > 0",
+                                 cbf__commands[cmd].name, f->name, x);
+                    break;
+                case CBF__KIND_NONZERO_VECTOR:
+                    if (all_zero)
+                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s has zero length",
+                                 cbf__commands[cmd].name, f->name);
+                    break;
+                case CBF__KIND_RANGE:
+                    if ((ch->has_min && x < ch->min) || (ch->has_max && x > ch->max))
+                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, outside %.9g..%.9g",
+                                 cbf__commands[cmd].name, f->name, x, ch->min, ch->max);
+                    break;
+                case CBF__KIND_NONDECREASING:
+                    if (v->nd_ok[t] && x < v->nd_prev[t])
+                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s falls from %.9g to %.9g",
+                                 cbf__commands[cmd].name, f->name, v->nd_prev[t], x);
+                    v->nd_ok[t] = 1;
+                    v->nd_prev[t] = x;
+                    break;
+                default:
+                    break;
+                }
+            }
+        }
+    }
+}
+
+static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    size_t args_off = off + CBF_RECORD_HEAD_SIZE, i;
+    for (i = 0; i < L->nargs; i++) {
+        const cbf_field_info *f = &cbf__args[L->first_arg + i];
+        if (f->kind == CBF__K_FLOAT && !cbf__ffinite(args, f))
+            cbf__each(v, CBF__KIND_FINITE, rec, args_off + f->offset, "%s %s is not finite",
+                      cbf__commands[cmd].name, f->name);
+        if (f->kind == CBF__K_STRING)
+            cbf__check_string(v, f, args, args_off, rec);
+    }
+    cbf__check_targets(v, cmd, layout, args, rec, args_off);
+    if (cbf__commands[cmd].cutter)
+        cbf__cutter(v, layout, args, rec, args_off);
+    cbf__continuity(v, cmd, layout, args, rec, args_off);
+    cbf__orientation(v, cmd, layout, args, rec, args_off);
+    cbf__shape(v, cmd, layout, args, rec, off);
+}
+
+static int cbf__profile_accepts(int layout, int profile)
+{
+    return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
+}
+
+long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user)
+{
+    cbf__vctx v;
+    cbf_header h;
+    size_t pos, i;
+    unsigned long nrec = 0;
+    int profile = opt ? opt->profile : CBF_PROFILE_DEFAULT;
+    if ((!buf && len) || profile < 0 || profile >= CBF_PROFILE__COUNT)
+        return CBF_ERR_ARGUMENT;
+    memset(&v, 0, sizeof v);
+    v.buf = buf;
+    v.len = len;
+    v.opt = opt;
+    v.fn = fn;
+    v.user = user;
+    if (len < CBF_HEADER_SIZE || !buf) {
+        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
+                  (unsigned long)len, CBF_HEADER_SIZE);
+        return v.errors;
+    }
+    (void)cbf_header_decode(buf, len, &h);
+    v.version = h.version;
+    v.eff = cbf__eff_version(h.version);
+    v.hlayout = h.layout;
+    if (v.version < 0)
+        cbf__each(&v, CBF__KIND_VERSION, -1, CBF_HEADER_V2_VERSION_MAJOR_OFFSET,
+                  "version %u.%u is not a version of this spec; read as %s", h.major, h.minor,
+                  cbf__versions[v.eff].id);
+    /* header fields: magic numbers, strings */
+    for (i = 0; i < cbf__headers[v.hlayout].nfields; i++) {
+        const cbf_field_info *f = &cbf__headers[v.hlayout].fields[i];
+        if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != f->magic)
+                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lx, not 0x%08lx", f->name,
+                          (unsigned long)got, (unsigned long)f->magic);
+        }
+        if (f->kind == CBF__K_STRING)
+            cbf__check_string(&v, f, buf, 0, -1);
+    }
+    {
+        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
+        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
+        if (k && f) {
+            uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != want)
+                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "%s is %lu, the header sums to %lu",
+                          f->name, (unsigned long)got, (unsigned long)want);
+        }
+    }
+    cbf__check_part_number(&v);
+
+    /* records, framed by nb from the header to the end of the file (D1) */
+    pos = CBF_HEADER_SIZE;
+    while (len - pos >= CBF_RECORD_HEAD_SIZE) {
+        const uint8_t *p = buf + pos;
+        size_t nb = cbf__head_get(p, CBF_ROLE_ARG_SIZE);
+        long rec = (long)nrec;
+        uint32_t code, copy, seq, res;
+        int cmd, layout;
+        const cbf_field_info *fck;
+        if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
+            break;
+        code = cbf__head_get(p, CBF_ROLE_CODE);
+        copy = cbf__head_get(p, CBF_ROLE_CODE_COPY);
+        seq = cbf__head_get(p, CBF_ROLE_SEQUENCE);
+        res = cbf__head_get(p, CBF_ROLE_RESERVED);
+        {
+            const cbf_field_info *fs = cbf__record_field_by_role(CBF_ROLE_SEQUENCE);
+            uint32_t want = (uint32_t)(nrec & (fs && fs->elem < 4u ? ((1ul << (8u * fs->elem)) - 1ul) : 0xFFFFFFFFul));
+            if (seq != want)
+                cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + (fs ? fs->offset : 0u),
+                          "sequence number %lu, expected %lu", (unsigned long)seq, (unsigned long)want);
+        }
+        if (code != copy)
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos, "code 0x%02lx, backup copy 0x%02lx",
+                      (unsigned long)code, (unsigned long)copy);
+        fck = cbf__record_field_by_tag(CBF__CK_ARGS);
+        if (fck) {
+            uint32_t want = cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb);
+            uint32_t got = cbf__get_u(p + fck->offset, fck->elem);
+            if (got != want)
+                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + fck->offset,
+                          "argument checksum %lu, the arguments sum to %lu", (unsigned long)got,
+                          (unsigned long)want);
+        }
+        if (res != 0u) {
+            const cbf_field_info *fr = cbf__record_field_by_role(CBF_ROLE_RESERVED);
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + (fr ? fr->offset : 0u), "reserved byte is 0x%02lx",
+                      (unsigned long)res);
+        }
+        cmd = cbf__cmd_index((int)code);
+        if (cmd < 0) {
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos, "unknown command code 0x%02lx", (unsigned long)code);
+        } else {
+            int accepted = 0, k, ci;
+            /* availability: the command has no layout for the file's version (fallback included) */
+            for (ci = 0; ci < CBF__NCHECKS; ci++) {
+                const cbf__check *ch = &cbf__checks[ci];
+                if (ch->kind == CBF__KIND_AVAILABILITY && (ch->versions & CBF__VBIT(v.eff))
+                    && !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)))
+                    cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
+                             cbf__versions[v.eff].id);
+            }
+            for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+                int lay = cbf__commands[cmd].candidates[v.eff][k];
+                if (lay < 0)
+                    break;
+                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                    accepted = 1;
+            }
+            if (!accepted)
+                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos, "%s has %lu argument bytes, no layout of %s has that size",
+                          cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
+            layout = cbf_args_layout((int)code, v.eff, nb);
+            if (layout != CBF_LAYOUT__NONE)
+                cbf__decoded_checks(&v, cmd, layout, p + CBF_RECORD_HEAD_SIZE, rec, pos);
+        }
+        pos += CBF_RECORD_HEAD_SIZE + nb;
+        nrec++;
+    }
+    if (v.shape_open)
+        cbf__each(&v, CBF__KIND_SHAPE, v.shape_rec, v.shape_off, "shape still open at the end of the file");
+    {
+        int truncated = 0;
+        if (pos < len) {
+            if (nrec < h.count) {
+                truncated = 1;
+                cbf__each(&v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
+                          "record %lu is cut: %lu byte(s) left (%lu of %lu records complete)", nrec,
+                          (unsigned long)(len - pos), nrec, h.count);
+            } else {
+                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) follow the last record",
+                          (unsigned long)(len - pos));
+            }
+        }
+        if (!truncated && nrec != h.count) {
+            const cbf_field_info *fc = cbf__header_field_by_role(v.hlayout, CBF_ROLE_COMMAND_COUNT);
+            cbf__each(&v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u,
+                      "the header counts %lu commands, the file holds %lu", h.count, nrec);
+        }
+    }
+    {
+        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_FILE);
+        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_FILE);
+        if (k && f) {
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem), first = 0u;
+            int c, match = 0;
+            for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
+                uint32_t want = cbf__cover(cbf__profiles[profile].file[c], k->alg, f->elem, buf, len, pos, NULL, 0);
+                if (c == 0)
+                    first = want;
+                if (want == got)
+                    match = 1;
+            }
+            if (!match) {
+                const char *hint = NULL;
+                for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
+                    if (cbf__cover(cbf__profiles[profile].hint[c], k->alg, f->elem, buf, len, pos, NULL, 0) == got) {
+                        hint = cbf__coverages[cbf__profiles[profile].hint[c]].name;
+                        break;
+                    }
+                }
+                if (hint)
+                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset,
+                              "%s is %lu, expected %lu; it matches coverage %s (another profile)", f->name,
+                              (unsigned long)got, (unsigned long)first, hint);
+                else
+                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s is %lu, expected %lu", f->name,
+                              (unsigned long)got, (unsigned long)first);
+            }
+        }
+    }
+    return v.errors;
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* CBF_IMPLEMENTATION_DONE */
+#endif /* CBF_IMPLEMENTATION */

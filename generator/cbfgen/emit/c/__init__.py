@@ -1,0 +1,356 @@
+"""C binding emitter: an stb-style single header (generated/c/cbf.h) with the
+command enum (spec 5.2), per-layout argument structs, the spec as C tables and
+a generic table-driven codec and validator; plus the conformance testee, the
+`cbf-c` tool and a libFuzzer harness, all from templates beside this file.
+
+Nothing here names a command, field, offset or check: every identifier and
+number comes from the model. The C engine in templates/cbf.h.j2 knows only
+the model's vocabulary (field kinds and roles, check kinds, motion kinds,
+coverage regions, algorithm kinds).
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+from pathlib import Path
+from typing import Any
+
+from ...model import Command, Field, Layout, Spec
+from ...render import environment
+
+HERE = Path(__file__).parent
+OUT = "c"
+
+# C and C++ keywords a spec name could collide with (a trailing _ is added).
+_KEYWORDS = frozenset(
+    """auto break case char const continue default do double else enum extern float for goto if inline int long
+    register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while
+    bool true false class delete new template this throw try catch namespace operator private protected public
+    virtual friend mutable explicit typename using export asm and or not xor""".split()
+)
+
+# The model's vocabulary the engine understands (loader.py, spec comments).
+FIELD_KINDS = ("uint", "float", "string", "bytes")
+MOTION_KINDS = ("point", "line", "circle", "helix")
+MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length")
+ORIENT_KINDS = ("set", "path")
+ORIENT_KEYS = ("start", "end")
+SHAPE_KINDS = ("start", "end")
+SHAPE_KEYS = ("name", "count")
+CUTTER_KEYS = ("name", "length", "radius")
+REGIONS = ("file", "header", "records", "args")
+ALGORITHMS = ("sum", "crc32")
+CHECKSUM_TAGS = ("args", "header", "file")
+CHECK_KINDS = (
+    "truncated_header", "truncated_record", "part_number", "cutter_table", "file_checksum", "command_count",
+    "header_checksum", "magic", "sequence", "code_copy", "arg_size", "arg_checksum", "continuity", "availability",
+    "version", "unknown_code", "trailing", "reserved_byte", "string_tail", "string_ascii", "finite", "positive",
+    "nonzero_vector", "range", "nondecreasing", "ordered", "orientation", "shape",
+)
+
+
+def cname(name: str) -> str:
+    """A C identifier for a spec name (lower case, keywords suffixed)."""
+    s = re.sub(r"\W+", "_", name).strip("_").lower()
+    if not s or s[0].isdigit():
+        s = "x" + s
+    return s + "_" if s in _KEYWORDS else s
+
+
+def macro(name: str) -> str:
+    """An upper-case macro fragment for a spec id ("6.4.4" -> 6_4_4, "1.x" -> 1_X)."""
+    return re.sub(r"\W+", "_", name).strip("_").upper()
+
+
+def cstr(text: str) -> str:
+    """A C string literal."""
+    out = []
+    for ch in text:
+        o = ord(ch)
+        if ch in '"\\':
+            out.append("\\" + ch)
+        elif 0x20 <= o < 0x7F and ch != "?":
+            out.append(ch)
+        else:
+            out.append(f"\\{o:03o}" if o < 0x100 else "?")
+    return '"' + "".join(out) + '"'
+
+
+def comment(text: str) -> str:
+    """Text safe inside /* */."""
+    return " ".join(text.replace("*/", "* /").split())
+
+
+def cfloat(x: float) -> str:
+    r = repr(float(x))
+    return r if any(c in r for c in ".eE") else r + ".0"
+
+
+def _ctype(f: Field) -> tuple[str, str]:
+    """(type, array suffix) of a struct member for a field."""
+    if f.kind == "uint":
+        if f.elem_size not in (1, 2, 4) or f.count != 1:
+            raise ValueError(f"C binding: {f.name}: unsigned of {f.elem_size} bytes x {f.count} is not supported")
+        return f"uint{8 * f.elem_size}_t", ""
+    if f.kind == "float":
+        if f.elem_size != 4:
+            raise ValueError(f"C binding: {f.name}: only 4-byte floats are supported")
+        return "float", (f"[{f.count}]" if f.count > 1 else "")
+    if f.kind == "string":
+        return "char", f"[{f.size} + 1]"
+    return "uint8_t", f"[{f.size}]"
+
+
+def _member_doc(f: Field, units: dict[str, str]) -> str:
+    parts = [f.doc.rstrip(".") + "."]
+    what = {"uint": f"u{8 * f.elem_size}", "float": "binary32", "string": f"string({f.size}), NUL-terminated copy",
+            "bytes": f"{f.size} raw bytes"}[f.kind]
+    if f.kind == "float" and f.count > 1:
+        what += f" x {f.count}"
+    extra = [what, f"offset {f.offset}"]
+    if f.unit:
+        extra.append(f"unit {f.unit} ({units.get(f.unit, '').rstrip('.')})")
+    if f.clause:
+        extra.append(f"clause {f.clause}")
+    if f.reserved:
+        extra.append("reserved, kept verbatim")
+    return comment(" ".join(parts) + " [" + "; ".join(extra) + "]")
+
+
+def _field_row(f: Field, struct: str | None, roles: list[str], tags: list[str]) -> dict[str, Any]:
+    ctype, suffix = _ctype(f)
+    return {
+        "name": f.name,
+        "member": cname(f.name),
+        "ctype": ctype,
+        "suffix": suffix,
+        "kind": f.kind.upper(),
+        "role": ("ROLE_" + macro(f.role)) if f.role else "ROLE_NONE",
+        "offset": f.offset,
+        "elem": f.elem_size,
+        "count": f.count,
+        "size": f.size,
+        "struct": struct,
+        "magic": f.magic,
+        "checksum": ("CK_" + macro(f.checksum)) if f.checksum else "CK_NONE",
+        "flags": " | ".join(x for x in (
+            "CBF__F_RESERVED" if f.reserved else "", "CBF__F_TEXT" if f.text else "",
+            "CBF__F_MAGIC" if f.magic is not None else "") if x) or "0",
+        "unit": f.unit,
+        "macro": macro(f.name),
+    }
+
+
+def _newest(lay: Layout, order: dict[str, int]) -> int:
+    return max(order[v] for v in lay.versions)
+
+
+def context(spec: Spec) -> dict[str, Any]:
+    if spec.meta.get("byte_order") not in ("little", "big"):
+        raise ValueError("C binding: byte_order must be little or big")
+    vorder = {v.id: i for i, v in enumerate(spec.versions)}
+    units = spec.units
+    roles: list[str] = []
+    for h in spec.headers.values():
+        for f in h.fields:
+            if f.role and f.role not in roles:
+                roles.append(f.role)
+    for f in spec.record.fields:
+        if f.role and f.role not in roles:
+            roles.append(f.role)
+    header_ids = list(spec.headers)
+    headers = []
+    for hid, h in spec.headers.items():
+        struct = "cbf_header_" + cname(hid)
+        headers.append({
+            "id": hid, "macro": macro(hid), "struct": struct, "size": h.size, "clause": h.clause,
+            "doc": comment(h.doc),
+            "fields": [dict(_field_row(f, struct, roles, []), doc=_member_doc(f, units)) for f in h.fields],
+        })
+    rec_fields = [dict(_field_row(f, "cbf_record_head", roles, []), doc=_member_doc(f, units))
+                  for f in spec.record.fields]
+    for f in spec.record.fields:
+        if f.kind != "uint":
+            raise ValueError("C binding: record head fields must be unsigned integers")
+    versions = [{
+        "id": v.id, "macro": macro(v.id), "major": v.major, "minor": -1 if v.minor is None else v.minor,
+        "header": header_ids.index(v.header), "writable": int(v.writable), "doc": comment(v.doc),
+        "clause": v.clause,
+    } for v in spec.versions]
+    profiles = [p.id for p in spec.profiles]
+
+    layouts: list[dict[str, Any]] = []
+    commands = []
+    arg_rows: list[dict[str, Any]] = []
+    cmd_index = {c.name: i for i, c in enumerate(spec.commands)}
+    max_layouts = 0
+    for ci, c in enumerate(spec.commands):
+        first = len(layouts)
+        for lay in c.layouts:
+            suffix = ("_" + cname(lay.variant)) if lay.variant else ""
+            struct = f"cbf_{cname(c.name)}{suffix}_args"
+            args = [dict(_field_row(a, struct, roles, []), doc=_member_doc(a, units)) for a in lay.args]
+
+            def idx(name: str | None, lay: Layout = lay) -> int:
+                if name is None:
+                    return -1
+                for i, a in enumerate(lay.args):
+                    if a.name == name:
+                        return i
+                return -1
+
+            def role_idx(role: dict[str, str] | None, keys: tuple[str, ...]) -> list[int]:
+                return [idx((role or {}).get(k)) for k in keys]
+
+            layouts.append({
+                "index": len(layouts), "command": ci, "cmd_name": c.name,
+                "variant": lay.variant, "macro": macro(c.name) + (("_" + macro(lay.variant)) if lay.variant else ""),
+                "member": cname(c.name) + suffix, "struct": struct, "size": lay.size,
+                "versions": lay.versions, "vmask": " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in lay.versions),
+                "pmask": " | ".join(f"CBF__PBIT({profiles.index(p)})" for p in lay.profiles) or "0",
+                "profiles": lay.profiles, "first_arg": len(arg_rows), "nargs": len(args), "args": args,
+                "motion": role_idx(c.motion, MOTION_KEYS), "orient": role_idx(c.orientation, ORIENT_KEYS),
+                "shape": role_idx(c.shape, SHAPE_KEYS), "cutter": role_idx(c.cutter, CUTTER_KEYS),
+                "progress": idx(c.progress),
+                "doc": comment(lay.doc or c.doc), "clause": lay.clause or c.clause,
+            })
+            arg_rows.extend(args)
+        # Decode candidates per version: the version's own layouts in spec
+        # order, else every layout, newest first (PROTOCOL.md).
+        cands = []
+        for v in spec.versions:
+            own = [first + i for i, lay in enumerate(c.layouts) if v.id in lay.versions]
+            if not own:
+                order = sorted(range(len(c.layouts)), key=lambda i: -_newest(c.layouts[i], vorder))
+                own = [first + i for i in order]
+            cands.append(own)
+            max_layouts = max(max_layouts, len(own))
+        commands.append({
+            "index": ci, "name": c.name, "macro": macro(c.name), "code": c.code, "doc": comment(c.doc),
+            "clause": c.clause, "first": first, "nlayouts": len(c.layouts), "cands": cands,
+            "motion": ("MOTION_" + macro(c.motion["kind"])) if c.motion else "MOTION_NONE",
+            "orient": ("ORIENT_" + macro(c.orientation["kind"])) if c.orientation else "ORIENT_NONE",
+            "shape": ("SHAPE_" + macro(c.shape["kind"])) if c.shape else "SHAPE_NONE",
+            "cutter": int(bool(c.cutter)),
+            "vmask": " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in c.versions),
+            "layouts": [lay for lay in layouts[first:]],
+            "per_version": [{"macro": macro(v.id), "layouts": [lay for lay in layouts[first:] if v.id in lay["versions"]]}
+                            for v in spec.versions],
+        })
+    for c in commands:
+        for row in c["cands"]:
+            row.extend([-1] * (max_layouts - len(row)))
+
+    cov_names = list(spec.checksums.coverages)
+    rec_names = [f.name for f in spec.record.fields]
+    segments = []
+    coverages = []
+    for name, cov in spec.checksums.coverages.items():
+        coverages.append({"name": name, "first": len(segments), "n": len(cov.segments), "doc": comment(cov.doc)})
+        for s in cov.segments:
+            segments.append({
+                "region": "REGION_" + macro(s.region), "start": s.start or 0,
+                "end": -1 if s.end is None else s.end,
+                "exclude": " | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u",
+            })
+    ckfields = []
+    for tag in CHECKSUM_TAGS:
+        cf = spec.checksums.for_field(tag)
+        kind = spec.checksums.algorithms[cf.algorithm].kind
+        if kind not in ALGORITHMS:
+            raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
+        ckfields.append({"tag": tag, "alg": "ALG_" + macro(kind), "coverage": cov_names.index(cf.coverage)})
+    fill = ["CK_" + macro(t) for t in spec.checksums.fill_order]
+    profile_rows = []
+    for p in spec.profiles:
+        profile_rows.append({"id": p.id, "macro": macro(p.id), "doc": comment(p.doc),
+                             "file": [cov_names.index(x) for x in p.file_coverages],
+                             "hint": [cov_names.index(x) for x in p.hint_coverages]})
+    max_cov = max([len(p["file"]) for p in profile_rows] + [len(p["hint"]) for p in profile_rows] + [1])
+    for p in profile_rows:
+        p["file_pad"] = p["file"] + [-1] * (max_cov - len(p["file"]))
+        p["hint_pad"] = p["hint"] + [-1] * (max_cov - len(p["hint"]))
+
+    checks = []
+    targets = []
+    tnames: list[str] = []
+    for ch in spec.checks:
+        if ch.kind not in CHECK_KINDS:
+            raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not implemented by the C engine")
+        first = len(targets)
+        for t in ch.targets:
+            targets.append({"command": cmd_index[t.command], "first": len(tnames), "n": len(t.args),
+                            "text": f"{t.command} {' '.join(t.args)}"})
+            tnames.extend(t.args)
+        checks.append({
+            "id": ch.id, "macro": macro(ch.id), "kind": "KIND_" + macro(ch.kind), "severity": ch.severity,
+            "error": int(ch.severity == "error"),
+            "vmask": " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in ch.versions) or "0",
+            "first": first, "n": len(ch.targets),
+            "has_min": int(ch.min is not None), "min": cfloat(ch.min or 0.0),
+            "has_max": int(ch.max is not None), "max": cfloat(ch.max or 0.0),
+            "text": comment(ch.text), "fails": comment(ch.fails),
+            "clause": ch.clause or "", "decision": ch.decision or "",
+        })
+    max_arg = max([lay["size"] for lay in layouts] + [0])
+    return {
+        "spec": spec,
+        "meta": spec.meta,
+        "little": spec.meta["byte_order"] == "little",
+        "pad": int(spec.meta.get("string_padding", 0)),
+        "roles": [macro(r) for r in roles],
+        "headers": headers,
+        "header_size": spec.header_size,
+        "record": {"head_size": spec.record.head_size, "fields": rec_fields, "clause": spec.record.clause,
+                   "doc": comment(spec.record.doc)},
+        "versions": versions,
+        "default_version": [v.id for v in spec.versions].index(spec.default_version),
+        "fallback_version": [v.id for v in spec.versions].index(spec.fallback_version),
+        "commands": commands,
+        "sorted_commands": sorted(commands, key=lambda c: c["code"]),
+        "layouts": layouts,
+        "arg_rows": arg_rows,
+        "max_layouts": max_layouts,
+        "max_arg": max_arg,
+        "segments": segments,
+        "coverages": coverages,
+        "ckfields": ckfields,
+        "fill": fill,
+        "profiles": profile_rows,
+        "max_cov": max_cov,
+        "checks": checks,
+        "targets": targets or [{"command": -1, "first": 0, "n": 0, "text": "none"}],
+        "ntargets": len(targets),
+        "tnames": tnames or [""],
+        "tolerances": [{"macro": macro(k), "value": cfloat(v), "name": k} for k, v in spec.tolerances.items()],
+        "limits": [{"macro": macro(k), "value": v, "name": k} for k, v in spec.limits.items()],
+        "motion_kinds": [macro(k) for k in MOTION_KINDS],
+        "motion_keys": [macro(k) for k in MOTION_KEYS],
+        "orient_kinds": [macro(k) for k in ORIENT_KINDS],
+        "orient_keys": [macro(k) for k in ORIENT_KEYS],
+        "shape_kinds": [macro(k) for k in SHAPE_KINDS],
+        "shape_keys": [macro(k) for k in SHAPE_KEYS],
+        "cutter_keys": [macro(k) for k in CUTTER_KEYS],
+        "regions": [macro(k) for k in REGIONS],
+        "algorithms": [macro(k) for k in ALGORITHMS],
+        "tags": [macro(k) for k in CHECKSUM_TAGS],
+        "check_kinds": [macro(k) for k in CHECK_KINDS],
+        "field_kinds": [macro(k) for k in FIELD_KINDS],
+        "decisions": spec.decisions,
+        "errata": spec.errata,
+    }
+
+
+def emit(spec: Spec) -> dict[str, bytes]:
+    env = environment(HERE / "templates")
+    env.filters["cstr"] = cstr
+    env.filters["comment"] = comment
+    env.filters["cname"] = cname
+    env.filters["macro"] = macro
+    env.filters["wrap"] = lambda s, width=76, indent="" : ("\n" + indent).join(textwrap.wrap(s, width))
+    ctx = context(spec)
+    out: dict[str, bytes] = {}
+    for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c"):
+        out[f"{OUT}/{name}"] = env.get_template(name + ".j2").render(**ctx).encode()
+    return out

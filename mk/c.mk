@@ -1,0 +1,94 @@
+# C binding (issue #5): generated/c/ (cbf.h, testee, cbf-c tool, fuzz harness)
+# built into build/c/. Targets:
+#   c-build    the conformance testee (ASan/UBSan), the cbf-c tool, the fuzzer
+#   c-check    strict builds: gcc and clang C99, g++ as C++, clang -Weverything
+#   c-test     C conformance smoke test of the sanitizer testee (also in CI)
+#   fuzz-c     libFuzzer for FUZZ_SECONDS (default 30) from the golden files
+#   c-fuzz-ci  the same for 60 s (part of `make test`)
+# Needs gcc, g++, clang and libclang-rt-14-dev (libFuzzer, sanitizers):
+# .ci/setup-debian.sh installs them when clang is missing.
+
+C_GEN := generated/c
+C_OUT := build/c
+C_HDR := $(C_GEN)/cbf.h
+C_CC ?= gcc
+C_CLANG ?= clang
+C_CXX ?= g++
+C_WARN := -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wdouble-promotion -Werror
+C_STRICT := -std=c99 $(C_WARN)
+# As C++ (the header's extern "C" and the implementation compile as C++ too).
+# -Wdouble-promotion stays; only C99-only idioms are accepted.
+C_CXX_STRICT := -x c++ -std=c++11 $(C_WARN)
+# clang -Weverything, minus a short list:
+#   -Wno-padded                  structs follow the spec's field order; padding is expected
+#   -Wno-declaration-after-statement  C99 allows it (clang 14 does not flag it in C99, kept for newer clangs)
+#   -Wno-unknown-warning-option  so the list works on clang versions without the last flag
+C_EVERYTHING := -std=c99 -Weverything -Werror -Wno-padded -Wno-unknown-warning-option -Wno-declaration-after-statement
+C_SAN := -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+C_FUZZ_FLAGS := -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+FUZZ_SECONDS ?= 30
+C_GOLDEN := $(wildcard conformance/golden/*.cbf)
+C_SOURCES := $(C_HDR) $(C_GEN)/cbf_testee.c $(C_GEN)/cbf_tool.c $(C_GEN)/cbf_fuzz.c
+
+TEST_DEPS += c-build c-check c-test c-fuzz-ci
+.PHONY: c-deps c-build c-check c-test fuzz-c c-fuzz-ci
+
+# clang, libFuzzer and the sanitizer runtimes come from Debian's packages.
+c-deps:
+	@if ! command -v $(C_CLANG) >/dev/null || ! command -v $(C_CC) >/dev/null || ! command -v $(C_CXX) >/dev/null; then \
+	  if [ -x .ci/setup-debian.sh ]; then .ci/setup-debian.sh; \
+	  else echo "c-deps: install gcc g++ clang libclang-rt-14-dev (apt-get install -y clang libclang-rt-14-dev)" >&2; exit 1; fi; \
+	fi
+
+$(C_OUT)/.dir:
+	@mkdir -p $(C_OUT)/obj $(C_OUT)/fuzz-corpus
+	@touch $@
+
+# The conformance testee, with AddressSanitizer and UBSan (bindings.yaml runs it).
+$(C_OUT)/cbf_testee: $(C_HDR) $(C_GEN)/cbf_testee.c | $(C_OUT)/.dir
+	$(C_CC) $(C_STRICT) $(C_SAN) -o $@ $(C_GEN)/cbf_testee.c -lm
+
+# The reference command-line tool.
+$(C_OUT)/cbf-c: $(C_HDR) $(C_GEN)/cbf_tool.c | $(C_OUT)/.dir
+	$(C_CC) $(C_STRICT) -O2 -o $@ $(C_GEN)/cbf_tool.c -lm
+
+# The libFuzzer harness (clang only).
+$(C_OUT)/cbf_fuzz: $(C_HDR) $(C_GEN)/cbf_fuzz.c | $(C_OUT)/.dir
+	$(C_CLANG) -std=c99 $(C_WARN) $(C_FUZZ_FLAGS) -o $@ $(C_GEN)/cbf_fuzz.c -lm
+
+c-build: c-deps $(C_OUT)/cbf_testee $(C_OUT)/cbf-c $(C_OUT)/cbf_fuzz  ## build the C testee, cbf-c and the fuzzer into build/c
+
+# Every translation unit with every strict compiler; the header alone too.
+$(C_OUT)/check.stamp: $(C_SOURCES) mk/c.mk | $(C_OUT)/.dir
+	@printf '#include "cbf.h"\nint cbf_header_only(void);\nint cbf_header_only(void) { return CBF_COMMAND_COUNT; }\n' > $(C_OUT)/obj/header_only.c
+	@set -e; for src in $(C_OUT)/obj/header_only.c $(C_GEN)/cbf_testee.c $(C_GEN)/cbf_tool.c $(C_GEN)/cbf_fuzz.c; do \
+	  base=$$(basename $$src .c); \
+	  echo "c-check: $$base: gcc, clang, g++ (C++), clang -Weverything"; \
+	  $(C_CC) $(C_STRICT) -I$(C_GEN) -c $$src -o $(C_OUT)/obj/$$base.gcc.o; \
+	  $(C_CLANG) $(C_STRICT) -I$(C_GEN) -c $$src -o $(C_OUT)/obj/$$base.clang.o; \
+	  $(C_CXX) $(C_CXX_STRICT) -I$(C_GEN) -c $$src -o $(C_OUT)/obj/$$base.cxx.o; \
+	  $(C_CLANG) $(C_EVERYTHING) -I$(C_GEN) -c $$src -o $(C_OUT)/obj/$$base.every.o; \
+	done
+	@touch $@
+
+c-check: c-deps $(C_OUT)/check.stamp  ## strict C builds: gcc, clang, g++ as C++, clang -Weverything
+
+# A smoke run of the sanitizer testee on the golden files: every request is
+# answered with one JSON line (the conformance runner does the judging).
+c-test: c-build  ## run the sanitizer C testee over the golden files
+	@set -e; n=0; for f in $(C_GOLDEN); do \
+	  printf '{"op": "decode", "file": "%s"}\n{"op": "validate", "file": "%s", "profile": "default", "part_number": null, "cutters": null}\n' "$(CURDIR)/$$f" "$(CURDIR)/$$f"; n=$$((n+1)); \
+	done > $(C_OUT)/smoke.jsonl; echo '{"op": "quit"}' >> $(C_OUT)/smoke.jsonl; \
+	$(C_OUT)/cbf_testee < $(C_OUT)/smoke.jsonl > $(C_OUT)/smoke.out; \
+	lines=$$(wc -l < $(C_OUT)/smoke.out); \
+	if [ "$$lines" -ne $$((2*n)) ]; then echo "c-test: $$lines answers for $$((2*n)) requests" >&2; exit 1; fi; \
+	echo "c-test: $$n golden file(s) decoded and validated under ASan/UBSan"
+
+fuzz-c: c-build  ## run the C libFuzzer harness for FUZZ_SECONDS (default 30)
+	@mkdir -p $(C_OUT)/fuzz-seeds
+	@for f in $(C_GOLDEN); do cp -f $$f $(C_OUT)/fuzz-seeds/; done
+	$(C_OUT)/cbf_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	  $(C_OUT)/fuzz-corpus $(C_OUT)/fuzz-seeds
+
+c-fuzz-ci:
+	@$(MAKE) fuzz-c FUZZ_SECONDS=60
