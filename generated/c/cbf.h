@@ -2896,7 +2896,7 @@ static int cbf__scalar(const uint8_t *args, int layout, int idx, double *out)
     return cbf__ffinite(args, f) ? 1 : -1;
 }
 
-/* 6.4.5: continuity of motion commands (M1). POINT sets the current
+/* 6.4.5: continuity of motion commands (M1). A point motion sets the current
  * position; every other motion command is compared with it when its start is
  * finite, then moves it to its end (none when a value is not finite or the
  * normal is zero). Double precision, operations in the reference order. */

@@ -16,7 +16,7 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
-from ...model import Command, Field, Layout, Spec
+from ...model import Field, Layout, Spec
 from ...render import environment
 
 HERE = Path(__file__).parent
@@ -59,7 +59,7 @@ def cname(name: str) -> str:
 
 
 def macro(name: str) -> str:
-    """An upper-case macro fragment for a spec id ("6.4.4" -> 6_4_4, "1.x" -> 1_X)."""
+    """An upper-case macro fragment for a spec id ("9.8.7" -> 9_8_7, "1.x" -> 1_X)."""
     return re.sub(r"\W+", "_", name).strip("_").upper()
 
 
@@ -181,7 +181,7 @@ def context(spec: Spec) -> dict[str, Any]:
     profiles = [p.id for p in spec.profiles]
 
     layouts: list[dict[str, Any]] = []
-    commands = []
+    commands: list[dict[str, Any]] = []
     arg_rows: list[dict[str, Any]] = []
     cmd_index = {c.name: i for i, c in enumerate(spec.commands)}
     max_layouts = 0
@@ -235,17 +235,19 @@ def context(spec: Spec) -> dict[str, Any]:
             "cutter": int(bool(c.cutter)),
             "vmask": " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in c.versions),
             "layouts": [lay for lay in layouts[first:]],
-            "per_version": [{"macro": macro(v.id), "layouts": [lay for lay in layouts[first:] if v.id in lay["versions"]]}
-                            for v in spec.versions],
+            "per_version": [
+                {"macro": macro(v.id), "layouts": [lay for lay in layouts[first:] if v.id in lay["versions"]]}
+                for v in spec.versions
+            ],
         })
-    for c in commands:
-        for row in c["cands"]:
+    for crow in commands:
+        for row in crow["cands"]:
             row.extend([-1] * (max_layouts - len(row)))
 
     cov_names = list(spec.checksums.coverages)
     rec_names = [f.name for f in spec.record.fields]
-    segments = []
-    coverages = []
+    segments: list[dict[str, Any]] = []
+    coverages: list[dict[str, Any]] = []
     for name, cov in spec.checksums.coverages.items():
         coverages.append({"name": name, "first": len(segments), "n": len(cov.segments), "doc": comment(cov.doc)})
         for s in cov.segments:
@@ -254,7 +256,7 @@ def context(spec: Spec) -> dict[str, Any]:
                 "end": -1 if s.end is None else s.end,
                 "exclude": " | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u",
             })
-    ckfields = []
+    ckfields: list[dict[str, Any]] = []
     for tag in CHECKSUM_TAGS:
         cf = spec.checksums.for_field(tag)
         kind = spec.checksums.algorithms[cf.algorithm].kind
@@ -262,18 +264,18 @@ def context(spec: Spec) -> dict[str, Any]:
             raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
         ckfields.append({"tag": tag, "alg": "ALG_" + macro(kind), "coverage": cov_names.index(cf.coverage)})
     fill = ["CK_" + macro(t) for t in spec.checksums.fill_order]
-    profile_rows = []
+    profile_rows: list[dict[str, Any]] = []
     for p in spec.profiles:
         profile_rows.append({"id": p.id, "macro": macro(p.id), "doc": comment(p.doc),
                              "file": [cov_names.index(x) for x in p.file_coverages],
                              "hint": [cov_names.index(x) for x in p.hint_coverages]})
-    max_cov = max([len(p["file"]) for p in profile_rows] + [len(p["hint"]) for p in profile_rows] + [1])
-    for p in profile_rows:
-        p["file_pad"] = p["file"] + [-1] * (max_cov - len(p["file"]))
-        p["hint_pad"] = p["hint"] + [-1] * (max_cov - len(p["hint"]))
+    max_cov = max([len(r["file"]) for r in profile_rows] + [len(r["hint"]) for r in profile_rows] + [1])
+    for prow in profile_rows:
+        prow["file_pad"] = prow["file"] + [-1] * (max_cov - len(prow["file"]))
+        prow["hint_pad"] = prow["hint"] + [-1] * (max_cov - len(prow["hint"]))
 
-    checks = []
-    targets = []
+    checks: list[dict[str, Any]] = []
+    targets: list[dict[str, Any]] = []
     tnames: list[str] = []
     for ch in spec.checks:
         if ch.kind not in CHECK_KINDS:
