@@ -1958,7 +1958,7 @@ static uint32_t cbf__cover(int cov, int alg, unsigned width, const uint8_t *buf,
             size_t pos = CBF_HEADER_SIZE;
             if (records_end > len)
                 records_end = len;
-            while (nbf && records_end - pos >= CBF_RECORD_HEAD_SIZE && pos <= records_end) {
+            while (nbf && pos <= records_end && records_end - pos >= CBF_RECORD_HEAD_SIZE) {
                 size_t nb = cbf__get_u(buf + pos + nbf->offset, nbf->elem);
                 size_t cur = 0, k;
                 if (records_end - pos - CBF_RECORD_HEAD_SIZE < nb)
