@@ -311,6 +311,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "fallback_version": [v.id for v in spec.versions].index(spec.fallback_version),
         "commands": commands,
         "sorted_commands": sorted(commands, key=lambda c: c["code"]),
+        "names_by_code": [next((c["name"] for c in commands if c["code"] == code), None) for code in range(256)],
         "layouts": layouts,
         "arg_rows": arg_rows,
         "max_layouts": max_layouts,
