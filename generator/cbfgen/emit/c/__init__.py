@@ -311,6 +311,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "fallback_version": [v.id for v in spec.versions].index(spec.fallback_version),
         "commands": commands,
         "sorted_commands": sorted(commands, key=lambda c: c["code"]),
+        "index_by_code": [next((c["index"] for c in commands if c["code"] == code), -1) for code in range(256)],
         "names_by_code": [next((c["name"] for c in commands if c["code"] == code), None) for code in range(256)],
         "layouts": layouts,
         "arg_rows": arg_rows,
