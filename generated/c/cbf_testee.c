@@ -1059,8 +1059,10 @@ static int encode(int32_t doc, int keep, int profile, long *size)
     trail = jget(doc, "trailing");
     if (hdr < 0 || nodes[hdr].type != J_OBJ)
         return fail("%s", "$.header: expected an object");
-    if (recs >= 0 && nodes[recs].type != J_ARR && nodes[recs].type != J_NULL)
+    if (recs >= 0 && nodes[recs].type != J_ARR)
         return fail("%s", "$.records: expected a list");
+    if (trail >= 0 && nodes[trail].type != J_STR)
+        return fail("%s", "$.trailing: expected a hex string");
     nh = cbf_header_fields(0, &hf);
     {
         int32_t vmaj = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MAJOR)->name);
@@ -1195,7 +1197,7 @@ static int encode(int32_t doc, int keep, int profile, long *size)
         if (cbf_encode_record_stored(&w, &head, args, (size_t)nargs) != CBF_OK)
             return fail("%s: cannot encode", where);
     }
-    if (trail >= 0 && nodes[trail].type != J_NULL) {
+    if (trail >= 0) {
         long n = unhex(trail, out_buf + w.len, sizeof out_buf - w.len);
         if (n < 0)
             return fail("%s", "$.trailing: not hex");
