@@ -9,6 +9,7 @@ import re
 import shutil
 import subprocess
 import sys
+import zlib
 from pathlib import Path
 
 import pytest
@@ -123,6 +124,63 @@ def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
     assert result["ok"], result
     (rec,) = result["result"]["records"]
     assert rec["command"] == "DWELL" and rec["args"] == {"seconds": 2.5}
+
+
+CRC_PROGRAM = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#include <string.h>
+
+static long findings;
+static void on(void *u, const cbf_finding *f) { (void)u; (void)f; findings++; }
+
+int main(void)
+{
+    static uint8_t buf[4096];
+    cbf_header h;
+    cbf_writer w;
+    cbf_options opt;
+    long n;
+    if (cbf_header_init(&h, CBF_DEFAULT_VERSION) != CBF_OK) return 10;
+    if (cbf_encode_begin(&w, buf, sizeof buf, &h) != CBF_OK) return 11;
+    if (cbf_encode_record(&w, CBF_CMD_CUTTER_ON, NULL, 0) != CBF_OK) return 12;
+    n = cbf_encode_end(&w, CBF_PROFILE_DEFAULT, 1);
+    if (n < 0) return 13;
+    memset(&opt, 0, sizeof opt);
+    if (cbf_validate(buf, (size_t)n, &opt, on, NULL) != 0 || findings) return 14;
+    {
+        FILE *fp = fopen("crc.cbf", "wb");
+        if (!fp || fwrite(buf, 1, (size_t)n, fp) != (size_t)n) return 16;
+        fclose(fp);
+    }
+    buf[n - 1] ^= 1; /* a flipped byte in the header's end pattern */
+    findings = 0;
+    if (cbf_validate(buf, (size_t)n, &opt, on, NULL) < 2) return 15; /* magic and CRC */
+    return 0;
+}
+"""
+
+
+def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
+    """FORMAT-NOTES: another algorithm must be a one-line spec change; the C codec follows it."""
+    cc = _need("gcc")
+    text = SPEC.read_text(encoding="utf-8")
+    line = "    - {field: file, algorithm: byte_sum, coverage: file, clause: \"6.2.1\"}"
+    assert line in text
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(text.replace(line, line.replace("byte_sum", "crc32")), encoding="utf-8")
+    out = tmp_path / "gen"
+    _generate(spec, out)
+    src = tmp_path / "crc.c"
+    src.write_text(CRC_PROGRAM, encoding="utf-8")
+    exe = tmp_path / "crc"
+    subprocess.run([cc, *STRICT, "-I", str(out / "c"), "-o", str(exe), str(src), "-lm"], check=True,
+                   capture_output=True)
+    run = subprocess.run([str(exe)], cwd=tmp_path, capture_output=True, text=True)
+    assert run.returncode == 0, run.returncode
+    data = (tmp_path / "crc.cbf").read_bytes()
+    assert int.from_bytes(data[4:8], "little") == zlib.crc32(data[8:])
 
 
 def test_templates_and_emitter_name_no_format_detail() -> None:

@@ -296,6 +296,15 @@ def context(spec: Spec) -> dict[str, Any]:
             "clause": ch.clause or "", "decision": ch.decision or "",
         })
     max_arg = max([lay["size"] for lay in layouts] + [0])
+    groups: dict[str, list[str]] = {
+        "command": [str(c["macro"]) for c in commands], "layout": [str(lay["macro"]) for lay in layouts],
+        "version": [str(v["macro"]) for v in versions], "check": [str(c["macro"]) for c in checks],
+        "profile": [str(p["macro"]) for p in profile_rows],
+    }
+    for what, names in groups.items():
+        dup = sorted({n for n in names if names.count(n) > 1})
+        if dup:
+            raise ValueError(f"C binding: two {what}s map to the same C name {dup[0]}")
     return {
         "spec": spec,
         "meta": spec.meta,
