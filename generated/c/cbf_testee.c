@@ -644,16 +644,16 @@ static int jeq(int32_t n, const char *s)
     return n >= 0 && nodes[n].type == J_STR && nodes[n].len == l && memcmp(jtext + nodes[n].start, s, l) == 0;
 }
 
-/* The value of key in object n, or -1. */
+/* The value of key in object n (the last one, as Python's json), or -1. */
 static int32_t jget(int32_t n, const char *key)
 {
-    int32_t k;
+    int32_t k, found = -1;
     if (n < 0 || nodes[n].type != J_OBJ)
         return -1;
     for (k = nodes[n].first; k >= 0; k = nodes[nodes[k].next].next)
         if (jeq(k, key))
-            return nodes[k].next;
-    return -1;
+            found = nodes[k].next;
+    return found;
 }
 
 static size_t jcount(int32_t n)
@@ -676,6 +676,10 @@ static int juint(int32_t n, uint32_t max, uint32_t *out)
     if (n < 0 || nodes[n].type != J_NUM)
         return 0;
     s = jtext + nodes[n].start;
+    if (nodes[n].len == 2 && s[0] == '-' && s[1] == '0') {
+        *out = 0; /* -0 is the integer 0 in JSON readers */
+        return 1;
+    }
     for (i = 0; i < nodes[n].len; i++) {
         if (!jdigit(s[i]))
             return 0;
