@@ -87,7 +87,7 @@ c-test: c-build  ## run the sanitizer C testee over the golden files
 fuzz-c: c-build  ## run the C libFuzzer harness for FUZZ_SECONDS (default 30)
 	@mkdir -p $(C_OUT)/fuzz-seeds
 	@for f in $(C_GOLDEN); do cp -f $$f $(C_OUT)/fuzz-seeds/; done
-	$(C_OUT)/cbf_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	$(C_OUT)/cbf_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$(C_OUT)/ \
 	  $(C_OUT)/fuzz-corpus $(C_OUT)/fuzz-seeds
 
 c-fuzz-ci:
