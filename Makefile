@@ -55,9 +55,10 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 	@echo "generated/ is fresh"
 
 # -- quality ------------------------------------------------------------------
+MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/*.py)
 lint: venv  ## ruff + mypy --strict on hand-written Python
-	$(PY) -m ruff check generator conformance tests generated/python
-	$(PY) -m mypy --strict generator/cbfgen generated/python/cbf conformance/runner conformance/assembler
+	$(PY) -m ruff check generator conformance tests generated/python $(wildcard bench)
+	$(PY) -m mypy --strict $(MYPY_PATHS)
 
 test-py: venv
 	$(PY) -m pytest -q -p no:cacheprovider
