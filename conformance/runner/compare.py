@@ -1,0 +1,118 @@
+"""Comparison rules: floats by binary32 bits, findings as sorted multisets."""
+
+from __future__ import annotations
+
+import math
+import struct
+from typing import Any
+
+WILDCARD = "*"
+
+
+def f32_bits(value: Any) -> int | None:
+    """The binary32 bits a canonical-JSON float stands for, or None if it is not one."""
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, str) and len(value) == 10 and value.startswith("0x"):
+        try:
+            return int(value[2:], 16)
+        except ValueError:
+            return None
+    if isinstance(value, (int, float)):
+        try:
+            return int(struct.unpack("<I", struct.pack("<f", float(value)))[0])
+        except OverflowError:
+            return None
+    return None
+
+
+def _floatish(v: Any) -> bool:
+    return isinstance(v, float) or (isinstance(v, str) and len(v) == 10 and v.startswith("0x"))
+
+
+def _number_like(v: Any) -> bool:
+    return not isinstance(v, bool) and isinstance(v, int | float | str)
+
+
+def first_difference(expected: Any, actual: Any, path: str = "$") -> str | None:
+    """None when actual matches expected; else where and how they differ.
+
+    Keys named ``offset`` may be left out of the expectation; ``"*"`` matches anything.
+    """
+    if expected == WILDCARD:
+        return None
+    if isinstance(expected, dict):
+        if not isinstance(actual, dict):
+            return f"{path}: expected an object, got {_short(actual)}"
+        for key in expected:
+            if key not in actual:
+                return f"{path}.{key}: missing"
+        for key in actual:
+            if key not in expected and key != "offset":
+                return f"{path}.{key}: unexpected key"
+        for key, value in expected.items():
+            diff = first_difference(value, actual[key], f"{path}.{key}")
+            if diff:
+                return diff
+        return None
+    if isinstance(expected, list):
+        if not isinstance(actual, list):
+            return f"{path}: expected a list, got {_short(actual)}"
+        if len(expected) != len(actual):
+            return f"{path}: expected {len(expected)} items, got {len(actual)}"
+        for i, (e, a) in enumerate(zip(expected, actual, strict=True)):
+            diff = first_difference(e, a, f"{path}[{i}]")
+            if diff:
+                return diff
+        return None
+    if _number_like(expected) and _number_like(actual) and (_floatish(expected) or _floatish(actual)):
+        eb, ab = f32_bits(expected), f32_bits(actual)
+        if eb is None or ab is None or eb != ab:
+            return f"{path}: expected {_short(expected)} ({_bits(eb)}), got {_short(actual)} ({_bits(ab)})"
+        return None
+    if type(expected) is not type(actual) and not (isinstance(expected, int) and isinstance(actual, int)):
+        return f"{path}: expected {_short(expected)}, got {_short(actual)}"
+    if expected != actual:
+        return f"{path}: expected {_short(expected)}, got {_short(actual)}"
+    return None
+
+
+def _bits(b: int | None) -> str:
+    return "-" if b is None else f"0x{b:08x}"
+
+
+def _short(v: Any) -> str:
+    text = repr(v)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def finding_key(f: Any) -> tuple[str, str, int]:
+    """(check, severity, record) with record -1 for null, from a finding dict or a [check, severity, record] list."""
+    if isinstance(f, dict):
+        check, sev, rec = f.get("check"), f.get("severity"), f.get("record")
+    else:
+        check, sev, rec = f[0], f[1], f[2]
+    return (str(check), str(sev), -1 if rec is None else int(rec))
+
+
+def findings_difference(expected: list[Any], actual: list[Any]) -> str | None:
+    e = sorted(finding_key(f) for f in expected)
+    a = sorted(finding_key(f) for f in actual)
+    if e == a:
+        return None
+    missing = [k for k in e if k not in a or e.count(k) > a.count(k)]
+    extra = [k for k in a if k not in e or a.count(k) > e.count(k)]
+    parts = []
+    if missing:
+        parts.append("missing " + ", ".join(_fk(k) for k in dict.fromkeys(missing)))
+    if extra:
+        parts.append("unexpected " + ", ".join(_fk(k) for k in dict.fromkeys(extra)))
+    return "; ".join(parts)
+
+
+def _fk(k: tuple[str, str, int]) -> str:
+    return f"{k[0]}/{k[1]}/{'header' if k[2] < 0 else 'record ' + str(k[2])}"
+
+
+def is_nan_bits(bits: int) -> bool:
+    return math.isnan(struct.unpack("<f", struct.pack("<I", bits))[0])

@@ -1,0 +1,338 @@
+"""Run the golden cases through every binding's testee and judge the answers."""
+
+from __future__ import annotations
+
+import argparse
+import base64
+import json
+import os
+import queue
+import subprocess
+import sys
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from .compare import first_difference, findings_difference
+
+ROOT = Path(__file__).resolve().parents[1]
+REPO = ROOT.parent
+TIMEOUT = 60.0
+
+
+@dataclass
+class Case:
+    name: str
+    cbf: Path
+    expect: dict[str, Any]
+
+    @property
+    def group(self) -> str:
+        """Two name components (valid.v3, check.6); checks beyond the spec share check.extra."""
+        parts = self.name.split(".")
+        if parts[0] == "check" and len(parts) > 1 and not parts[1][:1].isdigit():
+            return "check.extra"
+        return ".".join(parts[:2])
+
+
+@dataclass
+class Binding:
+    name: str
+    command: list[str]
+    env: dict[str, str] = field(default_factory=dict)
+    requires: list[str] = field(default_factory=list)
+
+    def missing(self) -> list[str]:
+        return [r for r in self.requires if not (REPO / r).exists()]
+
+
+class Testee:
+    """A testee process, started once, one JSON line per request."""
+
+    def __init__(self, binding: Binding) -> None:
+        self.binding = binding
+        self.proc: subprocess.Popen[str] | None = None
+        self.lines: queue.Queue[str | None] = queue.Queue()
+
+    def start(self) -> None:
+        env = dict(os.environ)
+        env.update({k: v.format(repo=REPO) for k, v in self.binding.env.items()})
+        cmd = [c.format(repo=REPO, python=sys.executable) for c in self.binding.command]
+        self.proc = subprocess.Popen(cmd, cwd=REPO, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                     stderr=sys.stderr, text=True, encoding="utf-8", bufsize=1)
+        self.lines = queue.Queue()
+        out = self.proc.stdout
+        assert out is not None
+
+        def pump() -> None:
+            for line in out:
+                self.lines.put(line)
+            self.lines.put(None)
+
+        threading.Thread(target=pump, daemon=True).start()
+
+    def ask(self, request: dict[str, Any]) -> dict[str, Any]:
+        if self.proc is None or self.proc.poll() is not None:
+            self.start()
+        assert self.proc is not None and self.proc.stdin is not None
+        try:
+            self.proc.stdin.write(json.dumps(request) + "\n")
+            self.proc.stdin.flush()
+            line = self.lines.get(timeout=TIMEOUT)
+        except (BrokenPipeError, OSError, queue.Empty) as exc:
+            self.stop()
+            raise RuntimeError(f"testee died or hung ({type(exc).__name__})") from None
+        if line is None:
+            self.stop()
+            raise RuntimeError("testee exited")
+        try:
+            answer = json.loads(line)
+        except json.JSONDecodeError:
+            raise RuntimeError(f"testee wrote a line that is not JSON: {line[:80]!r}") from None
+        if not isinstance(answer, dict):
+            raise RuntimeError("testee answered with something other than an object")
+        return answer
+
+    def stop(self) -> None:
+        if self.proc is not None:
+            try:
+                if self.proc.poll() is None and self.proc.stdin:
+                    self.proc.stdin.write('{"op": "quit"}\n')
+                    self.proc.stdin.flush()
+                    self.proc.wait(timeout=5)
+            except (OSError, subprocess.TimeoutExpired):
+                self.proc.kill()
+            self.proc = None
+
+
+def load_cases(golden: Path, prefixes: list[str] | None = None) -> list[Case]:
+    cases = []
+    for exp in sorted(golden.glob("*.expect.yaml")):
+        name = exp.name[: -len(".expect.yaml")]
+        if prefixes and not any(name.startswith(p) for p in prefixes):
+            continue
+        data = yaml.safe_load(exp.read_text(encoding="utf-8"))
+        cases.append(Case(name, golden / f"{name}.cbf", data))
+    return cases
+
+
+def load_bindings(path: Path) -> list[Binding]:
+    data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    return [Binding(b["name"], list(b["command"]), dict(b.get("env", {})), list(b.get("requires", [])))
+            for b in data["bindings"]]
+
+
+# -- one case, one binding ---------------------------------------------------------
+def run_case(t: Testee, case: Case) -> tuple[str, str]:
+    """('pass'|'fail'|'skip', message) for one case on one testee."""
+    exp = case.expect
+    path = str(case.cbf)
+    skipped, ran = 0, 0
+    for step in ("decode", "validate", "encode"):
+        try:
+            result = _step(t, case, step, path)
+        except RuntimeError as exc:
+            return "fail", f"{step}: {exc}"
+        if result is None:
+            continue
+        if result == "skipped":
+            skipped += 1
+            continue
+        ran += 1
+        if result != "ok":
+            return "fail", f"{step}: {result}"
+    if ran == 0 and skipped:
+        return "skip", "every operation skipped"
+    return "pass", ""
+
+
+def _step(t: Testee, case: Case, step: str, path: str) -> str | None:
+    exp = case.expect
+    if step == "decode":
+        want = exp.get("decode")
+        if want is None:
+            return None
+        ans = t.ask({"op": "decode", "file": path})
+        if ans.get("skipped"):
+            return "skipped"
+        if isinstance(want, dict) and "error" in want:
+            if ans.get("ok"):
+                return f"decoded, expected error {want['error']}"
+            err = ans.get("error") or {}
+            if err.get("kind") != want["error"]["kind"] or err.get("offset") != want["error"]["offset"]:
+                return f"error {err.get('kind')}@{err.get('offset')}, expected {want['error']['kind']}@" \
+                       f"{want['error']['offset']}"
+            return "ok"
+        if not ans.get("ok"):
+            return f"failed to decode: {ans.get('error')}"
+        result = ans.get("result")
+        if want != "ok":
+            diff = first_difference(want, result)
+            if diff:
+                return diff
+        for pointer, value in (exp.get("decode_subset") or {}).items():
+            try:
+                got = _resolve(result, pointer)
+            except (KeyError, IndexError, TypeError):
+                return f"{pointer}: missing"
+            diff = first_difference(value, got, pointer)
+            if diff:
+                return diff
+        count = exp.get("decode_records")
+        if count is not None and len((result or {}).get("records", [])) != count:
+            return f"expected {count} records, got {len((result or {}).get('records', []))}"
+        return "ok"
+    if step == "validate":
+        want_v = exp.get("validate")
+        if not want_v:
+            return None
+        opts = exp.get("options") or {}
+        cutters = opts.get("cutters")
+        for profile, expected in want_v.items():
+            ans = t.ask({"op": "validate", "file": path, "profile": profile,
+                         "part_number": opts.get("part_number"),
+                         "cutters": str(case.cbf.parent / cutters) if cutters else None})
+            if ans.get("skipped"):
+                return "skipped"
+            if not ans.get("ok"):
+                return f"[{profile}] validate failed: {ans.get('error')}"
+            diff = findings_difference(expected or [], ans.get("findings") or [])
+            if diff:
+                return f"[{profile}] {diff}"
+        return "ok"
+    # encode: the decoded JSON back to the exact bytes (stored values kept), and for
+    # files with no default finding also with every derived value filled in.
+    if not exp.get("encode"):
+        return None
+    dec = t.ask({"op": "decode", "file": path})
+    if dec.get("skipped"):
+        return "skipped"
+    if not dec.get("ok"):
+        return f"cannot decode to re-encode: {dec.get('error')}"
+    data = case.cbf.read_bytes()
+    modes = [True]
+    if not (exp.get("validate") or {}).get("default"):
+        modes.append(False)
+    for keep in modes:
+        ans = t.ask({"op": "encode", "json": dec["result"], "keep_stored": keep, "profile": "default"})
+        if ans.get("skipped"):
+            return "skipped"
+        if not ans.get("ok"):
+            return f"keep_stored={keep}: refused: {ans.get('error')}"
+        got = base64.b64decode(ans.get("bytes", ""))
+        if got != data:
+            at = next((i for i in range(min(len(got), len(data))) if got[i] != data[i]), min(len(got), len(data)))
+            return f"keep_stored={keep}: bytes differ at offset {at} ({len(got)} vs {len(data)} bytes)"
+    return "ok"
+
+
+def _resolve(doc: Any, pointer: str) -> Any:
+    cur = doc
+    for part in pointer.strip("/").split("/"):
+        cur = cur[int(part)] if isinstance(cur, list) else cur[part]
+    return cur
+
+
+# -- failure lists -----------------------------------------------------------------
+def read_failures(path: Path) -> dict[str, str]:
+    out: dict[str, str] = {}
+    if not path.exists():
+        return out
+    for line in path.read_text(encoding="utf-8").splitlines():
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        name, _, message = line.partition(" ")
+        out[name] = message.strip()
+    return out
+
+
+def write_failures(path: Path, failures: dict[str, str], binding: str) -> None:
+    head = (f"# Known conformance failures of the {binding} binding: `case message`, one a line.\n"
+            "# The run fails on an unlisted failure, a listed case that passes, or a changed message.\n"
+            "# Rewrite with: python -m conformance.runner --fix\n")
+    body = "".join(f"{k} {v}\n" for k, v in sorted(failures.items()))
+    path.write_text(head + body, encoding="utf-8")
+
+
+def main_run(args: argparse.Namespace) -> int:
+    cases = load_cases(args.golden, args.case)
+    if not cases:
+        print(f"conformance: no golden cases in {args.golden}", file=sys.stderr)
+        return 2
+    bindings = load_bindings(args.bindings)
+    if args.binding:
+        unknown = set(args.binding) - {b.name for b in bindings}
+        if unknown:
+            print(f"conformance: unknown binding {sorted(unknown)[0]}", file=sys.stderr)
+            return 2
+        bindings = [b for b in bindings if b.name in args.binding]
+    if args.python_path:
+        for b in bindings:
+            if b.name == "python":
+                b.env["PYTHONPATH"] = args.python_path
+    report: dict[str, Any] = {"cases": {c.name: {"group": c.group, "clauses": c.expect.get("clauses", []),
+                                                  "checks": sorted({str(f[0]) for fs in (c.expect.get("validate") or {})
+                                                                    .values() for f in (fs or [])})}
+                                        for c in cases},
+                              "bindings": {}}
+    problems: list[str] = []
+    for b in bindings:
+        missing = b.missing()
+        results: dict[str, dict[str, str]] = {}
+        if missing:
+            print(f"conformance: {b.name}: not built ({', '.join(missing)}); every case skipped")
+            results = {c.name: {"status": "skip", "message": "binding not built"} for c in cases}
+            report["bindings"][b.name] = {"available": False, "results": results}
+            continue
+        t = Testee(b)
+        try:
+            for c in cases:
+                status, message = run_case(t, c)
+                results[c.name] = {"status": status, "message": message}
+        finally:
+            t.stop()
+        report["bindings"][b.name] = {"available": True, "results": results}
+        fpath = args.failures / f"{b.name}.txt"
+        listed = read_failures(fpath)
+        failing = {n: r["message"] for n, r in results.items() if r["status"] == "fail"}
+        if args.fix:
+            write_failures(fpath, failing, b.name)
+            continue
+        for name, msg in sorted(failing.items()):
+            if name not in listed:
+                problems.append(f"{b.name}: {name}: FAIL {msg}")
+            elif listed[name] != msg:
+                problems.append(f"{b.name}: {name}: listed as failing with '{listed[name]}', now fails with '{msg}'")
+        for name in sorted(listed):
+            if name in results and name not in failing:
+                problems.append(f"{b.name}: {name}: listed as failing but passes: remove it from {fpath.name}")
+    _print_matrix(report, cases)
+    tmp = args.report.with_suffix(".json.tmp")
+    tmp.write_text(json.dumps(report, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+    os.replace(tmp, args.report)
+    for p in problems:
+        print(p)
+    total = sum(1 for b in report["bindings"].values() for r in b["results"].values() if r["status"] == "pass")
+    print(f"conformance: {total} passed, {len(problems)} failed")
+    return 1 if problems else 0
+
+
+def _print_matrix(report: dict[str, Any], cases: list[Case]) -> None:
+    groups = sorted({c.group for c in cases})
+    names = list(report["bindings"])
+    width = max([len(g) for g in groups] + [10])
+    print("group".ljust(width) + "".join(f"  {n:>16}" for n in names))
+    for g in groups:
+        row = g.ljust(width)
+        for n in names:
+            res = [r for cn, r in report["bindings"][n]["results"].items() if report["cases"][cn]["group"] == g]
+            p = sum(r["status"] == "pass" for r in res)
+            f = sum(r["status"] == "fail" for r in res)
+            s = sum(r["status"] == "skip" for r in res)
+            row += f"  {f'{p}/{f}/{s}':>16}"
+        print(row)
+    print("(pass/fail/skip)")
