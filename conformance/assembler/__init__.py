@@ -9,6 +9,8 @@ code it tests. The language is described in conformance/golden/README.md.
 from __future__ import annotations
 
 import ast
+import bisect
+import functools
 import math
 import operator
 import re
@@ -48,6 +50,11 @@ _OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, as
         ast.Mod: operator.mod, ast.Div: operator.truediv, ast.USub: operator.neg}
 
 
+@functools.lru_cache(maxsize=4096)
+def _parse(expr: str) -> ast.Expression:
+    return ast.parse(expr, mode="eval")
+
+
 def _eval(expr: str, env: dict[str, int]) -> float:
     def ev(node: ast.AST) -> float:
         if isinstance(node, ast.Expression):
@@ -62,7 +69,7 @@ def _eval(expr: str, env: dict[str, int]) -> float:
             return _OPS[type(node.op)](ev(node.operand))  # type: ignore[no-any-return]
         raise ValueError(f"unsupported expression {expr!r}")
 
-    return ev(ast.parse(expr, mode="eval"))
+    return ev(_parse(expr))
 
 
 def _f32(tok: str, env: dict[str, int]) -> bytes:
@@ -232,24 +239,34 @@ def _directive(op: str, toks: list[str], st: _State, env: dict[str, int], lineno
 
 
 def _fill(st: _State, path: str) -> None:
-    """Resolve sums; a sum waits until no unresolved hole lies in its range."""
-    todo = list(st.holes)
+    """Resolve sums; a sum waits until no unresolved placeholder lies in its range."""
+    todo = sorted(st.holes, key=lambda h: h.offset)
     while todo:
-        progress = False
-        for hole in list(todo):
+        waiting = [h.offset for h in todo]
+        left: list[_Hole] = []
+        done: list[_Hole] = []
+        for hole in todo:
             spans = st.ranges.get(hole.target)
             if spans is None:
                 raise AsmError(path, hole.line, f"no range named {hole.target!r}")
-            blocked = any(o is not hole and any(b <= o.offset < e for b, e in spans) for o in todo)
-            if blocked:
-                continue
-            total = sum(sum(st.out[b:e]) for b, e in spans)
+            blocked = False
+            for b, e in spans:
+                k = bisect.bisect_left(waiting, b)
+                while k < len(waiting) and waiting[k] < e:
+                    if waiting[k] != hole.offset:
+                        blocked = True
+                        break
+                    k += 1
+                if blocked:
+                    break
+            (left if blocked else done).append(hole)
+        if not done:
+            raise AsmError(path, todo[0].line, "sums depend on each other in a cycle")
+        for hole in done:
+            total = sum(sum(st.out[b:e]) for b, e in st.ranges[hole.target])
             st.out[hole.offset:hole.offset + hole.width] = (total % (1 << (8 * hole.width))).to_bytes(
                 hole.width, "little")
-            todo.remove(hole)
-            progress = True
-        if not progress:
-            raise AsmError(path, todo[0].line, "sums depend on each other in a cycle")
+        todo = left
 
 
 def assemble(path: Path) -> bytes:

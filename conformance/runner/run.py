@@ -214,7 +214,7 @@ def _step(t: Testee, case: Case, step: str, path: str) -> str | None:
         return f"cannot decode to re-encode: {dec.get('error')}"
     data = case.cbf.read_bytes()
     modes = [True]
-    if not (exp.get("validate") or {}).get("default"):
+    if not (exp.get("validate") or {}).get("default") and exp.get("encode_fill", True):
         modes.append(False)
     for keep in modes:
         ans = t.ask({"op": "encode", "json": dec["result"], "keep_stored": keep, "profile": "default"})
