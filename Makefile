@@ -17,6 +17,7 @@ export PIP_DISABLE_PIP_VERSION_CHECK := 1
 # Hooks the fragments in mk/*.mk append to (before the rules that use them).
 GENERATE_POST :=
 TEST_DEPS :=
+CONFORMANCE_BUILD :=
 -include mk/*.mk
 .PHONY: all venv generate generate-py check-generated check-spec lint typecheck test test-py clean help
 

@@ -31,6 +31,7 @@ C_GOLDEN := $(wildcard conformance/golden/*.cbf)
 C_SOURCES := $(C_HDR) $(C_GEN)/cbf_testee.c $(C_GEN)/cbf_tool.c $(C_GEN)/cbf_fuzz.c
 
 TEST_DEPS += c-build c-check c-test c-fuzz-ci
+CONFORMANCE_BUILD += c-build
 .PHONY: c-deps c-build c-check c-test fuzz-c c-fuzz-ci
 
 # clang, libFuzzer and the sanitizer runtimes come from Debian's packages.

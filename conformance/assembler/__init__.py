@@ -17,6 +17,7 @@ import re
 import struct
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 
 class AsmError(Exception):
@@ -46,8 +47,9 @@ class _State:
     anon: int = 0
 
 
-_OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.FloorDiv: operator.floordiv,
-        ast.Mod: operator.mod, ast.Div: operator.truediv, ast.USub: operator.neg}
+_OPS: dict[type, Any] = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
+                         ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod, ast.Div: operator.truediv,
+                         ast.USub: operator.neg}
 
 
 @functools.lru_cache(maxsize=4096)
@@ -64,9 +66,9 @@ def _eval(expr: str, env: dict[str, int]) -> float:
         if isinstance(node, ast.Name) and node.id in env:
             return env[node.id]
         if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
-            return _OPS[type(node.op)](ev(node.left), ev(node.right))  # type: ignore[no-any-return]
+            return _OPS[type(node.op)](ev(node.left), ev(node.right))
         if isinstance(node, ast.UnaryOp) and type(node.op) in _OPS:
-            return _OPS[type(node.op)](ev(node.operand))  # type: ignore[no-any-return]
+            return _OPS[type(node.op)](ev(node.operand))
         raise ValueError(f"unsupported expression {expr!r}")
 
     return ev(_parse(expr))

@@ -16,7 +16,7 @@ from typing import Any
 
 import yaml
 
-from .compare import first_difference, findings_difference
+from .compare import findings_difference, first_difference
 
 ROOT = Path(__file__).resolve().parents[1]
 REPO = ROOT.parent
@@ -128,7 +128,6 @@ def load_bindings(path: Path) -> list[Binding]:
 # -- one case, one binding ---------------------------------------------------------
 def run_case(t: Testee, case: Case) -> tuple[str, str]:
     """('pass'|'fail'|'skip', message) for one case on one testee."""
-    exp = case.expect
     path = str(case.cbf)
     skipped, ran = 0, 0
     for step in ("decode", "validate", "encode"):

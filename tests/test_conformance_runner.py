@@ -1,0 +1,93 @@
+"""The runner turns red when the codec is broken, and its comparison rules hold."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import yaml
+
+from conformance.runner.compare import f32_bits, findings_difference, first_difference
+from conformance.runner.run import read_failures, write_failures
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def _scratch_codec(tmp: Path, edit: str) -> Path:
+    """The Python codec generated from an edited copy of the spec."""
+    spec = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    if edit == "swap_line_args":
+        line = next(c for c in spec["commands"] if c["name"] == "LINE")
+        args = line["layouts"][0]["args"]
+        args[0]["name"], args[1]["name"] = args[1]["name"], args[0]["name"]
+        line["motion"] = {"kind": "line", "start": "end", "end": "start"}
+    elif edit == "drop_shape_check":
+        spec["checks"] = [c for c in spec["checks"] if c["id"] != "shape"]
+    path = tmp / "cbf.yaml"
+    path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
+    out = tmp / "gen"
+    subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(path), "--out", str(out), "--only", "python"],
+                   cwd=REPO, check=True, capture_output=True)
+    return out / "python"
+
+
+def _run(tmp: Path, pythonpath: Path, case: str) -> subprocess.CompletedProcess[str]:
+    failures = tmp / "failures"
+    failures.mkdir(exist_ok=True)
+    (failures / "python.txt").write_text("", encoding="utf-8")
+    return subprocess.run(
+        [sys.executable, "-m", "conformance.runner", "--binding", "python", "--python-path", str(pythonpath),
+         "--failures", str(failures), "--report", str(tmp / "report.json"), "--case", case],
+        cwd=REPO, capture_output=True, text=True)
+
+
+def test_swapped_fields_turn_the_run_red(tmp_path: Path) -> None:
+    res = _run(tmp_path, _scratch_codec(tmp_path, "swap_line_args"), "valid")
+    assert res.returncode == 1
+    assert "python: valid.v3.all_commands: FAIL decode" in res.stdout
+    assert "python: valid.v4.all_commands: FAIL decode" in res.stdout
+
+
+def test_a_skipped_check_turns_the_run_red(tmp_path: Path) -> None:
+    res = _run(tmp_path, _scratch_codec(tmp_path, "drop_shape_check"), "check.shape")
+    assert res.returncode == 1
+    assert "python: check.shape.count: FAIL validate: [default] missing shape/error/record 10" in res.stdout
+
+
+def test_the_real_codec_is_green(tmp_path: Path) -> None:
+    res = _run(tmp_path, REPO / "generated" / "python", "check.6.4")
+    assert res.returncode == 0, res.stdout + res.stderr
+    assert "0 failed" in res.stdout
+
+
+def test_stale_failure_list_fails(tmp_path: Path) -> None:
+    failures = tmp_path / "failures"
+    failures.mkdir()
+    write_failures(failures / "python.txt", {"check.6.4.4.arg_checksum": "decode: something"}, "python")
+    assert read_failures(failures / "python.txt") == {"check.6.4.4.arg_checksum": "decode: something"}
+    res = subprocess.run(
+        [sys.executable, "-m", "conformance.runner", "--binding", "python", "--failures", str(failures),
+         "--report", str(tmp_path / "r.json"), "--case", "check.6.4.4"], cwd=REPO, capture_output=True, text=True)
+    assert res.returncode == 1
+    assert "listed as failing but passes" in res.stdout
+
+
+def test_floats_compare_by_bits() -> None:
+    assert first_difference(0.1, 0.10000000149011612) is None  # the same binary32
+    assert first_difference(0.1, 0.1000001) is not None
+    assert first_difference("0x80000000", -0.0) is None
+    assert first_difference(0.0, -0.0) is not None
+    assert first_difference("0x7fc00001", "0x7fc00000") is not None
+    assert f32_bits(1.0) == 0x3F800000
+    assert first_difference({"a": [1.0, "*"]}, {"a": [1.0, 5], "offset": 3}) is None
+    assert first_difference({"a": 1}, {"a": 1, "b": 2}) == "$.b: unexpected key"
+
+
+def test_findings_compare_as_multisets() -> None:
+    assert findings_difference([["6.4.4", "error", 2]], [{"check": "6.4.4", "severity": "error", "record": 2}]) is None
+    diff = findings_difference([["6.4.4", "error", 2], ["6.4.4", "error", 2]], [{"check": "6.4.4", "severity": "error",
+                                                                               "record": 2}])
+    assert diff and "missing" in diff
+    assert findings_difference([], [{"check": "shape", "severity": "error", "record": None}]) == \
+        "unexpected shape/error/header"
