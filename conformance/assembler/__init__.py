@@ -66,9 +66,9 @@ def _eval(expr: str, env: dict[str, int]) -> float:
         if isinstance(node, ast.Name) and node.id in env:
             return env[node.id]
         if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
-            return _OPS[type(node.op)](ev(node.left), ev(node.right))
+            return float(_OPS[type(node.op)](ev(node.left), ev(node.right)))
         if isinstance(node, ast.UnaryOp) and type(node.op) in _OPS:
-            return _OPS[type(node.op)](ev(node.operand))
+            return float(_OPS[type(node.op)](ev(node.operand)))
         raise ValueError(f"unsupported expression {expr!r}")
 
     return ev(_parse(expr))
