@@ -36,10 +36,7 @@ CONFORMANCE_BUILD += c-build
 
 # clang, libFuzzer and the sanitizer runtimes come from Debian's packages.
 c-deps:
-	@if ! command -v $(C_CLANG) >/dev/null || ! command -v $(C_CC) >/dev/null || ! command -v $(C_CXX) >/dev/null; then \
-	  if [ -x .ci/setup-debian.sh ]; then .ci/setup-debian.sh; \
-	  else echo "c-deps: install gcc g++ clang libclang-rt-14-dev (apt-get install -y clang libclang-rt-14-dev)" >&2; exit 1; fi; \
-	fi
+	@.ci/setup-debian.sh
 
 $(C_OUT)/.dir:
 	@mkdir -p $(C_OUT)/obj $(C_OUT)/fuzz-corpus

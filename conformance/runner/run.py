@@ -31,11 +31,13 @@ class Case:
 
     @property
     def group(self) -> str:
-        """Two name components (valid.v3, check.6); checks beyond the spec share check.extra."""
+        """valid.v3, check.6 (check.extra beyond the spec), else the first component (truncated, framing)."""
         parts = self.name.split(".")
         if parts[0] == "check" and len(parts) > 1 and not parts[1][:1].isdigit():
             return "check.extra"
-        return ".".join(parts[:2])
+        if parts[0] in ("valid", "check"):
+            return ".".join(parts[:2])
+        return parts[0]
 
 
 @dataclass

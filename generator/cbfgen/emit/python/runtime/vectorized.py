@@ -132,7 +132,8 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
             assert arr is not None
             col = arr[f.name]
             if f.kind == "float":
-                cols[f.name] = col.astype(np.float64)
+                with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
+                    cols[f.name] = col.astype(np.float64)
                 fin = np.isfinite(cols[f.name]) if f.count == 1 else np.isfinite(cols[f.name]).all(axis=1)
                 bad = np.nonzero(~fin)[0]
                 add(c_finite, rows[bad], 10, aoff[bad] + f.offset, (f"{cmd.name}.{f.name} is not finite" for _ in bad))
