@@ -196,7 +196,7 @@ class _Cursor:
 def _parse_args(cur: _Cursor, lay: T.LayoutInfo) -> bytes:
     vals: list[Any] = []
     for f in lay.args:
-        name = f"{lay.command.lower()} {f.name}"
+        name = f.name
         if f.kind == "float":
             if f.count > 1:
                 cur.expect(C["vector_open"], name)

@@ -112,7 +112,7 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
     rec_props.update({
         "offset": {"type": "integer", "minimum": 0},
         "command": {"oneOf": [{"enum": [c.name for c in spec.commands]}, {"type": "null"}]},
-        "args": {"oneOf": [{"type": "null"}, *layouts]},
+        "args": {"anyOf": [{"type": "null"}, *layouts]},
         "raw_args": {"type": "string", "pattern": "^([0-9a-f]{2})*$"},
     })
     return {

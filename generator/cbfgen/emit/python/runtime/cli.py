@@ -54,6 +54,17 @@ def _read(path: str, limit: int) -> bytes:
     return data
 
 
+def _check_output(path: str) -> None:
+    """Refuse an output path that cannot be written, before doing the work."""
+    if path == "-":
+        return
+    target = Path(path)
+    if not target.parent.is_dir():
+        raise _Fail(f"{path}: folder {str(target.parent)!r} does not exist")
+    if target.is_dir():
+        raise _Fail(f"{path}: is a directory")
+
+
 def _write(path: str, data: bytes) -> None:
     if path == "-":
         sys.stdout.buffer.write(data)
@@ -99,6 +110,7 @@ def _text(path: str, data: bytes) -> str:
 
 
 def cmd_decode(a: argparse.Namespace) -> int:
+    _check_output(a.output)
     model = _decode(a.file)
     if a.to == "cut":
         from .cut import to_cut
@@ -119,6 +131,7 @@ def cmd_encode(a: argparse.Namespace) -> int:
     from .codec import encode
     from .errors import CbfError
 
+    _check_output(a.output)
     data = _read(a.file, 64 * _max_file_size())
     text = _text(a.file, data)
     kind = a.input_format or ("json" if a.file.endswith(".json") or text.lstrip().startswith("{") else "cut")
