@@ -1,0 +1,65 @@
+"""The generated format documentation: complete, linked, and traceable."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from conftest import generate, spec_with_fixture_command
+
+from cbfgen.loader import load
+
+REPO = Path(__file__).resolve().parents[1]
+DOC = (REPO / "generated" / "docs" / "index.md").read_text(encoding="utf-8")
+SPEC = load(REPO / "spec" / "cbf.yaml")
+
+
+def _anchors(text: str) -> set[str]:
+    return set(re.findall(r'<a id="([^"]+)"></a>', text))
+
+
+def test_every_internal_link_resolves() -> None:
+    anchors = _anchors(DOC)
+    links = re.findall(r"\]\(#([^)]+)\)", DOC)
+    assert links
+    missing = sorted({link for link in links if link not in anchors})
+    assert not missing, missing
+
+
+def test_relative_file_links_exist() -> None:
+    base = REPO / "generated" / "docs"
+    for target in re.findall(r"\]\((\.\./[^)#]+)\)", DOC):
+        assert (base / target).resolve().exists(), target
+
+
+@pytest.mark.parametrize("name", [c.name for c in SPEC.commands])
+def test_every_command_has_a_section(name: str) -> None:
+    assert f"### {name} (0x" in DOC
+
+
+def test_every_check_is_documented_and_traced() -> None:
+    trace = DOC[DOC.index('<a id="traceability-matrix"></a>'):]
+    for check in SPEC.checks:
+        assert f"`{check.id}`" in DOC
+        assert f"[{check.id}](#check-" in trace, check.id
+
+
+def test_decisions_and_errata_are_published() -> None:
+    for note in SPEC.decisions + SPEC.errata:
+        assert note.text.split()[0] in DOC
+
+
+def test_missing_report_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    import cbfgen.emit.docs as docs
+
+    monkeypatch.setattr(docs, "REPORT", tmp_path / "absent.json")
+    text = docs.emit(SPEC)["docs/index.md"].decode()
+    assert "No conformance report is present: no status is shown." in text
+    assert "pass (" not in text
+
+
+def test_new_command_appears_in_the_docs(tmp_path: Path) -> None:
+    generate(spec_with_fixture_command(tmp_path), tmp_path / "gen", "docs")
+    text = (tmp_path / "gen" / "docs" / "index.md").read_text(encoding="utf-8")
+    assert "### DWELL (0x44)" in text and "[DWELL](#cmd-dwell)" in text and "`seconds`" in text
