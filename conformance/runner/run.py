@@ -252,9 +252,14 @@ def read_failures(path: Path) -> dict[str, str]:
 
 
 def write_failures(path: Path, failures: dict[str, str], binding: str) -> None:
+    """Rewrite the list; the comment block at its top (the reasons) is kept."""
     head = (f"# Known conformance failures of the {binding} binding: `case message`, one a line.\n"
             "# The run fails on an unlisted failure, a listed case that passes, or a changed message.\n"
             "# Rewrite with: python -m conformance.runner --fix\n")
+    if path.exists():
+        kept = [ln for ln in path.read_text(encoding="utf-8").splitlines(keepends=True) if ln.startswith("#")]
+        if kept:
+            head = "".join(kept)
     body = "".join(f"{k} {v}\n" for k, v in sorted(failures.items()))
     path.write_text(head + body, encoding="utf-8")
 

@@ -1,0 +1,263 @@
+"""Kaitai Struct emitter: generated/kaitai/cbf.ksy from the spec model.
+
+What Kaitai can express becomes `valid:` (magic numbers, the code copy, the
+argument size per command and version, version gating); the rest (sums,
+continuity, shapes, ranges) is said in the `doc`. The parsers compiled by
+kaitai-struct-compiler (`make generate-ksc`) live beside the .ksy.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from ...model import Command, Field, Layout, Spec, ident
+from ...render import environment
+
+HERE = Path(__file__).parent
+
+OUT = "kaitai"
+# Produced by ksc after the Python emitters (mk/kaitai.mk); not stale.
+KEEP = ("kaitai/python/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/", "kaitai/go/")
+
+
+def _doc(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _layout_type(lay: Layout) -> str:
+    return "args_" + ident(lay.command) + (("_" + ident(lay.variant)) if lay.variant else "")
+
+
+def _field_attr(f: Field, encoding: str, clause: str | None) -> dict[str, Any]:
+    attr: dict[str, Any] = {"id": f.name}
+    if f.kind == "float":
+        attr["type"] = "f4"
+        if f.count > 1:
+            attr["repeat"] = "expr"
+            attr["repeat-expr"] = f.count
+    elif f.kind == "uint":
+        attr["type"] = {1: "u1", 2: "u2", 4: "u4"}[f.elem_size]
+    elif f.kind == "string":
+        attr.update({"type": "str", "size": f.size, "encoding": encoding, "pad-right": 0})
+    else:
+        attr["size"] = f.size
+    if f.magic is not None:
+        attr["valid"] = f"0x{f.magic:0{2 * f.size}x}"
+    doc = f.doc + (f" [{f.unit}]" if f.unit else "")
+    attr["doc"] = _doc(doc)
+    ref = f.clause or clause
+    if ref:
+        attr["doc-ref"] = f"300071 rev 03, {ref}"
+    return attr
+
+
+def _version_index(spec: Spec) -> str:
+    """Kaitai expression: 1-based index of the version entry the header matches (fallback otherwise)."""
+    fallback = [v.id for v in spec.versions].index(spec.fallback_version) + 1
+    expr = str(fallback)
+    for i, v in reversed(list(enumerate(spec.versions, 1))):
+        cond = f"version_major == {v.major}" + (f" and version_minor == {v.minor}" if v.minor is not None else "")
+        expr = f"({cond} ? {i} : {expr})"
+    return expr
+
+
+def _candidates(spec: Spec, cmd: Command, vid: str) -> tuple[Layout, ...]:
+    own = cmd.layouts_for(vid)
+    return own if own else cmd.layouts
+
+
+def build(spec: Spec) -> dict[str, Any]:
+    m = spec.meta
+    enc = "ISO-8859-1"  # strings are ASCII (N4); bytes map 1:1 so that nothing is lost
+    vids = [v.id for v in spec.versions]
+    first = next(iter(spec.headers.values()))
+    # Header: the fields every layout shares from offset 0, then the rest per layout.
+    common: list[Field] = []
+    def same(a: Field | None, b: Field) -> bool:
+        key = (b.name, b.offset, b.type, b.size, b.magic)
+        return a is not None and (a.name, a.offset, a.type, a.size, a.magic) == key
+
+    for f in first.fields:
+        if all(same(h.field(f.name), f) for h in spec.headers.values()):
+            common.append(f)
+        else:
+            break
+    common_names = {f.name for f in common}
+    tails = {h.id: [f for f in h.fields if f.name not in common_names] for h in spec.headers.values()}
+    header_type = {
+        "doc": f"File header ({first.clause}); after the version field its layout depends on the version.",
+        "seq": [_field_attr(f, enc, first.clause) for f in common] + [{
+            "id": "layout",
+            "type": {"switch-on": "version_index",
+                     "cases": {i: f"header_{ident(spec.version(v).header)}" for i, v in enumerate(vids, 1)}},
+            "doc": "The rest of the header, laid out as the version says (7.1).",
+        }],
+        "instances": {"version_index": {
+            "value": _version_index(spec),
+            "doc": "1-based index of the spec's version entry ("
+                   + ", ".join(f"{i} = {v}" for i, v in enumerate(vids, 1))
+                   + f"); unknown versions read as {spec.fallback_version}.",
+        }},
+    }
+    types: dict[str, Any] = {"header": header_type}
+    for hid, fields in tails.items():
+        types[f"header_{ident(hid)}"] = {
+            "doc": _doc(spec.headers[hid].doc),
+            "seq": [_field_attr(f, enc, spec.headers[hid].clause) for f in fields],
+        }
+    # Record head, with the code copy, version gating and argument sizes as valid: expressions.
+    rec = spec.record
+    head: list[dict[str, Any]] = []
+    by_role = {f.role: f for f in rec.fields}
+    size_cases: list[str] = []
+    for cmd in spec.commands:
+        conds = []
+        for i, v in enumerate(vids, 1):
+            sizes = sorted({lay.size for lay in _candidates(spec, cmd, v)})
+            conds.append(f"(_root.header.version_index == {i} and (" + " or ".join(f"_ == {s}" for s in sizes) + "))")
+        size_cases.append(f"{by_role['code'].name} == {cmd.code} ? ({' or '.join(conds)})")
+    size_expr = " : ".join(size_cases) + " : true"
+    gates = []
+    for ch in spec.checks_of_kind("availability"):
+        for v in ch.versions:
+            missing = [c.code for c in spec.commands if not c.available_in(v)]
+            if missing:
+                i = vids.index(v) + 1
+                gates.append(f"not (_root.header.version_index == {i} and (" +
+                             " or ".join(f"_ == {c}" for c in missing) + "))")
+    for f in rec.fields:
+        attr = _field_attr(f, enc, rec.clause)
+        if f.role == "code" and gates:
+            attr["valid"] = {"expr": " and ".join(gates)}
+            attr["doc"] += " Version gating (" + ", ".join(c.id for c in spec.checks_of_kind("availability")) + \
+                ") is a valid: expression."
+        if f.role == "code_copy":
+            attr["valid"] = {"expr": f"_ == {by_role['code'].name}"}
+        if f.role == "arg_size":
+            attr["valid"] = {"expr": size_expr}
+        head.append(attr)
+    cases: dict[str, str] = {}
+    for cmd in spec.commands:
+        for i, v in enumerate(vids, 1):
+            seen: set[int] = set()
+            for lay in _candidates(spec, cmd, v):
+                if lay.size in seen:
+                    continue
+                seen.add(lay.size)
+                cases[f"{cmd.code * 65536 + lay.size * 256 + i}"] = _layout_type(lay)
+    code_name, size_name = by_role["code"].name, by_role["arg_size"].name
+    head.append({
+        "id": "args",
+        "size": size_name,
+        "type": {"switch-on": f"{code_name} * 65536 + {size_name} * 256 + _root.header.version_index",
+                 "cases": {int(k): v for k, v in cases.items()}},
+        "doc": "The command's arguments: the layout of the file's version whose size matches (for a command "
+               "the version lacks, any of its layouts); raw bytes for an unknown code.",
+    })
+    types["record"] = {
+        "doc": _doc(rec.doc) + " Not expressible here: " + ", ".join(
+            f"{c.id} ({c.kind})" for c in spec.checks if c.kind in ("arg_checksum", "sequence")) + ".",
+        "seq": head,
+        "instances": {"command": {"value": code_name, "enum": "command", "doc": "The command code as the enum (5.2)."}},
+    }
+    for cmd in spec.commands:
+        for lay in cmd.layouts:
+            types[_layout_type(lay)] = {
+                "doc": _doc(f"{cmd.name}: {cmd.doc} Versions {', '.join(lay.versions)}; {lay.size} bytes."
+                            + (f" Accepted under profile {', '.join(lay.profiles)}." if lay.profiles else "")
+                            + (f" {lay.doc}" if lay.doc else "")),
+                "doc-ref": f"300071 rev 03, {lay.clause or cmd.clause}",
+                "seq": [_field_attr(a, enc, None) for a in lay.args],
+            }
+    not_here = [c for c in spec.checks if c.kind not in ("magic", "code_copy", "arg_size", "availability")]
+    ksy: dict[str, Any] = {
+        "meta": {
+            "id": m["id"],
+            "title": f"{m['title']} ({m['part_number']} rev {m['revision']})",
+            "file-extension": m["file_extension"],
+            "xref": {"justsolve": "CBF"} if False else {},
+            "license": m["license"],
+            "ks-version": "0.11",
+            "endian": "le" if m["byte_order"] == "little" else "be",
+        },
+        "doc": _doc(m["doc"]) + " Generated from spec/cbf.yaml; do not edit. Kaitai checks here the magic "
+               "numbers, the code copy, the argument size per command and version, and version gating. It cannot "
+               "check: " + "; ".join(f"{c.id} ({_doc(c.text)})" for c in not_here) + ".",
+        "doc-ref": f"{m['document']}, part number {m['part_number']}, revision {m['revision']}",
+        "seq": [
+            {"id": "header", "type": "header", "doc": f"File header ({first.clause})."},
+            {"id": "records", "type": "record", "repeat": "eos",
+             "doc": f"The command records, framed to the end of the file ({spec.record.clause})."},
+        ],
+        "types": types,
+        "enums": {"command": {c.code: {"id": c.name.lower(), "doc": _doc(c.doc)} for c in spec.sorted_commands}},
+    }
+    if not ksy["meta"]["xref"]:
+        del ksy["meta"]["xref"]
+    return ksy
+
+
+class _Dumper(yaml.SafeDumper):
+    pass
+
+
+def _hex_int(dumper: yaml.SafeDumper, value: int) -> yaml.Node:
+    return dumper.represent_int(value)
+
+
+def _spec_tuples(fields: list[Field] | tuple[Field, ...]) -> list[tuple[str, str, int]]:
+    return [(f.name, f.kind, f.count) for f in fields]
+
+
+def _js_fields(spec: list[tuple[str, str, int]]) -> list[tuple[str, str, int, str]]:
+    def camel_lower(name: str) -> str:
+        head, *rest = name.split("_")
+        return head + "".join(p[:1].upper() + p[1:] for p in rest)
+
+    return [(n, k, c, camel_lower(n)) for n, k, c in spec]
+
+
+def testee_context(spec: Spec, ksy: dict[str, Any]) -> dict[str, Any]:
+    def cls(type_name: str) -> str:
+        return "".join(p[:1].upper() + p[1:] for p in type_name.split("_"))
+
+    first = next(iter(spec.headers.values()))
+    common = [f for f in first.fields if any(a.get("id") == f.name for a in ksy["types"]["header"]["seq"])]
+    tails = {cls(f"header_{ident(h.id)}"): _spec_tuples([f for f in h.fields if f not in common and
+                                                           f.name not in {c.name for c in common}])
+             for h in spec.headers.values()}
+    args = {cls(_layout_type(lay)): _spec_tuples(lay.args) for c in spec.commands for lay in c.layouts}
+    header_fields = _spec_tuples(common)
+    record_fields = _spec_tuples(spec.record.fields)
+    return {
+        "header_size": spec.header_size,
+        "header_fields": repr(header_fields),
+        "header_tails": repr(tails),
+        "record_fields": repr(record_fields),
+        "args": repr(args),
+        "header_fields_json": json.dumps(_js_fields(header_fields)),
+        "header_tails_json": json.dumps({k: _js_fields(v) for k, v in tails.items()}),
+        "record_fields_json": json.dumps(_js_fields(record_fields)),
+        "args_json": json.dumps({k: _js_fields(v) for k, v in args.items()}),
+        "commands_json": json.dumps({str(c.code): c.name for c in spec.commands}),
+    }
+
+
+def emit(spec: Spec) -> dict[str, bytes]:
+    ksy = build(spec)
+    env = environment(HERE / "templates")
+    ctx = testee_context(spec, ksy)
+    testees = {
+        f"{OUT}/python/testee.py": env.get_template("testee.py.j2").render(**ctx).encode(),
+        f"{OUT}/javascript/testee.js": env.get_template("testee.js.j2").render(**ctx).encode(),
+    }
+    text = yaml.dump(ksy, Dumper=_Dumper, sort_keys=False, width=120, allow_unicode=False)
+    return {
+        f"{OUT}/cbf.ksy": ("# Generated from spec/cbf.yaml by cbfgen; do not edit.\n" + text).encode(),
+        f"{OUT}/cbf.ksy.json": (json.dumps(ksy, indent=1) + "\n").encode(),
+        **testees,
+    }

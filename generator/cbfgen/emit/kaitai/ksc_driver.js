@@ -1,0 +1,32 @@
+// Compile a .ksy (given as JSON, converted by cbfgen) with the npm build of
+// kaitai-struct-compiler, whose only interface is the API
+// compile(lang, ksyObject, importer, debug). Writes every produced file under
+// OUTDIR/<lang>/ and exits non-zero on any error or warning.
+//   node ksc_driver.js KSY.json OUTDIR lang...
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const ksc = require('kaitai-struct-compiler');
+
+async function main() {
+  const [ksyPath, outDir, ...langs] = process.argv.slice(2);
+  const ksy = JSON.parse(fs.readFileSync(ksyPath, 'utf8'));
+  const importer = { importYaml: (name) => Promise.reject(new Error('no imports expected: ' + name)) };
+  for (const lang of langs) {
+    const files = await ksc.compile(lang, ksy, importer, false);
+    const dir = path.join(outDir, lang);
+    fs.mkdirSync(dir, { recursive: true });
+    for (const name of Object.keys(files).sort()) {
+      const target = path.join(dir, name);
+      fs.mkdirSync(path.dirname(target), { recursive: true });
+      fs.writeFileSync(target, files[name]);
+      console.log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
+    }
+  }
+}
+
+main().catch((err) => {
+  const text = err && err.stack ? err.stack : String(err);
+  console.error('ksc: ' + (Array.isArray(err) ? JSON.stringify(err) : text));
+  process.exit(1);
+});
