@@ -56,7 +56,7 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 	@echo "generated/ is fresh"
 
 # -- quality ------------------------------------------------------------------
-MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/*.py)
+MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/bench.py)
 lint: venv  ## ruff + mypy --strict on hand-written Python
 	$(PY) -m ruff check generator conformance tests generated/python $(wildcard bench)
 	$(PY) -m mypy --strict $(MYPY_PATHS)

@@ -1,0 +1,1 @@
+"""Benchmarks of the CBF toolkit (make bench)."""

@@ -1,0 +1,266 @@
+"""Benchmarks: the same files, the same machine, one run, interleaved repetitions.
+
+Rows: the Kaitai-generated Python parser (the 1x reference), the Python codec
+(decode, decode + full validate, encode, CBF -> CUT, CUT -> CBF), the C codec
+(decode and validate, in-process), `cbf validate` as a whole process, and
+`make generate` without and with the ksc step. Targets are reported, never
+enforced: a slow machine does not fail CI.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+REPO = Path(__file__).resolve().parents[1]
+WORK = REPO / "bench" / "work"
+PY = sys.executable
+
+
+def _files() -> dict[str, Path]:
+    """The three benchmark files, made deterministically with the codec's model API."""
+    import cbf
+    from cbf.layouts import Checkpoint, Endshape, Line5b, Orient, Point, Speed, Startshape
+    from cbf.model import Cbf, Record, new_header
+
+    WORK.mkdir(parents=True, exist_ok=True)
+    files = {"65535 records": REPO / "conformance" / "golden" / "big.v3.65535.cbf"}
+    five = WORK / "five_axis.cbf"
+    if not five.exists():
+        recs: list[Record] = [Record.of(Speed(speed=0.02)), Record.of(Orient(approach=(0.0, 0.0, 1.0))),
+                              Record.of(Point(point=(0.0, 0.0, 0.0)))]
+        x = 0.0
+        shape = 0
+        while len(recs) < 20_000:
+            n = 50
+            recs.append(Record.of(Startshape(name=f"S{shape % 1000}", moves=n)))
+            for _ in range(n):
+                recs.append(Record.of(Line5b(start_pos=(x, 0.0, 0.0), end_pos=(x + 0.25, 0.0, 0.0),
+                                             start_orient=(0.0, 0.0, 1.0), end_orient=(0.0, 0.0, 1.0))))
+                x += 0.25
+            recs.append(Record.of(Endshape(name=f"S{shape % 1000}", moves=n)))
+            shape += 1
+            if shape % 20 == 0:
+                recs.append(Record.of(Checkpoint(name=f"CP{shape}", recovery_point=(x, 0.0, 0.0),
+                                                 completion=min(100.0, shape / 4.0))))
+        five.write_bytes(cbf.encode(Cbf(new_header("3.0", implant_descriptor="BENCH-5AX"), tuple(recs))))
+    files["5-axis ~20k"] = five
+    small = WORK / "small.cbf"
+    if not small.exists():
+        recs = [Record.of(Point(point=(0.0, 0.0, 0.0)))]
+        recs += [Record.of(Line5b(start_pos=(float(i), 0.0, 0.0), end_pos=(float(i + 1), 0.0, 0.0),
+                                  start_orient=(0.0, 0.0, 1.0), end_orient=(0.0, 0.0, 1.0))) for i in range(29)]
+        small.write_bytes(cbf.encode(Cbf(new_header("3.0", implant_descriptor="BENCH-SMALL"), tuple(recs))))
+    files["small (30)"] = small
+    return files
+
+
+def _kaitai() -> Any | None:
+    path = REPO / "generated" / "kaitai" / "python"
+    if not (path / "cbf.py").exists():
+        return None
+    sys.path.insert(0, str(path))
+    try:
+        mod = _load_kaitai(path)
+    finally:
+        sys.path.remove(str(path))
+    return mod
+
+
+def _load_kaitai(path: Path) -> Any:
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("cbf_kaitai", path / "cbf.py")
+    assert spec and spec.loader
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod.Cbf
+
+
+def _c_driver() -> Path | None:
+    out = REPO / "build" / "bench" / "c_bench"
+    src = REPO / "bench" / "c_bench.c"
+    hdr = REPO / "generated" / "c" / "cbf.h"
+    if not hdr.exists():
+        return None
+    if not out.exists() or out.stat().st_mtime < max(src.stat().st_mtime, hdr.stat().st_mtime):
+        out.parent.mkdir(parents=True, exist_ok=True)
+        subprocess.run(["gcc", "-std=c99", "-O2", "-I", str(hdr.parent), "-o", str(out), str(src), "-lm"], check=True)
+    return out
+
+
+def _time(fn: Callable[..., Any], *args: Any) -> float:
+    t0 = time.perf_counter()
+    fn(*args)
+    return time.perf_counter() - t0
+
+
+def _kaitai_parse(kaitai: Any, data: bytes) -> int:
+    return len(kaitai.from_bytes(data).records)
+
+
+def _decode(data: bytes) -> int:
+    import cbf
+
+    return len(cbf.decode(data).records)
+
+
+def _decode_validate(data: bytes) -> Any:
+    import cbf
+
+    return cbf.validate(cbf.decode(data))
+
+
+def _to_cut(data: bytes) -> str:
+    import cbf
+
+    return str(cbf.to_cut(cbf.decode(data)))
+
+
+def _from_cut(text: str) -> bytes:
+    import cbf
+
+    return bytes(cbf.encode(cbf.from_cut(text)))
+
+
+def _stats(samples: list[float]) -> dict[str, float]:
+    return {"median": statistics.median(samples), "min": min(samples), "max": max(samples), "n": len(samples)}
+
+
+def _rss_decode_validate(path: Path) -> int:
+    code = ("import resource, sys, cbf; d = open(sys.argv[1], 'rb').read(); cbf.validate(cbf.decode(d)); "
+            "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)")
+    base = ("import resource, sys, numpy, cbf, cbf.validation, cbf.vectorized; d = open(sys.argv[1], 'rb').read(); "
+            "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)")
+    env = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
+    full = int(subprocess.run([PY, "-c", code, str(path)], env=env, capture_output=True, text=True).stdout)
+    idle = int(subprocess.run([PY, "-c", base, str(path)], env=env, capture_output=True, text=True).stdout)
+    return max(0, full - idle) * 1024  # above an interpreter that imported the codec and read the file
+
+
+def run(reps: int) -> dict[str, Any]:
+    import cbf
+
+    files = _files()
+    kaitai = _kaitai()
+    rows: dict[str, dict[str, list[float]]] = {}
+
+    def add(row: str, name: str, t: float) -> None:
+        rows.setdefault(row, {}).setdefault(name, []).append(t)
+
+    data = {name: p.read_bytes() for name, p in files.items()}
+    models = {name: cbf.decode(d) for name, d in data.items()}
+    cuts = {name: cbf.to_cut(m) for name, m in models.items()}
+    for _ in range(reps):  # interleaved: every row once per repetition
+        for name, d in data.items():
+            if kaitai is not None:
+                add("Kaitai Python parse (1x)", name, _time(_kaitai_parse, kaitai, d))
+            add("Python decode", name, _time(_decode, d))
+            add("Python decode + full validate", name, _time(_decode_validate, d))
+            add("Python encode (stored values)", name, _time(partial(cbf.encode, keep_stored=True), models[name]))
+            add("Python CBF -> CUT", name, _time(_to_cut, d))
+            add("Python CUT -> CBF", name, _time(_from_cut, cuts[name]))
+    sizes = {n: {"bytes": len(d), "records": len(models[n].records)} for n, d in data.items()}
+    result: dict[str, Any] = {"rows": {}, "reps": reps, "files": sizes}
+    for row, per in rows.items():
+        result["rows"][row] = {n: _stats(s) for n, s in per.items()}
+    driver = _c_driver()
+    if driver is not None:
+        for name, p in files.items():
+            res = json.loads(subprocess.run([str(driver), str(p), str(max(reps, 5))], capture_output=True, text=True,
+                                            check=True).stdout)
+            for op in ("decode", "validate"):
+                st = _stats(res[op])
+                st["MB/s"] = res["bytes"] / st["median"] / 1e6
+                st["records/s"] = res["records"] / st["median"]
+                result["rows"].setdefault(f"C {op}", {})[name] = st
+    env = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
+    cli = [_time(lambda: subprocess.run([PY, "-m", "cbf", "validate", str(files["small (30)"])], env=env,
+                                        capture_output=True, check=True)) for _ in range(max(reps, 5))]
+    result["rows"]["cbf validate (process, small)"] = {"small (30)": _stats(cli)}
+    genv = dict(os.environ, PYTHONPATH=str(REPO / "generator"))
+    tmp = WORK / "gen"
+    gen = [_time(lambda: subprocess.run([PY, "-m", "cbfgen", "--out", str(tmp)], cwd=REPO, env=genv,
+                                        capture_output=True, check=True)) for _ in range(3)]
+    result["rows"]["generate without ksc"] = {"spec": _stats(gen)}
+    if (REPO / "node_modules" / "kaitai-struct-compiler").exists():
+        ksc = [g + _time(lambda: subprocess.run(
+            ["node", "generator/cbfgen/emit/kaitai/ksc_driver.js", str(tmp / "kaitai" / "cbf.ksy.json"),
+             str(tmp / "kaitai"), "python", "javascript", "java", "go"], cwd=REPO, capture_output=True, check=True))
+            for g in gen]
+        result["rows"]["generate with ksc"] = {"spec": _stats(ksc)}
+    big = files["65535 records"]
+    result["memory"] = {"python_decode_validate_peak_extra_bytes": _rss_decode_validate(big),
+                        "file_bytes": big.stat().st_size}
+    result["targets"] = _targets(result)
+    return result
+
+
+def _targets(r: dict[str, Any]) -> dict[str, Any]:
+    rows = r["rows"]
+    out: dict[str, Any] = {}
+    k = rows.get("Kaitai Python parse (1x)", {}).get("65535 records")
+    pv = rows["Python decode + full validate"]["65535 records"]
+    if k:
+        ratio = k["median"] / pv["median"]
+        out["python decode+validate >= 20x Kaitai"] = {"value": round(ratio, 1), "met": ratio >= 20}
+    cv = rows.get("C validate", {}).get("65535 records")
+    if cv:
+        out["C validate >= 1 GB/s"] = {"value": round(cv["MB/s"], 1), "unit": "MB/s", "met": cv["MB/s"] >= 1000}
+    cli = rows["cbf validate (process, small)"]["small (30)"]["median"]
+    out["cbf validate small < 150 ms"] = {"value": round(cli * 1000, 1), "unit": "ms", "met": cli < 0.150}
+    g = rows["generate without ksc"]["spec"]["median"]
+    out["generate without ksc < 2 s"] = {"value": round(g, 2), "unit": "s", "met": g < 2.0}
+    mem = r["memory"]
+    ratio = mem["python_decode_validate_peak_extra_bytes"] / mem["file_bytes"]
+    out["python peak RSS < 10x file"] = {"value": round(ratio, 1), "unit": "x file", "met": ratio < 10}
+    return out
+
+
+def table(r: dict[str, Any]) -> str:
+    names = list(r["files"])
+    ref = r["rows"].get("Kaitai Python parse (1x)", {})
+    lines = ["| row | " + " | ".join(f"{n} ({r['files'][n]['bytes']:,} B)" for n in names) + " |",
+             "|---|" + "---|" * len(names)]
+    for row, per in r["rows"].items():
+        cells = []
+        for n in names:
+            st = per.get("spec") if row.startswith("generate") and n == names[0] else per.get(n)
+            if not st:
+                cells.append("")
+                continue
+            cell = f"{st['median'] * 1000:.2f} ms ({st['min'] * 1000:.2f}-{st['max'] * 1000:.2f})"
+            if n in ref and not row.startswith(("generate", "cbf validate")):
+                cell += f", {ref[n]['median'] / st['median']:.1f}x"
+            if "MB/s" in st:
+                cell += f", {st['MB/s']:.0f} MB/s, {st['records/s'] / 1e6:.1f} M rec/s"
+            cells.append(cell)
+        lines.append(f"| {row} | " + " | ".join(cells) + " |")
+    lines.append("")
+    lines.append("| target | value | met |")
+    lines.append("|---|---|---|")
+    for name, t in r["targets"].items():
+        lines.append(f"| {name} | {t['value']} {t.get('unit', 'x')} | {'yes' if t['met'] else 'NO'} |")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="bench")
+    ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--out", type=Path, default=REPO / "bench" / "results.json")
+    args = ap.parse_args(argv)
+    result = run(args.reps)
+    text = table(result)
+    print(text)
+    args.out.write_text(json.dumps(result, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+    (args.out.parent / "TABLE.md").write_text(text + "\n", encoding="utf-8")
+    return 0

@@ -1,0 +1,44 @@
+"""The benchmark harness runs and writes a well-formed result (no timing assertions)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+import bench.bench as B
+
+
+def test_table_and_targets_from_a_result() -> None:
+    st = {"median": 0.01, "min": 0.009, "max": 0.02, "n": 3}
+    result = {
+        "files": {"65535 records": {"bytes": 100, "records": 2}, "small (30)": {"bytes": 10, "records": 1}},
+        "rows": {"Kaitai Python parse (1x)": {"65535 records": {**st, "median": 1.0}},
+                 "Python decode + full validate": {"65535 records": st},
+                 "C validate": {"65535 records": {**st, "MB/s": 2000.0, "records/s": 1e6}},
+                 "cbf validate (process, small)": {"small (30)": {**st, "median": 0.1}},
+                 "generate without ksc": {"spec": {**st, "median": 1.0}}},
+        "memory": {"python_decode_validate_peak_extra_bytes": 1000, "file_bytes": 100},
+    }
+    result["targets"] = B._targets(result)
+    assert result["targets"]["python decode+validate >= 20x Kaitai"] == {"value": 100.0, "met": True}
+    assert result["targets"]["python peak RSS < 10x file"]["met"] is False
+    text = B.table(result)
+    assert "100.0x" in text and "| C validate >= 1 GB/s | 2000.0 MB/s | yes |" in text
+
+
+def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(B, "WORK", tmp_path)
+    first = {n: p.read_bytes() for n, p in B._files().items()}
+    for p in tmp_path.glob("*.cbf"):
+        p.unlink()
+    second = {n: p.read_bytes() for n, p in B._files().items()}
+    assert first == second
+    import cbf
+
+    for name, data in first.items():
+        assert not [f for f in cbf.validate(data) if f.severity == "error"], name
+    assert len(cbf.decode(first["5-axis ~20k"]).records) >= 20_000
+    assert len(cbf.decode(first["small (30)"]).records) == 30
+    json.dumps(B._stats([0.1, 0.2, 0.3]))
