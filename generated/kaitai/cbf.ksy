@@ -216,7 +216,7 @@ types:
     - id: args
       size: arg_size
       type:
-        switch-on: code * 65536 + arg_size * 256 + _root.header.version_index
+        switch-on: code.as<s4> * 65536 + arg_size.as<s4> * 256 + _root.header.version_index.as<s4>
         cases:
           3936257: args_checkpoint_v1
           3940354: args_checkpoint

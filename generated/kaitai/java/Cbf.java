@@ -2126,7 +2126,7 @@ public class Cbf extends KaitaiStruct {
             }
             this.reserved = this._io.readU1();
             this.argChecksum = this._io.readU2le();
-            switch ((code() * 65536 + argSize() * 256) + _root().header().versionIndex()) {
+            switch ((((Number) (code())).intValue() * 65536 + ((Number) (argSize())).intValue() * 256) + ((Number) (_root().header().versionIndex())).intValue()) {
             case 10690561: {
                 KaitaiStream _io_args = this._io.substream(argSize());
                 this.args = new ArgsCutterV1(_io_args, this, _root);
@@ -2695,7 +2695,7 @@ public class Cbf extends KaitaiStruct {
         }
 
         public void _fetchInstances() {
-            switch ((code() * 65536 + argSize() * 256) + _root().header().versionIndex()) {
+            switch ((((Number) (code())).intValue() * 65536 + ((Number) (argSize())).intValue() * 256) + ((Number) (_root().header().versionIndex())).intValue()) {
             case 10690561: {
                 ((ArgsCutterV1) (this.args))._fetchInstances();
                 break;

@@ -19,7 +19,10 @@ async function main() {
     for (const name of Object.keys(files).sort()) {
       const target = path.join(dir, name);
       fs.mkdirSync(path.dirname(target), { recursive: true });
-      fs.writeFileSync(target, files[name]);
+      let text = files[name];
+      // The npm build takes no --go-package option: name the package here.
+      if (lang === 'go' && !/^package /m.test(text)) text = 'package ' + ksy.meta.id + '\n\n' + text;
+      fs.writeFileSync(target, text);
       console.log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
     }
   }
