@@ -67,6 +67,7 @@ test-py: venv
 test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what CI runs)
 	@$(MAKE) test-py
 	@$(MAKE) conformance
+	@$(MAKE) check-report
 
 clean:
 	rm -rf $(VENV) node_modules build .pytest_cache .mypy_cache .ruff_cache

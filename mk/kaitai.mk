@@ -27,3 +27,17 @@ $(KAITAI_GO)/testee: generated/kaitai/go/cbf.go generated/kaitai/go/testee.go co
 	cd $(KAITAI_GO) && GOFLAGS=-mod=readonly go build -o testee .
 kaitai-go-build: $(KAITAI_GO)/testee  ## build the Kaitai Go conformance testee
 CONFORMANCE_BUILD += kaitai-go-build
+
+# The Java testee: the runtime jar pinned by conformance/testees/kaitai-java/pom.xml
+# (fetched by Maven), the generated parser and testee compiled with javac.
+KAITAI_JAVA := build/kaitai-java
+KAITAI_JAR := $(KAITAI_JAVA)/lib/kaitai-struct-runtime-0.11.jar
+.PHONY: kaitai-java-build
+$(KAITAI_JAR): conformance/testees/kaitai-java/pom.xml
+	cd conformance/testees/kaitai-java && mvn -q -B dependency:copy-dependencies -DoutputDirectory=$(CURDIR)/$(KAITAI_JAVA)/lib
+	@touch $@
+$(KAITAI_JAVA)/classes/Testee.class: generated/kaitai/java/Cbf.java generated/kaitai/java/Testee.java $(KAITAI_JAR)
+	@mkdir -p $(KAITAI_JAVA)/classes
+	javac -nowarn -encoding UTF-8 -d $(KAITAI_JAVA)/classes -cp $(KAITAI_JAR) generated/kaitai/java/Cbf.java generated/kaitai/java/Testee.java
+kaitai-java-build: $(KAITAI_JAVA)/classes/Testee.class  ## build the Kaitai Java conformance testee
+CONFORMANCE_BUILD += kaitai-java-build

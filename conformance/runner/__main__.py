@@ -21,7 +21,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--bindings", type=Path, default=ROOT / "bindings.yaml", help="bindings file")
     ap.add_argument("--golden", type=Path, default=ROOT / "golden")
     ap.add_argument("--failures", type=Path, default=ROOT / "failures")
-    ap.add_argument("--report", type=Path, default=ROOT / "report.json")
+    ap.add_argument("--report", type=Path,
+                    help="write the report here (default: conformance/report.json, on a full run only)")
     ap.add_argument("--case", action="append", help="run only cases whose name starts with this")
     ap.add_argument("--fix", action="store_true", help="rewrite the failure lists to the current result")
     ap.add_argument("--python-path", help="PYTHONPATH for the python testee (test a scratch build)")

@@ -317,9 +317,15 @@ def main_run(args: argparse.Namespace) -> int:
             if name in results and name not in failing:
                 problems.append(f"{b.name}: {name}: listed as failing but passes: remove it from {fpath.name}")
     _print_matrix(report, cases)
-    tmp = args.report.with_suffix(".json.tmp")
-    tmp.write_text(json.dumps(report, indent=1, sort_keys=True) + "\n", encoding="utf-8")
-    os.replace(tmp, args.report)
+    # The committed report is the evidence of a full run: a partial run (some
+    # bindings, some cases, a scratch build) writes only where it is told to.
+    out: Path | None = args.report
+    if out is None and not (args.binding or args.case or args.python_path):
+        out = ROOT / "report.json"
+    if out is not None:
+        tmp = out.with_suffix(".json.tmp")
+        tmp.write_text(json.dumps(report, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+        os.replace(tmp, out)
     for p in problems:
         print(p)
     total = sum(1 for b in report["bindings"].values() for r in b["results"].values() if r["status"] == "pass")

@@ -21,7 +21,7 @@ HERE = Path(__file__).parent
 
 OUT = "kaitai"
 # Produced by ksc after the Python emitters (mk/kaitai.mk); not stale.
-KEEP = ("kaitai/python/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/", "kaitai/go/cbf.go")
+KEEP = ("kaitai/python/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/Cbf.java", "kaitai/go/cbf.go")
 
 
 def _doc(text: str) -> str:
@@ -153,7 +153,8 @@ def build(spec: Spec) -> dict[str, Any]:
     head.append({
         "id": "args",
         "size": size_name,
-        "type": {"switch-on": f"{code_name}.as<s4> * 65536 + {size_name}.as<s4> * 256 + _root.header.version_index.as<s4>",
+        "type": {"switch-on": (f"{code_name}.as<s4> * 65536 + {size_name}.as<s4> * 256"
+                               " + _root.header.version_index.as<s4>"),
                  "cases": {int(k): v for k, v in cases.items()}},
         "doc": "The command's arguments: the layout of the file's version whose size matches (for a command "
                "the version lacks, any of its layouts); raw bytes for an unknown code.",
@@ -250,6 +251,10 @@ def testee_context(spec: Spec, ksy: dict[str, Any]) -> dict[str, Any]:
         "record_fields_go": _go_fields(record_fields),
         "args_go": {f"Cbf_{k}": _go_fields(v) for k, v in args.items()},
         "commands": [(c.code, c.name) for c in spec.commands],
+        "header_fields_js": _js_fields(header_fields),
+        "header_tails_js": {k: _js_fields(v) for k, v in tails.items()},
+        "record_fields_js": _js_fields(record_fields),
+        "args_js": {k: _js_fields(v) for k, v in args.items()},
     }
 
 
@@ -265,6 +270,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
         f"{OUT}/python/testee.py": env.get_template("testee.py.j2").render(**ctx).encode(),
         f"{OUT}/javascript/testee.js": env.get_template("testee.js.j2").render(**ctx).encode(),
         f"{OUT}/go/testee.go": env.get_template("testee.go.j2").render(**ctx).encode(),
+        f"{OUT}/java/Testee.java": env.get_template("Testee.java.j2").render(**ctx).encode(),
     }
     text = yaml.dump(ksy, Dumper=_Dumper, sort_keys=False, width=120, allow_unicode=False)
     return {
