@@ -1318,63 +1318,64 @@ typedef struct cbf__command {
     unsigned versions;
     int motion, orient, shape, cutter;
     signed char candidates[CBF__NVERSIONS][CBF__MAX_CANDIDATES]; /* decode order per version, -1 ends */
+    size_t first_ct, n_ct; /* its (check, target) pairs in cbf__ctargets */
 } cbf__command;
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
     { 0x3C, "CHECKPOINT", 0, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } } },
+      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } }, 0, 2 },
     { 0xA3, "CUTTER", 2, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 1,
-      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } } },
+      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } }, 2, 1 },
     { 0x58, "ORIENT", 4, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_SET, CBF__SHAPE_NONE, 0,
-      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } } },
+      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } }, 3, 0 },
     { 0x59, "ORIENT5B", 5, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } } },
+      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } }, 3, 0 },
     { 0x21, "PHASE", 6, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } } },
+      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } }, 3, 0 },
     { 0x22, "ENABLE_SKIP", 7, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } } },
+      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } }, 3, 0 },
     { 0xC9, "STARTSHAPE", 8, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_START, 0,
-      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } } },
+      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } }, 3, 0 },
     { 0x65, "ENDSHAPE", 9, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_END, 0,
-      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } } },
+      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } }, 3, 0 },
     { 0x2B, "DECEL_OFF", 10, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } } },
+      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } }, 3, 0 },
     { 0x4E, "DECEL_ON", 11, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } } },
+      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } }, 3, 0 },
     { 0x33, "POINT", 12, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_POINT, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } } },
+      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } }, 3, 0 },
     { 0xB6, "LINE", 13, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } } },
+      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } }, 3, 0 },
     { 0xB7, "LINE5B", 14, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } } },
+      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } }, 3, 0 },
     { 0x94, "ARC", 15, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } } },
+      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } }, 3, 0 },
     { 0x95, "ARC5B", 16, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } } },
+      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } }, 3, 0 },
     { 0x7A, "CIRCLE", 17, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } } },
+      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } }, 3, 1 },
     { 0x7B, "CIRCLE5B", 18, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } } },
+      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } }, 4, 1 },
     { 0xE2, "HELIX", 19, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } } },
+      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } }, 5, 1 },
     { 0xE3, "HELIX5B", 20, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } } },
+      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } }, 6, 1 },
     { 0x8B, "SPEED", 21, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } } },
+      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } }, 7, 1 },
     { 0x47, "ACCEL", 22, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } } },
+      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } }, 8, 1 },
     { 0xBB, "CUTTER_ON", 23, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } } },
+      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } }, 9, 0 },
     { 0x66, "CUTTER_OFF", 24, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } } },
+      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } }, 9, 0 },
     { 0x11, "GUIDE", 25, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } } },
+      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } }, 9, 0 },
     { 0xFC, "FCPARMS", 26, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } } },
+      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } }, 9, 1 },
     { 0x55, "VERSION", 27, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } } },
+      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } }, 10, 0 },
     { 0x5A, "COMMENT", 29, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } } },
+      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } }, 10, 0 },
 };
 
 typedef struct cbf__segment {
@@ -1430,6 +1431,20 @@ static const cbf__target cbf__targets[10] = {
     { 0, 9, 1 }, /* CHECKPOINT completion */
     { 0, 10, 1 }, /* CHECKPOINT completion */
     { 24, 11, 3 }, /* FCPARMS min_speed nom_speed max_speed */
+};
+/* The (check, target) pairs of each command, grouped by command in check order. */
+typedef struct cbf__ctarget { int check; size_t target; } cbf__ctarget;
+static const cbf__ctarget cbf__ctargets[10] = {
+    { 26, 7 }, /* checkpoint_range: CHECKPOINT completion */
+    { 27, 8 }, /* checkpoint_falling: CHECKPOINT completion */
+    { 24, 2 }, /* cutter_positive: CUTTER length radius */
+    { 25, 3 }, /* normal_nonzero: CIRCLE normal */
+    { 25, 4 }, /* normal_nonzero: CIRCLE5B normal */
+    { 25, 5 }, /* normal_nonzero: HELIX normal */
+    { 25, 6 }, /* normal_nonzero: HELIX5B normal */
+    { 22, 0 }, /* speed_positive: SPEED speed */
+    { 23, 1 }, /* accel_positive: ACCEL accel decel */
+    { 28, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
 };
 static const char *const cbf__target_args[14] = {
     "speed",
@@ -1791,6 +1806,13 @@ static uint32_t cbf__get_u(const uint8_t *p, unsigned n)
 {
     uint32_t v = 0;
     unsigned i;
+    /* the widths the format uses, unrolled (the validator reads several a record) */
+    if (n == 4u)
+        return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) | ((uint32_t)p[3] << 24);
+    if (n == 2u)
+        return (uint32_t)p[0] | ((uint32_t)p[1] << 8);
+    if (n == 1u)
+        return p[0];
     for (i = 0; i < n; i++) {
         v |= (uint32_t)p[i] << (8u * i);
     }
@@ -1996,6 +2018,12 @@ static const cbf_field_info *cbf__record_field_by_tag(int tag)
     return NULL;
 }
 
+/* A uint field of a record, through a field looked up once (NULL reads 0). */
+static uint32_t cbf__fld(const cbf_field_info *f, const uint8_t *rec)
+{
+    return f ? cbf__get_u(rec + f->offset, f->elem) : 0u;
+}
+
 static uint32_t cbf__head_get(const uint8_t *rec, int role)
 {
     const cbf_field_info *f = cbf__record_field_by_role(role);
@@ -2188,6 +2216,32 @@ static void cbf__ck_init(cbf__ck *c, int alg)
     c->acc = alg == CBF__ALG_CRC32 ? 0xFFFFFFFFu : 0u;
 }
 
+/* The plain byte sum of p[0..n), modulo 2^32. Eight bytes at a time: the bytes
+ * are added pairwise into four 16-bit lanes of a 64-bit word, which are folded
+ * before they can overflow (at most 510 per step, 128 steps). */
+static uint32_t cbf__sum(const uint8_t *p, size_t n)
+{
+    const uint64_t lo = 0x00FF00FF00FF00FFull;
+    uint32_t acc = 0;
+    size_t i = 0;
+    while (n - i >= 8u) {
+        uint64_t lanes = 0;
+        size_t steps = (n - i) / 8u, k;
+        if (steps > 128u)
+            steps = 128u;
+        for (k = 0; k < steps; k++, i += 8u) {
+            uint64_t x;
+            memcpy(&x, p + i, sizeof x);
+            lanes += (x & lo) + ((x >> 8) & lo);
+        }
+        lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
+        acc += (uint32_t)(lanes & 0xFFFFFFFFull) + (uint32_t)(lanes >> 32);
+    }
+    for (; i < n; i++)
+        acc += p[i];
+    return acc;
+}
+
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
 {
     size_t i;
@@ -2199,8 +2253,7 @@ static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
                 c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ 0xEDB88320u) : (c->acc >> 1);
         }
     } else {
-        for (i = 0; i < n; i++)
-            c->acc += p[i];
+        c->acc += cbf__sum(p, n);
     }
 }
 
@@ -3357,15 +3410,14 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
 /* Checks with targets: positive, nonzero_vector, range, nondecreasing, ordered. */
 static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
 {
-    int ci;
-    for (ci = 0; ci < CBF__NCHECKS; ci++) {
+    size_t j;
+    for (j = cbf__commands[cmd].first_ct; j < cbf__commands[cmd].first_ct + cbf__commands[cmd].n_ct; j++) {
+        int ci = cbf__ctargets[j].check;
         const cbf__check *ch = &cbf__checks[ci];
-        size_t t;
-        for (t = ch->first_target; t < ch->first_target + ch->ntargets; t++) {
+        size_t t = cbf__ctargets[j].target;
+        {
             const cbf__target *tg = &cbf__targets[t];
             size_t a;
-            if (tg->command != cmd)
-                continue;
             if (ch->kind == CBF__KIND_ORDERED) {
                 double prev = 0.0;
                 int ok = 1, bad = 0;
@@ -3507,22 +3559,33 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
 
     /* records, framed by nb from the header to the end of the file (D1) */
     pos = CBF_HEADER_SIZE;
+    /* the record fields and the argument checksum, looked up once for the loop */
+    const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+    const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
+    const cbf_field_info *f_copy = cbf__record_field_by_role(CBF_ROLE_CODE_COPY);
+    const cbf_field_info *fs = cbf__record_field_by_role(CBF_ROLE_SEQUENCE);
+    const cbf_field_info *fr = cbf__record_field_by_role(CBF_ROLE_RESERVED);
+    const cbf_field_info *fck = cbf__record_field_by_tag(CBF__CK_ARGS);
+    const cbf__ckfield *kck = cbf__ckfield_of(CBF__CK_ARGS);
+    const unsigned long seq_mask = fs && fs->elem < 4u ? ((1ul << (8u * fs->elem)) - 1ul) : 0xFFFFFFFFul;
+    /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
+    const int args_sum = kck && fck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
+                         && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
+    const uint32_t args_mask = fck && fck->elem < 4u ? ((1u << (8u * fck->elem)) - 1u) : 0xFFFFFFFFu;
     while (len - pos >= CBF_RECORD_HEAD_SIZE) {
         const uint8_t *p = buf + pos;
-        size_t nb = cbf__head_get(p, CBF_ROLE_ARG_SIZE);
+        size_t nb = cbf__fld(f_nb, p);
         long rec = (long)nrec;
         uint32_t code, copy, seq, res;
         int cmd, layout;
-        const cbf_field_info *fck;
         if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
             break;
-        code = cbf__head_get(p, CBF_ROLE_CODE);
-        copy = cbf__head_get(p, CBF_ROLE_CODE_COPY);
-        seq = cbf__head_get(p, CBF_ROLE_SEQUENCE);
-        res = cbf__head_get(p, CBF_ROLE_RESERVED);
+        code = cbf__fld(f_code, p);
+        copy = cbf__fld(f_copy, p);
+        seq = cbf__fld(fs, p);
+        res = cbf__fld(fr, p);
         {
-            const cbf_field_info *fs = cbf__record_field_by_role(CBF_ROLE_SEQUENCE);
-            uint32_t want = (uint32_t)(nrec & (fs && fs->elem < 4u ? ((1ul << (8u * fs->elem)) - 1ul) : 0xFFFFFFFFul));
+            uint32_t want = (uint32_t)(nrec & seq_mask);
             if (seq != want)
                 cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + (fs ? fs->offset : 0u),
                           "sequence number %lu, expected %lu", (unsigned long)seq, (unsigned long)want);
@@ -3530,9 +3593,10 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         if (code != copy)
             cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos, "code 0x%02lx, backup copy 0x%02lx",
                       (unsigned long)code, (unsigned long)copy);
-        fck = cbf__record_field_by_tag(CBF__CK_ARGS);
         if (fck) {
-            uint32_t want = cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb);
+            uint32_t want = args_sum ? (cbf__sum(p + CBF_RECORD_HEAD_SIZE, nb) & args_mask)
+                            : kck ? cbf__cover(kck->coverage, kck->alg, fck->elem, NULL, 0, 0, p + CBF_RECORD_HEAD_SIZE, nb)
+                                  : 0u;
             uint32_t got = cbf__get_u(p + fck->offset, fck->elem);
             if (got != want)
                 cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + fck->offset,
@@ -3540,7 +3604,6 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
                           (unsigned long)want);
         }
         if (res != 0u) {
-            const cbf_field_info *fr = cbf__record_field_by_role(CBF_ROLE_RESERVED);
             cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + (fr ? fr->offset : 0u), "reserved byte is 0x%02lx",
                       (unsigned long)res);
         }
@@ -3550,10 +3613,9 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         } else {
             int accepted = 0, k, ci;
             /* availability: the command has no layout for the file's version (fallback included) */
-            for (ci = 0; ci < CBF__NCHECKS; ci++) {
+            for (ci = 0; !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)) && ci < CBF__NCHECKS; ci++) {
                 const cbf__check *ch = &cbf__checks[ci];
-                if (ch->kind == CBF__KIND_AVAILABILITY && (ch->versions & CBF__VBIT(v.eff))
-                    && !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)))
+                if (ch->kind == CBF__KIND_AVAILABILITY && (ch->versions & CBF__VBIT(v.eff)))
                     cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
                              cbf__versions[v.eff].id);
             }

@@ -295,6 +295,16 @@ def context(spec: Spec) -> dict[str, Any]:
             "text": comment(ch.text), "fails": comment(ch.fails),
             "clause": ch.clause or "", "decision": ch.decision or "",
         })
+    # (check, target) pairs grouped by command, so the validator visits only the
+    # checks that name the record's command (in check order, as before).
+    ctargets: list[dict[str, Any]] = []
+    for crow in commands:
+        crow["first_ct"] = len(ctargets)
+        for ci, chrow in enumerate(checks):
+            for t in range(chrow["first"], chrow["first"] + chrow["n"]):
+                if targets[t]["command"] == crow["index"]:
+                    ctargets.append({"check": ci, "target": t, "text": f"{chrow['id']}: {targets[t]['text']}"})
+        crow["n_ct"] = len(ctargets) - crow["first_ct"]
     max_arg = max([lay["size"] for lay in layouts] + [0])
     groups: dict[str, list[str]] = {
         "command": [str(c["macro"]) for c in commands], "layout": [str(lay["macro"]) for lay in layouts],
@@ -335,6 +345,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "checks": checks,
         "targets": targets or [{"command": -1, "first": 0, "n": 0, "text": "none"}],
         "ntargets": len(targets),
+        "ctargets": ctargets or [{"check": -1, "target": 0, "text": "none"}],
         "tnames": tnames or [""],
         "tolerances": [{"macro": macro(k), "value": cfloat(v), "name": k} for k, v in spec.tolerances.items()],
         "limits": [{"macro": macro(k), "value": v, "name": k} for k, v in spec.limits.items()],
