@@ -301,9 +301,9 @@ def context(spec: Spec) -> dict[str, Any]:
     for crow in commands:
         crow["first_ct"] = len(ctargets)
         for ci, chrow in enumerate(checks):
-            for t in range(chrow["first"], chrow["first"] + chrow["n"]):
-                if targets[t]["command"] == crow["index"]:
-                    ctargets.append({"check": ci, "target": t, "text": f"{chrow['id']}: {targets[t]['text']}"})
+            for ti in range(chrow["first"], chrow["first"] + chrow["n"]):
+                if targets[ti]["command"] == crow["index"]:
+                    ctargets.append({"check": ci, "target": ti, "text": f"{chrow['id']}: {targets[ti]['text']}"})
         crow["n_ct"] = len(ctargets) - crow["first_ct"]
     max_arg = max([lay["size"] for lay in layouts] + [0])
     groups: dict[str, list[str]] = {
