@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import struct
 import zlib
+from array import array
 from collections.abc import Iterable, Sequence
 from typing import Any
 
@@ -15,13 +16,15 @@ Buffer = bytes | bytearray | memoryview
 
 
 # -- framing -------------------------------------------------------------------
-def frame(buf: Buffer) -> tuple[list[int], int]:
-    """Record offsets from the header to the end (D1), and where framing stopped."""
+def frame(buf: Buffer) -> tuple[Sequence[int], int]:
+    """Record offsets from the header to the end (D1), and where framing stopped.
+
+    The offsets are a compact array (8 bytes a record, not a list of int objects)."""
     n = len(buf)
     pos = T.HEADER_SIZE
     head, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
     last = n - head  # a record head must start at or before this offset
-    offsets: list[int] = []
+    offsets = array("q")
     append = offsets.append
     while pos <= last:
         nxt = pos + head + buf[pos + at]
@@ -224,7 +227,7 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
             if chk is None:
                 chk = arg_checksum(raw)
         else:
-            seq, copy, chk = i & 0xFFFF, r.code, arg_checksum(raw)
+            seq, copy, chk = i & T.SEQ_MASK, r.code, arg_checksum(raw)
             cmd = T.BY_CODE.get(r.code)
             if cmd is None:
                 raise EncodeError(f"record {i}: unknown command code 0x{r.code:02X}")

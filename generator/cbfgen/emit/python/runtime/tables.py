@@ -206,6 +206,8 @@ I_COPY = ROLE_INDEX["code_copy"]
 I_SIZE = ROLE_INDEX["arg_size"]
 I_RES = ROLE_INDEX["reserved"]
 I_CHK = RECORD_FIELDS.index(ARG_CHECKSUM)
+# Sequence numbers count modulo the width of their field.
+SEQ_MASK = (1 << (8 * RECORD_FIELDS[I_SEQ].size)) - 1
 
 def _command(c: dict[str, Any]) -> CommandInfo:
     lays = []

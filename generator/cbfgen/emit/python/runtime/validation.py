@@ -8,7 +8,7 @@ spec/cbf.yaml and conformance/PROTOCOL.md.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -78,7 +78,7 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
 
     ``engine``: "auto" (numpy for big files), "python" or "numpy"; all give the same findings.
     """
-    framing: tuple[list[int], int] | None = None
+    framing: tuple[Sequence[int], int] | None = None
     if isinstance(data, Cbf):
         reuse = _decoded_source(data)
         if reuse is not None:
@@ -166,7 +166,7 @@ def _order(f: Finding) -> tuple[int, int, int, str]:
     return (-1 if f.record is None else f.record, _CHECK_ORDER.get(f.check, 0), f.offset or 0, f.message)
 
 
-def _decoded_source(model: Cbf) -> tuple[bytes, tuple[list[int], int]] | None:
+def _decoded_source(model: Cbf) -> tuple[bytes, tuple[Sequence[int], int]] | None:
     """The bytes and framing of a model that decode made and nobody changed since."""
     from .codec import decode_header
     from .model import RecordList
@@ -187,7 +187,7 @@ def _profile_with(coverage: str) -> str:
     return "?"
 
 
-def _field_sum(tag: str, buf: bytes, offsets: list[int], coverage: str | None = None, args: bytes | None = None
+def _field_sum(tag: str, buf: bytes, offsets: Sequence[int], coverage: str | None = None, args: bytes | None = None
                ) -> int:
     spec = T.CHECKSUMS["fields"][tag]
     f = T.ARG_CHECKSUM if tag == "args" else T.HEADER_CHECKSUM_FIELDS[tag]
@@ -240,7 +240,8 @@ def _angle_deg(a: tuple[float, ...], b: tuple[float, ...]) -> float:
     return math.degrees(math.atan2(_norm(cx), sum(x * y for x, y in zip(a, b, strict=True))))
 
 
-def _records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: str, cutters: Cutters | None) -> None:
+def _records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile: str,
+             cutters: Cutters | None) -> None:
     c_seq, c_copy, c_size, c_chk = _one("sequence"), _one("code_copy"), _one("arg_size"), _one("arg_checksum")
     c_res, c_unknown = _one("reserved_byte"), _one("unknown_code")
     c_finite, c_cont, c_orient, c_shape = _one("finite"), _one("continuity"), _one("orientation"), _one("shape")
@@ -270,8 +271,9 @@ def _records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: s
         code, nb = h[i_code], h[i_size]
         aoff = off + hs
         raw = mv[aoff:aoff + nb]
-        if h[i_seq] != i & 0xFFFF:
-            out.add(c_seq, i, off + T.RECORD_FIELDS[i_seq].offset, f"sequence number {h[i_seq]}, expected {i & 0xFFFF}")
+        if h[i_seq] != i & T.SEQ_MASK:
+            out.add(c_seq, i, off + T.RECORD_FIELDS[i_seq].offset,
+                    f"sequence number {h[i_seq]}, expected {i & T.SEQ_MASK}")
         if h[i_res] != 0:
             out.add(c_res, i, off + T.RECORD_FIELDS[i_res].offset, f"reserved byte is 0x{h[i_res]:02X}")
         if h[i_copy] != code:

@@ -9,6 +9,7 @@ Python loop dominates; small files keep the reference path and its fast start.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -24,12 +25,24 @@ if TYPE_CHECKING:
 Rows = "NDArray[np.int64]"
 
 
-def _uint(cols: NDArray[np.uint8], f: T.FieldInfo) -> NDArray[np.int64]:
+def _uint(cols: NDArray[np.uint8], f: T.FieldInfo) -> NDArray[Any]:
+    """An unsigned field of every row, in its own width (memory stays a few bytes a record)."""
+    if f.size in (1, 2, 4, 8):
+        part = np.ascontiguousarray(cols[:, f.offset:f.offset + f.size])
+        return part.view(np.dtype(f"{T.BO}u{f.size}"))[:, 0]
     v = np.zeros(cols.shape[0], dtype=np.int64)
     for k in range(f.size):
         shift = 8 * (k if T.BO == "<" else f.size - 1 - k)
         v |= cols[:, f.offset + k].astype(np.int64) << shift
     return v
+
+
+def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDArray[np.uint8]:
+    """Bytes a[s:s+width] for each start, one column at a time (no n x width index matrix)."""
+    out = np.empty((starts.shape[0], width), dtype=np.uint8)
+    for k in range(width):
+        np.take(a, starts + k, out=out[:, k])
+    return out
 
 
 def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
@@ -44,7 +57,7 @@ def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
     return np.dtype(fields)
 
 
-def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: str, cutters: Cutters | None) -> None:
+def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile: str, cutters: Cutters | None) -> None:
     from . import validation as V
 
     one = V._one
@@ -52,13 +65,13 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
     if n == 0:
         return
     a = np.frombuffer(buf, dtype=np.uint8)
-    off = np.asarray(offsets, dtype=np.int64)
+    off = np.asarray(offsets, dtype=np.int64)  # no copy when framing gave an int64 array
     hs = T.HEAD_SIZE
-    head = a[off[:, None] + np.arange(hs)]
+    head = _gather(a, off, hs)
     F = T.RECORD_FIELDS
     seq, code, copy = _uint(head, F[T.I_SEQ]), _uint(head, F[T.I_CODE]), _uint(head, F[T.I_COPY])
     nb, res, chk = _uint(head, F[T.I_SIZE]), _uint(head, F[T.I_RES]), _uint(head, F[T.I_CHK])
-    idx = np.arange(n, dtype=np.int64)
+    del head  # each field is its own small array now (memory stays a few bytes a record)
     pending: list[tuple[int, int, Any, int, str]] = []  # (record, order, check, offset, message)
 
     def add(check: dict[str, Any] | None, rows: Any, order: int, offs: Any, msgs: Any) -> None:
@@ -68,9 +81,10 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
             pending.append((int(r), order, check, int(o), m))
 
     # -- head checks ----------------------------------------------------------
-    bad = np.nonzero(seq != (idx & 0xFFFF))[0]
+    wrap = T.SEQ_MASK
+    bad = np.nonzero(seq != (np.arange(n, dtype=np.int64) & wrap))[0]
     add(one("sequence"), bad, 0, off[bad] + F[T.I_SEQ].offset,
-        (f"sequence number {seq[i]}, expected {i & 0xFFFF}" for i in bad))
+        (f"sequence number {seq[i]}, expected {i & wrap}" for i in bad))
     bad = np.nonzero(res != 0)[0]
     add(one("reserved_byte"), bad, 1, off[bad] + F[T.I_RES].offset, (f"reserved byte is 0x{res[i]:02X}" for i in bad))
     bad = np.nonzero(copy != code)[0]
@@ -79,8 +93,15 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
     spec = T.CHECKSUMS["fields"]["args"]
     if T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]] == [
             {"region": "args", "start": None, "end": None, "exclude": []}]:
-        cs = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(a, dtype=np.int64)))
-        want = (cs[off + hs + nb] - cs[off + hs]) & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)
+        # The k-th argument byte of every record that has one, added column by
+        # column: memory stays a few vectors of n (a cumulative sum or reduceat
+        # over the file would hold 8 bytes per file byte).
+        sums = np.zeros(n, dtype=np.int64)
+        starts = off + hs
+        last = a.shape[0] - 1
+        for k in range(int(nb.max())):
+            sums += np.where(nb > k, a[np.minimum(starts + k, last)], 0)
+        want = sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)
     else:
         want = np.array([V._field_sum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
                          for o, s in zip(offsets, nb, strict=True)], dtype=np.int64)
@@ -125,8 +146,7 @@ def records(out: _Out, buf: bytes, offsets: list[int], version: str, profile: st
             continue
         cmd = T.BY_CODE[lay.code]
         aoff = off[rows] + hs
-        raw = a[aoff[:, None] + np.arange(lay.size)] if lay.size else np.zeros((rows.size, 0), np.uint8)
-        arr = np.frombuffer(np.ascontiguousarray(raw).tobytes(), dtype=_dtype(lay)) if lay.size else None
+        arr = _gather(a, aoff, lay.size).view(_dtype(lay))[:, 0] if lay.size else None
         cols: dict[str, Any] = {}
         for f in lay.args:
             assert arr is not None
@@ -195,7 +215,7 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
     known = np.zeros(256, dtype=bool)
     avail = np.zeros(256, dtype=bool)
     size_ok = np.zeros((256, 256), dtype=bool)
-    lay_of = np.full((256, 256), -1, dtype=np.int64)
+    lay_of = np.full((256, 256), -1, dtype=np.int16)
     lays: list[T.LayoutInfo] = []
     for cmd in T.COMMANDS:
         known[cmd.code] = True
@@ -294,10 +314,15 @@ def _continuity(pending: list[Any], check: dict[str, Any] | None, parts: list[An
     start = np.concatenate([p[1] for p in parts])[order]
     end = np.concatenate([p[2] for p in parts])[order]
     rows = rows[order]
-    prev = np.vstack((np.full((1, 3), np.nan), end[:-1]))
-    dvec = start - prev
+    dvec = start.copy()  # start - previous end, in place (memory: one n x 3 array)
+    dvec[0] = np.nan
+    dvec[1:] -= end[:-1]
+    del end
     with np.errstate(invalid="ignore"):
-        d = np.sqrt((dvec * dvec).sum(axis=1))
+        np.multiply(dvec, dvec, out=dvec)
+        d = np.sqrt(dvec.sum(axis=1))
+    del dvec
+    with np.errstate(invalid="ignore"):
         bad = np.nonzero(np.isfinite(start).all(axis=1) & (d > T.TOL["position_mm"]))[0]
     if bad.size == 0:
         return
