@@ -136,11 +136,15 @@ def _stats(samples: list[float]) -> dict[str, float]:
     return {"median": statistics.median(samples), "min": min(samples), "max": max(samples), "n": len(samples)}
 
 
+# Peak RSS of this process image. Not ru_maxrss: Linux carries it over exec
+# from the forking parent, so a child of the (big) bench process would report
+# the parent's peak. VmHWM belongs to the new address space.
+_HWM = "print(next(int(x.split()[1]) for x in open('/proc/self/status') if x.startswith('VmHWM')))"
+
+
 def _rss_decode_validate(path: Path) -> int:
-    code = ("import resource, sys, cbf; d = open(sys.argv[1], 'rb').read(); cbf.validate(cbf.decode(d)); "
-            "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)")
-    base = ("import resource, sys, numpy, cbf, cbf.validation, cbf.vectorized; d = open(sys.argv[1], 'rb').read(); "
-            "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)")
+    code = "import sys, cbf; d = open(sys.argv[1], 'rb').read(); cbf.validate(cbf.decode(d)); " + _HWM
+    base = "import sys, numpy, cbf, cbf.validation, cbf.vectorized; d = open(sys.argv[1], 'rb').read(); " + _HWM
     env = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
     full = int(subprocess.run([PY, "-c", code, str(path)], env=env, capture_output=True, text=True).stdout)
     idle = int(subprocess.run([PY, "-c", base, str(path)], env=env, capture_output=True, text=True).stdout)
