@@ -1802,7 +1802,7 @@ const char *const cbf_command_names[256] = {
 };
 
 /* ---- bytes -------------------------------------------------------------- */
-static uint32_t cbf__get_u(const uint8_t *p, unsigned n)
+static inline uint32_t cbf__get_u(const uint8_t *p, unsigned n)
 {
     uint32_t v = 0;
     unsigned i;
@@ -1827,7 +1827,7 @@ static void cbf__put_u(uint8_t *p, uint32_t v, unsigned n)
     }
 }
 
-static float cbf__get_f4(const uint8_t *p)
+static inline float cbf__get_f4(const uint8_t *p)
 {
     uint32_t u = cbf__get_u(p, 4);
     float f;
@@ -1842,15 +1842,15 @@ static uint32_t cbf__f4_bits(float f)
     return u;
 }
 
-static int cbf__bits_finite(uint32_t u) { return (u & 0x7F800000u) != 0x7F800000u; }
+static inline int cbf__bits_finite(uint32_t u) { return (u & 0x7F800000u) != 0x7F800000u; }
 
 /* The element i of a float field as double (binary32 widens exactly). */
-static double cbf__fget(const uint8_t *base, const cbf_field_info *f, unsigned i)
+static inline double cbf__fget(const uint8_t *base, const cbf_field_info *f, unsigned i)
 {
     return (double)cbf__get_f4(base + f->offset + 4u * i);
 }
 
-static int cbf__ffinite(const uint8_t *base, const cbf_field_info *f)
+static inline int cbf__ffinite(const uint8_t *base, const cbf_field_info *f)
 {
     unsigned i;
     for (i = 0; i < f->count; i++)
@@ -1977,7 +1977,7 @@ static const short cbf__index_by_code[256] = {
     -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 24, -1, -1, -1,
 };
 
-static int cbf__cmd_index(int code)
+static inline int cbf__cmd_index(int code)
 {
     return (code < 0 || code > 0xFF) ? -1 : cbf__index_by_code[code];
 }
@@ -2019,7 +2019,7 @@ static const cbf_field_info *cbf__record_field_by_tag(int tag)
 }
 
 /* A uint field of a record, through a field looked up once (NULL reads 0). */
-static uint32_t cbf__fld(const cbf_field_info *f, const uint8_t *rec)
+static inline uint32_t cbf__fld(const cbf_field_info *f, const uint8_t *rec)
 {
     return f ? cbf__get_u(rec + f->offset, f->elem) : 0u;
 }
@@ -2039,7 +2039,7 @@ static const cbf__ckfield *cbf__ckfield_of(int tag)
     return NULL;
 }
 
-static const cbf_field_info *cbf__layout_arg(int layout, int i)
+static inline const cbf_field_info *cbf__layout_arg(int layout, int i)
 {
     if (i < 0)
         return NULL;
@@ -2161,7 +2161,7 @@ size_t cbf_record_fields(const cbf_field_info **out)
     return CBF__NRECORD_FIELDS;
 }
 
-static int cbf__eff_version(int version)
+static inline int cbf__eff_version(int version)
 {
     return version < 0 ? CBF_FALLBACK_VERSION : version;
 }
@@ -3499,7 +3499,7 @@ static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t
     cbf__shape(v, cmd, layout, args, rec, off);
 }
 
-static int cbf__profile_accepts(int layout, int profile)
+static inline int cbf__profile_accepts(int layout, int profile)
 {
     return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
 }
@@ -3572,6 +3572,11 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     const int args_sum = kck && fck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
                          && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
     const uint32_t args_mask = fck && fck->elem < 4u ? ((1u << (8u * fck->elem)) - 1u) : 0xFFFFFFFFu;
+    /* per command: the argument size last seen, whether it was accepted, its layout */
+    long seen_nb[CBF__NCOMMANDS];
+    int seen_ok[CBF__NCOMMANDS], seen_layout[CBF__NCOMMANDS];
+    for (i = 0; i < (size_t)CBF__NCOMMANDS; i++)
+        seen_nb[i] = -1;
     while (len - pos >= CBF_RECORD_HEAD_SIZE) {
         const uint8_t *p = buf + pos;
         size_t nb = cbf__fld(f_nb, p);
@@ -3619,17 +3624,25 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
                     cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
                              cbf__versions[v.eff].id);
             }
-            for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
-                int lay = cbf__commands[cmd].candidates[v.eff][k];
-                if (lay < 0)
-                    break;
-                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
-                    accepted = 1;
+            if (seen_nb[cmd] == (long)nb) { /* same command and size as last time: same answers */
+                accepted = seen_ok[cmd];
+                layout = seen_layout[cmd];
+            } else {
+                for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+                    int lay = cbf__commands[cmd].candidates[v.eff][k];
+                    if (lay < 0)
+                        break;
+                    if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                        accepted = 1;
+                }
+                layout = cbf_args_layout((int)code, v.eff, nb);
+                seen_nb[cmd] = (long)nb;
+                seen_ok[cmd] = accepted;
+                seen_layout[cmd] = layout;
             }
             if (!accepted)
                 cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos, "%s has %lu argument bytes, no layout of %s has that size",
                           cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
-            layout = cbf_args_layout((int)code, v.eff, nb);
             if (layout != CBF_LAYOUT__NONE)
                 cbf__decoded_checks(&v, cmd, layout, p + CBF_RECORD_HEAD_SIZE, rec, pos);
         }
