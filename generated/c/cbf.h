@@ -45,7 +45,7 @@ enum cbf_version {
 /** Validation profiles. */
 enum cbf_profile {
     CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with FORMAT-NOTES. */
-    CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum may cover implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. */
+    CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum covers implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. A file whose checksum matches the default coverage instead is an error here, and the finding names the coverage it matches: accepting either coverage let any change equal to their difference (the sum of the sequence bytes; 1 for a two-record file) pass unseen, which the reliability campaign found as missed bit flips. */
     CBF_PROFILE__COUNT = 2
 };
 
@@ -1091,7 +1091,7 @@ enum {
 #define CBF__NCHECKS 31
 #define CBF__NTARGETS 10
 #define CBF__MAX_CANDIDATES 2
-#define CBF__MAX_COVERAGES 2
+#define CBF__MAX_COVERAGES 1
 #define CBF__PI 3.14159265358979323846
 
 /* ---- the spec as tables ------------------------------------------------- */
@@ -1415,8 +1415,8 @@ typedef struct cbf__profile {
     int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
 } cbf__profile;
 static const cbf__profile cbf__profiles[2] = {
-    { "default", { 2, -1 }, { 3, -1 } },
-    { "implib", { 3, 2 }, { -1, -1 } },
+    { "default", { 2 }, { 3 } },
+    { "implib", { 3 }, { 2 } },
 };
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
