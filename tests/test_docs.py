@@ -34,8 +34,11 @@ def test_relative_file_links_exist() -> None:
 
 
 @pytest.mark.parametrize("name", [c.name for c in SPEC.commands])
-def test_every_command_has_a_section(name: str) -> None:
-    assert f"### {name} (0x" in DOC
+def test_every_command_has_a_page(name: str) -> None:
+    page = f"commands/{name.lower().replace('_', '-')}.md"
+    text = (REPO / "generated" / "docs" / page).read_text(encoding="utf-8")
+    assert f"# {name} (0x" in text
+    assert f"[{name}]({page})" in DOC
 
 
 def test_every_check_is_documented_and_traced() -> None:
@@ -61,5 +64,9 @@ def test_missing_report_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path)
 
 def test_new_command_appears_in_the_docs(tmp_path: Path) -> None:
     generate(spec_with_fixture_command(tmp_path), tmp_path / "gen", "docs")
-    text = (tmp_path / "gen" / "docs" / "index.md").read_text(encoding="utf-8")
-    assert "### DWELL (0x44)" in text and "[DWELL](#cmd-dwell)" in text and "`seconds`" in text
+    docs = tmp_path / "gen" / "docs"
+    index = (docs / "index.md").read_text(encoding="utf-8")
+    page = (docs / "commands" / "dwell.md").read_text(encoding="utf-8")
+    assert "[DWELL](commands/dwell.md)" in index
+    assert "# DWELL (0x44)" in page and "`seconds`" in page
+    assert "seconds" in (docs / "svg" / "cmd-dwell.svg").read_text(encoding="utf-8")
