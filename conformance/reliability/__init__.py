@@ -1,0 +1,1 @@
+"""Reliability campaign (issue #7): corruption detection, blind spots, differential testing."""
