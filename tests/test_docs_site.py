@@ -1,0 +1,322 @@
+"""The documentation as a site: Markdown pages, SVG figures and the HTML built by `make docs`.
+
+The pages are taken from the emitter (what `make generate` would write) and
+the HTML is built into a temporary folder, so these tests judge the generator,
+not a previous build. The link checkers are themselves tested on broken pages.
+"""
+
+from __future__ import annotations
+
+import json
+import posixpath
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import Any
+
+import html5lib  # type: ignore[import-untyped]
+import pytest
+from conftest import generate, spec_with_fixture_command
+from markdown_it import MarkdownIt
+from markdown_it.token import Token
+
+import cbfgen.emit.docs as docs
+from cbfgen.emit.docs import site
+from cbfgen.loader import load
+from cbfgen.model import Spec
+
+REPO = Path(__file__).resolve().parents[1]
+SPEC = load(REPO / "spec" / "cbf.yaml")
+DOCS = REPO / "generated" / "docs"
+ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
+
+
+# -- helpers ---------------------------------------------------------------------
+
+def _md_pages(spec: Spec) -> dict[str, str]:
+    """The Markdown pages of the emitter, by path relative to the docs folder."""
+    return {rel[len("docs/"):]: data.decode() for rel, data in docs.emit(spec).items() if rel.endswith(".md")}
+
+
+def _md_links(text: str) -> list[str]:
+    out: list[str] = []
+
+    def walk(tokens: list[Token]) -> None:
+        for tok in tokens:
+            for attr in ("href", "src"):
+                value = tok.attrs.get(attr)
+                if isinstance(value, str):
+                    out.append(value)
+            if tok.children:
+                walk(tok.children)
+
+    walk(MarkdownIt("commonmark", {"html": True}).enable("table").parse(text))
+    return out
+
+
+def _external(href: str) -> bool:
+    return "://" in href or href.startswith("mailto:")
+
+
+def md_problems(pages: dict[str, str], files: set[str], root: Path) -> list[str]:
+    """Every Markdown link or image that does not resolve (file, then anchor)."""
+    anchors = {page: set(ANCHOR.findall(text)) for page, text in pages.items()}
+    problems = []
+    for page, text in pages.items():
+        for href in _md_links(text):
+            if _external(href):
+                continue
+            path, _, frag = href.partition("#")
+            target = posixpath.normpath(posixpath.join(posixpath.dirname(page), path)) if path else page
+            if target.startswith("../"):
+                if not (root / posixpath.dirname(page) / path).resolve().exists():
+                    problems.append(f"{page}: {href}: no such file")
+            elif target not in pages and target not in files:
+                problems.append(f"{page}: {href}: no such page")
+            elif frag and frag not in anchors.get(target, set()):
+                problems.append(f"{page}: {href}: no such anchor")
+    return problems
+
+
+def parse_html(text: str) -> ET.Element:
+    """Parse with html5lib in strict mode: any parse error raises."""
+    parser = html5lib.HTMLParser(strict=True, namespaceHTMLElements=False)
+    tree: ET.Element = parser.parse(text)
+    return tree
+
+
+def _ids(tree: ET.Element) -> list[str]:
+    return [el.attrib["id"] for el in tree.iter() if "id" in el.attrib]
+
+
+def html_problems(out: Path) -> list[str]:
+    """Every link, image or anchor of the site that does not resolve, and every duplicate id."""
+    trees = {p.relative_to(out).as_posix(): parse_html(p.read_text(encoding="utf-8")) for p in out.rglob("*.html")}
+    ids = {page: _ids(tree) for page, tree in trees.items()}
+    problems = [f"{page}: duplicate id {i}" for page, lst in ids.items() for i in sorted(set(lst)) if lst.count(i) > 1]
+    for page, tree in trees.items():
+        for el in tree.iter():
+            href = el.attrib.get("href") or el.attrib.get("src")
+            if not href or _external(href):
+                continue
+            path, _, frag = href.partition("#")
+            target = (out / posixpath.dirname(page) / path).resolve() if path else (out / page).resolve()
+            if not target.exists():
+                problems.append(f"{page}: {href}: no such file")
+                continue
+            rel = target.relative_to(out.resolve()).as_posix() if target.is_relative_to(out.resolve()) else ""
+            if frag and rel.endswith(".html") and frag not in ids.get(rel, []):
+                problems.append(f"{page}: {href}: no such anchor")
+    return problems
+
+
+def _text(tree: ET.Element) -> str:
+    return " ".join("".join(tree.itertext()).split())
+
+
+@pytest.fixture(scope="module")
+def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("site")
+    site.build(SPEC, out)
+    return out
+
+
+# -- Markdown --------------------------------------------------------------------
+
+def test_every_markdown_link_and_anchor_resolves() -> None:
+    pages = _md_pages(SPEC)
+    files = {rel[len("docs/"):] for rel in docs.emit(SPEC)}
+    assert len(pages) == 1 + len(SPEC.commands)
+    assert sum(len(_md_links(t)) for t in pages.values()) > 100
+    assert md_problems(pages, files, DOCS) == []
+
+
+def test_markdown_link_checker_finds_broken_links() -> None:
+    pages = {"index.md": '<a id="here"></a>\n[a](#here) [b](#gone) [c](commands/none.md) [d](../../no/such.file)\n'
+                         "![e](svg/none.svg)\n"}
+    problems = md_problems(pages, set(), DOCS)
+    assert len(problems) == 4, problems
+
+
+def test_every_page_and_figure_is_in_generated() -> None:
+    for rel in docs.emit(SPEC):
+        path = REPO / "generated" / rel
+        assert path.exists(), f"{rel} is not committed: run make generate"
+
+
+def test_every_command_and_check_is_in_the_markdown() -> None:
+    pages = _md_pages(SPEC)
+    index = pages["index.md"]
+    for c in SPEC.commands:
+        assert f"[{c.name}]({docs.command_page(c)})" in index
+        assert f"# {c.name} (0x{c.code:02X})" in pages[docs.command_page(c)]
+        for lay in c.layouts:
+            for a in lay.args:
+                assert f"`{a.name}`" in pages[docs.command_page(c)], (c.name, a.name)
+    for k in SPEC.checks:
+        assert f'<a id="check-{docs._anchor(k.id)}"></a>`{k.id}`' in index
+
+
+def test_markdown_traceability_matrix_lists_every_check() -> None:
+    index = _md_pages(SPEC)["index.md"]
+    matrix = index[index.index('<a id="traceability-matrix"></a>'):index.index('<a id="reliability"></a>')]
+    listed = re.findall(r"^\| \[([^\]]+)\]\(#check-", matrix, re.MULTILINE)
+    assert listed == [k.id for k in SPEC.checks]
+
+
+# -- SVG figures -----------------------------------------------------------------
+
+def test_figures_are_svg_with_every_field() -> None:
+    figures = docs.figures(SPEC)
+    for h in SPEC.headers.values():
+        text = figures[docs.header_svg(h.id)]
+        root = ET.fromstring(text.encode())
+        assert root.tag == "{http://www.w3.org/2000/svg}svg"
+        for f in h.fields:
+            assert f"{f.name}: offset {f.offset}, {f.size} bytes" in text, (h.id, f.name)
+        # one box per byte row a field touches; their widths add up to the layout size
+        widths = [float(r.attrib["width"]) for g in root.iter("{http://www.w3.org/2000/svg}g")
+                  for r in g.iter("{http://www.w3.org/2000/svg}rect")]
+        assert sum(widths) == h.size * 46
+    for f in SPEC.record.fields:
+        assert f"{f.name}: offset {f.offset}, {f.size} bytes" in figures[docs.RECORD_SVG]
+    for c in SPEC.commands:
+        for lay in c.layouts:
+            if lay.args:
+                ET.fromstring(figures[docs.layout_svg(lay)].encode())
+    assert docs.MOTION_SVG in figures
+
+
+def test_pages_and_figures_are_deterministic() -> None:
+    assert docs.emit(SPEC) == docs.emit(SPEC)
+    pages = _md_pages(SPEC)
+    assert not re.search(r"\b20\d\d-\d\d-\d\dT\d\d:", "".join(pages.values()))
+
+
+# -- HTML ------------------------------------------------------------------------
+
+def test_html_parses_without_errors(html_site: Path) -> None:
+    pages = sorted(html_site.rglob("*.html"))
+    assert len(pages) == 1 + len(SPEC.commands)
+    for p in pages:
+        parse_html(p.read_text(encoding="utf-8"))
+
+
+def test_html_parser_is_strict() -> None:
+    with pytest.raises(html5lib.html5parser.ParseError):
+        parse_html("<!DOCTYPE html><html><head><title>x</title></head><body><p><table></p></body></html>")
+
+
+def test_every_html_link_and_anchor_resolves(html_site: Path) -> None:
+    assert html_problems(html_site) == []
+
+
+def test_html_link_checker_finds_broken_links(tmp_path: Path) -> None:
+    (tmp_path / "index.html").write_text(
+        '<!DOCTYPE html><html><head><title>t</title></head><body><p id="a">x</p><p id="a">y</p>'
+        '<a href="#a">ok</a><a href="#gone">1</a><a href="other.html">2</a>'
+        '<img src="svg/none.svg" alt=""></body></html>',
+        encoding="utf-8")
+    assert len(html_problems(tmp_path)) == 4
+
+
+def test_html_is_self_contained(html_site: Path) -> None:
+    for p in html_site.rglob("*.html"):
+        tree = parse_html(p.read_text(encoding="utf-8"))
+        assert not list(tree.iter("script")), p
+        for el in tree.iter():
+            if el.tag in ("link", "img", "iframe", "object"):
+                ref = el.attrib.get("href") or el.attrib.get("src") or ""
+                assert not _external(ref), (p, ref)
+
+
+def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
+    index = parse_html((html_site / "index.html").read_text(encoding="utf-8"))
+    text = _text(index)
+    ids = set(_ids(index))
+    for c in SPEC.commands:
+        assert c.name in text
+        page = parse_html((html_site / (docs.command_page(c)[:-3] + ".html")).read_text(encoding="utf-8"))
+        h1 = next(page.iter("h1"))
+        assert "".join(h1.itertext()) == f"{c.name} (0x{c.code:02X})"
+    for k in SPEC.checks:
+        assert k.id in text and f"check-{docs._anchor(k.id)}" in ids
+
+
+def test_html_traceability_matrix_lists_every_check(html_site: Path) -> None:
+    index = parse_html((html_site / "index.html").read_text(encoding="utf-8"))
+    seen = False
+    listed: list[str] = []
+    for el in index.find("body").iter():  # type: ignore[union-attr]
+        if el.tag == "h2":
+            seen = "".join(el.itertext()) == "Traceability matrix"
+        elif seen and el.tag == "tr":
+            cells = list(el)
+            if cells and cells[0].tag == "td":
+                listed.append("".join(cells[0].itertext()))
+    assert listed == [k.id for k in SPEC.checks]
+
+
+def test_site_links_the_kaitai_graph_when_built(tmp_path: Path) -> None:
+    (tmp_path / "kaitai").mkdir()
+    (tmp_path / "kaitai" / "cbf.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"/>\n', encoding="utf-8")
+    site.build(SPEC, tmp_path)
+    assert 'href="kaitai/cbf.svg"' in (tmp_path / "index.html").read_text(encoding="utf-8")
+    assert (tmp_path / "kaitai" / "cbf.svg").exists()
+    assert html_problems(tmp_path) == []
+
+
+# -- a new command in the spec ----------------------------------------------------
+
+def test_new_command_appears_in_markdown_and_html(tmp_path: Path) -> None:
+    spec_path = spec_with_fixture_command(tmp_path)
+    generate(spec_path, tmp_path / "gen", "docs")
+    spec = load(spec_path)
+    gen = tmp_path / "gen" / "docs"
+    pages = {p.relative_to(gen).as_posix(): p.read_text(encoding="utf-8") for p in gen.rglob("*.md")}
+    assert "# DWELL (0x44)" in pages["commands/dwell.md"] and "`seconds`" in pages["commands/dwell.md"]
+    assert "[DWELL](commands/dwell.md)" in pages["index.md"]
+    files = {p.relative_to(gen).as_posix() for p in gen.rglob("*")}
+    assert md_problems(pages, files, DOCS) == []
+    out = tmp_path / "html"
+    site.build(spec, out)
+    index = _text(parse_html((out / "index.html").read_text(encoding="utf-8")))
+    page = _text(parse_html((out / "commands" / "dwell.html").read_text(encoding="utf-8")))
+    assert "DWELL" in index and "DWELL (0x44)" in page and "seconds" in page
+    assert html_problems(out) == []
+
+
+# -- reliability -------------------------------------------------------------------
+
+RELIABILITY: dict[str, Any] = {
+    "corruption": {"c": {"bit_flip": {"trials": 200, "detected": 199, "misses": [{"file": "a.cbf", "offset": 7}]},
+                         "truncation": {"trials": 50, "detected": 50, "misses": []}}},
+    "blind_spots": {"no_file_checksum": {"bit_flip": {"trials": 80, "detected": 20}}},
+    "differential": {"files": 1000, "seed": 1234, "bindings": ["c", "python"], "disagreements": 0},
+    "fuzz": {"cbf_fuzz": {"executions": 123456, "seconds": 60.0, "crashes": 0}},
+}
+
+
+def test_reliability_tables(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    path = tmp_path / "reliability.json"
+    path.write_text(json.dumps(RELIABILITY), encoding="utf-8")
+    monkeypatch.setattr(docs, "RELIABILITY", path)
+    text = docs.emit(SPEC)["docs/index.md"].decode()
+    assert "| c | bit_flip | 200 | 199 | 99.5 % | 1 |" in text
+    assert "| c | truncation | 50 | 50 | 100.0 % | 0 |" in text
+    assert "| no_file_checksum | bit_flip | 80 | 20 | 25.0 % |" in text
+    assert "| 1000 | 1234 | c, python | 0 |" in text
+    assert "| cbf_fuzz | 123456 | 60.0 | 0 |" in text
+    assert "No reliability report is present" not in text
+    out = tmp_path / "html"
+    site.build(SPEC, out)
+    html = (out / "index.html").read_text(encoding="utf-8")
+    assert "<td>99.5 %</td>" in html
+    parse_html(html)
+
+
+def test_missing_reliability_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.setattr(docs, "RELIABILITY", tmp_path / "absent.json")
+    text = docs.emit(SPEC)["docs/index.md"].decode()
+    assert "No reliability report is present: no figures are shown." in text
+    assert " %" not in text[text.index('<a id="reliability"></a>'):]
