@@ -4,6 +4,8 @@
 # fragments (c-deps, docs-check) and by CI through `make test`.
 #   clang + libclang-rt-14-dev   libFuzzer and the sanitizer runtimes (C binding)
 #   graphviz                     Kaitai's graphviz diagram in the docs (optional)
+#   chromium                     only with CBF_WANT_CHROMIUM=1: headless browser of
+#                                `make docs-check` (about 15 s to install on Debian 12)
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 want=(clang libclang-rt-14-dev graphviz)

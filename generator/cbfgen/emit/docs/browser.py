@@ -84,7 +84,7 @@ def check(browser: str, site: Path, out: Path, pages: list[str], size: str) -> l
             problems.append(f"{rel}: chromium exited with {status}")
         if not _png_ok(png):
             problems.append(f"{rel}: no screenshot written")
-        else:
+        elif status == 0 and not lines:
             print(f"docs-check: {rel} -> {png} ({png.stat().st_size} bytes), no console messages")
     return problems
 
