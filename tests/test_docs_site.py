@@ -289,11 +289,13 @@ def test_new_command_appears_in_markdown_and_html(tmp_path: Path) -> None:
 # -- reliability -------------------------------------------------------------------
 
 RELIABILITY: dict[str, Any] = {
-    "corruption": {"c": {"bit_flip": {"trials": 200, "detected": 199, "misses": [{"file": "a.cbf", "offset": 7}]},
-                         "truncation": {"trials": 50, "detected": 50, "misses": []}}},
+    "corruption": {"c": {"bit_flip": {"trials": 200, "detected": 199,
+                                      "misses": [{"file": "a.cbf", "offset": 7, "detail": "flip"}]},
+                         "truncation": {"trials": 20000, "detected": 19999, "misses": []}}},
     "blind_spots": {"no_file_checksum": {"bit_flip": {"trials": 80, "detected": 20}}},
     "differential": {"files": 1000, "seed": 1234, "bindings": ["c", "python"], "disagreements": 0},
     "fuzz": {"cbf_fuzz": {"executions": 123456, "seconds": 60.0, "crashes": 0}},
+    "mode": "full",
 }
 
 
@@ -302,16 +304,17 @@ def test_reliability_tables(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> 
     path.write_text(json.dumps(RELIABILITY), encoding="utf-8")
     monkeypatch.setattr(docs, "RELIABILITY", path)
     text = docs.emit(SPEC)["docs/index.md"].decode()
-    assert "| c | bit_flip | 200 | 199 | 99.5 % | 1 |" in text
-    assert "| c | truncation | 50 | 50 | 100.0 % | 0 |" in text
-    assert "| no_file_checksum | bit_flip | 80 | 20 | 25.0 % |" in text
+    assert "| c | bit_flip | 200 | 199 | 99.50 % | 1 |" in text
+    assert "| c | truncation | 20000 | 19999 | 99.99 % | 0 |" in text
+    assert "| no_file_checksum | bit_flip | 80 | 20 | 25.00 % |" in text
     assert "| 1000 | 1234 | c, python | 0 |" in text
     assert "| cbf_fuzz | 123456 | 60.0 | 0 |" in text
+    assert "| c | bit_flip | `a.cbf` | 7 | detail=flip |" in text and "mode `full`" in text
     assert "No reliability report is present" not in text
     out = tmp_path / "html"
     site.build(SPEC, out)
     html = (out / "index.html").read_text(encoding="utf-8")
-    assert "<td>99.5 %</td>" in html
+    assert "<td>99.50 %</td>" in html
     parse_html(html)
 
 

@@ -11,6 +11,7 @@ svg/. The HTML site (site.py, `make docs`) renders the same pages.
 from __future__ import annotations
 
 import json
+import math
 import struct
 from pathlib import Path
 from typing import Any
@@ -90,7 +91,8 @@ def _rate(entry: Any) -> dict[str, Any]:
     """trials, detected and the detection rate in percent of one reliability entry."""
     e = entry if isinstance(entry, dict) else {}
     trials, detected = int(e.get("trials", 0) or 0), int(e.get("detected", 0) or 0)
-    rate = f"{100.0 * detected / trials:.1f} %" if trials else "—"
+    # Truncated, never rounded up: 19,999 of 20,000 reads 99.99 %, not 100.00 %.
+    rate = f"{math.floor(10000 * detected / trials) / 100:.2f} %" if trials else "—"
     misses = e.get("misses", [])
     missed = len(misses) if isinstance(misses, list) else 0
     return {"trials": trials, "detected": detected, "rate": rate, "misses": missed}
@@ -104,6 +106,22 @@ def _rate_rows(table: Any, outer: str) -> list[dict[str, Any]]:
     return rows
 
 
+MISSES_SHOWN = 5  # missed corruptions listed per binding and class
+
+
+def _misses(table: Any) -> list[dict[str, Any]]:
+    rows = []
+    for binding, classes in sorted((table or {}).items()):
+        for cls, entry in sorted((classes or {}).items()):
+            misses = entry.get("misses", []) if isinstance(entry, dict) else []
+            for m in (misses if isinstance(misses, list) else [])[:MISSES_SHOWN]:
+                m = m if isinstance(m, dict) else {}
+                rest = ", ".join(f"{k}={m[k]}" for k in sorted(m) if k not in ("file", "offset"))
+                rows.append({"binding": binding, "class": cls, "file": m.get("file", ""),
+                             "offset": m.get("offset", ""), "detail": rest})
+    return rows
+
+
 def _reliability(data: dict[str, Any] | None) -> dict[str, Any] | None:
     """conformance/reliability.json as table rows (None when the file is missing or unreadable)."""
     if data is None:
@@ -112,6 +130,9 @@ def _reliability(data: dict[str, Any] | None) -> dict[str, Any] | None:
     fuzz = data.get("fuzz") or {}
     return {
         "corruption": _rate_rows(data.get("corruption"), "binding"),
+        "misses": _misses(data.get("corruption")),
+        "misses_shown": MISSES_SHOWN,
+        "run": {k: data[k] for k in ("mode", "seed") if k in data},
         "blind_spots": _rate_rows(data.get("blind_spots"), "variant"),
         "differential": diff if isinstance(diff, dict) else {},
         "fuzz": [{"name": name, **(v if isinstance(v, dict) else {})} for name, v in sorted(fuzz.items())],
