@@ -323,3 +323,13 @@ def test_missing_reliability_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: 
     text = docs.emit(SPEC)["docs/index.md"].decode()
     assert "No reliability report is present: no figures are shown." in text
     assert " %" not in text[text.index('<a id="reliability"></a>'):]
+
+
+def test_empty_reliability_sections_are_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    path = tmp_path / "reliability.json"
+    path.write_text("{}\n", encoding="utf-8")
+    monkeypatch.setattr(docs, "RELIABILITY", path)
+    text = docs.emit(SPEC)["docs/index.md"].decode()
+    for what in ("corruption", "blind-spot", "fuzzing"):
+        assert f"No {what} results recorded." in text
+    assert "No reliability report is present" not in text
