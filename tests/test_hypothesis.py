@@ -1,0 +1,226 @@
+"""Property tests with cbf.testing: valid files validate clean and round-trip; the
+decoder is total on any bytes and on mutated files; encode only writes files that
+validate. ``HYPOTHESIS_PROFILE=long`` runs many more examples (default: ci)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import pytest
+from conftest import generate, spec_with_fixture_command
+from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import strategies as st
+
+import cbf
+from cbf import tables as T
+from cbf.model import Cbf, Record
+from cbf.testing import cutfiles, models, mutations, reseal_checksums, seal
+
+REPO = Path(__file__).resolve().parents[1]
+_HEALTH = [HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much]
+settings.register_profile("ci", max_examples=200, deadline=None, suppress_health_check=_HEALTH)
+settings.register_profile("long", max_examples=5000, deadline=None, suppress_health_check=_HEALTH)
+PROFILE = settings.get_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+# Each test draws its own examples: the profile is applied per test, not loaded globally.
+run = settings(PROFILE)
+PROFILES = list(T.PROFILES)
+WRITABLE = [v.id for v in T.VERSIONS if v.writable]
+CUTTERS = {"BALL6": (50.0, 3.0), "FLAT4": (42.5, 2.0)}
+DOCUMENTED = (cbf.CbfError,)
+
+
+@st.composite
+def _files(draw: st.DrawFn, max_records: int) -> tuple[dict[str, Any], bytes]:
+    """A profile, maybe a part number and a cutter table, and a file valid under them."""
+    kw: dict[str, Any] = {"profile": draw(st.sampled_from(PROFILES))}
+    if draw(st.booleans()):
+        kw["part_number"] = "PN-42"
+    if draw(st.booleans()):
+        kw["cutters"] = CUTTERS
+    return kw, draw(cutfiles(max_records=max_records, **kw))
+
+
+def _errors(findings: list[cbf.Finding]) -> list[cbf.Finding]:
+    return [f for f in findings if f.severity == "error"]
+
+
+# -- the strategy: valid files ---------------------------------------------------------------
+@run
+@given(_files(max_records=24))
+def test_generated_files_validate_clean_and_round_trip(kd: tuple[dict[str, Any], bytes]) -> None:
+    kw, data = kd
+    profile = kw["profile"]
+    assert cbf.validate(data, **kw) == []
+    assert cbf.validate(data, engine="numpy", **kw) == []
+    model = cbf.decode(data)
+    assert cbf.encode(model, keep_stored=True) == data
+    writable = T.VERSION_BY_ID[model.version_id].writable
+    if writable:
+        assert cbf.encode(model, profile=profile) == data
+    # CUT: what it carries comes back; the writer fills the rest
+    text = cbf.to_cut(model, profile=profile)
+    back = cbf.from_cut(text, profile=profile)
+    assert [(r.code, bytes(r.raw_args), r.reserved) for r in back.records] == \
+        [(r.code, bytes(r.raw_args), r.reserved) for r in model.records]
+    assert cbf.to_cut(back, profile=profile) == text
+    if writable:
+        assert cbf.encode(back, profile=profile) == data
+    else:
+        assert seal(back, profile) == data
+    # canonical JSON, through text
+    doc = json.loads(json.dumps(cbf.to_canonical(model)))
+    assert cbf.encode(cbf.from_canonical(doc), keep_stored=True) == data
+
+
+@run
+@given(cutfiles(continuous=False, max_records=8))
+def test_free_motion_breaks_only_the_continuity_checks(data: bytes) -> None:
+    allowed = {c["id"] for kind in ("continuity", "orientation") for c in T.checks_of(kind)}
+    assert {f.check for f in cbf.validate(data)} <= allowed
+
+
+def test_every_command_a_shape_and_a_chain_are_drawn() -> None:
+    """The strategy reaches every command of the spec, shapes, and motions that start
+    where a circle or helix (end computed, not copied) left off."""
+    seen: set[int] = set()
+    chains = 0
+    turning = {c.code for c in T.COMMANDS if c.motion and "center" in c.motion}
+    moving = {c.code for c in T.COMMANDS if c.motion and c.motion["kind"] != "point"}
+
+    @settings(max_examples=60, phases=[Phase.generate], database=None, deadline=None, suppress_health_check=_HEALTH)
+    @given(cutfiles(min_records=20, max_records=20))
+    def collect(data: bytes) -> None:
+        nonlocal chains
+        codes = [r.code for r in cbf.decode(data).records]
+        seen.update(codes)
+        chains += sum(1 for a, b in zip(codes, codes[1:], strict=False) if a in turning and b in moving)
+
+    collect()
+    assert seen == {c.code for c in T.COMMANDS}
+    assert chains > 0
+
+
+def test_bad_parameters_are_refused() -> None:
+    for kw in ({"profile": "nope"}, {"min_records": 5, "max_records": 2}, {"bound": 1e9}, {"versions": []}):
+        with pytest.raises(ValueError):
+            cutfiles(**kw)
+
+
+def test_importing_cbf_does_not_import_hypothesis() -> None:
+    code = ("import sys, cbf; cbf.decode; cbf.validate; cbf.encode; import cbf.cli; "
+            "assert 'hypothesis' not in sys.modules and 'cbf.testing' not in sys.modules")
+    env = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
+    subprocess.run([sys.executable, "-c", code], env=env, check=True)
+
+
+# -- decoder totality ----------------------------------------------------------------------
+def _total(data: bytes) -> None:
+    """decode returns or raises CbfError; validate never raises; a decoded model re-encodes exactly."""
+    try:
+        model = cbf.decode(data)
+    except DOCUMENTED as exc:
+        assert exc.offset is not None and str(exc)
+        model = None
+    for profile in PROFILES:
+        found = cbf.validate(data, profile=profile, part_number="PN", cutters=CUTTERS)
+        assert all(f.severity in ("error", "warning") for f in found)
+    if model is None:
+        return
+    assert cbf.validate(data, engine="numpy") == cbf.validate(data, engine="python")
+    assert cbf.encode(model, keep_stored=True) == data
+    doc = json.loads(json.dumps(cbf.to_canonical(model)))
+    assert cbf.encode(cbf.from_canonical(doc), keep_stored=True) == data
+    model.typed_records()
+    if not model.trailing:
+        try:
+            cbf.from_cut(cbf.to_cut(model))
+        except DOCUMENTED as exc:
+            assert exc.line is not None
+
+
+@run
+@given(st.binary(max_size=1500))
+def test_decoder_is_total_on_any_bytes(data: bytes) -> None:
+    _total(data)
+
+
+@run
+@given(mutations(cutfiles(max_records=16)))
+def test_decoder_is_total_on_mutated_files(data: bytes) -> None:
+    _total(data)
+
+
+@run
+@given(mutations(cutfiles(max_records=16), reseal=True, max_steps=2))
+def test_mutations_that_keep_the_checksums_are_still_caught_or_harmless(data: bytes) -> None:
+    _total(data)
+    assert reseal_checksums(data) == data
+
+
+# -- validate after encode -----------------------------------------------------------------
+@st.composite
+def _edited_models(draw: st.DrawFn) -> tuple[str, Cbf]:
+    """A valid model, then one edit: random argument bytes, a record dropped, repeated,
+    moved or replaced by any command of the version, a new reserved byte."""
+    profile = draw(st.sampled_from(PROFILES))
+    model = draw(models(versions=WRITABLE, profile=profile, max_records=12))
+    recs = list(model.records)
+    cmds = [c for c in T.COMMANDS if c.layouts_for(model.version_id)]
+    edit = draw(st.integers(0, 5))
+    i = draw(st.integers(0, max(0, len(recs) - 1)))
+    if edit == 0 and recs:
+        recs[i] = replace(recs[i], raw_args=draw(st.binary(min_size=len(recs[i].raw_args),
+                                                           max_size=len(recs[i].raw_args))))
+    elif edit == 1 and recs:
+        del recs[i]
+    elif edit == 2 and recs:
+        recs.insert(draw(st.integers(0, len(recs))), recs[i])
+    elif edit == 3:
+        cmd = draw(st.sampled_from(cmds))
+        size = draw(st.sampled_from([lay.size for lay in cmd.layouts_for(model.version_id)]))
+        recs.insert(i, Record(code=cmd.code, raw_args=draw(st.binary(min_size=size, max_size=size))))
+    elif edit == 4 and recs:
+        recs[i] = replace(recs[i], reserved=draw(st.integers(0, 255)))
+    return profile, Cbf(model.header, tuple(recs))
+
+
+@run
+@given(_edited_models())
+def test_validate_after_encode_has_no_error(pm: tuple[str, Cbf]) -> None:
+    profile, model = pm
+    try:
+        out = cbf.encode(model, profile=profile)
+    except cbf.EncodeError as exc:
+        assert str(exc)  # refused, with a reason: nothing was written
+        return
+    assert _errors(cbf.validate(out, profile=profile)) == []
+    assert cbf.encode(cbf.decode(out), profile=profile) == out
+
+
+# -- a command added to the spec is drawn with no code change ---------------------------------------
+DRAW_NEW = r"""
+import cbf
+from cbf import tables as T
+from cbf.testing import cutfiles
+from hypothesis import Phase, find, settings
+
+code = T.BY_NAME["DWELL"].code
+s = settings(max_examples=2000, phases=[Phase.generate], database=None, deadline=None)
+data = find(cutfiles(versions=["3.0"], min_records=1), lambda b: code in [r.code for r in cbf.decode(b).records],
+            settings=s)
+assert cbf.validate(data) == [], cbf.validate(data)
+print("drawn")
+"""
+
+
+def test_a_command_added_to_the_spec_is_drawn(tmp_path: Path) -> None:
+    generate(spec_with_fixture_command(tmp_path), tmp_path / "gen", "python")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path / "gen" / "python"))
+    res = subprocess.run([sys.executable, "-c", DRAW_NEW], env=env, capture_output=True, text=True, cwd=tmp_path)
+    assert res.returncode == 0 and "drawn" in res.stdout, res.stderr
