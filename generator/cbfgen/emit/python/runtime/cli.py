@@ -2,7 +2,12 @@
 
 Exit codes: 0 ok; 1 validation found an error; 2 bad usage, unreadable or
 malformed input (one line on stderr naming what and where, no traceback).
-``-`` means stdin/stdout. Outputs are written atomically (temp + rename).
+``-`` means stdin/stdout. Inputs larger than a CBF file (or its text) can be
+are refused before they are read. Outputs are written atomically: the bytes
+go, in chunks through ``os.write``, to an unnamed temporary file in the target
+folder (O_TMPFILE; a named one where that is missing) that is linked and
+renamed over the target only when complete, so a killed ``cbf`` leaves the
+target as it was.
 """
 
 from __future__ import annotations
@@ -10,6 +15,8 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import secrets
+import stat
 import sys
 import tempfile
 from collections import Counter
@@ -32,6 +39,13 @@ def _max_file_size() -> int:
     return T.HEADER_SIZE + (T.LIMITS["max_commands"] + 1) * (T.HEAD_SIZE + T.LIMITS["max_arg_size"])
 
 
+_CHUNK = 1 << 16
+
+
+def _too_big(path: str, limit: int) -> _Fail:
+    return _Fail(f"{path}: larger than {limit} bytes, the most a CBF file (or its text) can hold")
+
+
 def _read(path: str, limit: int) -> bytes:
     """Read at most ``limit`` bytes; larger input is refused (memory stays bounded)."""
     try:
@@ -42,16 +56,71 @@ def _read(path: str, limit: int) -> bytes:
             if p.is_dir():
                 raise _Fail(f"{path}: is a directory")
             with p.open("rb") as fh:
+                st = os.fstat(fh.fileno())
+                if stat.S_ISREG(st.st_mode) and st.st_size > limit:
+                    raise _too_big(path, limit)  # refused unread
                 data = fh.read(limit + 1)
     except FileNotFoundError:
         raise _Fail(f"{path}: no such file") from None
     except PermissionError:
         raise _Fail(f"{path}: permission denied") from None
+    except IsADirectoryError:
+        raise _Fail(f"{path}: is a directory") from None
     except OSError as exc:
         raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
     if len(data) > limit:
-        raise _Fail(f"{path}: larger than {limit} bytes, the most a CBF file (or its text) can hold")
+        raise _too_big(path, limit)
     return data
+
+
+def _read_text(path: str, limit: int) -> str:
+    """Read UTF-8 text chunk by chunk: binary input fails at its first bad byte, unread beyond."""
+    try:
+        if path == "-":
+            return _decode_chunks(path, sys.stdin.buffer, limit)
+        p = Path(path)
+        if p.is_dir():
+            raise _Fail(f"{path}: is a directory")
+        with p.open("rb") as fh:
+            st = os.fstat(fh.fileno())
+            if stat.S_ISREG(st.st_mode) and st.st_size > limit:
+                raise _too_big(path, limit)
+            return _decode_chunks(path, fh, limit)
+    except FileNotFoundError:
+        raise _Fail(f"{path}: no such file") from None
+    except PermissionError:
+        raise _Fail(f"{path}: permission denied") from None
+    except IsADirectoryError:
+        raise _Fail(f"{path}: is a directory") from None
+    except OSError as exc:
+        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+
+
+def _decode_chunks(path: str, fh: Any, limit: int) -> str:
+    parts: list[str] = []
+    carry = b""
+    done = 0  # bytes before ``carry``
+    lines = 1
+    while True:
+        chunk = fh.read(1 << 20)
+        buf = carry + chunk
+        if done + len(buf) > limit:
+            raise _too_big(path, limit)
+        try:
+            text = buf.decode("utf-8")
+            carry = b""
+        except UnicodeDecodeError as exc:
+            if chunk and exc.reason == "unexpected end of data":
+                text, carry = buf[:exc.start].decode("utf-8"), buf[exc.start:]  # a character split by the chunk
+            else:
+                line = lines + buf[:exc.start].count(b"\n")
+                raise _Fail(f"{path}: line {line} (offset {done + exc.start}): byte 0x{buf[exc.start]:02X} "
+                            f"is not UTF-8 text") from None
+        parts.append(text)
+        lines += text.count("\n")
+        done += len(buf) - len(carry)
+        if not chunk:
+            return "".join(parts)
 
 
 def _check_output(path: str) -> None:
@@ -65,48 +134,108 @@ def _check_output(path: str) -> None:
         raise _Fail(f"{path}: is a directory")
 
 
+def _write_all(fd: int, data: bytes) -> None:
+    view = memoryview(data)
+    while view:
+        n = os.write(fd, view[:_CHUNK])
+        view = view[n:]
+    os.fsync(fd)
+
+
+def _temp_name(target: Path) -> Path:
+    return target.parent / f".{target.name}.{secrets.token_hex(6)}.tmp"
+
+
+def _write_unnamed(target: Path, data: bytes) -> bool:
+    """Write into an unnamed file (O_TMPFILE), then link it beside the target and rename
+    it over the target. False when the system offers no unnamed files or cannot link
+    them (nothing was made)."""
+    flag = getattr(os, "O_TMPFILE", 0)
+    if not flag or not Path("/proc/self/fd").is_dir():
+        return False
+    try:
+        fd = os.open(target.parent, flag | os.O_WRONLY, 0o666)
+    except OSError:
+        return False
+    tmp = _temp_name(target)
+    try:
+        _write_all(fd, data)
+        dir_fd = os.open(target.parent, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        try:
+            # linkat(AT_SYMLINK_FOLLOW) through /proc: the dir_fd makes os.link call linkat
+            os.link(f"/proc/self/fd/{fd}", tmp.name, dst_dir_fd=dir_fd, follow_symlinks=True)
+        except OSError:
+            return False
+        finally:
+            os.close(dir_fd)
+    finally:
+        os.close(fd)
+    try:
+        os.replace(tmp, target)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return True
+
+
+def _write_named(target: Path, data: bytes) -> None:
+    fd, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+    try:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.fchmod(fd, 0o666 & ~umask)  # as an ordinary new file (mkstemp makes 0600)
+        try:
+            _write_all(fd, data)
+        finally:
+            os.close(fd)
+        os.replace(name, target)
+    except BaseException:
+        Path(name).unlink(missing_ok=True)
+        raise
+
+
 def _write(path: str, data: bytes) -> None:
     if path == "-":
         sys.stdout.buffer.write(data)
         sys.stdout.buffer.flush()
         return
     target = Path(path)
-    if not target.parent.is_dir():
-        raise _Fail(f"{path}: folder {str(target.parent)!r} does not exist")
-    if target.is_dir():
-        raise _Fail(f"{path}: is a directory")
+    _check_output(path)
     try:
-        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+        if not _write_unnamed(target, data):
+            _write_named(target, data)
     except OSError as exc:
         raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def _decode(path: str) -> Any:
+    from . import tables as T
     from .codec import decode
     from .errors import CbfError
 
     data = _read(path, _max_file_size())
+    if len(data) >= T.HEADER_SIZE:
+        start, end = (int.from_bytes(data[f.offset:f.end], "little" if T.BO == "<" else "big")
+                      for f in (T.START, T.END))
+        if start != T.START.magic and end != T.END.magic:
+            hint = " (it is text: cbf encode reads CUT and JSON)" if _looks_like_text(data) else ""
+            raise _Fail(f"{path}: offset {T.START.offset}: not a CBF file: neither {T.START.name} nor {T.END.name} "
+                        f"holds its magic number{hint}")
     try:
         return decode(data)
     except CbfError as exc:
         raise _Fail(f"{path}: {exc}") from None
 
 
-def _text(path: str, data: bytes) -> str:
+def _looks_like_text(data: bytes) -> bool:
+    head = data[:256]
     try:
-        return data.decode("utf-8")
+        text = head.decode("utf-8")
     except UnicodeDecodeError as exc:
-        line = data[:exc.start].count(b"\n") + 1
-        raise _Fail(f"{path}: line {line}: byte 0x{data[exc.start]:02X} is not text") from None
+        if exc.start < len(head) - 3:
+            return False
+        text = head[:exc.start].decode("utf-8")  # a character cut by the slice
+    return all(c.isprintable() or c in "\t\r\n" for c in text)
 
 
 def cmd_decode(a: argparse.Namespace) -> int:
@@ -132,8 +261,9 @@ def cmd_encode(a: argparse.Namespace) -> int:
     from .errors import CbfError
 
     _check_output(a.output)
-    data = _read(a.file, 64 * _max_file_size())
-    text = _text(a.file, data)
+    text = _read_text(a.file, 64 * _max_file_size())
+    if not text.strip():
+        raise _Fail(f"{a.file}: empty input: nothing to encode")
     kind = a.input_format or ("json" if a.file.endswith(".json") or text.lstrip().startswith("{") else "cut")
     try:
         if kind == "json":

@@ -1,0 +1,253 @@
+"""The cbf command line under bad input: every bad input through every subcommand (read
+from the CLI's own argparse), one line on stderr naming the problem, the documented exit
+code, no traceback, bounded memory; an encode killed mid-write leaves no partial output."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import random
+import signal
+import subprocess
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from cbf import tables as T
+from cbf.cli import EXIT_FINDINGS, EXIT_USAGE, parser
+
+REPO = Path(__file__).resolve().parents[1]
+GOLDEN = REPO / "conformance" / "golden"
+ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
+VALID = GOLDEN / "valid.v3.small.cbf"
+# The CLI, then its peak resident memory (VmHWM: ru_maxrss would carry the parent's peak over exec).
+RUNNER = r"""
+import sys
+from cbf.cli import main
+try:
+    rc = main(sys.argv[2:])
+finally:
+    peak = [l.split()[1] for l in open("/proc/self/status") if l.startswith("VmHWM")]
+    open(sys.argv[1], "w").write(peak[0] if peak else "0")
+sys.exit(rc)
+"""
+
+
+def _subcommands() -> dict[str, argparse.ArgumentParser]:
+    for action in parser()._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            return dict(action.choices)
+    raise AssertionError("the cbf parser has no subcommands")
+
+
+def _has_output(sub: argparse.ArgumentParser) -> bool:
+    return any("--output" in a.option_strings for a in sub._actions)
+
+
+SUBCOMMANDS = _subcommands()
+# What each subcommand reads: ``encode`` text (CUT or JSON), every other one a CBF file.
+TEXT_INPUT = {"encode"}
+# ``validate`` reports a readable but broken file as findings (exit 1, on stdout).
+REPORTS_FINDINGS = {"validate"}
+
+
+def _cut_with_error_on_line_57() -> str:
+    lines = ["header PN-57 TEST"] + ["speed 0.5"] * 55 + ["speed fast"] + ["cutter_off"] * 5
+    assert lines[56] == "speed fast"
+    return "\n".join(lines) + "\n"
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    make: Callable[[Path], Path]
+    # expected (exit code, substrings of the one stderr line) per kind of subcommand
+    cbf_reader: tuple[int, tuple[str, ...]]
+    text_reader: tuple[int, tuple[str, ...]]
+    validator: tuple[int, tuple[str, ...]] | None = None  # None: as cbf_reader
+
+
+def _file(name: str, data: bytes) -> Callable[[Path], Path]:
+    def make(tmp: Path) -> Path:
+        p = tmp / name
+        p.write_bytes(data)
+        return p
+    return make
+
+
+def _random_100mb(tmp: Path) -> Path:
+    p = tmp / "random.cbf"
+    rnd = random.Random(7)
+    with p.open("wb") as fh:
+        for _ in range(100):
+            fh.write(rnd.randbytes(1 << 20))
+    return p
+
+
+def _no_permission(tmp: Path) -> Path:
+    p = tmp / "locked.cbf"
+    p.write_bytes(VALID.read_bytes())
+    p.chmod(0)
+    return p
+
+
+TRUNCATED_AT = 300  # inside record 5 of valid.v3.small.cbf, which starts at offset 276
+LIMIT = T.HEADER_SIZE + (T.LIMITS["max_commands"] + 1) * (T.HEAD_SIZE + T.LIMITS["max_arg_size"])
+WRONG_SHAPE = {"header": {"version_major": 3, "version_minor": 0}, "records": [{"code": 999}]}
+CASES = [
+    Case("empty", _file("empty.cbf", b""),
+         (EXIT_USAGE, ("offset 0", "0 bytes")), (EXIT_USAGE, ("empty",)), (EXIT_FINDINGS, ("4.2", ":0:"))),
+    Case("directory", lambda tmp: tmp,
+         (EXIT_USAGE, ("is a directory",)), (EXIT_USAGE, ("is a directory",))),
+    Case("missing", lambda tmp: tmp / "missing.cbf",
+         (EXIT_USAGE, ("no such file",)), (EXIT_USAGE, ("no such file",))),
+    Case("no_permission", _no_permission,
+         (EXIT_USAGE, ("permission denied",)), (EXIT_USAGE, ("permission denied",))),
+    Case("random_100mb", _random_100mb,
+         (EXIT_USAGE, (f"larger than {LIMIT} bytes",)), (EXIT_USAGE, ("line 1", "offset", "not UTF-8 text"))),
+    Case("truncated", _file("truncated.cbf", VALID.read_bytes()[:TRUNCATED_AT]),
+         (EXIT_USAGE, ("offset 276", "record 5")), (EXIT_USAGE, ("line 1", "offset 0", "not UTF-8 text")),
+         (EXIT_FINDINGS, ("4.3", ":276:"))),
+    Case("cut_syntax_line_57", _file("bad.cut", _cut_with_error_on_line_57().encode()),
+         (EXIT_USAGE, ("offset 0", "not a CBF file", "it is text")), (EXIT_USAGE, ("line 57", "speed", "'fast'")),
+         (EXIT_FINDINGS, ("6.3.2", ":0:"))),
+    Case("json_wrong_shape", _file("shape.json", (json.dumps(WRONG_SHAPE, indent=1) + " " * 200).encode()),
+         (EXIT_USAGE, ("offset 0", "not a CBF file")), (EXIT_USAGE, ("$.records[0].code",)),
+         (EXIT_FINDINGS, ("6.3.2", ":0:"))),
+]
+
+
+def _run(tmp: Path, *args: str) -> tuple[subprocess.CompletedProcess[str], int]:
+    peak_file = tmp / "peak.txt"
+    res = subprocess.run([sys.executable, "-c", RUNNER, str(peak_file), *args], env=ENV, capture_output=True,
+                         text=True, stdin=subprocess.DEVNULL)
+    peak = int(peak_file.read_text() or 0)
+    peak_file.unlink()
+    return res, peak
+
+
+def _argv(cmd: str, path: Path, out: Path) -> list[str]:
+    return [cmd, str(path)] + (["-o", str(out)] if _has_output(SUBCOMMANDS[cmd]) else [])
+
+
+def _expect(case: Case, cmd: str) -> tuple[int, tuple[str, ...]]:
+    if cmd in TEXT_INPUT:
+        return case.text_reader
+    if cmd in REPORTS_FINDINGS and case.validator is not None:
+        return case.validator
+    return case.cbf_reader
+
+
+def _assert_outcome(res: subprocess.CompletedProcess[str], code: int, needles: tuple[str, ...]) -> None:
+    assert "Traceback" not in res.stderr + res.stdout, res.stderr
+    assert res.returncode == code, (res.returncode, res.stderr, res.stdout[:500])
+    if code == EXIT_USAGE:
+        lines = res.stderr.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("cbf: "), res.stderr
+        text = lines[0]
+    else:  # findings: reported on stdout, nothing on stderr
+        assert res.stderr == ""
+        text = res.stdout
+    for needle in needles:
+        assert needle in text, (needle, text)
+
+
+def test_the_table_covers_the_cli() -> None:
+    assert set(SUBCOMMANDS) >= TEXT_INPUT | REPORTS_FINDINGS
+    assert [c for c in SUBCOMMANDS if _has_output(SUBCOMMANDS[c])], "no subcommand writes a file"
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
+    if case.name == "no_permission" and os.geteuid() == 0:
+        pytest.skip("running as root, which reads any file whatever its permissions")
+    src = tmp_path / "in"
+    src.mkdir()
+    path = case.make(src)
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    for cmd in SUBCOMMANDS:
+        out = out_dir / f"{cmd}.out"
+        res, peak_kb = _run(tmp_path, *_argv(cmd, path, out))
+        code, needles = _expect(case, cmd)
+        _assert_outcome(res, code, (str(path),) + needles)
+        assert not out.exists() and list(out_dir.iterdir()) == [], f"{cmd} wrote output for bad input"
+        if case.name == "random_100mb":
+            # refused without reading it all: peak memory far below the file's 100 MB
+            assert peak_kb < 60_000, f"{cmd}: peak RSS {peak_kb} kB for a 100 MB input"
+
+
+def test_output_in_a_missing_folder(tmp_path: Path) -> None:
+    cut = tmp_path / "a.cut"
+    res, _ = _run(tmp_path, "decode", str(VALID), "--to", "cut", "-o", str(cut))
+    assert res.returncode == 0, res.stderr
+    inputs = {cmd: cut if cmd in TEXT_INPUT else VALID for cmd in SUBCOMMANDS}
+    writers = [cmd for cmd in SUBCOMMANDS if _has_output(SUBCOMMANDS[cmd])]
+    for cmd in writers:
+        target = tmp_path / "no" / "such" / f"{cmd}.out"
+        res, _ = _run(tmp_path, *_argv(cmd, inputs[cmd], target))
+        _assert_outcome(res, EXIT_USAGE, (str(target), "does not exist"))
+        assert not (tmp_path / "no").exists()
+
+
+# -- an encode killed mid-write ------------------------------------------------------------------
+# The CLI writes its output in chunks through os.write: after half of the first chunk this
+# runner says so on stderr and stops itself, and the test kills it (SIGKILL) right there.
+KILLED_MID_WRITE = r"""
+import os, signal, sys
+from cbf.cli import main
+real = os.write
+def write(fd, data):
+    if fd > 2:
+        real(fd, bytes(data[:max(1, len(data) // 2)]))
+        sys.stderr.write("MID-WRITE\n")
+        sys.stderr.flush()
+        os.kill(os.getpid(), signal.SIGSTOP)
+    return real(fd, data)
+os.write = write
+sys.exit(main(sys.argv[1:]))
+"""
+
+
+def _big_cut(records: int) -> str:
+    lines = ["header PN-KILL"]
+    x = 0.0
+    for i in range(records):
+        nx = float((i % 500) + 1)
+        lines.append(f"line < {x:g}, 0, 0 > < {nx:g}, 0, 0 >")
+        x = nx
+    return "\n".join(lines) + "\n"
+
+
+def test_an_encode_killed_mid_write_leaves_the_target_whole(tmp_path: Path) -> None:
+    src = tmp_path / "big.cut"
+    src.write_text(_big_cut(8000))
+    target = tmp_path / "out.cbf"
+    previous = VALID.read_bytes()
+    target.write_bytes(previous)
+    proc = subprocess.Popen([sys.executable, "-c", KILLED_MID_WRITE, "encode", str(src), "-o", str(target)],
+                            env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        line = proc.stderr.readline() if proc.stderr else ""
+        assert line == "MID-WRITE\n", "the encode finished without writing through os.write: " + line
+        proc.send_signal(signal.SIGKILL)
+        proc.wait()
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        if proc.stderr:
+            proc.stderr.close()
+    assert proc.returncode == -signal.SIGKILL
+    assert target.read_bytes() == previous  # the complete previous content, not a partial new one
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["big.cut", "out.cbf"]  # no temp file left
+    # and the same encode, left alone, replaces it whole
+    res = subprocess.run([sys.executable, "-m", "cbf", "encode", str(src), "-o", str(target)], env=ENV,
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    assert len(target.read_bytes()) > 1 << 16 and target.read_bytes() != previous
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["big.cut", "out.cbf"]
