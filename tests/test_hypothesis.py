@@ -107,7 +107,8 @@ def test_every_command_a_shape_and_a_chain_are_drawn() -> None:
 
 
 def test_bad_parameters_are_refused() -> None:
-    bad: tuple[dict[str, Any], ...] = ({"profile": "nope"}, {"min_records": 5, "max_records": 2}, {"bound": 1e9}, {"versions": []})
+    bad: tuple[dict[str, Any], ...] = ({"profile": "nope"}, {"min_records": 5, "max_records": 2}, {"bound": 1e9},
+                                       {"versions": []})
     for kw in bad:
         with pytest.raises(ValueError):
             cutfiles(**kw)
