@@ -251,3 +251,11 @@ def test_an_encode_killed_mid_write_leaves_the_target_whole(tmp_path: Path) -> N
     assert res.returncode == 0, res.stderr
     assert len(target.read_bytes()) > 1 << 16 and target.read_bytes() != previous
     assert sorted(p.name for p in tmp_path.iterdir()) == ["big.cut", "out.cbf"]
+
+
+def test_a_bad_cutter_table_is_named_once(tmp_path: Path) -> None:
+    table = tmp_path / "cutters.csv"
+    table.write_text("name,length,radius\nBALL6,50,3\nFLAT4,forty,2\n")
+    res, _ = _run(tmp_path, "validate", str(VALID), "--cutters", str(table))
+    _assert_outcome(res, EXIT_USAGE, (str(table), "line 3"))
+    assert res.stderr.count("line 3") == 1, res.stderr

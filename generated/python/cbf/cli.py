@@ -299,7 +299,7 @@ def cmd_validate(a: argparse.Namespace) -> int:
         try:
             cutters = load_cutter_table(a.cutters)
         except CbfError as exc:
-            raise _Fail(str(exc)) from None
+            raise _Fail(exc.message) from None  # names the table and its line already
     findings = validate(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
     errors = sum(1 for f in findings if f.severity == "error")
     if a.json:
