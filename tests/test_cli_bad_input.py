@@ -259,3 +259,26 @@ def test_a_bad_cutter_table_is_named_once(tmp_path: Path) -> None:
     res, _ = _run(tmp_path, "validate", str(VALID), "--cutters", str(table))
     _assert_outcome(res, EXIT_USAGE, (str(table), "line 3"))
     assert res.stderr.count("line 3") == 1, res.stderr
+
+
+@pytest.mark.parametrize(("name", "text", "needle"), [
+    ("deep", "[" * 100_000 + "]" * 100_000, "nested too deep"),
+    ("long_number", '{"header": ' + "1" * 5000 + "}", "digits"),
+    ("not_json", '{"header": {"version_major": 3,}}', "line 1: not JSON"),
+])
+def test_json_the_parser_chokes_on(name: str, text: str, needle: str, tmp_path: Path) -> None:
+    src = tmp_path / f"{name}.json"
+    src.write_text(text)
+    res, _ = _run(tmp_path, "encode", str(src), "-o", str(tmp_path / "out.cbf"))
+    _assert_outcome(res, EXIT_USAGE, (str(src), needle))
+    assert not (tmp_path / "out.cbf").exists()
+
+
+def test_a_byte_order_mark_is_accepted(tmp_path: Path) -> None:
+    cut = tmp_path / "a.cut"
+    res, _ = _run(tmp_path, "decode", str(VALID), "--to", "cut", "-o", str(cut))
+    assert res.returncode == 0, res.stderr
+    cut.write_bytes(b"\xef\xbb\xbf" + cut.read_bytes())
+    res, _ = _run(tmp_path, "encode", str(cut), "-o", str(tmp_path / "a.cbf"))
+    assert res.returncode == 0, res.stderr
+    assert (tmp_path / "a.cbf").read_bytes() == VALID.read_bytes()

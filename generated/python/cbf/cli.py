@@ -116,6 +116,8 @@ def _decode_chunks(path: str, fh: Any, limit: int) -> str:
                 line = lines + buf[:exc.start].count(b"\n")
                 raise _Fail(f"{path}: line {line} (offset {done + exc.start}): byte 0x{buf[exc.start]:02X} "
                             f"is not UTF-8 text") from None
+        if not parts and not done and text.startswith("\ufeff"):
+            text = text[1:]  # a byte order mark (editors on Windows write one)
         parts.append(text)
         lines += text.count("\n")
         done += len(buf) - len(carry)
@@ -273,6 +275,10 @@ def cmd_encode(a: argparse.Namespace) -> int:
                 doc = json.loads(text)
             except json.JSONDecodeError as exc:
                 raise _Fail(f"{a.file}: line {exc.lineno}: not JSON ({exc.msg})") from None
+            except RecursionError:
+                raise _Fail(f"{a.file}: JSON nested too deep to read") from None
+            except ValueError as exc:  # e.g. an integer of more digits than Python converts
+                raise _Fail(f"{a.file}: not JSON the codec reads ({exc})") from None
             model = from_canonical(doc)
             if a.version:
                 raise _Fail("--version applies to CUT input; JSON carries its version in the header")
