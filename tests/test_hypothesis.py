@@ -165,6 +165,41 @@ def test_mutations_that_keep_the_checksums_are_still_caught_or_harmless(data: by
     assert reseal_checksums(data) == data
 
 
+_TOKENS = (st.sampled_from(["\u00b2", "\u0663", "1" * 5000, "9" * 30, "-", ".", "<", ">", ",", "nan", "inf", "1e5",
+                             "0x10", "\x00", "\t", "\u00e9", "cbf_record", "cbf_field", "cbf_version", "header",
+                             "check_sum"])
+           | st.text(max_size=4))
+
+
+@run
+@given(cutfiles(max_records=8), st.data())
+def test_cut_reader_is_total(data: bytes, draw: st.DataObject) -> None:
+    """from_cut on edited CUT text returns a model or raises CutSyntaxError naming a line."""
+    lines = cbf.to_cut(cbf.decode(data)).splitlines()
+    for _ in range(draw.draw(st.integers(1, 3))):
+        i = draw.draw(st.integers(0, len(lines) - 1))
+        j = draw.draw(st.integers(0, len(lines[i])))
+        k = draw.draw(st.integers(j, min(len(lines[i]), j + 8)))
+        lines[i] = lines[i][:j] + draw.draw(_TOKENS) + lines[i][k:]
+    text = "\n".join(lines) + "\n"
+    try:
+        model = cbf.from_cut(text)
+    except cbf.CutSyntaxError as exc:
+        assert exc.line is not None and 1 <= exc.line <= max(1, len(text.splitlines()))
+        return
+    try:
+        out = cbf.encode(model)
+    except cbf.EncodeError:
+        return
+    assert _errors(cbf.validate(out)) == []
+
+
+def test_cut_numbers_are_ascii_digits() -> None:
+    for word in ("\u00b2", "\u0663", "1" * 5000):
+        with pytest.raises(cbf.CutSyntaxError, match="line 2: startshape: moves"):
+            cbf.from_cut(f"header X\nstartshape AB {word}\nendshape AB 0\n")
+
+
 # -- validate after encode -----------------------------------------------------------------
 @st.composite
 def _edited_models(draw: st.DrawFn) -> tuple[str, Cbf]:

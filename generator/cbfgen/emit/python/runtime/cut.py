@@ -209,7 +209,10 @@ def _parse_args(cur: _Cursor, lay: T.LayoutInfo) -> bytes:
                 vals.append(cur.number(name))
         elif f.kind == "uint":
             w = cur.word(name)
-            if not w.isdigit() or int(w) >= 1 << (8 * f.elem_size):
+            # ASCII digits only (str.isdigit also takes '²', which int() refuses), and no
+            # more of them than the field's largest value has (int() refuses 4301+ digits)
+            if (not (w.isascii() and w.isdigit()) or len(w.lstrip("0")) > len(str((1 << (8 * f.elem_size)) - 1))
+                    or int(w) >= 1 << (8 * f.elem_size)):
                 raise cur.fail(f"{name}: {w!r} is not an unsigned {8 * f.elem_size}-bit integer")
             vals.append(int(w))
         elif f.kind == "bytes":
@@ -285,7 +288,7 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default")
             seen_header = seen_header or role == "implant_descriptor"
         elif key == C["checksum_keyword"]:
             w = cur.word("checksum")
-            if not w.isdigit():
+            if not (w.isascii() and w.isdigit()):
                 raise cur.fail(f"{w!r} is not a number")
         elif kw == fkw:
             name = cur.word("field name")
