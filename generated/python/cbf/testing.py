@@ -144,17 +144,26 @@ def _pick(draw: st.DrawFn, items: Sequence[_T]) -> _T:
 
 @functools.lru_cache(maxsize=256)
 def _floats(lo: float, hi: float, exclude_lo: bool = False) -> st.SearchStrategy[float]:
+    """binary32 values in [lo, hi] (hypothesis wants bounds that binary32 holds exactly)."""
     lo32, hi32 = _f32(lo), _f32(hi)
     if lo32 < lo:
-        lo32 = math.nextafter(lo32, math.inf)
-        lo32 = _f32(lo32) if _f32(lo32) >= lo else lo
+        lo32 = _f32_step(lo32, up=True)
     if hi32 > hi:
-        hi32 = _f32(math.nextafter(hi32, -math.inf))
+        hi32 = _f32_step(hi32, up=False)
     if lo32 >= hi32:
         return st.just(lo32)
     return st.floats(lo32, hi32, width=32, allow_nan=False, allow_infinity=False, allow_subnormal=False,
                      exclude_min=exclude_lo)
 
+
+def _f32_step(v: float, *, up: bool) -> float:
+    """The neighbouring binary32 of a finite binary32 ``v``."""
+    if v == 0.0:
+        return _f32(1e-45) if up else -_f32(1e-45)
+    bits = struct.unpack("<I", _F32.pack(v))[0]
+    bits += 1 if (v > 0) == up else -1
+    out: float = _F32.unpack(struct.pack("<I", bits))[0]
+    return out
 
 
 def _vector(draw: st.DrawFn, count: int, lo: float, hi: float, nonzero: bool) -> tuple[float, ...]:
