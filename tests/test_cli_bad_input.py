@@ -282,3 +282,18 @@ def test_a_byte_order_mark_is_accepted(tmp_path: Path) -> None:
     res, _ = _run(tmp_path, "encode", str(cut), "-o", str(tmp_path / "a.cbf"))
     assert res.returncode == 0, res.stderr
     assert (tmp_path / "a.cbf").read_bytes() == VALID.read_bytes()
+
+
+def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> None:
+    from cbf.cli import _Fail, _read_text
+
+    p = tmp_path / "long.cut"
+    head = "comment " + "x" * ((1 << 20) - 9)  # the 2-byte 'é' straddles the first chunk boundary
+    p.write_bytes((head + "\u00e9\n" + "comment \u00e9\n").encode())
+    assert _read_text(str(p), 1 << 22) == head + "\u00e9\ncomment \u00e9\n"
+    p.write_bytes((head + "\n" + "ok\n").encode() + b"\xc3(")
+    with pytest.raises(_Fail, match=rf"line 3 \(offset {(1 << 20) + 3}\): byte 0xC3"):
+        _read_text(str(p), 1 << 22)
+    p.write_bytes(b"x" * 100)
+    with pytest.raises(_Fail, match="larger than 99 bytes"):
+        _read_text(str(p), 99)
