@@ -108,7 +108,8 @@ def test_every_command_a_shape_and_a_chain_are_drawn() -> None:
 
 def test_bad_parameters_are_refused() -> None:
     bad: tuple[dict[str, Any], ...] = ({"profile": "nope"}, {"min_records": 5, "max_records": 2}, {"bound": 1e9},
-                                       {"versions": []})
+                                       {"versions": []}, {"versions": ["9.9"]}, {"part_number": "two words"},
+                                       {"part_number": "x" * 71})
     for kw in bad:
         with pytest.raises(ValueError):
             cutfiles(**kw)

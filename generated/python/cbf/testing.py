@@ -313,7 +313,7 @@ def _header(draw: st.DrawFn, version: T.VersionInfo, part_number: str | None) ->
         if f.role in _DERIVED_ROLES or f.kind != "string":
             continue  # derived, or reserved (zero)
         if f.role == "implant_descriptor" and part_number is not None:
-            rest = draw(_ascii(f.size - len(part_number) - 1, spaces=True))
+            rest = draw(_ascii(max(0, f.size - len(part_number) - 1), spaces=True))
             values[f.name] = f"{part_number} {rest}".rstrip(" ") if rest.strip() else part_number
         else:
             values[f.name] = draw(_ascii(f.size, spaces=True))
@@ -333,16 +333,26 @@ def seal(model: Cbf, profile: str = "default") -> bytes:
 
 
 def _check_args(profile: str, min_records: int, max_records: int, bound: float,
-                versions: Sequence[str] | None) -> list[T.VersionInfo]:
+                versions: Sequence[str] | None, part_number: str | None) -> list[T.VersionInfo]:
     if profile not in T.PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {', '.join(T.PROFILES)}")
     if not 0 <= min_records <= max_records <= T.LIMITS["max_commands"]:
         raise ValueError(f"need 0 <= min_records <= max_records <= {T.LIMITS['max_commands']}")
     if not 0.0 < bound <= _max_bound():
         raise ValueError(f"bound must be in (0, {_max_bound():g}] mm (binary32 positions within tolerance)")
+    unknown = [v for v in versions or () if v not in T.VERSION_BY_ID]
+    if unknown:
+        raise ValueError(f"unknown version(s) {', '.join(unknown)}; known: {', '.join(T.VERSION_BY_ID)}")
     chosen = [T.VERSION_BY_ID[v] for v in versions] if versions is not None else list(T.VERSIONS)
     if not chosen:
         raise ValueError("no version to draw from")
+    if part_number is not None:
+        for v in chosen:
+            f = T.HEADERS[v.header].by_role("implant_descriptor")
+            if f is None or not (part_number.isascii() and part_number.isprintable()) or " " in part_number \
+                    or not 0 < len(part_number) <= f.size:
+                raise ValueError(f"part number {part_number!r}: one printable ASCII word that fits the implant "
+                                 f"descriptor of version {v.id}")
     return chosen
 
 
@@ -351,7 +361,7 @@ def models(*, versions: Sequence[str] | None = None, profile: str = "default", m
            cutters: Mapping[str, tuple[float, float]] | None = None) -> st.SearchStrategy[Cbf]:
     """Models of valid files (see the module doc), before the derived values are filled:
     records carry code and arguments only. ``seal(model, profile)`` gives the bytes."""
-    chosen = _check_args(profile, min_records, max_records, bound, versions)
+    chosen = _check_args(profile, min_records, max_records, bound, versions, part_number)
     rules = _rules()
 
     @st.composite
