@@ -262,3 +262,50 @@ def test_a_command_added_to_the_spec_is_drawn(tmp_path: Path) -> None:
     env = dict(os.environ, PYTHONPATH=str(tmp_path / "gen" / "python"))
     res = subprocess.run([sys.executable, "-c", DRAW_NEW], env=env, capture_output=True, text=True, cwd=tmp_path)
     assert res.returncode == 0 and "drawn" in res.stdout, res.stderr
+
+
+# -- bugs found on the way ---------------------------------------------------------------------------
+ONE_BOUND = r"""
+import struct
+import cbf
+from cbf import tables as T
+from cbf.testing import seal
+from cbf.model import Cbf, Record, new_header
+
+ch = next(c for c in T.checks_of("range"))
+assert ch["max"] is None and ch["min"] is not None
+t = ch["targets"][0]
+cmd = T.BY_NAME[t["command"]]
+lay = cmd.layouts_for("3.0")[0]
+vals = []
+for f in lay.args:
+    if f.kind == "float":
+        vals.extend([ch["min"] - 5.0] * f.count)
+    elif f.kind == "uint":
+        vals.append(0)
+    else:
+        vals.append(b"")
+data = seal(Cbf(new_header("3.0"), (Record(code=cmd.code, raw_args=lay.struct.pack(*vals)),)))
+for engine in ("python", "numpy"):
+    found = [f for f in cbf.validate(data, engine=engine) if f.check == ch["id"]]
+    assert found and "must be >= " in found[0].message, found
+print("ok")
+"""
+
+
+def test_a_range_check_with_one_bound_reports_instead_of_raising(tmp_path: Path) -> None:
+    """Both engines formatted a missing bound with :g (TypeError) when a spec gave a range check
+    only a min or only a max, which the loader allows."""
+    import yaml
+
+    spec = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    ranges = [c for c in spec["checks"] if c["kind"] == "range"]
+    assert ranges, "the spec has no range check"
+    for c in ranges:
+        c.pop("max", None)
+    path = tmp_path / "cbf.yaml"
+    path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
+    generate(path, tmp_path / "gen", "python")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path / "gen" / "python"))
+    res = subprocess.run([sys.executable, "-c", ONE_BOUND], env=env, capture_output=True, text=True, cwd=tmp_path)
+    assert res.returncode == 0 and "ok" in res.stdout, res.stderr

@@ -383,13 +383,21 @@ def _targeted(out: _Out, ch: dict[str, Any], names: tuple[str, ...], cname: str,
                 out.add(ch, i, at, f"{cname}.{n} has zero length")
         elif kind == "range":
             if _finite(v) and ((ch["min"] is not None and v < ch["min"]) or (ch["max"] is not None and v > ch["max"])):
-                out.add(ch, i, at, f"{cname}.{n} is {v:g}, outside {ch['min']:g}..{ch['max']:g}")
+                out.add(ch, i, at, f"{cname}.{n} is {v:g}, {range_text(ch)}")
         elif kind == "nondecreasing":
             if _finite(v):
                 key = (ch["id"], f"{cname}.{n}")
                 if key in prev and v < prev[key]:
                     out.add(ch, i, at, f"{cname}.{n} falls from {prev[key]:g} to {v:g}")
                 prev[key] = v
+
+
+def range_text(ch: Mapping[str, Any]) -> str:
+    """How a value fails a range check; either bound may be absent from the spec."""
+    lo, hi = ch["min"], ch["max"]
+    if lo is not None and hi is not None:
+        return f"outside {lo:g}..{hi:g}"
+    return f"must be >= {lo:g}" if lo is not None else f"must be <= {hi:g}"
 
 
 def _cutter(out: _Out, ch: dict[str, Any], cmd: T.CommandInfo, lay: T.LayoutInfo, a: dict[str, Any], i: int,

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import tables as T
+from .validation import range_text
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -274,7 +275,7 @@ def _targeted(add: Any, ch: dict[str, Any], names: tuple[str, ...], cname: str, 
             hi = np.inf if ch["max"] is None else ch["max"]
             bad = np.nonzero(np.isfinite(v) & ((v < lo) | (v > hi)))[0]
             add(ch, rows[bad], 12, at[bad],
-                (f"{cname}.{nm} is {float(v[k]):g}, outside {ch['min']:g}..{ch['max']:g}" for k in bad))
+                (f"{cname}.{nm} is {float(v[k]):g}, {range_text(ch)}" for k in bad))
         elif kind == "nondecreasing":
             for k in np.nonzero(np.isfinite(v))[0]:
                 nondec.append((int(rows[k]), ch, f"{cname}.{nm}", f"{cname}.{nm}", float(v[k]), int(at[k])))
