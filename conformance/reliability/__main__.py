@@ -11,7 +11,7 @@ Runs the reliability campaign (issue #7) and writes its results as JSON:
    disagreement with the Python codec fails the run and is kept under
    conformance/regressions/.
 
---quick (CI) uses the golden files up to 600 bytes, fewer compensating pairs
+--quick (CI) uses the golden files up to 700 bytes, fewer compensating pairs
 and 1,000 differential files, and writes build/reliability/reliability.json;
 the full run writes conformance/reliability.json (committed, deterministic:
 no times, seeded). Fuzzing results (make fuzz-long) are kept from the file.
@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
     files = args.files if args.files is not None else (1000 if args.quick else 10000)
     out_path: Path = args.out or (QUICK_OUT if args.quick else FULL_OUT)
     framing = Framing.from_spec()
-    bases = valid_bases(600 if args.quick else None)
+    bases = valid_bases(700 if args.quick else None)
     pools = {b.name: Pool(b) for b in built_bindings()}
     if "python" not in pools:
         print("reliability: the python testee is not available", file=sys.stderr)
