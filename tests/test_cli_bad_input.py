@@ -147,7 +147,7 @@ def _assert_outcome(res: subprocess.CompletedProcess[str], code: int, needles: t
     assert res.returncode == code, (res.returncode, res.stderr, res.stdout[:500])
     if code == EXIT_USAGE:
         lines = res.stderr.splitlines()
-        assert len(lines) == 1 and lines[0].startswith("cbf: "), res.stderr
+        assert len(lines) == 1 and lines[0].startswith("cbf"), res.stderr
         text = lines[0]
     else:  # findings: reported on stdout, nothing on stderr
         assert res.stderr == ""
@@ -297,3 +297,10 @@ def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> 
     p.write_bytes(b"x" * 100)
     with pytest.raises(_Fail, match="larger than 99 bytes"):
         _read_text(str(p), 99)
+
+
+@pytest.mark.parametrize("argv", [[], ["nope"], *([cmd] for cmd in SUBCOMMANDS),
+                                  *([cmd, "x", "--nope"] for cmd in SUBCOMMANDS)], ids=" ".join)
+def test_bad_usage_is_one_line(argv: list[str], tmp_path: Path) -> None:
+    res, _ = _run(tmp_path, *argv)
+    _assert_outcome(res, EXIT_USAGE, ("--help",))

@@ -349,8 +349,8 @@ def cmd_info(a: argparse.Namespace) -> int:
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
-        self.print_usage(sys.stderr)
-        sys.stderr.write(f"{self.prog}: error: {message}\n")
+        # one line, like every other error (the usage is one --help away)
+        sys.stderr.write(f"{self.prog}: {' '.join(message.split())} (see {self.prog} --help)\n")
         raise SystemExit(EXIT_USAGE)
 
 
