@@ -304,3 +304,22 @@ def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> 
 def test_bad_usage_is_one_line(argv: list[str], tmp_path: Path) -> None:
     res, _ = _run(tmp_path, *argv)
     _assert_outcome(res, EXIT_USAGE, ("--help",))
+
+
+@pytest.mark.parametrize("unnamed", [True, False], ids=["O_TMPFILE", "named_temp"])
+def test_output_replaces_whole_with_ordinary_permissions(unnamed: bool, tmp_path: Path,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    from cbf import cli
+
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    target = tmp_path / "out.cbf"
+    target.write_bytes(b"old")
+    old_umask = os.umask(0o027)
+    try:
+        cli._write(str(target), b"new" * 50_000)
+    finally:
+        os.umask(old_umask)
+    assert target.read_bytes() == b"new" * 50_000
+    assert target.stat().st_mode & 0o777 == 0o640  # 0666 under the umask, not mkstemp's 0600
+    assert [p.name for p in tmp_path.iterdir()] == ["out.cbf"]
