@@ -12,6 +12,13 @@ this module, so the codec itself does not need it::
     @given(mutations())
     def test_my_reader_survives(data: bytes) -> None: ...
 
+``cutfiles()`` gives bytes; ``models()`` the Cbf models before sealing
+(``seal(model, profile)`` fills the derived values for any version);
+``mutations()`` corrupts files (bit flips, byte replacements, truncation,
+swapped / dropped records, count and size fields that lie, ...), and
+``reseal_checksums()`` recomputes the checksums of a mutated file so the
+checks behind them are reached.
+
 Everything is read from the spec (cbf.tables): the versions, the commands a
 version has and their argument layouts, the checks and their targets. A
 command added to the spec is drawn with no change here.
