@@ -46,7 +46,11 @@ def test_ksy_validates_against_the_official_schema() -> None:
 
 def test_ksy_follows_the_style_guide() -> None:
     ksy = yaml.safe_load(KSY.read_text(encoding="utf-8"))
-    assert list(ksy["meta"]) == ["id", "title", "file-extension", "license", "ks-version", "endian"]
+    # the style guide's key order; xref carries the spec's own references
+    assert list(ksy["meta"]) == ["id", "title", "file-extension", "xref", "license", "ks-version", "endian"]
+    spec = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    for key, refs in spec["meta"]["xref"].items():
+        assert ksy["meta"]["xref"][key] in (refs, refs[0]), key
     assert ksy["meta"]["ks-version"] == "0.11" and ksy["meta"]["endian"] == "le"
     for name, t in ksy["types"].items():
         assert t.get("doc"), name

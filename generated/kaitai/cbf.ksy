@@ -3,6 +3,10 @@ meta:
   id: cbf
   title: Cutfile Binary Format (300071 rev 03)
   file-extension: cbf
+  xref:
+    thinksurgical:
+    - 300071 rev 03
+    - 300072 rev 07
   license: CC0-1.0
   ks-version: '0.11'
   endian: le

@@ -180,7 +180,7 @@ def build(spec: Spec) -> dict[str, Any]:
             "id": m["id"],
             "title": f"{m['title']} ({m['part_number']} rev {m['revision']})",
             "file-extension": m["file_extension"],
-            "xref": {"justsolve": "CBF"} if False else {},
+            "xref": {k: v[0] if len(v) == 1 else list(v) for k, v in m.get("xref", {}).items()},
             "license": m["license"],
             "ks-version": "0.11",
             "endian": "le" if m["byte_order"] == "little" else "be",
@@ -197,7 +197,7 @@ def build(spec: Spec) -> dict[str, Any]:
         "types": types,
         "enums": {"command": {c.code: {"id": c.name.lower(), "doc": _doc(c.doc)} for c in spec.sorted_commands}},
     }
-    if not ksy["meta"]["xref"]:
+    if not ksy["meta"]["xref"]:  # optional in the spec: no empty mapping in the .ksy
         del ksy["meta"]["xref"]
     return ksy
 
