@@ -60,7 +60,31 @@ def test_text_file_renamed_cbf(tmp_path: Path) -> None:
     p.write_text("These are my notes, not a cutfile.\n" * 20)
     res = cbf("validate", str(p))
     assert res.returncode == 1
+    lines = res.stdout.splitlines()
+    # the diagnosis first, as decode gives it, then the findings with clause and offset
+    assert lines[0].startswith(f"{p}: offset 0: not a CBF file") and "it is text" in lines[0]
     assert f"{p}:0: error 6.3.2 (header): start_pattern" in res.stdout
+    assert "not a CBF file" in _one_line_error(cbf("decode", str(p)))
+
+
+def test_validate_prints_at_most_max_findings(tmp_path: Path) -> None:
+    p = tmp_path / "notes.cbf"
+    p.write_text("These are my notes, not a cutfile.\n" * 200)  # hundreds of findings
+    every = json.loads(cbf("validate", str(p), "--json").stdout)["findings"]
+    errors = sum(f["severity"] == "error" for f in every)
+    assert len(every) > 60
+    for flag, shown in (((), 50), (("--max-findings", "7"), 7), (("--max-findings", "0"), len(every))):
+        res = cbf("validate", str(p), *flag)
+        assert res.returncode == 1
+        lines = res.stdout.splitlines()
+        findings = [ln for ln in lines if ": error " in ln or ": warning " in ln]
+        assert len(findings) == shown, flag
+        more = [ln for ln in lines if "more finding(s) not shown" in ln]
+        assert more == ([f"{p}: {len(every) - shown} more finding(s) not shown "
+                         "(--max-findings 0 prints all, --json lists all)"] if shown < len(every) else [])
+        # the verdict still counts every finding
+        assert lines[-1] == f"{p}: FAIL: {errors} error(s), {len(every) - errors} warning(s) [profile default]"
+    assert "--max-findings" in _one_line_error(cbf("validate", str(p), "--max-findings", "-1"))
 
 
 @pytest.mark.parametrize("cmd", ["decode", "validate", "info"])

@@ -210,19 +210,28 @@ def _write(path: str, data: bytes) -> None:
         raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
 
 
-def _decode(path: str) -> Any:
+def _not_cbf(data: bytes) -> str | None:
+    """Why a whole header is not a CBF header (both magic numbers wrong), or None."""
     from . import tables as T
+
+    if len(data) < T.HEADER_SIZE:
+        return None
+    start, end = (int.from_bytes(data[f.offset:f.end], "little" if T.BO == "<" else "big") for f in (T.START, T.END))
+    if start == T.START.magic or end == T.END.magic:
+        return None
+    hint = " (it is text: cbf encode reads CUT and JSON)" if _looks_like_text(data) else ""
+    return (f"offset {T.START.offset}: not a CBF file: neither {T.START.name} nor {T.END.name} "
+            f"holds its magic number{hint}")
+
+
+def _decode(path: str) -> Any:
     from .codec import decode
     from .errors import CbfError
 
     data = _read(path, _max_file_size())
-    if len(data) >= T.HEADER_SIZE:
-        start, end = (int.from_bytes(data[f.offset:f.end], "little" if T.BO == "<" else "big")
-                      for f in (T.START, T.END))
-        if start != T.START.magic and end != T.END.magic:
-            hint = " (it is text: cbf encode reads CUT and JSON)" if _looks_like_text(data) else ""
-            raise _Fail(f"{path}: offset {T.START.offset}: not a CBF file: neither {T.START.name} nor {T.END.name} "
-                        f"holds its magic number{hint}")
+    reason = _not_cbf(data)
+    if reason:
+        raise _Fail(f"{path}: {reason}")
     try:
         return decode(data)
     except CbfError as exc:
@@ -312,9 +321,16 @@ def cmd_validate(a: argparse.Namespace) -> int:
         doc = {"file": a.file, "profile": a.profile, "findings": [f.as_dict() for f in findings]}
         sys.stdout.write(json.dumps(doc, indent=1) + "\n")
     else:
-        for f in findings:
+        reason = _not_cbf(data)
+        if reason:  # say it first: every finding below follows from it
+            sys.stdout.write(f"{a.file}: {reason}; the findings below follow from that\n")
+        shown = findings if a.max_findings == 0 else findings[:a.max_findings]
+        for f in shown:
             where = f"record {f.record}" if f.record is not None else "header"
             sys.stdout.write(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
+        if len(shown) < len(findings):
+            sys.stdout.write(f"{a.file}: {len(findings) - len(shown)} more finding(s) not shown "
+                             f"(--max-findings 0 prints all, --json lists all)\n")
         warnings = len(findings) - errors
         verdict = "FAIL" if errors else "ok"
         sys.stdout.write(f"{a.file}: {verdict}: {errors} error(s), {warnings} warning(s) [profile {a.profile}]\n")
@@ -354,6 +370,12 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(EXIT_USAGE)
 
 
+def _count(text: str) -> int:
+    if not text.isascii() or not text.isdigit():
+        raise argparse.ArgumentTypeError(f"not a count: {text!r}")
+    return int(text)
+
+
 def parser() -> argparse.ArgumentParser:
     from . import tables as T
 
@@ -382,7 +404,9 @@ def parser() -> argparse.ArgumentParser:
     v.add_argument("--profile", choices=profiles, default=profiles[0])
     v.add_argument("--part-number", help="implant part number to compare (check 6.1.1)")
     v.add_argument("--cutters", help="cutter table, CSV or YAML: name, length, radius (check 6.1.2)")
-    v.add_argument("--json", action="store_true", help="print findings as JSON")
+    v.add_argument("--json", action="store_true", help="print findings as JSON (always all of them)")
+    v.add_argument("--max-findings", type=_count, default=50, metavar="N",
+                   help="print at most N findings, then how many more there are; 0 prints all (default 50)")
     v.set_defaults(func=cmd_validate)
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
