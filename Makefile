@@ -62,7 +62,7 @@ lint: venv  ## ruff + mypy --strict on hand-written Python
 	$(PY) -m mypy --strict $(MYPY_PATHS)
 
 test-py: venv
-	$(PY) -m pytest -q -p no:cacheprovider
+	$(PY) -m pytest -p no:cacheprovider
 
 test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what CI runs)
 	@$(MAKE) test-py
