@@ -70,3 +70,32 @@ def test_new_command_appears_in_the_docs(tmp_path: Path) -> None:
     assert "[DWELL](commands/dwell.md)" in index
     assert "# DWELL (0x44)" in page and "`seconds`" in page
     assert "seconds" in (docs / "svg" / "cmd-dwell.svg").read_text(encoding="utf-8")
+
+
+# Checks that read every record alike: the command pages point to the integrity checks for these.
+RECORD_LEVEL = {"sequence", "code_copy", "arg_size", "arg_checksum", "reserved_byte", "unknown_code",
+                "truncated_record"}
+
+
+def test_command_pages_list_every_check_the_golden_cases_raise_on_them() -> None:
+    """Each finding a golden case expects on a record is listed on that record's command page."""
+    import yaml
+
+    from cbf.codec import decode
+
+    kinds = {k.id: k.kind for k in SPEC.checks}
+    seen = 0
+    for expect in sorted((REPO / "conformance" / "golden").glob("*.expect.yaml")):
+        doc = yaml.safe_load(expect.read_text(encoding="utf-8"))
+        if doc.get("decode") != "ok":
+            continue
+        records = decode(expect.with_name(expect.name.replace(".expect.yaml", ".cbf")).read_bytes()).records
+        for check, _severity, rec in (f for findings in doc["validate"].values() for f in findings):
+            check = str(check)
+            if rec is None or kinds[check] in RECORD_LEVEL or records[rec].command is None:
+                continue
+            name = records[rec].command.name
+            page = (REPO / "generated" / "docs" / "commands" / f"{name.lower().replace('_', '-')}.md")
+            assert f"[{check}](../index.md#check-" in page.read_text(encoding="utf-8"), (expect.name, check, name)
+            seen += 1
+    assert seen > 20

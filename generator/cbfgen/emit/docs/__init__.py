@@ -16,7 +16,7 @@ import struct
 from pathlib import Path
 from typing import Any
 
-from ...model import Command, Layout, Spec, ident
+from ...model import Check, Command, Layout, Spec, ident
 from ...render import environment
 from . import svg
 
@@ -210,8 +210,29 @@ def context(spec: Spec) -> dict[str, Any]:
     }
 
 
-def _targets(spec: Spec, c: Command) -> list[Any]:
-    return [k for k in spec.checks if any(t.command == c.name for t in k.targets)]
+def _why(k: Check, c: Command) -> str | None:
+    """Why check k reads the arguments of command c, from the model; None when it does not. Checks that
+    read every record alike (sequence, code copy, size, checksum, ...) are not listed per command."""
+    kinds = {a.kind for lay in c.layouts for a in lay.args}
+    if any(t.command == c.name for t in k.targets):
+        return f"names {c.name}"
+    if k.kind == "availability":
+        missing = [v for v in k.versions if not c.available_in(v)]
+        return f"{c.name} is not in version {', '.join(missing)}" if missing else None
+    reasons = {
+        "continuity": "a motion command" if c.motion else None,
+        "orientation": "a 5-axis command" if c.orientation else None,
+        "shape": "opens or closes a shape" if c.shape else "a motion command, counted in shapes" if c.motion else None,
+        "cutter_table": "a cutter" if c.cutter else None,
+        "finite": "float arguments" if "float" in kinds else None,
+        "string_tail": "string arguments" if "string" in kinds else None,
+        "string_ascii": "string arguments" if "string" in kinds else None,
+    }
+    return reasons.get(k.kind)
+
+
+def _checks_of(spec: Spec, c: Command) -> list[tuple[Check, str]]:
+    return [(k, why) for k in spec.checks if (why := _why(k, c)) is not None]
 
 
 def emit(spec: Spec) -> dict[str, bytes]:
@@ -224,7 +245,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     files = {f"{OUT}/index.md": env.get_template("index.md.j2").render(**ctx).encode()}
     page = env.get_template("command.md.j2")
     for c in spec.commands:
-        files[f"{OUT}/{command_page(c)}"] = page.render(c=c, checks=_targets(spec, c), **ctx).encode()
+        files[f"{OUT}/{command_page(c)}"] = page.render(c=c, checks=_checks_of(spec, c), **ctx).encode()
     for rel, text in ctx["figures"].items():
         files[f"{OUT}/{rel}"] = text.encode()
     return files
