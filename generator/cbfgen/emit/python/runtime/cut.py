@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import struct
 from decimal import Decimal
+from functools import lru_cache
 from typing import Any
 
 from . import tables as T
@@ -35,6 +36,7 @@ def keyword(cmd: T.CommandInfo) -> str:
 _BY_KEYWORD = {keyword(c): c for c in T.COMMANDS}
 
 
+@lru_cache(maxsize=4096)  # a motion starts where the last one ended: values repeat close together
 def format_float(bits: int) -> str:
     """Fewest digits that give back the same binary32, positional notation."""
     v: float = _F.unpack(_I.pack(bits))[0]
