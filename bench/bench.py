@@ -257,14 +257,50 @@ def table(r: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def machine() -> dict[str, Any]:
+    """What the numbers were measured on: they mean little without it."""
+    import platform
+
+    cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                if line.startswith("model name")), platform.processor()) if Path("/proc/cpuinfo").exists() else ""
+    gcc = subprocess.run(["gcc", "-dumpfullversion"], capture_output=True, text=True).stdout.strip()
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+    return {"cpu": cpu, "cores": os.cpu_count(), "python": platform.python_version(), "gcc": gcc,
+            "load_1min_at_end": load}
+
+
+README_BEGIN, README_END = "<!-- bench:begin (written by make bench) -->", "<!-- bench:end -->"
+
+
+def readme_block(r: dict[str, Any], text: str) -> str:
+    m = r["machine"]
+    return (f"{README_BEGIN}\nMedians of {r['reps']} interleaved repetitions (min-max in brackets) on "
+            f"{m['cpu']}, {m['cores']} cores, Python {m['python']}, gcc {m['gcc']} -O2; "
+            f"load {m['load_1min_at_end']:.2f} at the end of the run.\n\n{text}\n{README_END}")
+
+
+def update_readme(path: Path, block: str) -> bool:
+    """Replace the marked block in the README; False when the markers are missing."""
+    doc = path.read_text(encoding="utf-8")
+    start, end = doc.find(README_BEGIN), doc.find(README_END)
+    if start < 0 or end < start:
+        return False
+    path.write_text(doc[:start] + block + doc[end + len(README_END):], encoding="utf-8")
+    return True
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="bench")
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--out", type=Path, default=REPO / "bench" / "results.json")
+    ap.add_argument("--readme", type=Path, default=REPO / "README.md", help="README whose marked table to update")
     args = ap.parse_args(argv)
     result = run(args.reps)
+    result["machine"] = machine()
     text = table(result)
     print(text)
     args.out.write_text(json.dumps(result, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     (args.out.parent / "TABLE.md").write_text(text + "\n", encoding="utf-8")
+    if not update_readme(args.readme, readme_block(result, text)):
+        print(f"bench: {args.readme} has no {README_BEGIN} ... {README_END} block; not updated", file=sys.stderr)
     return 0

@@ -42,3 +42,18 @@ def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.Mo
     assert len(cbf.decode(first["5-axis ~20k"]).records) >= 20_000
     assert len(cbf.decode(first["small (30)"]).records) == 30
     json.dumps(B._stats([0.1, 0.2, 0.3]))
+
+
+def test_readme_table_is_replaced_between_the_markers(tmp_path: Path) -> None:
+    readme = tmp_path / "README.md"
+    readme.write_text(f"# T\n\nbefore\n{B.README_BEGIN}\nold table\n{B.README_END}\nafter\n", encoding="utf-8")
+    result = {"reps": 3,
+              "machine": {"cpu": "CPU X", "cores": 2, "python": "3.11", "gcc": "12", "load_1min_at_end": 0.5}}
+    assert B.update_readme(readme, B.readme_block(result, "| new | table |"))
+    text = readme.read_text(encoding="utf-8")
+    assert "old table" not in text and "| new | table |" in text and "CPU X, 2 cores" in text
+    assert text.startswith("# T\n\nbefore\n") and text.endswith(f"{B.README_END}\nafter\n")
+    assert B.update_readme(readme, B.readme_block(result, "| newer |")) and "| new | table |" not in readme.read_text()
+    bare = tmp_path / "BARE.md"
+    bare.write_text("no markers\n", encoding="utf-8")
+    assert not B.update_readme(bare, "x") and bare.read_text() == "no markers\n"
