@@ -1446,21 +1446,23 @@ static const cbf__ctarget cbf__ctargets[10] = {
     { 23, 1 }, /* accel_positive: ACCEL accel decel */
     { 28, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
 };
-static const char *const cbf__target_args[14] = {
-    "speed",
-    "accel",
-    "decel",
-    "length",
-    "radius",
-    "normal",
-    "normal",
-    "normal",
-    "normal",
-    "completion",
-    "completion",
-    "min_speed",
-    "nom_speed",
-    "max_speed",
+/* The targets' arguments (cbf__target.first, n index these rows): each one's index in
+ * every layout, -1 where the layout has no argument of that name. */
+static const signed char cbf__target_arg_at[14][CBF_LAYOUT__COUNT] = {
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1 }, /* speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1 }, /* accel */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1 }, /* decel */
+    { -1, -1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* length */
+    { -1, -1, 2, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* radius */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* normal */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* normal */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* normal */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* normal */
+    { 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* completion */
+    { 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* completion */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1 }, /* min_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1 }, /* nom_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1 }, /* max_speed */
 };
 
 typedef struct cbf__check {
@@ -1827,13 +1829,14 @@ static void cbf__put_u(uint8_t *p, uint32_t v, unsigned n)
     }
 }
 
-static inline float cbf__get_f4(const uint8_t *p)
+static inline float cbf__bits_f4(uint32_t u)
 {
-    uint32_t u = cbf__get_u(p, 4);
     float f;
     memcpy(&f, &u, sizeof f);
     return f;
 }
+
+static inline float cbf__get_f4(const uint8_t *p) { return cbf__bits_f4(cbf__get_u(p, 4)); }
 
 static uint32_t cbf__f4_bits(float f)
 {
@@ -2044,15 +2047,6 @@ static inline const cbf_field_info *cbf__layout_arg(int layout, int i)
     if (i < 0)
         return NULL;
     return &cbf__args[cbf__layouts[layout].first_arg + (size_t)i];
-}
-
-static const cbf_field_info *cbf__layout_arg_named(int layout, const char *name)
-{
-    size_t i;
-    for (i = 0; i < cbf__layouts[layout].nargs; i++)
-        if (strcmp(cbf__args[cbf__layouts[layout].first_arg + i].name, name) == 0)
-            return &cbf__args[cbf__layouts[layout].first_arg + i];
-    return NULL;
 }
 
 const char *cbf_strerror(int err)
@@ -3207,24 +3201,35 @@ static void cbf__check_part_number(cbf__vctx *v)
 
 static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
+/* A float vector (3) or scalar argument as double: 1 when finite, -1 when not, 0 when the
+ * layout has no such float argument. Each element's bytes are read once, for the finite
+ * test and the value alike. */
 static int cbf__vec(const uint8_t *args, int layout, int idx, double out[3])
 {
     const cbf_field_info *f = cbf__layout_arg(layout, idx);
+    const uint8_t *p;
     unsigned i;
+    int finite = 1;
     if (!f || f->kind != CBF__K_FLOAT || f->count != 3u)
         return 0;
-    for (i = 0; i < 3u; i++)
-        out[i] = cbf__fget(args, f, i);
-    return cbf__ffinite(args, f) ? 1 : -1;
+    p = args + f->offset;
+    for (i = 0; i < 3u; i++) {
+        uint32_t u = cbf__get_u(p + 4u * i, 4);
+        finite &= cbf__bits_finite(u);
+        out[i] = (double)cbf__bits_f4(u);
+    }
+    return finite ? 1 : -1;
 }
 
 static int cbf__scalar(const uint8_t *args, int layout, int idx, double *out)
 {
     const cbf_field_info *f = cbf__layout_arg(layout, idx);
+    uint32_t u;
     if (!f || f->kind != CBF__K_FLOAT)
         return 0;
-    *out = cbf__fget(args, f, 0);
-    return cbf__ffinite(args, f) ? 1 : -1;
+    u = cbf__get_u(args + f->offset, 4);
+    *out = (double)cbf__bits_f4(u);
+    return cbf__bits_finite(u) && (f->count == 1u || cbf__ffinite(args, f)) ? 1 : -1;
 }
 
 /* 6.4.5: continuity of motion commands (M1). A point motion sets the current
@@ -3422,7 +3427,7 @@ static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t 
                 double prev = 0.0;
                 int ok = 1, bad = 0;
                 for (a = 0; a < tg->n; a++) {
-                    const cbf_field_info *f = cbf__layout_arg_named(layout, cbf__target_args[tg->first + a]);
+                    const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
                     double x;
                     if (!f || f->kind != CBF__K_FLOAT || !cbf__ffinite(args, f)) { ok = 0; break; }
                     x = cbf__fget(args, f, 0);
@@ -3436,7 +3441,7 @@ static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t 
                 continue;
             }
             for (a = 0; a < tg->n; a++) {
-                const cbf_field_info *f = cbf__layout_arg_named(layout, cbf__target_args[tg->first + a]);
+                const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
                 double x;
                 unsigned i;
                 int any_le = 0, all_zero = 1;

@@ -277,6 +277,9 @@ def context(spec: Spec) -> dict[str, Any]:
     checks: list[dict[str, Any]] = []
     targets: list[dict[str, Any]] = []
     tnames: list[str] = []
+    # per target argument, its index in each layout (-1: not there), so that the
+    # validator finds it without comparing names record by record
+    tindex: list[list[int]] = []
     for ch in spec.checks:
         if ch.kind not in CHECK_KINDS:
             raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not implemented by the C engine")
@@ -285,6 +288,9 @@ def context(spec: Spec) -> dict[str, Any]:
             targets.append({"command": cmd_index[t.command], "first": len(tnames), "n": len(t.args),
                             "text": f"{t.command} {' '.join(t.args)}"})
             tnames.extend(t.args)
+            for name in t.args:
+                tindex.append([next((i for i, a in enumerate(lay["args"]) if a["name"] == name), -1)
+                               if lay["cmd_name"] == t.command else -1 for lay in layouts])
         checks.append({
             "id": ch.id, "macro": macro(ch.id), "kind": "KIND_" + macro(ch.kind), "severity": ch.severity,
             "error": int(ch.severity == "error"),
@@ -347,6 +353,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "ntargets": len(targets),
         "ctargets": ctargets or [{"check": -1, "target": 0, "text": "none"}],
         "tnames": tnames or [""],
+        "tindex": tindex or [[-1] * len(layouts)],
         "tolerances": [{"macro": macro(k), "value": cfloat(v), "name": k} for k, v in spec.tolerances.items()],
         "limits": [{"macro": macro(k), "value": v, "name": k} for k, v in spec.limits.items()],
         "motion_kinds": [macro(k) for k in MOTION_KINDS],
