@@ -1847,10 +1847,20 @@ static uint32_t cbf__f4_bits(float f)
 
 static inline int cbf__bits_finite(uint32_t u) { return (u & 0x7F800000u) != 0x7F800000u; }
 
-/* The element i of a float field as double (binary32 widens exactly). */
-static inline double cbf__fget(const uint8_t *base, const cbf_field_info *f, unsigned i)
+/* A float field's first element as double, and whether every element is finite; each
+ * element's bytes are read once. */
+static int cbf__ffirst(const uint8_t *base, const cbf_field_info *f, double *first)
 {
-    return (double)cbf__get_f4(base + f->offset + 4u * i);
+    unsigned i;
+    int finite = 1;
+    *first = 0.0;
+    for (i = 0; i < f->count; i++) {
+        uint32_t u = cbf__get_u(base + f->offset + 4u * i, 4);
+        finite &= cbf__bits_finite(u);
+        if (i == 0u)
+            *first = (double)cbf__bits_f4(u);
+    }
+    return finite;
 }
 
 static inline int cbf__ffinite(const uint8_t *base, const cbf_field_info *f)
@@ -3224,12 +3234,9 @@ static int cbf__vec(const uint8_t *args, int layout, int idx, double out[3])
 static int cbf__scalar(const uint8_t *args, int layout, int idx, double *out)
 {
     const cbf_field_info *f = cbf__layout_arg(layout, idx);
-    uint32_t u;
     if (!f || f->kind != CBF__K_FLOAT)
         return 0;
-    u = cbf__get_u(args + f->offset, 4);
-    *out = (double)cbf__bits_f4(u);
-    return cbf__bits_finite(u) && (f->count == 1u || cbf__ffinite(args, f)) ? 1 : -1;
+    return cbf__ffirst(args, f, out) ? 1 : -1;
 }
 
 /* 6.4.5: continuity of motion commands (M1). A point motion sets the current
@@ -3403,9 +3410,8 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
     }
     for (k = 0; k < 2; k++) {
         double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
-        if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffinite(args, fv[k]))
+        if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv[k], &x))
             continue;
-        x = cbf__fget(args, fv[k], 0);
         if (fabs(x - ref) > cbf__tol_cutter)
             cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s %s %.9g mm, the table says %.9g mm", (int)n,
                       (const char *)(args + fn->offset), fv[k]->name, x, ref);
@@ -3429,8 +3435,7 @@ static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t 
                 for (a = 0; a < tg->n; a++) {
                     const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
                     double x;
-                    if (!f || f->kind != CBF__K_FLOAT || !cbf__ffinite(args, f)) { ok = 0; break; }
-                    x = cbf__fget(args, f, 0);
+                    if (!f || f->kind != CBF__K_FLOAT || !cbf__ffirst(args, f, &x)) { ok = 0; break; }
                     if (a > 0 && x < prev)
                         bad = 1;
                     prev = x;
@@ -3442,17 +3447,21 @@ static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t 
             }
             for (a = 0; a < tg->n; a++) {
                 const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
-                double x;
+                double x = 0.0;
                 unsigned i;
-                int any_le = 0, all_zero = 1;
-                if (!f || f->kind != CBF__K_FLOAT || !cbf__ffinite(args, f))
+                int any_le = 0, all_zero = 1, finite = 1;
+                if (!f || f->kind != CBF__K_FLOAT)
                     continue;
-                x = cbf__fget(args, f, 0);
-                for (i = 0; i < f->count; i++) {
-                    double y = cbf__fget(args, f, i);
+                for (i = 0; i < f->count; i++) { /* each element read once */
+                    uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
+                    double y = (double)cbf__bits_f4(u);
+                    finite &= cbf__bits_finite(u);
+                    if (i == 0u) x = y;
                     if (y <= 0.0) any_le = 1;
                     if (y != 0.0) all_zero = 0;
                 }
+                if (!finite)
+                    continue;
                 switch (ch->kind) {
                 case CBF__KIND_POSITIVE:
                     if (any_le)
