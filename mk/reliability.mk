@@ -8,9 +8,16 @@
 RELIABILITY_FILES ?= 10000
 FUZZ_LONG_RUNS ?= 10000000
 FUZZ_LONG_JOBS ?= 2
-.PHONY: reliability reliability-quick fuzz-long
+.PHONY: reliability reliability-quick fuzz-long test-long
 
-reliability: venv  ## full reliability campaign; writes conformance/reliability.json and the docs table
+# Random exploration, outside `make test` (which is derandomised, tests/conftest.py):
+# the property tests with hypothesis' "long" profile, a new random seed each run.
+# A failure it finds becomes an explicit @example regression test.
+HYPOTHESIS_TESTS := $(shell grep -l '^from hypothesis' tests/*.py)
+test-long: venv  ## property tests with random seeds and many examples (hypothesis "long" profile)
+	HYPOTHESIS_PROFILE=long $(PY) -m pytest -p no:cacheprovider $(HYPOTHESIS_TESTS)
+
+reliability: venv test-long  ## full reliability campaign (runs test-long first); writes conformance/reliability.json and the docs table
 	@$(if $(strip $(CONFORMANCE_BUILD)),$(MAKE) $(CONFORMANCE_BUILD),true)
 	$(PY) -m conformance.reliability --files $(RELIABILITY_FILES)
 	@$(MAKE) generate-py >/dev/null

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import generate, spec_with_fixture_command
+from conftest import HYPOTHESIS_PROFILE, generate, spec_with_fixture_command
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
@@ -24,11 +24,8 @@ from cbf.testing import cutfiles, models, mutations, reseal_checksums, seal
 
 REPO = Path(__file__).resolve().parents[1]
 _HEALTH = [HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much]
-settings.register_profile("ci", max_examples=200, deadline=None, suppress_health_check=_HEALTH)
-settings.register_profile("long", max_examples=5000, deadline=None, suppress_health_check=_HEALTH)
-PROFILE = settings.get_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
-# Each test draws its own examples: the profile is applied per test, not loaded globally.
-run = settings(PROFILE)
+# conftest.py loads the profile ("ci": derandomised; "long": random, many examples).
+run = settings(settings.get_profile(HYPOTHESIS_PROFILE))
 PROFILES = list(T.PROFILES)
 WRITABLE = [v.id for v in T.VERSIONS if v.writable]
 CUTTERS = {"BALL6": (50.0, 3.0), "FLAT4": (42.5, 2.0)}
@@ -249,7 +246,7 @@ from cbf.testing import cutfiles
 from hypothesis import Phase, find, settings
 
 code = T.BY_NAME["DWELL"].code
-s = settings(max_examples=2000, phases=[Phase.generate], database=None, deadline=None)
+s = settings(max_examples=2000, phases=[Phase.generate], database=None, deadline=None, derandomize=True)
 data = find(cutfiles(versions=["3.0"], min_records=1), lambda b: code in [r.code for r in cbf.decode(b).records],
             settings=s)
 assert cbf.validate(data) == [], cbf.validate(data)
