@@ -23,6 +23,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/** The toolkit version that generated this header, and the spec revision it implements. */
+#define CBF_TOOLKIT_VERSION "0.2.0"
+#define CBF_SPEC_REVISION "300071 rev 03"
+
 #ifdef __cplusplus
 extern "C" {
 #endif

@@ -1,0 +1,5 @@
+"""cbfgen: every CBF binding generated from spec/cbf.yaml."""
+
+# The toolkit's version: the one place it is written. pyproject.toml reads it, and
+# every binding carries it (cbf.__version__, CBF_TOOLKIT_VERSION, the docs pages).
+__version__ = "0.2.0"

@@ -298,6 +298,11 @@ class Spec:
     raw: dict[str, Any] = field(repr=False, compare=False, default_factory=dict)
 
     # -- look-ups used by every emitter -------------------------------------
+    @property
+    def revision(self) -> str:
+        """The spec's own revision, as every binding names it: "300071 rev 03"."""
+        return f"{self.meta['part_number']} rev {self.meta['revision']}"
+
     def command(self, name: str) -> Command:
         for c in self.commands:
             if c.name == name:

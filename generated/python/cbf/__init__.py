@@ -15,6 +15,8 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+from .version import SPEC_REVISION, __version__
+
 if TYPE_CHECKING:
     from .canonical import from_canonical, to_canonical
     from .codec import decode, encode
@@ -38,6 +40,7 @@ _EXPORTS = {
 }
 
 __all__ = [
+    "SPEC_REVISION", "__version__",
     "Cbf", "CbfError", "CommandCode", "CutSyntaxError", "EncodeError", "Finding", "JsonShapeError", "Record",
     "TruncatedError", "decode", "encode", "from_canonical", "from_cut", "load_cutter_table", "new_header",
     "to_canonical", "to_cut", "validate",

@@ -16,6 +16,7 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
+from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Layout, Spec
 from ...render import environment
 
@@ -324,6 +325,8 @@ def context(spec: Spec) -> dict[str, Any]:
     return {
         "spec": spec,
         "meta": spec.meta,
+        "toolkit_version": TOOLKIT_VERSION,
+        "spec_revision": spec.revision,
         "little": spec.meta["byte_order"] == "little",
         "pad": int(spec.meta.get("string_padding", 0)),
         "roles": [macro(r) for r in roles],

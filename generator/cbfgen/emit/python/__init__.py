@@ -8,6 +8,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...render import environment
 
@@ -136,6 +137,11 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["pytype"] = _py_type
     out: dict[str, bytes] = {}
     out[f"{PKG}/spec_data.json"] = (json.dumps(spec_data(spec), indent=1) + "\n").encode()
+    out[f"{PKG}/version.py"] = (
+        '"""The toolkit version and the spec revision this package was generated from."""\n\n'
+        f"__version__ = {TOOLKIT_VERSION!r}\n"
+        f"SPEC_REVISION = {spec.revision!r}\n"
+    ).encode()
     out[f"{PKG}/layouts.py"] = env.get_template("layouts.py.j2").render(spec=spec).encode()
     out[f"{PKG}/canonical.schema.json"] = (json.dumps(canonical_schema(spec), indent=1) + "\n").encode()
     out[f"{PKG}/py.typed"] = b""
