@@ -14,6 +14,9 @@ export PYTHONPATH := $(CURDIR)/generator:$(CURDIR)/generated/python:$(CURDIR)
 export PYTHONDONTWRITEBYTECODE := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
+# Stamps of steps that run only when their inputs changed (a no-op `make` stays fast).
+STAMPS := build/stamps
+
 # Hooks the fragments in mk/*.mk append to (before the rules that use them).
 GENERATE_POST :=
 TEST_DEPS :=
@@ -42,8 +45,8 @@ check-spec: venv  ## load and check spec/cbf.yaml only
 generate-py: venv  ## run every Python emitter (no ksc)
 	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated
 
-generate: generate-py  ## regenerate generated/ from the spec
-	@$(MAKE) generate-post
+# One make process runs the Python emitters once, then the later steps (ksc, ...).
+generate: generate-py $(GENERATE_POST)  ## regenerate generated/ from the spec
 
 # Later build steps (ksc, docs rendering) hook in here from mk/*.mk.
 .PHONY: generate-post
@@ -57,9 +60,12 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 
 # -- quality ------------------------------------------------------------------
 MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/bench.py)
-lint: venv  ## ruff + mypy --strict on hand-written Python
+LINT_INPUTS = $(shell find generator conformance tests generated/python bench -name '*.py' -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
+lint: venv $(STAMPS)/lint  ## ruff + mypy --strict on hand-written Python
+$(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 	$(PY) -m ruff check generator conformance tests generated/python $(wildcard bench)
 	$(PY) -m mypy --strict $(MYPY_PATHS)
+	@mkdir -p $(@D) && touch $@
 
 test-py: venv
 	$(PY) -m pytest -p no:cacheprovider

@@ -1,7 +1,9 @@
 // Compile a .ksy (given as JSON, converted by cbfgen) with the npm build of
 // kaitai-struct-compiler, whose only interface is the API
 // compile(lang, ksyObject, importer, debug). Writes every produced file under
-// OUTDIR/<lang>/ and exits non-zero on any error or warning.
+// OUTDIR/<lang>/ and exits non-zero on any error or warning. A file whose
+// content is unchanged is not rewritten, so its mtime stays and `make` does not
+// rebuild the Go and Java testees that depend on it.
 //   node ksc_driver.js KSY.json OUTDIR lang...
 'use strict';
 const fs = require('fs');
@@ -22,6 +24,9 @@ async function main() {
       let text = files[name];
       // The npm build takes no --go-package option: name the package here.
       if (lang === 'go' && !/^package /m.test(text)) text = 'package ' + ksy.meta.id + '\n\n' + text;
+      let old = null;
+      try { old = fs.readFileSync(target, 'utf8'); } catch (e) { old = null; }
+      if (old === text) continue;
       fs.writeFileSync(target, text);
       console.log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
     }
