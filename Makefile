@@ -36,7 +36,13 @@ $(VENV)/.stamp: pyproject.toml
 	$(PY) -m pip install -q -e ".[dev]"
 	@touch $@
 
-venv: $(VENV)/.stamp  ## create .venv with the pinned dependencies
+# Toolchains (Python, Node, Go, JDK + Maven, gcc/clang, graphviz) from Debian's packages
+# when missing; elsewhere it stops and names what is missing (README "Prerequisites").
+.PHONY: setup
+setup:
+	@.ci/setup-debian.sh
+
+venv: setup $(VENV)/.stamp  ## create .venv with the pinned dependencies
 
 # -- generation ---------------------------------------------------------------
 check-spec: venv  ## load and check spec/cbf.yaml only

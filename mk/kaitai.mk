@@ -3,7 +3,7 @@
 # Python, JavaScript, Java and Go. Conformance testees: Python and JavaScript.
 KAITAI_LANGS := python javascript java go
 
-node_modules/.stamp: package.json package-lock.json
+node_modules/.stamp: package.json package-lock.json | setup
 	npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
 
