@@ -7,7 +7,8 @@
 # apt (Go in /usr/local/go, say) are used as they are.
 #   python3 (>= 3.11)            the generator, the Python codec, the tests
 #   node + npm (>= 20)           kaitai-struct-compiler 0.11 and its JavaScript runtime
-#   go (>= 1.21)                 the Kaitai Go parser's testee
+#   go (>= 1.23)                 the Kaitai Go parser's testee (Debian 12's golang-go is 1.19:
+#                                then install Go from go.dev; the script says so)
 #   javac + mvn (JDK >= 11)      the Kaitai Java parser's testee (runtime jar from Maven)
 #   gcc, g++, clang, libclang-rt-14-dev   the C binding, libFuzzer and sanitizers
 #   graphviz                     Kaitai's graphviz diagram in the docs
@@ -32,6 +33,11 @@ if command -v dpkg >/dev/null 2>&1 && ! dpkg -s libclang-rt-14-dev >/dev/null 2>
   missing+=(libclang-rt-14-dev)
 fi
 if [ ${#missing[@]} -eq 0 ]; then
+  goversion=$(go env GOVERSION 2>/dev/null || echo go0)
+  if ! printf '%s\n' go1.23 "$goversion" | sort -V -C; then
+    echo "setup: $goversion is older than go1.23, which the Kaitai Go runtime needs (README 'Prerequisites')" >&2
+    exit 1
+  fi
   exit 0
 fi
 if ! command -v apt-get >/dev/null 2>&1; then
