@@ -12,6 +12,19 @@
  * for the implementation. No function allocates memory: every buffer is the
  * caller's. Functions return a size or count (>= 0) or a negative CBF_ERR_*.
  *
+ * Print the commands of a file held in buf[0..len):
+ *
+ *     cbf_reader r;
+ *     cbf_record rec;
+ *     int rc = cbf_reader_init(&r, buf, len);
+ *     if (rc == CBF_OK)
+ *         while ((rc = cbf_next_record(&r, &rec)) == 1)
+ *             printf("%zu %s\n", rec.index, cbf_command_name(rec.head.code));
+ *     // rc == 0: the end; rc < 0: cbf_strerror(rc). cbf_validate() checks the rest.
+ *
+ * Version: CBF_TOOLKIT_VERSION, spec CBF_SPEC_REVISION (below).
+ * SPDX-License-Identifier: LicenseRef-Proprietary
+ *
  * Byte order: little-endian (N1). Floats: IEEE-754 binary32 (N2).
  * Strings: string(N) is N bytes, NUL-padded, no terminator when full (N4);
  * the structs hold the N bytes plus a terminating NUL, so the C string is the

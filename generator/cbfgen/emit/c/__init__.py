@@ -16,6 +16,7 @@ import textwrap
 from pathlib import Path
 from typing import Any
 
+from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Layout, Spec
 from ...render import environment
@@ -326,6 +327,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "spec": spec,
         "meta": spec.meta,
         "toolkit_version": TOOLKIT_VERSION,
+        "toolkit_license": TOOLKIT_LICENSE,
         "spec_revision": spec.revision,
         "little": spec.meta["byte_order"] == "little",
         "pad": int(spec.meta.get("string_padding", 0)),
@@ -385,6 +387,6 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["wrap"] = lambda s, width=76, indent="" : ("\n" + indent).join(textwrap.wrap(s, width))
     ctx = context(spec)
     out: dict[str, bytes] = {}
-    for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c"):
+    for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         out[f"{OUT}/{name}"] = env.get_template(name + ".j2").render(**ctx).encode()
     return out
