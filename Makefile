@@ -30,10 +30,10 @@ help:
 	@grep -hE '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | sort
 
 # -- Python environment -------------------------------------------------------
-$(VENV)/.stamp: pyproject.toml
+$(VENV)/.stamp: pyproject.toml .ci/constraints.txt
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade "pip==24.3.1"
-	$(PY) -m pip install -q -e ".[dev]"
+	$(PY) -m pip install -q -c .ci/constraints.txt -e ".[dev]"
 	@touch $@
 
 # Toolchains (Python, Node, Go, JDK + Maven, gcc/clang, graphviz) from Debian's packages
@@ -81,5 +81,16 @@ test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what C
 	@$(MAKE) conformance
 	@$(MAKE) check-report
 
+# -- distributions (what users install) ------------------------------------------
+# `cbf` (codec + CLI, from generated/python) and `cbfgen` (the generator), as wheels and
+# sdists in dist/. Built with the pinned setuptools of .venv (no download at build time).
+.PHONY: dist
+dist: generate-py  ## build the cbf and cbfgen wheels and sdists into dist/
+	@rm -rf dist && mkdir -p dist
+	$(PY) -m build --no-isolation --outdir dist generated/python >/dev/null
+	$(PY) -m build --no-isolation --outdir dist generator >/dev/null
+	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info
+	@ls dist
+
 clean:
-	rm -rf $(VENV) node_modules build .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) node_modules build dist .pytest_cache .mypy_cache .ruff_cache

@@ -8,12 +8,17 @@ import json
 from pathlib import Path
 from typing import Any
 
+from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...render import environment
 
 HERE = Path(__file__).parent
 PKG = "python/cbf"
+# What the `cbf` distribution needs at run time, as ranges a user's resolver can meet
+# (the development pins are in .ci/constraints.txt). Only the codec's own imports.
+DEPENDENCIES = ("numpy>=2.0,<3",)
+EXTRAS: dict[str, tuple[str, ...]] = {"testing": ("hypothesis>=6.100,<7",)}  # cbf.testing: strategies
 
 
 def _py_type(f: Field) -> str:
@@ -137,6 +142,10 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["pytype"] = _py_type
     out: dict[str, bytes] = {}
     out[f"{PKG}/spec_data.json"] = (json.dumps(spec_data(spec), indent=1) + "\n").encode()
+    dist = {"spec": spec, "version": TOOLKIT_VERSION, "license": TOOLKIT_LICENSE,
+            "dependencies": DEPENDENCIES, "extras": EXTRAS}
+    out["python/pyproject.toml"] = env.get_template("pyproject.toml.j2").render(**dist).encode()
+    out["python/README.md"] = env.get_template("README.md.j2").render(**dist).encode()
     out[f"{PKG}/version.py"] = (
         '"""The toolkit version and the spec revision this package was generated from."""\n\n'
         f"__version__ = {TOOLKIT_VERSION!r}\n"
