@@ -66,7 +66,7 @@ def _files() -> dict[str, Path]:
 
 def _kaitai() -> Any | None:
     path = REPO / "generated" / "kaitai" / "python"
-    if not (path / "cbf.py").exists():
+    if not (path / "cbf_kaitai" / "cbf.py").exists():
         return None
     sys.path.insert(0, str(path))
     try:
@@ -79,7 +79,7 @@ def _kaitai() -> Any | None:
 def _load_kaitai(path: Path) -> Any:
     import importlib.util
 
-    spec = importlib.util.spec_from_file_location("cbf_kaitai", path / "cbf.py")
+    spec = importlib.util.spec_from_file_location("cbf_kaitai_parser", path / "cbf_kaitai" / "cbf.py")
     assert spec and spec.loader
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)

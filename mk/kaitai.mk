@@ -15,8 +15,10 @@ generate-ksc: kaitai-setup generate-py  ## compile generated/kaitai/cbf.ksy to $
 
 # ksc runs only when the .ksy, the driver or the compiler changed; it rewrites only
 # the files whose content changed. A missing output file forces a run too.
-KSC_OUTPUTS := generated/kaitai/python/cbf.py generated/kaitai/javascript/Cbf.js generated/kaitai/java/Cbf.java generated/kaitai/go/cbf.go
-$(STAMPS)/ksc: generated/kaitai/cbf.ksy.json generator/cbfgen/emit/kaitai/ksc_driver.js node_modules/.stamp $(filter-out $(wildcard $(KSC_OUTPUTS)),$(KSC_OUTPUTS))
+KSC_OUTPUTS := generated/kaitai/python/cbf_kaitai/cbf.py generated/kaitai/javascript/Cbf.js generated/kaitai/java/Cbf.java generated/kaitai/go/cbf.go
+KSC_MISSING = $(filter-out $(wildcard $(KSC_OUTPUTS)),$(KSC_OUTPUTS))
+.PHONY: ksc-force
+$(STAMPS)/ksc: generated/kaitai/cbf.ksy.json generator/cbfgen/emit/kaitai/ksc_driver.js node_modules/.stamp $(if $(KSC_MISSING),ksc-force)
 	node generator/cbfgen/emit/kaitai/ksc_driver.js generated/kaitai/cbf.ksy.json generated/kaitai $(KAITAI_LANGS) >/dev/null
 	@mkdir -p $(@D) && touch $@
 

@@ -5,6 +5,7 @@ given on its command line, with no checkout around it."""
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import sys
@@ -20,8 +21,12 @@ REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 
 
+# A consumer's environment: none of this checkout's paths.
+CLEAN_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+
+
 def _run(*cmd: str | Path, cwd: Path, check: bool = True) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check)
+    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check, env=CLEAN_ENV)
 
 
 def _build(src: Path, work: Path) -> Path:

@@ -16,7 +16,9 @@ async function main() {
   const importer = { importYaml: (name) => Promise.reject(new Error('no imports expected: ' + name)) };
   for (const lang of langs) {
     const files = await ksc.compile(lang, ksy, importer, false);
-    const dir = path.join(outDir, lang);
+    // The Python parser is the package cbf_kaitai (its module cbf.py), so that it never
+    // shadows the codec's `cbf` package on a user's path.
+    const dir = lang === 'python' ? path.join(outDir, lang, 'cbf_kaitai') : path.join(outDir, lang);
     fs.mkdirSync(dir, { recursive: true });
     for (const name of Object.keys(files).sort()) {
       const target = path.join(dir, name);
