@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from collections.abc import Callable
@@ -102,16 +103,48 @@ print(json.dumps(out))
 """
 
 
+def _python(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    env = dict(os.environ, PYTHONPATH=str(gen / "python"))
+    run = subprocess.run([sys.executable, "-c", SCRIPT], input=json.dumps(jobs), env=env, cwd=tmp_path,
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return list(json.loads(run.stdout))
+
+
+def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    testee = tmp_path / "testee"
+    subprocess.run([cc, "-std=c99", "-O1", "-o", str(testee), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
+                   capture_output=True)
+    req = "".join(json.dumps({"op": "validate", "file": f, "profile": p, "part_number": pn, "cutters": ct}) + "\n"
+                  for f, p, pn, ct in jobs) + '{"op": "quit"}\n'
+    ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)
+    out = []
+    for line in ans.stdout.splitlines():
+        a = json.loads(line)
+        assert a["ok"], a
+        out.append([[f["check"], f["severity"], f["record"]] for f in a["findings"]])
+    return out
+
+
+BINDINGS = {"python": _python, "c": _c}
+
+
+@pytest.mark.parametrize("binding", sorted(BINDINGS))
 @pytest.mark.parametrize("revision", sorted(REVISIONS))
-def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Path, revision: str) -> None:
+def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Path, revision: str,
+                                                                   binding: str) -> None:
     doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
     edit, keeps = REVISIONS[revision]
     edit(doc)
     spec = tmp_path / "cbf.yaml"
     spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
     gen = tmp_path / "gen"
-    subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", "python"],
-                   check=True, cwd=ROOT, capture_output=True)
+    for only in ("python", binding):
+        subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", only],
+                       check=True, cwd=ROOT, capture_output=True)
     jobs: list[tuple[str, str, str | None, str | None]] = []
     wanted: list[tuple[str, str, list[Any]]] = []
     changed = 0
@@ -131,11 +164,8 @@ def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Pat
             wanted.append((name, profile, findings or []))
     assert changed, "the revision must change the bytes of golden files"
     assert len(wanted) > len(list(GOLDEN.glob("*.hex"))), "most expectations are kept"
-    env = dict(os.environ, PYTHONPATH=str(gen / "python"))
-    run = subprocess.run([sys.executable, "-c", SCRIPT], input=json.dumps(jobs), env=env, cwd=tmp_path,
-                         capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr[-2000:]
-    got = json.loads(run.stdout)
+    got = BINDINGS[binding](gen, jobs, tmp_path)
+    assert len(got) == len(wanted)
     diffs = [f"{name} [{profile}] {d}" for (name, profile, exp), act in zip(wanted, got, strict=True)
              if (d := findings_difference(exp, [dict(zip(("check", "severity", "record"), a, strict=True))
                                                 for a in act]))]
