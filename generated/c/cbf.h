@@ -48,7 +48,7 @@ enum cbf_version {
 
 /** Validation profiles. */
 enum cbf_profile {
-    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with FORMAT-NOTES. */
+    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with the decisions N1 to N11. */
     CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum covers implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. A file whose checksum matches the default coverage instead is an error here, and the finding names the coverage it matches: accepting either coverage let any change equal to their difference (the sum of the sequence bytes; 1 for a two-record file) pass unseen, which the reliability campaign found as missed bit flips. */
     CBF_PROFILE__COUNT = 2
 };
@@ -597,7 +597,7 @@ typedef struct cbf_record_head {
 struct cbf_checkpoint_args {
     char name[16 + 1]; /**< Check-point name. [string(16), NUL-terminated copy; offset 0] */
     float recovery_point[3]; /**< Recovery point. [binary32 x 3; offset 16; unit mm (millimetre (N11))] */
-    float completion; /**< Completion percentage. [binary32; offset 28; unit percent (percent of completion)] */
+    float completion; /**< Completion percentage. [binary32; offset 28; unit percent (percent of completion, 0 to 100)] */
 };
 
 /** CHECKPOINT (v1): Check-point. 16 argument bytes; versions 1.x; clause 7.2.2.2. */
