@@ -152,6 +152,8 @@ def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: 
     """The annotated hex of data: `offset  bytes  |ascii| │ field = value`, one run per line or more.
 
     only_record keeps the runs of one record; max_lines cuts the dump (and says how much is left)."""
+    if not data:
+        return "(no bytes: the file is empty)"
     lines: list[str] = []
     for run in runs(spec, data):
         if only_record is not None and run.record != only_record:
