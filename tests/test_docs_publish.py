@@ -8,6 +8,7 @@ show that it can fail.
 from __future__ import annotations
 
 import re
+import shutil
 import struct
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -348,3 +349,30 @@ def test_free_text_agrees_with_the_model() -> None:
             assert said == {v.id for v in SPEC.writable_versions}, t
     for v in SPEC.versions:
         assert ("read only" in v.doc) == (not v.writable), v.id
+
+
+# -- the browser check can fail ----------------------------------------------------------------------
+
+@pytest.mark.skipif(not shutil.which("chromium"), reason="Debian chromium not installed (make docs-check)")
+def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path) -> None:
+    from cbfgen.emit.docs import browser
+    from cbfgen.emit.docs.cdp import Browser
+
+    head = '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>t</title></head><body>'
+    pages = {
+        "ok.html": head + "<p>fits</p></body></html>",
+        "wide.html": head + '<div style="width:900px">too wide at 390 px</div></body></html>',
+        "image.html": head + '<img src="none.svg" alt="x"></body></html>',
+        "console.html": head + "<script>console.log('hello')</script></body></html>",
+    }
+    for name, body in pages.items():
+        (tmp_path / name).write_text(body, encoding="utf-8")
+    chromium = browser.chromium()
+    assert chromium
+    with Browser(chromium) as b:
+        assert browser.check_page(b, tmp_path / "ok.html", "ok.html", 390) == []
+        assert browser.check_page(b, tmp_path / "wide.html", "wide.html", 1280) == []
+        assert any("horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wide.html", "w", 390))
+        assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", 1280))
+        assert any("console" in p and "hello" in p
+                   for p in browser.check_page(b, tmp_path / "console.html", "c", 1280))
