@@ -120,7 +120,8 @@ class Browser:
 
     def pdf(self, path: Path, footer: str) -> None:
         data = self.page("Page.printToPDF", {
-            "printBackground": True, "displayHeaderFooter": True, "headerTemplate": "<span></span>",
+            "printBackground": True, "displayHeaderFooter": True, "generateDocumentOutline": True,
+            "headerTemplate": "<span></span>",
             "footerTemplate": footer, "paperWidth": 8.27, "paperHeight": 11.69,
             "marginTop": 0.6, "marginBottom": 0.7, "marginLeft": 0.6, "marginRight": 0.6})["data"]
         path.write_bytes(base64.b64decode(data))
