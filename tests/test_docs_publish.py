@@ -376,3 +376,14 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
         assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", 1280))
         assert any("console" in p and "hello" in p
                    for p in browser.check_page(b, tmp_path / "console.html", "c", 1280))
+
+
+def test_pdf_check_fails_when_the_contents_do_not_match_the_pages() -> None:
+    from cbfgen.emit.docs.pdf import verify
+
+    texts = ["Contents A 2 B 3", "A\nchapter one", "B chapter two"]
+    toc = [("A", 2), ("B", 3)]
+    assert verify("r.pdf", texts, toc, 3) == []
+    assert verify("r.pdf", texts + ["one page more"], toc, 3) == ["r.pdf: 4 pages, the contents promise 3"]
+    assert verify("r.pdf", texts, [("A", 2), ("B", 2)], 3) == ["r.pdf: 'B' is not on page 2, where the contents put it"]
+    assert verify("r.pdf", ["Contents", "Pro\ufb01les here"], [("Profiles", 2)], 2) == []  # a ligature is text

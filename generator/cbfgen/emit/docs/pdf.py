@@ -163,16 +163,20 @@ def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, 
             f'<section class="chapter" id="{c.anchor}">{c.body}</section>' for c in chs)
         final = print_("reference", _doc(f"{spec.meta['title']}: format reference", body))
     shutil.copyfile(final, out)
-    reader = PdfReader(str(out))
+    texts = [page.extract_text() or "" for page in PdfReader(str(out)).pages]
+    return len(texts), verify(out.name, texts, [(c.title, s) for c, s in zip(chs, starts, strict=True)], total)
+
+
+def verify(name: str, texts: list[str], toc: list[tuple[str, int]], total: int) -> list[str]:
+    """What the contents promise against the PDF's pages (their text): the page count, and each title
+    on its page."""
+    if len(texts) != total:
+        return [f"{name}: {len(texts)} pages, the contents promise {total}"]
     problems = []
-    if len(reader.pages) != total:
-        problems.append(f"{out}: {len(reader.pages)} pages, the contents promise {total}")
-    else:
-        for c, s in zip(chs, starts, strict=True):
-            text = _norm(reader.pages[s - 1].extract_text() or "")
-            if _norm(c.title)[:30] not in text:
-                problems.append(f"{out}: '{c.title}' is not on page {s}, where the contents put it")
-    return len(reader.pages), problems
+    for title, page in toc:
+        if not 1 <= page <= total or _norm(title)[:30] not in _norm(texts[page - 1]):
+            problems.append(f"{name}: '{title}' is not on page {page}, where the contents put it")
+    return problems
 
 
 def main(argv: list[str] | None = None) -> int:
