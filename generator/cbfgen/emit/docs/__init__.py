@@ -284,6 +284,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "reliability": _reliability(_reliability_file()),
         "cases": cases,
         "examples": golden.examples(spec, cases),
+        "header_example": golden.header_example(spec, cases),
         "example": _worked_example(spec),
         "versions": [v.id for v in spec.versions],
         "figures": figures(spec),

@@ -131,3 +131,12 @@ def examples(spec: Spec, cases: list[Case]) -> dict[str, Example]:
 def page_context(spec: Spec, case: Case) -> dict[str, Any]:
     return {"case": case, "hex": hexdump.dump(spec, case.data, max_lines=MAX_LINES),
             "version": hexdump.version_of(spec, case.data)}
+
+
+def header_example(spec: Spec, cases: list[Case]) -> tuple[str, str] | None:
+    """(case name, annotated hex of its header) of the first valid case of the default version."""
+    for case in cases:
+        if case.name.startswith("valid.") and case.decode_ok and hexdump.version_of(spec, case.data) == \
+                spec.default_version and len(case.data) >= spec.header_for(spec.default_version).size:
+            return case.name, hexdump.dump(spec, case.data, header_only=True)
+    return None

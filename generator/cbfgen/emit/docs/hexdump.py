@@ -148,16 +148,20 @@ def _ascii(raw: bytes) -> str:
     return "".join(chr(b) if 0x20 <= b < 0x7F else "." for b in raw)
 
 
-def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: int | None = None) -> str:
+def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: int | None = None,
+         header_only: bool = False) -> str:
     """The annotated hex of data: `offset  bytes  |ascii| │ field = value`, one run per line or more.
 
-    only_record keeps the runs of one record; max_lines cuts the dump (and says how much is left)."""
+    only_record keeps the runs of one record, header_only those of the header; max_lines cuts the dump
+    (and says so)."""
     if not data:
         return "(no bytes: the file is empty)"
     lines: list[str] = []
     for run in runs(spec, data):
         if only_record is not None and run.record != only_record:
             continue
+        if header_only and not run.label.startswith("header "):
+            break
         for k in range(0, max(1, len(run.data)), ROW):
             chunk = run.data[k:k + ROW]
             label = run.label if k == 0 else run.label.split(" = ")[0] + " (cont.)"
