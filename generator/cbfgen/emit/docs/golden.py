@@ -50,6 +50,11 @@ def _group(name: str) -> str:
     return parts[0] if parts[0] != "check" else ".".join(parts[:2])
 
 
+def _decodes(expected: Any) -> bool:
+    """The expectation's decode entry: "ok", the decoded model (both decode) or {error: ...}."""
+    return expected is not None and not (isinstance(expected, dict) and "error" in expected)
+
+
 def load_cases(folder: Path) -> list[Case]:
     """Every case with an assembled .cbf and an expectation, by name."""
     out = []
@@ -64,7 +69,7 @@ def load_cases(folder: Path) -> list[Case]:
                          for p, lst in sorted(validate.items()) for f in (lst or []))
         out.append(Case(name, str(doc.get("description", "")), _group(name),
                         tuple(str(c) for c in doc.get("clauses", []) or []), findings,
-                        doc.get("decode") == "ok", cbf.read_bytes()))
+                        _decodes(doc.get("decode")), cbf.read_bytes()))
     return out
 
 
