@@ -150,7 +150,7 @@ def _ascii(raw: bytes) -> str:
 
 def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: int | None = None,
          header_only: bool = False) -> str:
-    """The annotated hex of data: `offset  bytes  |ascii| │ field = value`, one run per line or more.
+    """The annotated hex of data: `offset  bytes  ascii │ field = value`, one run per line or more.
 
     only_record keeps the runs of one record, header_only those of the header; max_lines cuts the dump
     (and says so)."""
@@ -169,5 +169,5 @@ def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: 
                 lines.append(f"... cut here: the first {max_lines} lines of {len(data)} bytes")
                 return "\n".join(lines)
             lines.append(f"{run.offset + k:08X}  {chunk.hex(' ').upper():<{3 * ROW - 1}}  "
-                         f"|{_ascii(chunk):<{ROW}}| \u2502 {label}")
+                         f"{_ascii(chunk):<{ROW}} \u2502 {label}")
     return "\n".join(lines)
