@@ -1,11 +1,15 @@
 """Format documentation emitter: Markdown pages and SVG figures from the spec model.
 
 Every command, field, check, clause, decision and erratum comes from the
-model; the golden hex dumps, the traceability status and the reliability
-figures come from conformance/ (the committed report.json and
-reliability.json; when one is missing the page says so). The pages are
-index.md and one page per command under commands/; the figures are under
-svg/. The HTML site (site.py, `make docs`) renders the same pages.
+model; free text passes through text.prose (escaped, tolerances as values,
+decision ids as links). The golden cases (their .cbf read with the model by
+hexdump.py, see golden.py), the traceability status with each binding's
+failure list, and the reliability figures come from conformance/ (when a
+report is missing the page says so). The pages are index.md, one page per
+command under commands/, golden/index.md and one page per golden case, and
+fields.md (the static index of every field and check); the figures are under
+svg/. The HTML site (site.py, `make docs`), the browser check (browser.py)
+and the PDF (pdf.py) render the same pages.
 """
 
 from __future__ import annotations
