@@ -51,7 +51,7 @@ enum cbf_version {
     CBF_V1_X = 0, /**< CBF File Format Version 1.01 and other 1.x (read only, N10). (major 1; clause 7.2.1) */
     CBF_V2_X = 1, /**< CBF File Format Version 2.0 (read only, N10). (major 2; clause 7.2.2) */
     CBF_V3_0 = 2, /**< Version 3.0, specified by 300071 rev 03. (major 3, minor 0; clause 2.1; writable) */
-    CBF_V4_0 = 3, /**< Version 4.0; does not support ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX, HELIX5B (7.2.3.1). (major 4, minor 0; clause 7.2.3; writable) */
+    CBF_V4_0 = 3, /**< Version 4.0, which 7.2.3.1 restricts (the command table shows what it lacks). (major 4, minor 0; clause 7.2.3; writable) */
     CBF_V__COUNT = 4, /**< sentinel: number of versions */
     CBF_V__UNKNOWN = -1 /**< the header's version matches no entry */
 };
@@ -61,7 +61,7 @@ enum cbf_version {
 
 /** Validation profiles. */
 enum cbf_profile {
-    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with FORMAT-NOTES. */
+    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with the decisions N1 to N11. */
     CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum covers implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. A file whose checksum matches the default coverage instead is an error here, and the finding names the coverage it matches: accepting either coverage let any change equal to their difference (the sum of the sequence bytes; 1 for a two-record file) pass unseen, which the reliability campaign found as missed bit flips. */
     CBF_PROFILE__COUNT = 2
 };
@@ -137,8 +137,8 @@ enum cbf_layout {
 
 /** Header layouts. */
 enum cbf_header_layout {
-    CBF_HEADER_V2 = 0, /**< File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1). */
-    CBF_HEADER_V1 = 1, /**< File header of version 1.x, before 7.2.2.1 shortened the implant descriptor. */
+    CBF_HEADER_V2 = 0, /**< File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1. */
+    CBF_HEADER_V1 = 1, /**< File header before 7.2.2.1 shortened the implant descriptor. */
     CBF_HEADER__COUNT = 2
 };
 
@@ -556,7 +556,7 @@ enum cbf_severity { CBF_SEVERITY_WARNING = 0, CBF_SEVERITY_ERROR = 1 };
 
 /* =================================================================== structs */
 
-/** File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1). (clause 4.2, 128 bytes) */
+/** File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1. (clause 4.2, 128 bytes) */
 struct cbf_header_v2 {
     uint32_t start_pattern; /**< Special pattern indicating cutting file (N5, bytes 92 B7 A1 53). [u32; offset 0; clause 4.2] */
     uint32_t file_checksum; /**< Checksum for entire file (starting at byte 8). [u32; offset 4; clause 4.2] */
@@ -570,7 +570,7 @@ struct cbf_header_v2 {
     uint32_t end_pattern; /**< Special pattern indicating end of header, the complement of the start pattern (N5, bytes 6D 48 5E AC). [u32; offset 124; clause 4.2] */
 };
 
-/** File header of version 1.x, before 7.2.2.1 shortened the implant descriptor. (clause 7.2.2.1, 128 bytes) */
+/** File header before 7.2.2.1 shortened the implant descriptor. (clause 7.2.2.1, 128 bytes) */
 struct cbf_header_v1 {
     uint32_t start_pattern; /**< Special pattern indicating cutting file. [u32; offset 0; clause 4.2] */
     uint32_t file_checksum; /**< Checksum for entire file (starting at byte 8). [u32; offset 4; clause 4.2] */
@@ -610,7 +610,7 @@ typedef struct cbf_record_head {
 struct cbf_checkpoint_args {
     char name[16 + 1]; /**< Check-point name. [string(16), NUL-terminated copy; offset 0] */
     float recovery_point[3]; /**< Recovery point. [binary32 x 3; offset 16; unit mm (millimetre (N11))] */
-    float completion; /**< Completion percentage. [binary32; offset 28; unit percent (percent of completion)] */
+    float completion; /**< Completion percentage. [binary32; offset 28; unit percent (percent of completion, 0 to 100)] */
 };
 
 /** CHECKPOINT (v1): Check-point. 16 argument bytes; versions 1.x; clause 7.2.2.2. */
