@@ -211,3 +211,10 @@ def test_cbf_c_version(cbf_c: Path) -> None:
     res = _run([str(cbf_c), "--version"])
     assert res.returncode == 0 and res.stderr == ""
     assert res.stdout == f"cbf-c {cbf.__version__} (spec {cbf.SPEC_REVISION})\n"
+
+
+def test_cbf_validate_json_prints_nothing_for_input_that_is_not_cbf(cbf_c: Path, tmp_path: Path) -> None:
+    for row in (r for r in TABLE if r.validate == USAGE and not r.as_unprivileged_root):
+        path = row.make(tmp_path)
+        res = _run([*_argv("cbf", cbf_c), "validate", "--json", str(path)])
+        _assert_outcome("cbf", res, path, USAGE, row.says)
