@@ -884,7 +884,8 @@ typedef struct cbf_finding {
     const char *check;     /**< a CBF_CHECK_* id */
     int severity;          /**< enum cbf_severity */
     long record;           /**< 0-based record index, or -1 for the header and the file */
-    size_t offset;         /**< file offset of the field concerned */
+    size_t offset;         /**< file offset of the field concerned, as every binding names it
+                                (conformance/PROTOCOL.md, Findings; the runner compares it) */
     const char *message;   /**< for people; valid during the callback only */
 } cbf_finding;
 
