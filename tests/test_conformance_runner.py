@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 import yaml
 
 from conformance.runner.compare import f32_bits, findings_difference, first_difference
@@ -85,9 +87,43 @@ def test_floats_compare_by_bits() -> None:
 
 
 def test_findings_compare_as_multisets() -> None:
-    assert findings_difference([["6.4.4", "error", 2]], [{"check": "6.4.4", "severity": "error", "record": 2}]) is None
-    diff = findings_difference([["6.4.4", "error", 2], ["6.4.4", "error", 2]], [{"check": "6.4.4", "severity": "error",
-                                                                               "record": 2}])
+    found = {"check": "6.4.4", "severity": "error", "record": 2, "offset": 214}
+    assert findings_difference([["6.4.4", "error", 2, 214]], [found]) is None
+    diff = findings_difference([["6.4.4", "error", 2, 214], ["6.4.4", "error", 2, 214]], [found])
     assert diff and "missing" in diff
-    assert findings_difference([], [{"check": "shape", "severity": "error", "record": None}]) == \
-        "unexpected shape/error/header"
+    assert findings_difference([], [{"check": "shape", "severity": "error", "record": None, "offset": 0}]) == \
+        "unexpected shape/error/header @offset 0"
+
+
+def test_findings_compare_offsets() -> None:
+    """The offset of the field concerned is part of a finding (issue 13 item 13): the record start is not it."""
+    expected = [["6.4.2", "error", 2, 211]]
+    at_record_start = {"check": "6.4.2", "severity": "error", "record": 2, "offset": 208}
+    assert findings_difference(expected, [at_record_start]) == \
+        "missing 6.4.2/error/record 2 @offset 211; unexpected 6.4.2/error/record 2 @offset 208"
+    assert findings_difference(expected, [{**at_record_start, "offset": None}]) is not None
+    with pytest.raises(ValueError, match="offset"):
+        findings_difference([["6.4.2", "error", 2]], [at_record_start])  # an expectation must state its offset
+
+
+def test_every_golden_expectation_states_offsets() -> None:
+    for exp in sorted((REPO / "conformance" / "golden").glob("*.expect.yaml")):
+        doc = yaml.safe_load(exp.read_text(encoding="utf-8"))
+        for profile, findings in (doc.get("validate") or {}).items():
+            for f in findings or []:
+                assert len(f) == 4 and isinstance(f[3], int), (exp.name, profile, f)
+
+
+def test_a_finding_at_the_record_start_turns_the_run_red(tmp_path: Path) -> None:
+    """A codec that names the record start instead of the code copy field fails the golden case."""
+    codec = tmp_path / "python"
+    shutil.copytree(REPO / "generated" / "python", codec)
+    validation = codec / "cbf" / "validation.py"
+    text = validation.read_text(encoding="utf-8")
+    field = "out.add(c_copy, i, off + T.RECORD_FIELDS[i_copy].offset,"
+    assert text.count(field) == 1
+    validation.write_text(text.replace(field, "out.add(c_copy, i, off,"), encoding="utf-8")
+    res = _run(tmp_path, codec, "check.6.4.2")
+    assert res.returncode == 1, res.stdout
+    assert "python: check.6.4.2.code_copy: FAIL validate: [default] missing" in res.stdout
+    assert "@offset" in res.stdout

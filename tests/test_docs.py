@@ -90,7 +90,7 @@ def test_command_pages_list_every_check_the_golden_cases_raise_on_them() -> None
         if doc.get("decode") != "ok":
             continue
         records = decode(expect.with_name(expect.name.replace(".expect.yaml", ".cbf")).read_bytes()).records
-        for check, _severity, rec in (f for findings in doc["validate"].values() for f in findings):
+        for check, _severity, rec, _offset in (f for findings in doc["validate"].values() for f in findings):
             check = str(check)
             if rec is None or kinds[check] in RECORD_LEVEL or records[rec].command is None:
                 continue

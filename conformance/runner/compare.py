@@ -1,4 +1,4 @@
-"""Comparison rules: floats by binary32 bits, findings as sorted multisets."""
+"""Comparison rules: floats by binary32 bits, findings as sorted multisets of (check, severity, record, offset)."""
 
 from __future__ import annotations
 
@@ -86,16 +86,23 @@ def _short(v: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def finding_key(f: Any) -> tuple[str, str, int]:
-    """(check, severity, record) with record -1 for null, from a finding dict or a [check, severity, record] list."""
+FindingKey = tuple[str, str, int, int]
+
+
+def finding_key(f: Any) -> FindingKey:
+    """(check, severity, record, offset), record -1 for null, from a testee's finding dict or an
+    expectation's [check, severity, record, offset] list. Offset -1 when absent (never expected)."""
     if isinstance(f, dict):
-        check, sev, rec = f.get("check"), f.get("severity"), f.get("record")
+        check, sev, rec, off = f.get("check"), f.get("severity"), f.get("record"), f.get("offset")
     else:
-        check, sev, rec = f[0], f[1], f[2]
-    return (str(check), str(sev), -1 if rec is None else int(rec))
+        if len(f) != 4:
+            raise ValueError(f"expected finding {f!r}: needs [check, severity, record, offset]")
+        check, sev, rec, off = f[0], f[1], f[2], f[3]
+    return (str(check), str(sev), -1 if rec is None else int(rec), -1 if off is None else int(off))
 
 
 def findings_difference(expected: list[Any], actual: list[Any]) -> str | None:
+    """None when the multisets of (check, severity, record, offset) are equal; else what is missing and extra."""
     e = sorted(finding_key(f) for f in expected)
     a = sorted(finding_key(f) for f in actual)
     if e == a:
@@ -110,8 +117,10 @@ def findings_difference(expected: list[Any], actual: list[Any]) -> str | None:
     return "; ".join(parts)
 
 
-def _fk(k: tuple[str, str, int]) -> str:
-    return f"{k[0]}/{k[1]}/{'header' if k[2] < 0 else 'record ' + str(k[2])}"
+def _fk(k: FindingKey) -> str:
+    where = "header" if k[2] < 0 else f"record {k[2]}"
+    at = "no offset" if k[3] < 0 else f"offset {k[3]}"
+    return f"{k[0]}/{k[1]}/{where} @{at}"
 
 
 def is_nan_bits(bits: int) -> bool:

@@ -200,7 +200,10 @@ def _step(t: Testee, case: Case, step: str, path: str) -> str | None:
                 return "skipped"
             if not ans.get("ok"):
                 return f"[{profile}] validate failed: {ans.get('error')}"
-            diff = findings_difference(expected or [], ans.get("findings") or [])
+            try:
+                diff = findings_difference(expected or [], ans.get("findings") or [])
+            except ValueError as exc:  # an expectation without its offset
+                return f"[{profile}] {exc}"
             if diff:
                 return f"[{profile}] {diff}"
         return "ok"

@@ -528,7 +528,8 @@ enum cbf_error {
     CBF_ERR_BUFFER = -3,           /**< the caller's buffer is too small */
     CBF_ERR_ARGUMENT = -4,         /**< a bad argument (NULL, unknown layout, profile or version) */
     CBF_ERR_RANGE = -5,            /**< a value that the format cannot hold */
-    CBF_ERR_NOT_WRITABLE = -6,     /**< the version, command or size cannot be written */
+    CBF_ERR_NOT_WRITABLE = -6,     /**< the version, command or size cannot be written (the version lacks the
+                                        command, or no layout of it in the version has that size) */
     CBF_ERR_INVALID = -7           /**< the encoded file would fail an error-severity check */
 };
 
@@ -896,7 +897,8 @@ typedef struct cbf_finding {
     const char *check;     /**< a CBF_CHECK_* id */
     int severity;          /**< enum cbf_severity */
     long record;           /**< 0-based record index, or -1 for the header and the file */
-    size_t offset;         /**< file offset of the field concerned */
+    size_t offset;         /**< file offset of the field concerned, as every binding names it
+                                (conformance/PROTOCOL.md, Findings; the runner compares it) */
     const char *message;   /**< for people; valid during the callback only */
 } cbf_finding;
 
@@ -977,7 +979,9 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
 
 /** Begin a file in buf with the header h (its fields as given). */
 int cbf_encode_begin(cbf_writer *w, uint8_t *buf, size_t cap, const cbf_header *h);
-/** Append a record; fills sequence (the index), the code copy, nb, reserved 0 and the argument checksum. */
+/** Append a record; fills sequence (the index), the code copy, nb, reserved 0 and the argument checksum.
+ *  CBF_ERR_NOT_WRITABLE when the header's version lacks the command (or the code is unknown), or when
+ *  nargs is not the size of one of the command's layouts in that version. */
 int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs);
 /** Append a record with every head field as given in head (nb must equal nargs). */
 int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const uint8_t *args, size_t nargs);
@@ -985,7 +989,11 @@ int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const u
 int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
 /** Finish: with fill != 0 set the count, the magic numbers and the checksums
  *  in the spec's fill order (the file checksum with the profile's coverage).
- *  Returns the file size or the writer's first error. */
+ *  With fill != 0 the version must be writable and every record (stored ones
+ *  too) a command of that version with the size of one of its layouts that the
+ *  profile accepts, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
+ *  kept as given (a faulty file reproduced). Returns the file size or the
+ *  writer's first error (errors are sticky: a refused record fails the end). */
 long cbf_encode_end(cbf_writer *w, int profile, int fill);
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -2658,6 +2666,20 @@ int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const u
     return CBF_OK;
 }
 
+/* A filling writer writes only what the version has: a known command that the
+ * version lists, with an argument size that is one of its layouts in that
+ * version. cbf_encode_end also asks that the profile accept the layout. */
+static int cbf__record_writable(int version, int code, size_t nb)
+{
+    return cbf_command_available(code, version) && cbf_args_layout(code, version, nb) != CBF_LAYOUT__NONE;
+}
+
+static inline int cbf__profile_accepts(int layout, int profile)
+{
+    return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
+}
+
+
 int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs)
 {
     cbf_record_head head;
@@ -2668,6 +2690,8 @@ int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs
         return w->error;
     if (code < 0 || code > 0xFF || (!args && nargs))
         return cbf__wfail(w, CBF_ERR_RANGE);
+    if (!cbf__record_writable(w->version, code, nargs))
+        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
     memset(&head, 0, sizeof head);
     for (k = 0; k < CBF__NRECORD_FIELDS; k++) {
         const cbf_field_info *f = &cbf__record_fields[k];
@@ -2717,6 +2741,23 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         return cbf__wfail(w, CBF_ERR_ARGUMENT);
     if (!fill)
         return (long)w->len;
+    if (!cbf_version_writable(w->version))
+        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+    {
+        /* records appended with cbf_encode_record_stored pass the same test */
+        const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
+        const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+        size_t pos = CBF_HEADER_SIZE;
+        while (f_code && f_nb && pos < w->records_end) {
+            const uint8_t *p = w->buf + pos;
+            int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
+            size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
+            int layout = cbf_args_layout(code, w->version, nb);
+            if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
+                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+            pos += CBF_RECORD_HEAD_SIZE + nb;
+        }
+    }
     lay = cbf__versions[w->eff_version].header;
     for (i = 0; i < cbf__headers[lay].nfields; i++) {
         const cbf_field_info *f = &cbf__headers[lay].fields[i];
@@ -3621,11 +3662,6 @@ static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t
     cbf__shape(v, cmd, layout, args, rec, off);
 }
 
-static inline int cbf__profile_accepts(int layout, int profile)
-{
-    return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
-}
-
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user)
 {
     cbf__vctx v;
@@ -3718,7 +3754,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
                           "sequence number %lu, expected %lu", (unsigned long)seq, (unsigned long)want);
         }
         if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos, "code 0x%02lx, backup copy 0x%02lx",
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + (f_copy ? f_copy->offset : 0u), "code 0x%02lx, backup copy 0x%02lx",
                       (unsigned long)code, (unsigned long)copy);
         if (fck) {
             uint32_t want = args_sum ? (cbf__sum(p + CBF_RECORD_HEAD_SIZE, nb) & args_mask)
@@ -3736,15 +3772,16 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         }
         cmd = cbf__cmd_index((int)code);
         if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos, "unknown command code 0x%02lx", (unsigned long)code);
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + (f_code ? f_code->offset : 0u), "unknown command code 0x%02lx",
+                      (unsigned long)code);
         } else {
             int accepted = 0, k, ci;
             /* availability: the command has no layout for the file's version (fallback included);
              * the finding names the one check that covers this command in this version */
             ci = cbf__avail_check[cmd][v.eff];
             if (ci >= 0 && !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)))
-                cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
-                         cbf__versions[v.eff].id);
+                cbf__say(&v, ci, rec, pos + (f_code ? f_code->offset : 0u), "%s is not available in version %s",
+                         cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (seen_nb[cmd] == (long)nb) { /* same command and size as last time: same answers */
                 accepted = seen_ok[cmd];
                 layout = seen_layout[cmd];
@@ -3762,7 +3799,8 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
                 seen_layout[cmd] = layout;
             }
             if (!accepted)
-                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos, "%s has %lu argument bytes, no layout of %s has that size",
+                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + (f_nb ? f_nb->offset : 0u),
+                          "%s has %lu argument bytes, no layout of %s has that size",
                           cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
             if (layout != CBF_LAYOUT__NONE)
                 cbf__decoded_checks(&v, cmd, layout, p + CBF_RECORD_HEAD_SIZE, rec, pos);

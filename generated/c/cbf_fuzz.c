@@ -115,12 +115,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* the filling writer: its checks pass */
     for (p = 0; p < CBF_PROFILE__COUNT; p++) {
         CHECK(cbf_reader_init(&r, data, size) == CBF_OK);
+        int refused = 0;
         CHECK(cbf_encode_begin(&w, out2, sizeof out2, &r.header) == CBF_OK);
-        while (cbf_next_record(&r, &rec) == 1)
-            CHECK(cbf_encode_record(&w, rec.head.code, rec.args, rec.nargs) == CBF_OK);
+        while (!refused && cbf_next_record(&r, &rec) == 1) {
+            int code = rec.head.code;
+            rc = cbf_encode_record(&w, code, rec.args, rec.nargs);
+            /* the filling writer refuses exactly what the version lacks: the command or the size */
+            refused = !cbf_command_available(code, r.header.version)
+                      || cbf_args_layout(code, r.header.version, rec.nargs) == CBF_LAYOUT__NONE;
+            CHECK(rc == (refused ? CBF_ERR_NOT_WRITABLE : CBF_OK));
+        }
         n = cbf_encode_end(&w, p, 1);
+        CHECK(!refused || n == CBF_ERR_NOT_WRITABLE); /* the refusal sticks */
         if (n < 0)
-            continue; /* e.g. more records than the count field holds */
+            continue; /* e.g. more records than the count field holds, a read-only version */
         memset(&opt, 0, sizeof opt);
         opt.profile = p;
         filled_failed = 0;

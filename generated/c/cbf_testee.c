@@ -11,6 +11,7 @@
 
 #include <float.h>
 #include <stdarg.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,14 +27,19 @@ static char req_line[MAX_LINE];
 
 /* ---- shared by the testee and the tool (generated from common.inc.j2) ---- */
 
-/* Read a whole file into buf; returns its size or -1 (errno in *err). */
+/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
 static long read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
 {
-    FILE *fp = fopen(path, "rb");
+    FILE *fp;
     size_t n = 0;
+    errno = 0;
+    fp = fopen(path, "rb");
     *why = "cannot open";
-    if (!fp)
+    if (!fp) {
+        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
+             : errno == EISDIR ? "is a directory" : "cannot open";
         return -1;
+    }
     for (;;) {
         size_t got;
         if (n == cap) {
@@ -48,8 +54,8 @@ static long read_file(const char *path, uint8_t *buf, size_t cap, const char **w
             break;
     }
     if (ferror(fp)) {
+        *why = errno == EISDIR ? "is a directory" : "read error"; /* fopen opens a directory; reading fails */
         fclose(fp);
-        *why = "read error";
         return -1;
     }
     fclose(fp);

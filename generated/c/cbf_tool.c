@@ -6,28 +6,44 @@
  *
  *   cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] FILE...
  *   cbf-c dump FILE
+ *   cbf-c --version
  *
- * Exit status: 0 clean, 1 error findings (or a file that cannot be read), 2 usage.
+ * Exit status, as `cbf` (README, "Exit codes"): 0 ok; 1 validate found an
+ * error-severity finding; 2 bad usage or input that is not a CBF file to read:
+ * missing, a directory, no permission, larger than a CBF file can be, shorter
+ * than the header, both magic numbers wrong, and for dump a record cut short.
+ * Each such input gets one line on stderr naming the file and what is wrong.
+ * validate with several files exits with the highest status of any of them.
  */
 #define CBF_IMPLEMENTATION
 #include "cbf.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static uint8_t file_buf[32u << 20];
+/* The most a CBF file can hold: the header and every record at its largest. */
+#define MAX_FILE_SIZE ((unsigned long)CBF_HEADER_SIZE + ((unsigned long)CBF_LIMIT_MAX_COMMANDS + 1ul) \
+                       * ((unsigned long)CBF_RECORD_HEAD_SIZE + (unsigned long)CBF_LIMIT_MAX_ARG_SIZE))
+static uint8_t file_buf[MAX_FILE_SIZE + 1ul];
+enum { EXIT_OK = 0, EXIT_FINDINGS = 1, EXIT_USAGE = 2 };
 
 /* ---- shared by the testee and the tool (generated from common.inc.j2) ---- */
 
-/* Read a whole file into buf; returns its size or -1 (errno in *err). */
+/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
 static long read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
 {
-    FILE *fp = fopen(path, "rb");
+    FILE *fp;
     size_t n = 0;
+    errno = 0;
+    fp = fopen(path, "rb");
     *why = "cannot open";
-    if (!fp)
+    if (!fp) {
+        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
+             : errno == EISDIR ? "is a directory" : "cannot open";
         return -1;
+    }
     for (;;) {
         size_t got;
         if (n == cap) {
@@ -42,8 +58,8 @@ static long read_file(const char *path, uint8_t *buf, size_t cap, const char **w
             break;
     }
     if (ferror(fp)) {
+        *why = errno == EISDIR ? "is a directory" : "read error"; /* fopen opens a directory; reading fails */
         fclose(fp);
-        *why = "read error";
         return -1;
     }
     fclose(fp);
@@ -223,28 +239,83 @@ static int load_cutters(const char *path)
 }
 
 static const char *current_file;
+static long current_warnings;
+static const char *const profile_names[] = { "default", "implib" };
 
+/* One line per finding, as cbf prints it (README): file:offset: severity check (record N): message */
 static void print_finding(void *user, const cbf_finding *f)
 {
     (void)user;
-    printf("%s: %s %s", current_file, f->severity == CBF_SEVERITY_ERROR ? "error" : "warning", f->check);
+    printf("%s:%lu: %s %s (", current_file, (unsigned long)f->offset,
+           f->severity == CBF_SEVERITY_ERROR ? "error" : "warning", f->check);
     if (f->record >= 0)
-        printf(" record %ld", f->record);
+        printf("record %ld", f->record);
     else
-        printf(" header");
-    printf(" @%lu: %s\n", (unsigned long)f->offset, f->message);
+        printf("header");
+    printf("): %s\n", f->message);
+    if (f->severity != CBF_SEVERITY_ERROR)
+        current_warnings++;
+}
+
+/* Read path into file_buf; 0 and one line on stderr when it cannot be read, is
+ * larger than a CBF file can be, or is not a CBF file: shorter than the header,
+ * or every magic number of the header wrong (the test cbf applies, from the
+ * same fields of the model). */
+static int read_cbf(const char *path, size_t *size)
+{
+    const char *why;
+    const cbf_field_info *fields;
+    size_t nf, i, nmagic = 0, nright = 0, first = 0;
+    long n = read_file(path, file_buf, sizeof file_buf, &why);
+    if (n < 0) {
+        fprintf(stderr, "cbf-c: %s: %s\n", path, why);
+        return 0;
+    }
+    if ((unsigned long)n > MAX_FILE_SIZE) {
+        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", path, MAX_FILE_SIZE);
+        return 0;
+    }
+    if ((size_t)n < CBF_HEADER_SIZE) {
+        fprintf(stderr, "cbf-c: %s: offset 0: file is %ld bytes, the header needs %d: not a CBF file\n", path, n,
+                CBF_HEADER_SIZE);
+        return 0;
+    }
+    nf = cbf_header_fields(cbf_version_header_layout(CBF_DEFAULT_VERSION), &fields);
+    for (i = 0; i < nf; i++) {
+        if (!(fields[i].flags & CBF_FIELD_MAGIC))
+            continue;
+        if (!nmagic++)
+            first = i;
+        if (cbf_field_uint(&fields[i], file_buf) == fields[i].magic)
+            nright++;
+    }
+    if (nmagic && !nright) {
+        int text = 1;
+        for (i = 0; i < (size_t)n && i < 256u && text; i++)
+            text = (file_buf[i] >= 0x20u && file_buf[i] < 0x7Fu) || file_buf[i] == '\t' || file_buf[i] == '\r'
+                   || file_buf[i] == '\n';
+        fprintf(stderr, "cbf-c: %s: offset %u: not a CBF file: no magic number of the header is right (",
+                path, (unsigned)fields[first].offset);
+        for (i = 0; i < nf; i++)
+            if (fields[i].flags & CBF_FIELD_MAGIC)
+                fprintf(stderr, "%s%s", i == first ? "" : ", ", fields[i].name);
+        fprintf(stderr, ")%s\n", text ? "; it is text" : "");
+        return 0;
+    }
+    *size = (size_t)n;
+    return 1;
 }
 
 static void usage(void)
 {
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] FILE...\n"
           "       cbf-c dump FILE\n"
+          "       cbf-c --version\n"
           "profiles:", stderr);
     {
         int p;
-        static const char *const names[] = { "default", "implib" };
         for (p = 0; p < CBF_PROFILE__COUNT; p++)
-            fprintf(stderr, " %s", names[p]);
+            fprintf(stderr, " %s", profile_names[p]);
     }
     fputs("\n", stderr);
 }
@@ -260,25 +331,25 @@ static int cmd_validate(int argc, char **argv)
             opt.profile = cbf_profile_find(argv[++i]);
             if (opt.profile < 0) {
                 fprintf(stderr, "cbf-c: unknown profile %s\n", argv[i]);
-                return 2;
+                return EXIT_USAGE;
             }
         } else if (strcmp(argv[i], "--part-number") == 0 && i + 1 < argc) {
             opt.part_number = argv[++i];
         } else if (strcmp(argv[i], "--cutters") == 0 && i + 1 < argc) {
             if (!load_cutters(argv[++i])) {
                 fprintf(stderr, "cbf-c: %s: cannot read the cutter table (CSV or YAML: name, length, radius)\n", argv[i]);
-                return 2;
+                return EXIT_USAGE;
             }
             opt.cutters = cutters;
             opt.ncutters = ncutters;
         } else if (argv[i][0] == '-' && argv[i][1]) {
             usage();
-            return 2;
+            return EXIT_USAGE;
         }
     }
     for (i = 0; i < argc; i++) {
-        const char *why;
-        long n, errors;
+        size_t n;
+        long errors;
         if (strcmp(argv[i], "--profile") == 0 || strcmp(argv[i], "--part-number") == 0
             || strcmp(argv[i], "--cutters") == 0) {
             i++;
@@ -286,21 +357,20 @@ static int cmd_validate(int argc, char **argv)
         }
         files++;
         current_file = argv[i];
-        n = read_file(argv[i], file_buf, sizeof file_buf, &why);
-        if (n < 0) {
-            fprintf(stderr, "cbf-c: %s: %s\n", argv[i], why);
-            status = 1;
+        if (!read_cbf(argv[i], &n)) {
+            status = EXIT_USAGE;
             continue;
         }
-        errors = cbf_validate(file_buf, (size_t)n, &opt, print_finding, NULL);
-        if (errors > 0)
-            status = 1;
-        else
-            printf("%s: ok\n", argv[i]);
+        current_warnings = 0;
+        errors = cbf_validate(file_buf, n, &opt, print_finding, NULL);
+        if (errors > 0 && status < EXIT_FINDINGS)
+            status = EXIT_FINDINGS;
+        printf("%s: %s: %ld error(s), %ld warning(s) [profile %s]\n", argv[i], errors > 0 ? "FAIL" : "ok", errors,
+               current_warnings, profile_names[opt.profile]);
     }
     if (!files) {
         usage();
-        return 2;
+        return EXIT_USAGE;
     }
     return status;
 }
@@ -339,21 +409,25 @@ static void dump_field(const cbf_field_info *f, const uint8_t *base)
 
 static int cmd_dump(const char *path)
 {
-    const char *why;
-    long n = read_file(path, file_buf, sizeof file_buf, &why);
+    size_t n;
     cbf_reader r;
     cbf_record rec;
     const cbf_field_info *fields;
     size_t nf, i;
     int rc;
-    if (n < 0) {
-        fprintf(stderr, "cbf-c: %s: %s\n", path, why);
-        return 1;
+    if (!read_cbf(path, &n))
+        return EXIT_USAGE;
+    /* the records are framed first, as cbf decodes before it prints: a cut record is one line */
+    if (cbf_reader_init(&r, file_buf, n) != CBF_OK)
+        return EXIT_USAGE; /* read_cbf refused a short file already */
+    while ((rc = cbf_next_record(&r, &rec)) == 1) {}
+    if (rc < 0) {
+        fprintf(stderr, "cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) "
+                "(%s)\n", path, (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
+                (unsigned long)r.header.count, cbf_strerror(rc));
+        return EXIT_USAGE;
     }
-    if (cbf_reader_init(&r, file_buf, (size_t)n) != CBF_OK) {
-        fprintf(stderr, "cbf-c: %s: %s\n", path, cbf_strerror(CBF_ERR_TRUNCATED_HEADER));
-        return 1;
-    }
+    (void)cbf_reader_init(&r, file_buf, n);
     printf("header version %u.%u (%s)", r.header.major, r.header.minor,
            r.header.version < 0 ? "unknown" : cbf_version_name(r.header.version));
     nf = cbf_header_fields(r.header.layout, &fields);
@@ -378,21 +452,21 @@ static int cmd_dump(const char *path)
         }
         putchar('\n');
     }
-    if (rc < 0) {
-        printf("error: %s at offset %lu\n", cbf_strerror(rc), (unsigned long)r.pos);
-        return 1;
-    }
     if (r.trailing)
         printf("trailing %lu byte(s) at %lu\n", (unsigned long)r.trailing, (unsigned long)r.pos);
-    return 0;
+    return EXIT_OK;
 }
 
 int main(int argc, char **argv)
 {
+    if (argc == 2 && strcmp(argv[1], "--version") == 0) {
+        printf("cbf-c %s (spec %s)\n", CBF_TOOLKIT_VERSION, CBF_SPEC_REVISION);
+        return EXIT_OK;
+    }
     if (argc >= 3 && strcmp(argv[1], "validate") == 0)
         return cmd_validate(argc - 2, argv + 2);
     if (argc == 3 && strcmp(argv[1], "dump") == 0)
         return cmd_dump(argv[2]);
     usage();
-    return 2;
+    return EXIT_USAGE;
 }

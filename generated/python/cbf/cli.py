@@ -302,10 +302,23 @@ def cmd_encode(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _refuse_not_cbf(path: str, data: bytes) -> None:
+    """Exit 2 for input that is not a CBF file (README, exit codes): shorter than the
+    header, or both magic numbers wrong. Its findings would all follow from that."""
+    from . import tables as T
+
+    if len(data) < T.HEADER_SIZE:
+        raise _Fail(f"{path}: offset 0: file is {len(data)} bytes, the header needs {T.HEADER_SIZE}: not a CBF file")
+    reason = _not_cbf(data)
+    if reason:
+        raise _Fail(f"{path}: {reason}")
+
+
 def cmd_validate(a: argparse.Namespace) -> int:
     from .validation import validate
 
     data = _read(a.file, _max_file_size())
+    _refuse_not_cbf(a.file, data)
     cutters = None
     if a.cutters:
         from .cutters import load_cutter_table
@@ -321,9 +334,6 @@ def cmd_validate(a: argparse.Namespace) -> int:
         doc = {"file": a.file, "profile": a.profile, "findings": [f.as_dict() for f in findings]}
         sys.stdout.write(json.dumps(doc, indent=1) + "\n")
     else:
-        reason = _not_cbf(data)
-        if reason:  # say it first: every finding below follows from it
-            sys.stdout.write(f"{a.file}: {reason}; the findings below follow from that\n")
         shown = findings if a.max_findings == 0 else findings[:a.max_findings]
         for f in shown:
             where = f"record {f.record}" if f.record is not None else "header"
