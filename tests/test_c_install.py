@@ -39,7 +39,8 @@ def test_install_then_a_consumer_builds_with_pkg_config(tmp_path: Path) -> None:
     subprocess.run(["make", "-s", "-C", str(REPO), "install", f"PREFIX={prefix}"], check=True,
                    capture_output=True, text=True)
     assert (prefix / "include" / "cbf.h").read_bytes() == (REPO / "generated" / "c" / "cbf.h").read_bytes()
-    assert os.access(prefix / "bin" / "cbf-c", os.X_OK)
+    version = subprocess.run([str(prefix / "bin" / "cbf-c"), "--version"], capture_output=True, text=True, check=True)
+    assert version.stdout.strip() == f"cbf-c {cbf.__version__} (spec {cbf.SPEC_REVISION})"
     env = dict(os.environ, PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"))
     pc = subprocess.run(["pkg-config", "--modversion", "cbf"], env=env, capture_output=True, text=True, check=True)
     assert pc.stdout.strip() == cbf.__version__
