@@ -65,7 +65,7 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 	@echo "generated/ is fresh"
 
 # -- quality ------------------------------------------------------------------
-MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/bench.py)
+MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability conformance/kit.py bench/bench.py)
 LINT_INPUTS = $(shell find generator conformance tests generated/python bench -name '*.py' -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 lint: venv $(STAMPS)/lint  ## ruff + mypy --strict on hand-written Python
 $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
@@ -82,13 +82,16 @@ test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what C
 	@$(MAKE) check-report
 
 # -- distributions (what users install) ------------------------------------------
-# `cbf` (codec + CLI, from generated/python) and `cbfgen` (the generator), as wheels and
+# `cbf` (codec + CLI, from generated/python), `cbfgen` (the generator) and `cbf-conformance`
+# (the runner with the golden cases, staged by conformance/kit.py), as wheels and
 # sdists in dist/. Built with the pinned setuptools of .venv (no download at build time).
 .PHONY: dist
-dist: generate-py  ## build the cbf and cbfgen wheels and sdists into dist/
+dist: generate-py  ## build the cbf, cbfgen and cbf-conformance wheels and sdists into dist/
 	@rm -rf dist && mkdir -p dist
 	$(PY) -m build --no-isolation --outdir dist generated/python >/dev/null
 	$(PY) -m build --no-isolation --outdir dist generator >/dev/null
+	$(PY) -m conformance.kit build/kit >/dev/null
+	$(PY) -m build --no-isolation --outdir dist build/kit >/dev/null
 	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info
 	@ls dist
 

@@ -7,12 +7,14 @@ import base64
 import json
 import os
 import queue
+import shlex
 import subprocess
 import sys
 import threading
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 import yaml
 
@@ -20,7 +22,10 @@ from .compare import findings_difference, first_difference
 
 ROOT = Path(__file__).resolve().parents[1]
 REPO = ROOT.parent
-TIMEOUT = 60.0
+# Installed as the cbf-conformance kit, the golden cases ship beside the runner.
+PACKAGED_GOLDEN = Path(__file__).resolve().parent / "golden"
+DEFAULT_GOLDEN = PACKAGED_GOLDEN if PACKAGED_GOLDEN.is_dir() else ROOT / "golden"
+TIMEOUT = 60.0  # seconds a testee may take to answer one request
 
 
 @dataclass
@@ -46,16 +51,18 @@ class Binding:
     command: list[str]
     env: dict[str, str] = field(default_factory=dict)
     requires: list[str] = field(default_factory=list)
+    cwd: Path = REPO  # an outside testee (--testee) runs where the runner was started
 
     def missing(self) -> list[str]:
-        return [r for r in self.requires if not (REPO / r).exists()]
+        return [r for r in self.requires if not (self.cwd / r).exists()]
 
 
 class Testee:
     """A testee process, started once, one JSON line per request."""
 
-    def __init__(self, binding: Binding) -> None:
+    def __init__(self, binding: Binding, timeout: float = TIMEOUT) -> None:
         self.binding = binding
+        self.timeout = timeout
         self.proc: subprocess.Popen[str] | None = None
         self.lines: queue.Queue[str | None] = queue.Queue()
 
@@ -63,7 +70,7 @@ class Testee:
         env = dict(os.environ)
         env.update({k: v.format(repo=REPO) for k, v in self.binding.env.items()})
         cmd = [c.format(repo=REPO, python=sys.executable) for c in self.binding.command]
-        self.proc = subprocess.Popen(cmd, cwd=REPO, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+        self.proc = subprocess.Popen(cmd, cwd=self.binding.cwd, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                      stderr=sys.stderr, text=True, encoding="utf-8", bufsize=1)
         self.lines = queue.Queue()
         out = self.proc.stdout
@@ -83,10 +90,13 @@ class Testee:
         try:
             self.proc.stdin.write(json.dumps(request) + "\n")
             self.proc.stdin.flush()
-            line = self.lines.get(timeout=TIMEOUT)
-        except (BrokenPipeError, OSError, queue.Empty) as exc:
+            line = self.lines.get(timeout=self.timeout)
+        except queue.Empty:
             self.stop()
-            raise RuntimeError(f"testee died or hung ({type(exc).__name__})") from None
+            raise RuntimeError(f"testee gave no answer within {self.timeout:g} s") from None
+        except (BrokenPipeError, OSError) as exc:
+            self.stop()
+            raise RuntimeError(f"testee died ({type(exc).__name__})") from None
         if line is None:
             self.stop()
             raise RuntimeError("testee exited")
@@ -107,6 +117,7 @@ class Testee:
                     self.proc.wait(timeout=5)
             except (OSError, subprocess.TimeoutExpired):
                 self.proc.kill()
+                self.proc.wait()
             self.proc = None
 
 
@@ -272,7 +283,10 @@ def main_run(args: argparse.Namespace) -> int:
     if not cases:
         print(f"conformance: no golden cases in {args.golden}", file=sys.stderr)
         return 2
-    bindings = load_bindings(args.bindings)
+    if args.testee:
+        bindings = [Binding(args.name, shlex.split(args.testee), cwd=Path.cwd())]
+    else:
+        bindings = load_bindings(args.bindings)
     if args.binding:
         unknown = set(args.binding) - {b.name for b in bindings}
         if unknown:
@@ -297,7 +311,7 @@ def main_run(args: argparse.Namespace) -> int:
             results = {c.name: {"status": "skip", "message": "binding not built"} for c in cases}
             report["bindings"][b.name] = {"available": False, "results": results}
             continue
-        t = Testee(b)
+        t = Testee(b, args.timeout)
         try:
             for c in cases:
                 status, message = run_case(t, c)
@@ -305,7 +319,7 @@ def main_run(args: argparse.Namespace) -> int:
         finally:
             t.stop()
         report["bindings"][b.name] = {"available": True, "results": results}
-        fpath = args.failures / f"{b.name}.txt"
+        fpath = args.failure_list if args.failure_list else args.failures / f"{b.name}.txt"
         listed = read_failures(fpath)
         failing = {n: r["message"] for n, r in results.items() if r["status"] == "fail"}
         if args.fix:
@@ -319,28 +333,56 @@ def main_run(args: argparse.Namespace) -> int:
         for name in sorted(listed):
             if name in results and name not in failing:
                 problems.append(f"{b.name}: {name}: listed as failing but passes: remove it from {fpath.name}")
-    _print_matrix(report, cases)
+    human = sys.stderr if args.json else sys.stdout
+    _print_matrix(report, cases, human)
     # The committed report is the evidence of a full run: a partial run (some
-    # bindings, some cases, a scratch build) writes only where it is told to.
+    # bindings, some cases, a scratch build, an outside testee) writes only where it is told to.
     out: Path | None = args.report
-    if out is None and not (args.binding or args.case or args.python_path):
+    if out is None and not (args.binding or args.case or args.python_path or args.testee) and ROOT.joinpath(
+            "bindings.yaml").exists():
         out = ROOT / "report.json"
     if out is not None:
         tmp = out.with_suffix(".json.tmp")
         tmp.write_text(json.dumps(report, indent=1, sort_keys=True) + "\n", encoding="utf-8")
         os.replace(tmp, out)
+    if args.junit:
+        write_junit(args.junit, report, cases)
+    report["problems"] = problems
+    if args.json:
+        json.dump(report, sys.stdout, indent=1, sort_keys=True)
+        sys.stdout.write("\n")
     for p in problems:
-        print(p)
+        print(p, file=human)
     total = sum(1 for b in report["bindings"].values() for r in b["results"].values() if r["status"] == "pass")
-    print(f"conformance: {total} passed, {len(problems)} failed")
+    print(f"conformance: {total} passed, {len(problems)} failed", file=human)
     return 1 if problems else 0
 
 
-def _print_matrix(report: dict[str, Any], cases: list[Case]) -> None:
+def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
+    """JUnit XML for CI dashboards: a test suite per binding, a test case per golden case."""
+    suites = ET.Element("testsuites", name="cbf-conformance")
+    for name, b in report["bindings"].items():
+        results = b["results"]
+        suite = ET.SubElement(suites, "testsuite", name=name, tests=str(len(results)),
+                              failures=str(sum(r["status"] == "fail" for r in results.values())),
+                              skipped=str(sum(r["status"] == "skip" for r in results.values())))
+        for c in cases:
+            r = results.get(c.name)
+            if r is None:
+                continue
+            tc = ET.SubElement(suite, "testcase", classname=f"{name}.{c.group}", name=c.name)
+            if r["status"] == "fail":
+                ET.SubElement(tc, "failure", message=r["message"]).text = r["message"]
+            elif r["status"] == "skip":
+                ET.SubElement(tc, "skipped", message=r["message"])
+    path.write_bytes(ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n")
+
+
+def _print_matrix(report: dict[str, Any], cases: list[Case], out: TextIO) -> None:
     groups = sorted({c.group for c in cases})
     names = list(report["bindings"])
     width = max([len(g) for g in groups] + [10])
-    print("group".ljust(width) + "".join(f"  {n:>16}" for n in names))
+    print("group".ljust(width) + "".join(f"  {n:>16}" for n in names), file=out)
     for g in groups:
         row = g.ljust(width)
         for n in names:
@@ -349,5 +391,5 @@ def _print_matrix(report: dict[str, Any], cases: list[Case]) -> None:
             f = sum(r["status"] == "fail" for r in res)
             s = sum(r["status"] == "skip" for r in res)
             row += f"  {f'{p}/{f}/{s}':>16}"
-        print(row)
-    print("(pass/fail/skip)")
+        print(row, file=out)
+    print("(pass/fail/skip)", file=out)

@@ -1,0 +1,82 @@
+"""Stage the cbf-conformance kit: the runner and the golden cases as one installable package.
+
+    python -m conformance.kit OUTDIR     # then: python -m build OUTDIR
+
+The package `cbf_conformance` is the runner's modules, the golden cases (.cbf, their
+expectations and the files they name) as package data, PROTOCOL.md, and the page
+"Run the CBF conformance suite against your reader" as its README. Its one dependency
+is PyYAML (the expectations are YAML). `make dist` builds it next to `cbf` and `cbfgen`.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+REPO = ROOT.parent
+PAGE = "RUN-AGAINST-YOUR-READER.md"
+
+
+def toolkit_version() -> str:
+    """The toolkit version, read from its one source without importing the generator."""
+    text = (REPO / "generator" / "cbfgen" / "__init__.py").read_text(encoding="utf-8")
+    match = re.search(r'^__version__ = "([^"]+)"', text, re.M)
+    if match is None:
+        raise SystemExit("conformance.kit: no __version__ in generator/cbfgen/__init__.py")
+    return match.group(1)
+
+
+def golden_files(golden: Path) -> list[Path]:
+    """Each case's .cbf and expectation, and the option files (cutter tables) they name."""
+    out: list[Path] = []
+    for exp in sorted(golden.glob("*.expect.yaml")):
+        name = exp.name[: -len(".expect.yaml")]
+        out += [exp, golden / f"{name}.cbf"]
+        out += sorted(p for p in golden.glob(f"{name}.*") if p.suffix in (".csv", ".yaml") and p not in out)
+    return out
+
+
+def stage(dest: Path) -> Path:
+    if dest.exists():
+        shutil.rmtree(dest)
+    pkg = dest / "cbf_conformance"
+    (pkg / "golden").mkdir(parents=True)
+    for src in sorted((ROOT / "runner").glob("*.py")):
+        shutil.copy2(src, pkg / src.name)
+    for src in golden_files(ROOT / "golden"):
+        shutil.copy2(src, pkg / "golden" / src.name)
+    shutil.copy2(ROOT / "PROTOCOL.md", pkg / "PROTOCOL.md")
+    shutil.copy2(ROOT / PAGE, dest / "README.md")
+    (pkg / "py.typed").write_text("", encoding="utf-8")
+    (dest / "pyproject.toml").write_text(f'''# Staged by `python -m conformance.kit`: the CBF conformance kit.
+[build-system]
+requires = ["setuptools>=69"]
+build-backend = "setuptools.build_meta"
+
+[project]
+name = "cbf-conformance"
+version = "{toolkit_version()}"
+description = "Run the CBF (Cutfile Binary Format) golden cases against any reader that speaks PROTOCOL.md."
+readme = "README.md"
+requires-python = ">=3.11"
+dependencies = ["pyyaml>=6.0,<7"]
+
+[project.scripts]
+cbf-conformance = "cbf_conformance.__main__:main"
+
+[tool.setuptools]
+packages = ["cbf_conformance"]
+
+[tool.setuptools.package-data]
+cbf_conformance = ["golden/*", "PROTOCOL.md", "py.typed"]
+''', encoding="utf-8")
+    return dest
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        raise SystemExit("usage: python -m conformance.kit OUTDIR")
+    print(stage(Path(sys.argv[1])))
