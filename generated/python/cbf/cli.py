@@ -276,12 +276,16 @@ def cmd_encode(a: argparse.Namespace) -> int:
     if not text.strip():
         raise _Fail(f"{a.file}: empty input: nothing to encode")
     kind = a.input_format or ("json" if a.file.endswith(".json") or text.lstrip().startswith("{") else "cut")
+    if a.keep_stored and kind != "json":
+        # CUT carries no sequence numbers, count or checksums: there is nothing stored to keep
+        raise _Fail(f"{a.file}: --keep-stored applies to JSON input only: CUT text carries no stored "
+                    f"sequence numbers, count or checksums to keep")
     try:
         if kind == "json":
-            from .canonical import from_canonical
+            from .canonical import from_canonical, loads
 
             try:
-                doc = json.loads(text)
+                doc = loads(text)  # exact numbers; duplicate keys refused with their path
             except json.JSONDecodeError as exc:
                 raise _Fail(f"{a.file}: line {exc.lineno}: not JSON ({exc.msg})") from None
             except RecursionError:
@@ -407,7 +411,8 @@ def parser() -> argparse.ArgumentParser:
     e.add_argument("--profile", choices=profiles, default=profiles[0])
     e.add_argument("--input-format", choices=["cut", "json"], help="default: from the extension or content")
     e.add_argument("--keep-stored", action="store_true",
-                   help="write stored sequence numbers, count and checksums as given (reproduce a faulty file)")
+                   help="JSON input only: write stored sequence numbers, count and checksums as given "
+                        "(reproduce a faulty file); refused for CUT input, which stores none")
     e.set_defaults(func=cmd_encode)
     v = sub.add_parser("validate", help="run every integrity check")
     v.add_argument("file", help="CBF file, or - for stdin")

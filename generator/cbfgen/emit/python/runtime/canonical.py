@@ -1,17 +1,91 @@
-"""Canonical JSON (conformance/PROTOCOL.md) in both directions, float bits exact."""
+"""Canonical JSON (conformance/PROTOCOL.md) in both directions, float bits exact.
+
+``loads`` reads JSON text so that nothing silently changes meaning (issue 13): a
+duplicate key is refused with its JSON path, numbers stay exact (a fraction or a
+long integer as a Decimal, so decimal text rounds to binary32 once), and NaN and
+Infinity reach the model's checks, which refuse them with their path.
+"""
 
 from __future__ import annotations
 
+import json
 import math
+import re
 import struct
+from decimal import Decimal
 from typing import Any
 
 from . import tables as T
 from .errors import JsonShapeError
+from .floats import OutOfRange
+from .floats import float_bits as _nearest_bits
 from .model import Cbf, Record
 
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
+_PATTERN = re.compile(r"0x[0-9a-fA-F]{8}", re.ASCII)  # a float's bit pattern: 0x and exactly 8 hex digits
+_INT_DIGITS = 20  # longer integers stay Decimal: int() refuses 4301+ digits, and no field needs 21
+_SHOW = 40
+
+
+def _show(value: Any) -> str:
+    """A value for a message: its JSON-like text, cut short when long."""
+    text = str(value) if isinstance(value, Decimal) else repr(value)
+    if len(text) <= _SHOW:
+        return text
+    digits = isinstance(value, Decimal) and text.lstrip("-").isdigit()
+    return f"{text[:_SHOW]}... ({len(text)} {'digits' if digits else 'characters'})"
+
+
+class _Duplicates(dict[str, Any]):
+    """An object that had a key twice (the last value kept, the key named)."""
+
+    duplicate: str = ""
+
+
+def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    obj = dict(pairs)
+    if len(obj) == len(pairs):
+        return obj
+    marked = _Duplicates(obj)
+    seen: set[str] = set()
+    for key, _ in pairs:
+        if key in seen:
+            marked.duplicate = key
+            break
+        seen.add(key)
+    return marked
+
+
+def _int(text: str) -> int | Decimal:
+    return int(text) if len(text.lstrip("-")) <= _INT_DIGITS else Decimal(text)
+
+
+def _find_duplicate(doc: Any) -> tuple[str, str] | None:
+    """The JSON path of the first object with a duplicate key, and that key (iterative: no depth limit)."""
+    stack: list[tuple[Any, str]] = [(doc, "$")]
+    while stack:
+        node, path = stack.pop()
+        if isinstance(node, _Duplicates):
+            return path, node.duplicate
+        if isinstance(node, dict):
+            stack.extend((v, f"{path}.{k}") for k, v in reversed(node.items()))
+        elif isinstance(node, list):
+            stack.extend((v, f"{path}[{i}]") for i, v in reversed(list(enumerate(node))))
+    return None
+
+
+def loads(text: str) -> Any:
+    """Canonical JSON text as Python data: exact numbers, and duplicate keys refused.
+
+    Raises json.JSONDecodeError (and RecursionError, ValueError) as ``json.loads``
+    does, and JsonShapeError naming the path of a duplicate key."""
+    doc = json.loads(text, parse_float=Decimal, parse_int=_int, parse_constant=Decimal,
+                     object_pairs_hook=_pairs)
+    found = _find_duplicate(doc)
+    if found is not None:
+        raise JsonShapeError(f"{found[0]}: duplicate key {found[1]!r}: text must not say a thing twice")
+    return doc
 
 
 def float_json(bits: int) -> float | str:
@@ -23,19 +97,18 @@ def float_json(bits: int) -> float | str:
 
 
 def float_bits(value: Any, where: str) -> int:
+    """A JSON float: a number (rounded once to the nearest binary32) or "0x" and 8 hex digits."""
     if isinstance(value, str):
-        if len(value) == 10 and value.startswith("0x"):
-            try:
-                return int(value[2:], 16)
-            except ValueError:
-                pass
-        raise JsonShapeError(f"{where}: {value!r} is neither a number nor a 0x-prefixed 8-digit bit pattern")
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if _PATTERN.fullmatch(value):
+            return int(value[2:], 16)
+        raise JsonShapeError(f"{where}: {_show(value)} is neither a number nor a bit pattern (0x and 8 hex digits)")
+    if isinstance(value, bool) or not isinstance(value, (int, float, Decimal)):
         raise JsonShapeError(f"{where}: expected a float, got {type(value).__name__}")
     try:
-        return int(_I.unpack(_F.pack(value))[0])
-    except (OverflowError, struct.error):
-        raise JsonShapeError(f"{where}: {value!r} is out of binary32 range") from None
+        return _nearest_bits(value)
+    except OutOfRange as exc:
+        raise JsonShapeError(f"{where}: {_show(value)} {exc} (NaN and infinity are written as "
+                             f"their bit pattern: 0x and 8 hex digits)") from None
 
 
 def _str_json(raw: bytes) -> str:
@@ -106,7 +179,7 @@ def _hex(value: Any, where: str, size: int | None = None) -> bytes:
 
 def _uint(value: Any, where: str, size: int) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 1 << (8 * size):
-        raise JsonShapeError(f"{where}: expected an unsigned {8 * size}-bit integer, got {value!r}")
+        raise JsonShapeError(f"{where}: expected an unsigned {8 * size}-bit integer, got {_show(value)}")
     return int(value)
 
 
@@ -131,7 +204,7 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
             items = v if f.count > 1 else [v]
             if not isinstance(items, list) or len(items) != f.count:
                 raise JsonShapeError(f"{w}: expected {f.count} floats")
-            vals.extend(float_bits(x, f"{w}[{k}]") for k, x in enumerate(items))
+            vals.extend(float_bits(x, f"{w}[{k}]" if f.count > 1 else w) for k, x in enumerate(items))
         elif f.kind == "uint":
             vals.append(_uint(v, w, f.elem_size))
         elif f.kind == "string":
@@ -143,7 +216,8 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
 
 def _obj(value: Any, where: str) -> dict[str, Any]:
     if not isinstance(value, dict):
-        raise JsonShapeError(f"{where}: expected an object, got {type(value).__name__}")
+        got = f"the number {_show(value)}" if isinstance(value, Decimal) else type(value).__name__
+        raise JsonShapeError(f"{where}: expected an object, got {got}")
     return value
 
 

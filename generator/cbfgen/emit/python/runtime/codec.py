@@ -183,6 +183,25 @@ def pack_args(lay: T.LayoutInfo, args: Any) -> bytes:
     return pack_fields(lay.args, lay.struct, args, lay.command)
 
 
+# A writer's strings hold printable ASCII and the NUL padding, before AND after the first
+# NUL (N4): a NUL must not carry control bytes into the file (issue 13, item 5).
+_STRING_BYTES = bytes(range(0x20, 0x7F)) + T.PAD
+
+
+def _check_strings(fields: Sequence[T.FieldInfo], raw: bytes, base: int, where: str) -> None:
+    for f in fields:
+        if f.kind != "string":
+            continue
+        value = raw[f.offset:f.end]
+        bad = value.translate(None, _STRING_BYTES)
+        if bad:
+            k = value.index(bad[0])
+            check = T.checks_of("string_ascii")[0]["id"]
+            raise EncodeError(f"{where}: the result would fail check {check}: {f.name} holds non-ASCII byte "
+                              f"0x{bad[0]:02X} at position {k} (strings are printable ASCII, NUL-padded)",
+                              offset=base + f.offset + k)
+
+
 def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -> bytes:
     """Write a Cbf. By default fills sequence numbers, code copies, the count,
     the magic numbers and every checksum, then refuses a result that does not
@@ -205,6 +224,8 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
         if model.trailing:
             raise EncodeError("trailing bytes can only be written with keep_stored")
     out = bytearray(pack_fields(info.fields, info.struct, model.header, "header"))
+    if not keep_stored:
+        _check_strings(info.fields, bytes(out), 0, "header")
     pack_head = T.HEAD_STRUCT.pack
     head_vals: list[Any] = [0] * len(T.RECORD_FIELDS)
     offsets: list[int] = []
@@ -223,8 +244,10 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
                 raise EncodeError(f"record {i}: unknown command code 0x{r.code:02X}")
             if not T.available(cmd, vid):
                 raise EncodeError(f"record {i}: {cmd.name} is not available in version {vid}")
-            if cmd.layout_for_size(vid or "", len(raw)) is None:
+            lay = cmd.layout_for_size(vid or "", len(raw))
+            if lay is None:
                 raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
+            _check_strings(lay.args, bytes(raw), len(out) + T.HEAD_SIZE, f"record {i}: {cmd.name}")
         head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
         head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk
         try:

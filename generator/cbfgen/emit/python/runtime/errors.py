@@ -7,23 +7,26 @@ class CbfError(Exception):
     """Base of every error the codec raises on bad input.
 
     ``kind`` is a stable machine name (see conformance/PROTOCOL.md),
-    ``offset`` the byte offset (or None), ``line`` the text line (or None).
+    ``offset`` the byte offset (or None), ``line`` the text line (or None),
+    ``column`` the character in that line, from 1 (or None).
     """
 
     kind = "error"
 
     def __init__(self, message: str, *, offset: int | None = None, line: int | None = None,
-                 kind: str | None = None) -> None:
+                 kind: str | None = None, column: int | None = None) -> None:
         super().__init__(message)
         self.message = message
         self.offset = offset
         self.line = line
+        self.column = column
         if kind is not None:
             self.kind = kind
 
     def __str__(self) -> str:
         where = f"offset {self.offset}: " if self.offset is not None else ""
         where = f"line {self.line}: " if self.line is not None else where
+        where = f"line {self.line}, column {self.column}: " if self.line is not None and self.column else where
         return where + self.message
 
 
