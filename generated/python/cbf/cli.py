@@ -369,8 +369,19 @@ def cmd_encode(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _json_finding(d: dict[str, Any]) -> str:
+    """One finding (a flat object) as json.dumps(..., indent=1) writes it inside the document,
+    without its slow pure-Python indenting encoder (millions of findings are possible)."""
+    from json.encoder import encode_basestring_ascii as quote  # what json.dumps uses for str
+
+    body = ",\n".join(f"   {quote(k)}: " + ("null" if v is None else quote(v) if isinstance(v, str)
+                                             else str(v) if type(v) is int else json.dumps(v))
+                      for k, v in d.items())
+    return "  {\n" + body + "\n  }"
+
+
 def cmd_validate(a: argparse.Namespace) -> int:
-    from .validation import validate
+    from .validation import iter_findings
 
     data = _read(a.file, _max_file_size())
     cutters = None
@@ -382,25 +393,32 @@ def cmd_validate(a: argparse.Namespace) -> int:
             cutters = load_cutter_table(a.cutters)
         except CbfError as exc:
             raise _Fail(exc.message) from None  # names the table and its line already
-    findings = validate(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
-    errors = sum(1 for f in findings if f.severity == "error")
+    # Findings are printed as they are made, never all held: a file can give millions.
+    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
+    errors = total = 0
     if a.json:
-        doc = {"file": a.file, "profile": a.profile, "findings": [f.as_dict() for f in findings]}
-        _out(json.dumps(doc, indent=1) + "\n")
+        head = json.dumps({"file": a.file, "profile": a.profile}, indent=1)
+        _out(head[:-2] + ',\n "findings": [')  # the same text as json.dumps of the whole document
+        for f in findings:
+            errors += f.severity == "error"
+            _out(("\n" if not total else ",\n") + _json_finding(f.as_dict()))
+            total += 1
+        _out("\n ]\n}\n" if total else "]\n}\n")
     else:
         reason = _not_cbf(data)
         if reason:  # say it first: every finding below follows from it
             _out(f"{a.file}: {reason}; the findings below follow from that\n")
-        shown = findings if a.max_findings == 0 else findings[:a.max_findings]
-        for f in shown:
-            where = f"record {f.record}" if f.record is not None else "header"
-            _out(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
-        if len(shown) < len(findings):
-            _out(f"{a.file}: {len(findings) - len(shown)} more finding(s) not shown "
-                             f"(--max-findings 0 prints all, --json lists all)\n")
-        warnings = len(findings) - errors
+        for f in findings:
+            errors += f.severity == "error"
+            total += 1
+            if a.max_findings == 0 or total <= a.max_findings:
+                where = f"record {f.record}" if f.record is not None else "header"
+                _out(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
+        if a.max_findings and total > a.max_findings:
+            _out(f"{a.file}: {total - a.max_findings} more finding(s) not shown "
+                 f"(--max-findings 0 prints all, --json lists all)\n")
         verdict = "FAIL" if errors else "ok"
-        _out(f"{a.file}: {verdict}: {errors} error(s), {warnings} warning(s) [profile {a.profile}]\n")
+        _out(f"{a.file}: {verdict}: {errors} error(s), {total - errors} warning(s) [profile {a.profile}]\n")
     return EXIT_FINDINGS if errors else EXIT_OK
 
 

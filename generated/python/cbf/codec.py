@@ -5,7 +5,7 @@ from __future__ import annotations
 import struct
 import zlib
 from array import array
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from typing import Any
 
 from . import tables as T
@@ -116,18 +116,19 @@ def checksum(algorithm: str, parts: Iterable[Buffer], width: int) -> int:
     raise ValueError(f"unknown checksum algorithm kind {kind!r}")
 
 
-def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None) -> list[Buffer]:
-    """The byte ranges a coverage feeds, in order."""
+def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None
+                   ) -> Iterator[Buffer]:
+    """The byte ranges a coverage feeds, in order, one at a time (never a list of a slice
+    per record: memory stays bounded for a coverage over every record)."""
     mv = memoryview(buf)
-    parts: list[Buffer] = []
     for seg in T.CHECKSUMS["coverages"][coverage]:
         region = seg["region"]
         if region == "file":
-            parts.append(mv[seg["start"]:])
+            yield mv[seg["start"]:]
         elif region == "header":
-            parts.append(mv[seg["start"]:seg["end"]])
+            yield mv[seg["start"]:seg["end"]]
         elif region == "args":
-            parts.append(args if args is not None else b"")
+            yield args if args is not None else b""
         elif region == "records":
             skip = sorted((T.RECORD_BY_ROLE_NAME[n].offset, T.RECORD_BY_ROLE_NAME[n].size) for n in seg["exclude"])
             hs, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
@@ -135,10 +136,9 @@ def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buf
                 end = off + hs + buf[off + at]
                 cur = off
                 for s_off, s_size in skip:
-                    parts.append(mv[cur:off + s_off])
+                    yield mv[cur:off + s_off]
                     cur = off + s_off + s_size
-                parts.append(mv[cur:end])
-    return parts
+                yield mv[cur:end]
 
 
 def field_checksum(tag: str, buf: Buffer, offsets: Sequence[int], coverage: str | None = None,
