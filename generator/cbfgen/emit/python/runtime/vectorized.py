@@ -69,6 +69,13 @@ def _lazy(check: dict[str, Any], rows: Any, offs: Any, keys: Any, msg: Callable[
         yield Finding(cid, sev, int(rows[k]), int(offs[k]), msg(keys[k]))
 
 
+def _at(off: Any, bad: Any, delta: int) -> Any:
+    """off[bad] + delta without a second temporary array."""
+    out = off[bad]
+    out += delta
+    return out
+
+
 def _const(message: str) -> Callable[[Any], str]:
     return lambda _: message
 
@@ -100,14 +107,20 @@ def records(buf: bytes, offsets: Sequence[int], version: str, profile: str, cutt
     groups: list[Iterator[Finding]] = []  # each sorted in validate's order
     pending: list[Finding] = []  # the findings made one at a time (cutter table, nondecreasing, shapes)
 
+    narrow = np.int32 if len(buf) < 1 << 31 else np.int64  # what a group holds: 4 bytes a row and offset
+
     def add(check: dict[str, Any] | None, rows: Any, offs: Any, keys: Any, msg: Callable[[Any], str]) -> None:
         if check is not None and len(rows):
-            groups.append(_lazy(check, rows, offs, keys, msg))
+            held = np.asarray(rows).astype(narrow)
+            groups.append(_lazy(check, held, np.asarray(offs).astype(narrow), held if keys is rows else keys, msg))
 
     # -- head checks ----------------------------------------------------------
     wrap = T.SEQ_MASK
-    bad = np.nonzero(seq != (np.arange(n, dtype=np.int64) & wrap))[0]
-    add(one("sequence"), bad, off[bad] + F[T.I_SEQ].offset, bad,
+    expected = np.arange(n, dtype=np.int64)
+    expected &= wrap  # in place: the peak of a file of empty records is here
+    bad = np.nonzero(seq != expected)[0]
+    del expected
+    add(one("sequence"), bad, _at(off, bad, F[T.I_SEQ].offset), bad,
         lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
     bad = np.nonzero(res != 0)[0]
     add(one("reserved_byte"), bad, off[bad] + F[T.I_RES].offset, bad, lambda i: f"reserved byte is 0x{res[i]:02X}")
@@ -125,7 +138,8 @@ def records(buf: bytes, offsets: Sequence[int], version: str, profile: str, cutt
         last = a.shape[0] - 1
         for k in range(int(nb.max())):
             sums += np.where(nb > k, a[np.minimum(starts + k, last)], 0)
-        want = sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)
+        want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
+        del sums, starts
     else:
         want = np.array([V._field_sum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
                          for o, s in zip(offsets, nb, strict=True)], dtype=np.int64)
@@ -137,7 +151,7 @@ def records(buf: bytes, offsets: Sequence[int], version: str, profile: str, cutt
     known, avail, size_ok, lay_of, lays = _tables(version, profile)
     code_off = F[T.I_CODE].offset
     bad = np.nonzero(~known[code])[0]
-    add(one("unknown_code"), bad, off[bad] + code_off, bad, lambda i: f"unknown command code 0x{code[i]:02X}")
+    add(one("unknown_code"), bad, _at(off, bad, code_off), bad, lambda i: f"unknown command code 0x{code[i]:02X}")
     avail_check = {v: c for c in T.checks_of("availability") for v in c["versions"]}.get(version)
     bad = np.nonzero(known[code] & ~avail[code])[0]
     add(avail_check, bad, off[bad] + code_off, bad,
