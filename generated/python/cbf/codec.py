@@ -235,6 +235,8 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
                 raise EncodeError(f"record {i}: {cmd.name} is not available in version {vid}")
             if cmd.layout_for_size(vid or "", len(raw)) is None:
                 raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
+            raw = _profile_layout(cmd, vid or "", profile, raw, i)
+            chk = arg_checksum(raw)
         head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
         head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk
         try:
@@ -256,6 +258,26 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
             where = f"record {e.record}" if e.record is not None else "file"
             raise EncodeError(f"{where}: the result would fail check {e.check}: {e.message}", offset=e.offset)
     return bytes(out)
+
+
+def _profile_layout(cmd: T.CommandInfo, version: str, profile: str, raw: bytes, i: int) -> bytes:
+    """The arguments as the profile's writers write them. A command with a layout of its own
+    under ``profile`` (implib's 16-byte VERSION, N8) is written in that layout: the arguments of
+    a longer layout that starts with the same fields are cut to it when the fields cut off are
+    reserved and zero, and refused otherwise (the profile's reader could not read them)."""
+    own = [lay for lay in cmd.layouts_for(version) if profile in lay.profiles]
+    have = cmd.layout_for_size(version, len(raw))
+    if not own or have is None or have in own:
+        return raw
+    lay = own[0]
+    cut = raw[lay.size:]
+    same = (len(lay.args) <= len(have.args) and lay.size <= have.size
+            and all(a == b for a, b in zip(lay.args, have.args, strict=False)))
+    if same and all(f.reserved for f in have.args[len(lay.args):]) and not any(cut):
+        return raw[:lay.size]
+    why = "its bytes past them are not zero" if same else "they do not start this layout"
+    raise EncodeError(f"record {i}: {cmd.name} of {len(raw)} bytes: the {profile} profile writes its "
+                      f"{lay.size}-byte layout, and {why}; {profile}'s reader cannot read it")
 
 
 def _put(out: bytearray, f: T.FieldInfo, value: int) -> None:

@@ -161,6 +161,7 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
         _records(out, buf, offsets, version, profile, cutters)
     if part_number is not None:
         _part_number(out, info, header, part_number)
+    _descriptor_word(out, info, header)
     return iter(heapq.merge(sorted(out.findings, key=finding_order), stream, key=finding_order))
 
 
@@ -212,6 +213,13 @@ def _part_number(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any], part_
     if first != part_number:
         out.add(_one("part_number"), None, f.offset,
                 f"implant descriptor starts with {first!r}, expected {part_number!r}")
+
+
+def _descriptor_word(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any]) -> None:
+    """4.2: the implant descriptor begins with the part number, so it holds a word."""
+    f = info.by_role("implant_descriptor")
+    if f is not None and not _value_of_string(header[f.name]).decode("latin-1").split():
+        out.add(_one("descriptor_word"), None, f.offset, "implant descriptor holds no word: no part number comes first")
 
 
 def _vec_sub(a: tuple[float, ...], b: tuple[float, ...]) -> tuple[float, ...]:
