@@ -35,7 +35,13 @@ PROGRAM = r"""
 #include <string.h>
 
 static int errors;
-static void on(void *u, const cbf_finding *f) { (void)u; printf("%s %d\n", f->check, f->severity); errors++; }
+/* errors only: a header from cbf_header_init has no part number, a warning (check 4.2) */
+static void on(void *u, const cbf_finding *f)
+{
+    (void)u;
+    printf("%s %d\n", f->check, f->severity);
+    errors += f->severity == CBF_SEVERITY_ERROR;
+}
 
 int main(void)
 {
@@ -138,7 +144,8 @@ CRC_PROGRAM = r"""
 #include <string.h>
 
 static long findings;
-static void on(void *u, const cbf_finding *f) { (void)u; (void)f; findings++; }
+/* errors only: a header from cbf_header_init has no part number, a warning (check 4.2) */
+static void on(void *u, const cbf_finding *f) { (void)u; findings += f->severity == CBF_SEVERITY_ERROR; }
 
 int main(void)
 {

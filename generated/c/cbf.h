@@ -146,6 +146,7 @@ enum cbf_header_layout {
 #define CBF_CHECK_4_2 "4.2" /**< error: The file header is 128 bytes long. */
 #define CBF_CHECK_4_3 "4.3" /**< error: The cutting data consists of variable length records. */
 #define CBF_CHECK_6_1_1 "6.1.1" /**< error: The first word in the Implant Descriptor field in the file header should be the implant part number. */
+#define CBF_CHECK_PART_NUMBER_FIRST "part_number_first" /**< warning: The implant descriptor begins with the implant part number (4.2; 6.1.1 compares it when one is given). */
 #define CBF_CHECK_6_1_2 "6.1.2" /**< error: The length and radius of every cutter (specified by the CUTTER command) should agree, within 0.01 millimeters, with the values specified in the robot's cutter database. */
 #define CBF_CHECK_6_2_1 "6.2.1" /**< error: The checksum of the entire file should match the value specified in the file header. */
 #define CBF_CHECK_6_2_2 "6.2.2" /**< error: The number of commands in the file should match the value specified in the file header. */
@@ -174,7 +175,7 @@ enum cbf_header_layout {
 #define CBF_CHECK_FCPARMS_ORDER "fcparms_order" /**< warning: FCPARMS speeds satisfy min <= nom <= max. */
 #define CBF_CHECK_ORIENTATION_JUMP "orientation_jump" /**< warning: A 5-axis command starts at the current tool orientation. */
 #define CBF_CHECK_SHAPE "shape" /**< error: STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion commands; shapes do not nest. */
-#define CBF_CHECK__COUNT 31
+#define CBF_CHECK__COUNT 32
 
 /* =================================================================== lengths */
 
@@ -1075,6 +1076,7 @@ enum {
     CBF__KIND_TRUNCATED_HEADER,
     CBF__KIND_TRUNCATED_RECORD,
     CBF__KIND_PART_NUMBER,
+    CBF__KIND_DESCRIPTOR_WORD,
     CBF__KIND_CUTTER_TABLE,
     CBF__KIND_FILE_CHECKSUM,
     CBF__KIND_COMMAND_COUNT,
@@ -1113,7 +1115,7 @@ enum {
 #define CBF__PAD 0u
 #define CBF__NVERSIONS 4
 #define CBF__NCOMMANDS 27
-#define CBF__NCHECKS 31
+#define CBF__NCHECKS 32
 #define CBF__NTARGETS 10
 #define CBF__MAX_CANDIDATES 2
 #define CBF__MAX_COVERAGES 1
@@ -1453,28 +1455,28 @@ static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
     { -1, -1, -1, -1 }, /* CUTTER */
     { -1, -1, -1, -1 }, /* ORIENT */
     { -1, -1, -1, -1 }, /* ORIENT5B */
-    { 14, -1, -1, -1 }, /* PHASE */
+    { 15, -1, -1, -1 }, /* PHASE */
     { -1, -1, -1, -1 }, /* ENABLE_SKIP */
     { -1, -1, -1, -1 }, /* STARTSHAPE */
     { -1, -1, -1, -1 }, /* ENDSHAPE */
-    { 14, -1, -1, -1 }, /* DECEL_OFF */
-    { 14, -1, -1, -1 }, /* DECEL_ON */
+    { 15, -1, -1, -1 }, /* DECEL_OFF */
+    { 15, -1, -1, -1 }, /* DECEL_ON */
     { -1, -1, -1, -1 }, /* POINT */
     { -1, -1, -1, -1 }, /* LINE */
     { -1, -1, -1, -1 }, /* LINE5B */
-    { -1, -1, -1, 13 }, /* ARC */
-    { -1, -1, -1, 13 }, /* ARC5B */
-    { -1, -1, -1, 13 }, /* CIRCLE */
-    { -1, -1, -1, 13 }, /* CIRCLE5B */
-    { 14, -1, -1, 13 }, /* HELIX */
-    { -1, -1, -1, 13 }, /* HELIX5B */
+    { -1, -1, -1, 14 }, /* ARC */
+    { -1, -1, -1, 14 }, /* ARC5B */
+    { -1, -1, -1, 14 }, /* CIRCLE */
+    { -1, -1, -1, 14 }, /* CIRCLE5B */
+    { 15, -1, -1, 14 }, /* HELIX */
+    { -1, -1, -1, 14 }, /* HELIX5B */
     { -1, -1, -1, -1 }, /* SPEED */
     { -1, -1, -1, -1 }, /* ACCEL */
     { -1, -1, -1, -1 }, /* CUTTER_ON */
     { -1, -1, -1, -1 }, /* CUTTER_OFF */
     { -1, -1, -1, -1 }, /* GUIDE */
-    { 14, -1, -1, -1 }, /* FCPARMS */
-    { 14, -1, -1, -1 }, /* VERSION */
+    { 15, -1, -1, -1 }, /* FCPARMS */
+    { 15, -1, -1, -1 }, /* VERSION */
     { -1, -1, -1, -1 }, /* COMMENT */
 };
 
@@ -1494,16 +1496,16 @@ static const cbf__target cbf__targets[10] = {
 /* The (check, target) pairs of each command, grouped by command in check order. */
 typedef struct cbf__ctarget { int check; size_t target; } cbf__ctarget;
 static const cbf__ctarget cbf__ctargets[10] = {
-    { 26, 7 }, /* checkpoint_range: CHECKPOINT completion */
-    { 27, 8 }, /* checkpoint_falling: CHECKPOINT completion */
-    { 24, 2 }, /* cutter_positive: CUTTER length radius */
-    { 25, 3 }, /* normal_nonzero: CIRCLE normal */
-    { 25, 4 }, /* normal_nonzero: CIRCLE5B normal */
-    { 25, 5 }, /* normal_nonzero: HELIX normal */
-    { 25, 6 }, /* normal_nonzero: HELIX5B normal */
-    { 22, 0 }, /* speed_positive: SPEED speed */
-    { 23, 1 }, /* accel_positive: ACCEL accel decel */
-    { 28, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
+    { 27, 7 }, /* checkpoint_range: CHECKPOINT completion */
+    { 28, 8 }, /* checkpoint_falling: CHECKPOINT completion */
+    { 25, 2 }, /* cutter_positive: CUTTER length radius */
+    { 26, 3 }, /* normal_nonzero: CIRCLE normal */
+    { 26, 4 }, /* normal_nonzero: CIRCLE5B normal */
+    { 26, 5 }, /* normal_nonzero: HELIX normal */
+    { 26, 6 }, /* normal_nonzero: HELIX5B normal */
+    { 23, 0 }, /* speed_positive: SPEED speed */
+    { 24, 1 }, /* accel_positive: ACCEL accel decel */
+    { 29, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
 };
 /* The targets' arguments (cbf__target.first, n index these rows): each one's index in
  * every layout, -1 where the layout has no argument of that name. */
@@ -1541,6 +1543,8 @@ static const cbf__check cbf__checks[CBF__NCHECKS] = {
     { CBF_CHECK_4_3, CBF__KIND_TRUNCATED_RECORD, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
     /* 6.1.1 (clause 6.1.1): A part number is given and differs from the first whitespace-separated word of the implant descriptor. */
     { CBF_CHECK_6_1_1, CBF__KIND_PART_NUMBER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    /* part_number_first (clause 4.2): The implant descriptor holds no word: it is empty or only whitespace (a CUT text without a header line), so no part number comes first. implib's reader fails on such a file. A warning: the file is still well formed. */
+    { CBF_CHECK_PART_NUMBER_FIRST, CBF__KIND_DESCRIPTOR_WORD, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
     /* 6.1.2 (clause 6.1.2): A cutter table is given, and a cutter's name is not in it, or its length or radius differs from the table by more than tolerances.cutter_mm. */
     { CBF_CHECK_6_1_2, CBF__KIND_CUTTER_TABLE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
     /* 6.2.1 (clause 6.2.1): The stored file checksum matches none of the profile's file coverages. The message names a hint coverage that matches. */
@@ -3358,6 +3362,22 @@ static void cbf__check_part_number(cbf__vctx *v)
                   "implant descriptor's first word is not the part number %.64s", v->opt->part_number);
 }
 
+/* 4.2: the implant descriptor begins with the part number, so it holds at least one word. */
+static void cbf__check_descriptor_word(cbf__vctx *v)
+{
+    const cbf_field_info *f = cbf__header_field_by_role(v->hlayout, CBF_ROLE_IMPLANT_DESCRIPTOR);
+    const uint8_t *s;
+    size_t n, a;
+    if (!f)
+        return;
+    s = v->buf + f->offset;
+    n = cbf__strvalue_len(s, (size_t)f->elem * f->count);
+    for (a = 0; a < n && cbf__space(s[a]); a++) {}
+    if (a == n)
+        cbf__each(v, CBF__KIND_DESCRIPTOR_WORD, -1, f->offset,
+                  "implant descriptor holds no word: no part number comes first");
+}
+
 static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 /* A float vector (3) or scalar argument as double: 1 when finite, -1 when not, 0 when the
@@ -3714,6 +3734,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         }
     }
     cbf__check_part_number(&v);
+    cbf__check_descriptor_word(&v);
 
     /* records, framed by nb from the header to the end of the file (D1) */
     pos = CBF_HEADER_SIZE;

@@ -15,13 +15,14 @@ doc: 'The CBF file provides the toolpath information for cutting implant cavitie
   format, the CUT file (1.2). Generated from spec/cbf.yaml; do not edit. Kaitai checks here the magic numbers, the code copy,
   the argument size per command and version, and version gating. It cannot check: 4.2 (The file header is 128 bytes long.);
   4.3 (The cutting data consists of variable length records.); 6.1.1 (The first word in the Implant Descriptor field in the
-  file header should be the implant part number.); 6.1.2 (The length and radius of every cutter (specified by the CUTTER command)
-  should agree, within 0.01 millimeters, with the values specified in the robot''s cutter database.); 6.2.1 (The checksum
-  of the entire file should match the value specified in the file header.); 6.2.2 (The number of commands in the file should
-  match the value specified in the file header.); 6.3.1 (The checksum of the file header should match the specified value.);
-  6.4.1 (The sequence number should be one greater than the previous sequence number (first record should have sequence number
-  0).); 6.4.4 (The checksum of the command argument bytes should match the specified value.); 6.4.5 (The starting point of
-  a motion command (e.g., LINE, ARC, CIRCLE, etc.) should match the ending point of the previous motion command.); version_supported
+  file header should be the implant part number.); part_number_first (The implant descriptor begins with the implant part
+  number (4.2; 6.1.1 compares it when one is given).); 6.1.2 (The length and radius of every cutter (specified by the CUTTER
+  command) should agree, within 0.01 millimeters, with the values specified in the robot''s cutter database.); 6.2.1 (The
+  checksum of the entire file should match the value specified in the file header.); 6.2.2 (The number of commands in the
+  file should match the value specified in the file header.); 6.3.1 (The checksum of the file header should match the specified
+  value.); 6.4.1 (The sequence number should be one greater than the previous sequence number (first record should have sequence
+  number 0).); 6.4.4 (The checksum of the command argument bytes should match the specified value.); 6.4.5 (The starting point
+  of a motion command (e.g., LINE, ARC, CIRCLE, etc.) should match the ending point of the previous motion command.); version_supported
   (The processing software can read the version number and adjust the parsing logic appropriately.); unknown_command (An unknown
   command code is an error; its record is kept whole.); trailing_bytes (No byte follows the last record.); reserved_nonzero
   (The record''s reserved byte should be 0.); string_tail (A string ends at its first NUL; the bytes after it are padding.);

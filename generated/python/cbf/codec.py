@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import struct
 from array import array
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from typing import Any
 
 from . import tables as T
@@ -105,18 +105,19 @@ def file_algorithm(profile: str) -> str:
     return str(T.PROFILES[profile].get("file_algorithm") or T.CHECKSUMS["fields"]["file"]["algorithm"])
 
 
-def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None) -> list[Buffer]:
-    """The byte ranges a coverage feeds, in order."""
+def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None
+                   ) -> Iterator[Buffer]:
+    """The byte ranges a coverage feeds, in order, one at a time (never a list of a slice
+    per record: memory stays bounded for a coverage over every record)."""
     mv = memoryview(buf)
-    parts: list[Buffer] = []
     for seg in T.CHECKSUMS["coverages"][coverage]:
         region = seg["region"]
         if region == "file":
-            parts.append(mv[seg["start"]:])
+            yield mv[seg["start"]:]
         elif region == "header":
-            parts.append(mv[seg["start"]:seg["end"]])
+            yield mv[seg["start"]:seg["end"]]
         elif region == "args":
-            parts.append(args if args is not None else b"")
+            yield args if args is not None else b""
         elif region == "records":
             skip = sorted((T.RECORD_BY_ROLE_NAME[n].offset, T.RECORD_BY_ROLE_NAME[n].size) for n in seg["exclude"])
             hs, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
@@ -124,10 +125,9 @@ def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buf
                 end = off + hs + buf[off + at]
                 cur = off
                 for s_off, s_size in skip:
-                    parts.append(mv[cur:off + s_off])
+                    yield mv[cur:off + s_off]
                     cur = off + s_off + s_size
-                parts.append(mv[cur:end])
-    return parts
+                yield mv[cur:end]
 
 
 def field_checksum(tag: str, buf: Buffer, offsets: Sequence[int], coverage: str | None = None,
@@ -248,6 +248,8 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
             if lay is None:
                 raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
             _check_strings(lay.args, bytes(raw), len(out) + T.HEAD_SIZE, f"record {i}: {cmd.name}")
+            raw = _profile_layout(cmd, vid or "", profile, raw, i)
+            chk = arg_checksum(raw)
         head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
         head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk
         try:
@@ -269,6 +271,26 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
             where = f"record {e.record}" if e.record is not None else "file"
             raise EncodeError(f"{where}: the result would fail check {e.check}: {e.message}", offset=e.offset)
     return bytes(out)
+
+
+def _profile_layout(cmd: T.CommandInfo, version: str, profile: str, raw: bytes, i: int) -> bytes:
+    """The arguments as the profile's writers write them. A command with a layout of its own
+    under ``profile`` (implib's 16-byte VERSION, N8) is written in that layout: the arguments of
+    a longer layout that starts with the same fields are cut to it when the fields cut off are
+    reserved and zero, and refused otherwise (the profile's reader could not read them)."""
+    own = [lay for lay in cmd.layouts_for(version) if profile in lay.profiles]
+    have = cmd.layout_for_size(version, len(raw))
+    if not own or have is None or have in own:
+        return raw
+    lay = own[0]
+    cut = raw[lay.size:]
+    same = (len(lay.args) <= len(have.args) and lay.size <= have.size
+            and all(a == b for a, b in zip(lay.args, have.args, strict=False)))
+    if same and all(f.reserved for f in have.args[len(lay.args):]) and not any(cut):
+        return raw[:lay.size]
+    why = "its bytes past them are not zero" if same else "they do not start this layout"
+    raise EncodeError(f"record {i}: {cmd.name} of {len(raw)} bytes: the {profile} profile writes its "
+                      f"{lay.size}-byte layout, and {why}; {profile}'s reader cannot read it")
 
 
 def _put(out: bytearray, f: T.FieldInfo, value: int) -> None:

@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 import struct
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
@@ -144,6 +145,18 @@ def _ascii(size: int, *, spaces: bool, min_size: int = 0) -> st.SearchStrategy[s
     return st.binary(min_size=min_size, max_size=size).map(lambda raw: "".join(chr(lo + b % span) for b in raw))
 
 
+@functools.lru_cache(maxsize=256)
+def _word(size: int, profile: str, arg: str) -> st.SearchStrategy[str]:
+    """A one-word string; a name the profile's CUT reader reads whole when the spec limits it
+    (cut.profile_words: implib reads \\w+), so that the file's CUT text under that profile exists."""
+    rule = T.CUT.get("profile_words", {}).get(profile)
+    if rule is None or arg not in rule["args"]:
+        return _ascii(size, spaces=False)
+    pattern = rule["pattern"]
+    return st.from_regex(pattern, fullmatch=True).map(lambda w: w[:size]).filter(
+        lambda w: re.fullmatch(pattern, w) is not None)
+
+
 def _pick(draw: st.DrawFn, items: Sequence[_T]) -> _T:
     """One of ``items`` (by index: cheaper than sampled_from over spec objects)."""
     return items[draw(st.integers(0, len(items) - 1))]
@@ -196,6 +209,8 @@ class _Draw:
         if f.kind == "bytes":
             return bytes(f.size)  # reserved bytes are zero
         if f.kind == "string":
+            if not f.text:
+                return draw(_word(f.size, self.profile, f.name)).encode("ascii")
             return draw(_ascii(f.size, spaces=f.text)).encode("ascii")
         if f.kind == "uint":
             ulim = self.rules.limits.get((cmd.name, f.name))
@@ -306,7 +321,8 @@ def _pool(version: str, profile: str) -> list[tuple[T.CommandInfo, T.LayoutInfo]
     """Every (command, layout) a file of this version may hold under this profile."""
     out = []
     for cmd in T.COMMANDS:
-        for lay in cmd.layouts_for(version):
+        own = [lay for lay in cmd.layouts_for(version) if profile in lay.profiles]
+        for lay in own or cmd.layouts_for(version):  # the profile's writers write its own layout (N8)
             if lay.accepted_under(profile) and cmd.layout_for_size(version, lay.size) is lay:
                 out.append((cmd, lay))
     return out
@@ -323,7 +339,10 @@ def _header(draw: st.DrawFn, version: T.VersionInfo, part_number: str | None) ->
             rest = draw(_ascii(max(0, f.size - len(part_number) - 1), spaces=True))
             values[f.name] = f"{part_number} {rest}".rstrip(" ") if rest.strip() else part_number
         else:
-            values[f.name] = draw(_ascii(f.size, spaces=True))
+            value = draw(_ascii(f.size, spaces=True))
+            if f.role == "implant_descriptor" and T.checks_of("descriptor_word") and not value.split():
+                value = ("P" + value)[:f.size]  # a word comes first (4.2), else the file has a finding
+            values[f.name] = value
     return new_header(f"{version.major}.{minor}", **values)
 
 
@@ -412,7 +431,7 @@ def _shape(draw: st.DrawFn, d: _Draw, plain: list[tuple[T.CommandInfo, T.LayoutI
     moves = sum(1 for c, _ in inner if c.motion is not None)
     if moves > (1 << (8 * count_field.elem_size)) - 1:
         inner, moves = [], 0
-    name = draw(_ascii(min(name_field.size, end_name.size), spaces=False)).encode("ascii")
+    name = draw(_word(min(name_field.size, end_name.size), d.profile, name_field.name)).encode("ascii")
     fixed = {sh_s["name"]: name, sh_s["count"]: moves}
     out = [Record(code=scmd.code, raw_args=d.args(scmd, slay, fixed))]
     out.extend(Record(code=c.code, raw_args=d.args(c, lay)) for c, lay in inner)

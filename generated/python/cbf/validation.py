@@ -7,8 +7,9 @@ spec/cbf.yaml and conformance/PROTOCOL.md.
 
 from __future__ import annotations
 
+import heapq
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -84,6 +85,13 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
 
     ``engine``: "auto" (numpy for big files), "python" or "numpy"; all give the same findings.
     """
+    return list(iter_findings(data, profile=profile, part_number=part_number, cutters=cutters, engine=engine))
+
+
+def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: str | None = None,
+                  cutters: Cutters | None = None, engine: str = "auto") -> Iterator[Finding]:
+    """validate's findings, in its order, made one at a time as they are read: memory stays
+    bounded however many findings a file gives (the checks run now; bad arguments raise now)."""
     framing: tuple[Sequence[int], int] | None = None
     if isinstance(data, Cbf):
         reuse = _decoded_source(data)
@@ -100,7 +108,7 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
     n = len(buf)
     if n < T.HEADER_SIZE:
         out.add(_one("truncated_header"), None, 0, f"file is {n} bytes, the header needs {T.HEADER_SIZE}")
-        return out.findings
+        return iter(out.findings)
     if engine not in ("auto", "python", "numpy"):
         raise ValueError(f"unknown engine {engine!r}")
     vid, info = header_info(buf)
@@ -154,15 +162,17 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
                     msg += f"; it matches coverage {cov} (use profile {owner})"
             out.add(_one("file_checksum"), None, fsum.offset, msg)
 
+    stream: Iterator[Finding] = iter(())
     if engine == "numpy" or (engine == "auto" and len(offsets) >= VECTOR_MIN_RECORDS):
         from .vectorized import records
 
-        records(out, buf, offsets, version, profile, cutters)
+        stream = records(buf, offsets, version, profile, cutters)
     else:
         _records(out, buf, offsets, version, profile, cutters)
     if part_number is not None:
         _part_number(out, info, header, part_number)
-    return sorted(out.findings, key=_order)
+    _descriptor_word(out, info, header)
+    return iter(heapq.merge(sorted(out.findings, key=finding_order), stream, key=finding_order))
 
 
 # Files with at least this many records are checked by the numpy engine
@@ -171,7 +181,7 @@ VECTOR_MIN_RECORDS = 2000
 _CHECK_ORDER = {c["id"]: i for i, c in enumerate(T.CHECKS)}
 
 
-def _order(f: Finding) -> tuple[int, int, int, str]:
+def finding_order(f: Finding) -> tuple[int, int, int, str]:
     """One order for both engines: header first, then by record, spec check order, offset."""
     return (-1 if f.record is None else f.record, _CHECK_ORDER.get(f.check, 0), f.offset or 0, f.message)
 
@@ -211,6 +221,13 @@ def _part_number(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any], part_
     if first != part_number:
         out.add(_one("part_number"), None, f.offset,
                 f"implant descriptor starts with {first!r}, expected {part_number!r}")
+
+
+def _descriptor_word(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any]) -> None:
+    """4.2: the implant descriptor begins with the part number, so it holds a word."""
+    f = info.by_role("implant_descriptor")
+    if f is not None and not _value_of_string(header[f.name]).decode("latin-1").split():
+        out.add(_one("descriptor_word"), None, f.offset, "implant descriptor holds no word: no part number comes first")
 
 
 def _vec_sub(a: tuple[float, ...], b: tuple[float, ...]) -> tuple[float, ...]:

@@ -45,7 +45,8 @@ REGIONS = ("file", "header", "records", "args")
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in the template's checksum section
 CHECKSUM_TAGS = ("args", "header", "file")
 CHECK_KINDS = (
-    "truncated_header", "truncated_record", "part_number", "cutter_table", "file_checksum", "command_count",
+    "truncated_header", "truncated_record", "part_number", "descriptor_word", "cutter_table", "file_checksum",
+    "command_count",
     "header_checksum", "magic", "sequence", "code_copy", "arg_size", "arg_checksum", "continuity", "availability",
     "version", "unknown_code", "trailing", "reserved_byte", "string_tail", "string_ascii", "finite", "positive",
     "nonzero_vector", "range", "nondecreasing", "ordered", "orientation", "shape",

@@ -7,7 +7,11 @@ are refused before they are read. Outputs are written atomically: the bytes
 go, in chunks through ``os.write``, to an unnamed temporary file in the target
 folder (O_TMPFILE; a named one where that is missing) that is linked and
 renamed over the target only when complete, so a killed ``cbf`` leaves the
-target as it was.
+target as it was. An output that is a symlink is written through: the temporary
+file goes beside the link's final target and replaces that, the link stays a
+link. A character device or FIFO is written into, never replaced (a block device
+or socket is refused). A standard output that cannot be written (a full disk,
+/dev/full) is one line on stderr and exit 2, for every command.
 """
 
 from __future__ import annotations
@@ -31,6 +35,14 @@ class _Fail(Exception):
     def __init__(self, message: str) -> None:
         super().__init__(message)
         self.message = message
+
+
+class _StdoutFailed(Exception):
+    """Standard output cannot be written (full disk, /dev/full): a usage-level failure (exit 2)."""
+
+    def __init__(self, exc: OSError) -> None:
+        super().__init__(exc.strerror)
+        self.message = f"standard output: cannot write ({exc.strerror or exc})"
 
 
 def _max_file_size() -> int:
@@ -125,30 +137,56 @@ def _decode_chunks(path: str, fh: Any, limit: int) -> str:
             return "".join(parts)
 
 
+def _output_target(path: str) -> tuple[Path, os.stat_result | None]:
+    """Where ``-o path`` writes: a symlink is followed to its final target (the link stays a
+    link), with that target's status, or None when it does not exist yet."""
+    target = Path(os.path.realpath(path))
+    try:
+        return target, os.stat(target)
+    except FileNotFoundError:
+        return target, None
+    except OSError as exc:
+        raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
+
+
 def _check_output(path: str) -> None:
     """Refuse an output path that cannot be written, before doing the work."""
     if path == "-":
         return
-    target = Path(path)
-    if not target.parent.is_dir():
-        raise _Fail(f"{path}: folder {str(target.parent)!r} does not exist")
-    if target.is_dir():
+    target, st = _output_target(path)
+    if st is None:
+        if not target.parent.is_dir():
+            raise _Fail(f"{path}: folder {str(target.parent)!r} does not exist")
+        return
+    if stat.S_ISDIR(st.st_mode):
         raise _Fail(f"{path}: is a directory")
+    if not (stat.S_ISREG(st.st_mode) or stat.S_ISCHR(st.st_mode) or stat.S_ISFIFO(st.st_mode)):
+        kind = "a block device" if stat.S_ISBLK(st.st_mode) else "a socket" if stat.S_ISSOCK(st.st_mode) else \
+            "not a regular file"
+        raise _Fail(f"{path}: is {kind}; cbf writes regular files, character devices and FIFOs only")
 
 
-def _write_all(fd: int, data: bytes) -> None:
+def _write_all(fd: int, data: bytes, sync: bool = True) -> None:
     view = memoryview(data)
     while view:
         n = os.write(fd, view[:_CHUNK])
         view = view[n:]
-    os.fsync(fd)
+    if sync:
+        os.fsync(fd)
 
 
 def _temp_name(target: Path) -> Path:
     return target.parent / f".{target.name}.{secrets.token_hex(6)}.tmp"
 
 
-def _write_unnamed(target: Path, data: bytes) -> bool:
+def _ordinary_mode() -> int:
+    """The mode of an ordinary new file (0666 under the umask)."""
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def _write_unnamed(target: Path, data: bytes, mode: int) -> bool:
     """Write into an unnamed file (O_TMPFILE), then link it beside the target and rename
     it over the target. False when the system offers no unnamed files or cannot link
     them (nothing was made)."""
@@ -156,11 +194,12 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
     if not flag or not Path("/proc/self/fd").is_dir():
         return False
     try:
-        fd = os.open(target.parent, flag | os.O_WRONLY, 0o666)
+        fd = os.open(target.parent, flag | os.O_WRONLY, 0o600)
     except OSError:
         return False
     tmp = _temp_name(target)
     try:
+        os.fchmod(fd, mode)
         _write_all(fd, data)
         dir_fd = os.open(target.parent, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
         try:
@@ -180,12 +219,10 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
     return True
 
 
-def _write_named(target: Path, data: bytes) -> None:
+def _write_named(target: Path, data: bytes, mode: int) -> None:
     fd, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
     try:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.fchmod(fd, 0o666 & ~umask)  # as an ordinary new file (mkstemp makes 0600)
+        os.fchmod(fd, mode)  # mkstemp makes 0600
         try:
             _write_all(fd, data)
         finally:
@@ -196,16 +233,46 @@ def _write_named(target: Path, data: bytes) -> None:
         raise
 
 
-def _write(path: str, data: bytes) -> None:
-    if path == "-":
+def _out(text: str) -> None:
+    """Print to stdout; a stdout that cannot be written is one line on stderr and exit 2."""
+    try:
+        sys.stdout.write(text)
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        raise _StdoutFailed(exc) from None
+
+
+def _write_stdout(data: bytes) -> None:
+    try:
         sys.stdout.buffer.write(data)
         sys.stdout.buffer.flush()
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        raise _StdoutFailed(exc) from None
+
+
+def _write(path: str, data: bytes) -> None:
+    """Write ``data`` to ``path``: atomically to a regular file (a temporary file beside the
+    final target of any symlink, renamed over that target), straight into a character
+    device or FIFO (which is never replaced)."""
+    if path == "-":
+        _write_stdout(data)
         return
-    target = Path(path)
     _check_output(path)
+    target, st = _output_target(path)
     try:
-        if not _write_unnamed(target, data):
-            _write_named(target, data)
+        if st is not None and not stat.S_ISREG(st.st_mode):  # a device or FIFO: _check_output allowed it
+            fd = os.open(target, os.O_WRONLY | getattr(os, "O_NOCTTY", 0))
+            try:
+                _write_all(fd, data, sync=False)
+            finally:
+                os.close(fd)
+            return
+        mode = _ordinary_mode()
+        if not _write_unnamed(target, data, mode):
+            _write_named(target, data, mode)
     except OSError as exc:
         raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
 
@@ -318,8 +385,19 @@ def _refuse_not_cbf(path: str, data: bytes) -> None:
         raise _Fail(f"{path}: {reason}")
 
 
+def _json_finding(d: dict[str, Any]) -> str:
+    """One finding (a flat object) as json.dumps(..., indent=1) writes it inside the document,
+    without its slow pure-Python indenting encoder (millions of findings are possible)."""
+    from json.encoder import encode_basestring_ascii as quote  # what json.dumps uses for str
+
+    body = ",\n".join(f"   {quote(k)}: " + ("null" if v is None else quote(v) if isinstance(v, str)
+                                             else str(v) if type(v) is int else json.dumps(v))
+                      for k, v in d.items())
+    return "  {\n" + body + "\n  }"
+
+
 def cmd_validate(a: argparse.Namespace) -> int:
-    from .validation import validate
+    from .validation import iter_findings
 
     data = _read(a.file, _max_file_size())
     _refuse_not_cbf(a.file, data)
@@ -332,22 +410,29 @@ def cmd_validate(a: argparse.Namespace) -> int:
             cutters = load_cutter_table(a.cutters)
         except CbfError as exc:
             raise _Fail(exc.message) from None  # names the table and its line already
-    findings = validate(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
-    errors = sum(1 for f in findings if f.severity == "error")
+    # Findings are printed as they are made, never all held: a file can give millions.
+    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
+    errors = total = 0
     if a.json:
-        doc = {"file": a.file, "profile": a.profile, "findings": [f.as_dict() for f in findings]}
-        sys.stdout.write(json.dumps(doc, indent=1) + "\n")
+        head = json.dumps({"file": a.file, "profile": a.profile}, indent=1)
+        _out(head[:-2] + ',\n "findings": [')  # the same text as json.dumps of the whole document
+        for f in findings:
+            errors += f.severity == "error"
+            _out(("\n" if not total else ",\n") + _json_finding(f.as_dict()))
+            total += 1
+        _out("\n ]\n}\n" if total else "]\n}\n")
     else:
-        shown = findings if a.max_findings == 0 else findings[:a.max_findings]
-        for f in shown:
-            where = f"record {f.record}" if f.record is not None else "header"
-            sys.stdout.write(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
-        if len(shown) < len(findings):
-            sys.stdout.write(f"{a.file}: {len(findings) - len(shown)} more finding(s) not shown "
-                             f"(--max-findings 0 prints all, --json lists all)\n")
-        warnings = len(findings) - errors
+        for f in findings:
+            errors += f.severity == "error"
+            total += 1
+            if a.max_findings == 0 or total <= a.max_findings:
+                where = f"record {f.record}" if f.record is not None else "header"
+                _out(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
+        if a.max_findings and total > a.max_findings:
+            _out(f"{a.file}: {total - a.max_findings} more finding(s) not shown "
+                 f"(--max-findings 0 prints all, --json lists all)\n")
         verdict = "FAIL" if errors else "ok"
-        sys.stdout.write(f"{a.file}: {verdict}: {errors} error(s), {warnings} warning(s) [profile {a.profile}]\n")
+        _out(f"{a.file}: {verdict}: {errors} error(s), {total - errors} warning(s) [profile {a.profile}]\n")
     return EXIT_FINDINGS if errors else EXIT_OK
 
 
@@ -373,11 +458,18 @@ def cmd_info(a: argparse.Namespace) -> int:
         out.append(f"  {name}: {n}")
     if model.trailing:
         out.append(f"trailing bytes: {len(model.trailing)}")
-    sys.stdout.write("\n".join(out) + "\n")
+    _out("\n".join(out) + "\n")
     return EXIT_OK
 
 
 class _Parser(argparse.ArgumentParser):
+    def print_help(self, file: Any = None) -> None:
+        # argparse ignores a failed write; --help into a full stdout must not (exit 2)
+        if file is None or file is sys.stdout:
+            _out(self.format_help())
+        else:
+            super().print_help(file)
+
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
         sys.stderr.write(f"{self.prog}: {' '.join(message.split())} (see {self.prog} --help)\n")
@@ -390,6 +482,23 @@ def _count(text: str) -> int:
     return int(text)
 
 
+class _Version(argparse.Action):
+    def __init__(self, option_strings: Sequence[str], dest: str, help: str | None = None) -> None:
+        super().__init__(option_strings, dest, nargs=0, help=help)
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace, values: Any,
+                 option_string: str | None = None) -> None:
+        _out(version_text() + "\n")  # not argparse's "version" action: it ignores a failed write
+        parser.exit(EXIT_OK)
+
+
+def version_text() -> str:
+    """What ``cbf --version`` prints: the toolkit version and the spec revision (cbf-c prints the same)."""
+    from .version import SPEC_REVISION, __version__
+
+    return f"cbf {__version__} (spec {SPEC_REVISION})"
+
+
 def parser() -> argparse.ArgumentParser:
     from . import tables as T
 
@@ -397,6 +506,7 @@ def parser() -> argparse.ArgumentParser:
     writable = [v.id for v in T.VERSIONS if v.writable]
     p = _Parser(prog="cbf", description=f"{T.SPEC_TITLE} toolkit: decode, encode, validate, info.",
                 epilog="Exit codes: 0 ok, 1 validation found an error, 2 bad usage or unreadable input.")
+    p.add_argument("--version", action=_Version, help="print the toolkit version and the spec revision, and exit")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
     d = sub.add_parser("decode", help="CBF to canonical JSON or CUT text")
     d.add_argument("file", help="CBF file, or - for stdin")
@@ -429,17 +539,50 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def _flush_stdout() -> None:
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        raise _StdoutFailed(exc) from None
+
+
+def _drop_stdout() -> None:
+    """After stdout failed: send what is still buffered to /dev/null, so that the
+    interpreter's flush at exit cannot fail a second time with a traceback."""
+    try:
+        fd = sys.stdout.fileno()
+        null = os.open(os.devnull, os.O_WRONLY)
+    except (OSError, ValueError):
+        return
+    try:
+        os.dup2(null, fd)
+    finally:
+        os.close(null)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:
-        args = parser().parse_args(argv)
-        return int(args.func(args))
+        try:
+            args = parser().parse_args(argv)
+            code = int(args.func(args))
+        except SystemExit as exc:  # argparse: --help, --version, a usage error
+            code = exc.code if isinstance(exc.code, int) else EXIT_OK if exc.code is None else EXIT_USAGE
+        _flush_stdout()
+        return code
     except _Fail as exc:
+        sys.stderr.write(f"cbf: {exc.message}\n")
+        return EXIT_USAGE
+    except _StdoutFailed as exc:
+        _drop_stdout()
         sys.stderr.write(f"cbf: {exc.message}\n")
         return EXIT_USAGE
     except KeyboardInterrupt:
         sys.stderr.write("cbf: interrupted\n")
         return 130
     except BrokenPipeError:
+        _drop_stdout()
         return EXIT_OK
     except MemoryError:
         sys.stderr.write("cbf: out of memory\n")

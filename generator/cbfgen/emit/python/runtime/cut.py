@@ -60,6 +60,18 @@ def _plain_word(raw: bytes) -> bool:
     return bool(value) and all(0x21 <= b <= 0x7E for b in value)
 
 
+def _profile_word(profile: str, command: str, arg: str, word: str) -> None:
+    """Refuse a name the profile's CUT reader would read differently (implib reads \\w+)."""
+    rule = C.get("profile_words", {}).get(profile)
+    if rule is None or arg not in rule["args"] or re.fullmatch(rule["pattern"], word):
+        return
+    pattern = rule["pattern"]
+    m = re.match(pattern, word)
+    read = repr(m.group(0)) if m else "nothing"
+    raise ValueError(f"{command}.{arg} {word!r}: the {profile} profile's CUT reader takes a name as {pattern} "
+                     f"and would read {read}; this name cannot be written in CUT for {profile}")
+
+
 def _plain_text(raw: bytes) -> bool:
     value = raw.rstrip(T.PAD)
     return all(0x20 <= b <= 0x7E for b in value) and value == value.strip(b" ")
@@ -110,7 +122,9 @@ def _record_line(r: Record, version: str, profile: str) -> str:
                 if not _plain_word(v[0]):
                     plain = False
                     break
-                parts.append(v[0].rstrip(T.PAD).decode("ascii"))
+                word = v[0].rstrip(T.PAD).decode("ascii")
+                _profile_word(profile, cmd.name, f.name, word)
+                parts.append(word)
     if plain:
         return _SEP.join(parts)
     copy = r.code if r.code_copy is None else r.code_copy
@@ -150,7 +164,11 @@ def to_cut(model: Cbf, *, profile: str = "default") -> str:
     if head_line:
         lines.append(head)
     lines.extend(extra)
-    lines.extend(_record_line(r, vid, profile) for r in model.records)
+    for i, r in enumerate(model.records):
+        try:
+            lines.append(_record_line(r, vid, profile))
+        except ValueError as exc:
+            raise ValueError(f"record {i}: {exc}") from None
     if model.trailing:
         raise ValueError("trailing bytes have no CUT form")
     return "\n".join(lines) + "\n"

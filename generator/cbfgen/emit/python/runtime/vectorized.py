@@ -8,20 +8,25 @@ Python loop dominates; small files keep the reference path and its fast start.
 
 from __future__ import annotations
 
+import heapq
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from . import tables as T
-from .validation import range_text
+from .validation import Finding, finding_order, range_text
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-    from .validation import Cutters, _Out
+    from .validation import Cutters
+
+# add(check, rows, offsets, keys, message): the findings of one check at ``rows``, made
+# lazily: the k-th message is message(keys[k]), computed only when the finding is read.
+Add = Callable[[Any, Any, Any, Any, Callable[[Any], str]], None]
 
 Rows = "NDArray[np.int64]"
 
@@ -58,13 +63,39 @@ def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
     return np.dtype(fields)
 
 
-def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile: str, cutters: Cutters | None) -> None:
+def _lazy(check: dict[str, Any], rows: Any, offs: Any, keys: Any, msg: Callable[[Any], str]) -> Iterator[Finding]:
+    cid, sev = check["id"], check["severity"]
+    for k in range(len(rows)):
+        yield Finding(cid, sev, int(rows[k]), int(offs[k]), msg(keys[k]))
+
+
+def _at(off: Any, bad: Any, delta: int) -> Any:
+    """off[bad] + delta without a second temporary array."""
+    out = off[bad]
+    out += delta
+    return out
+
+
+def _const(message: str) -> Callable[[Any], str]:
+    return lambda _: message
+
+
+def _valued(before: str, values: Any, after: str) -> Callable[[Any], str]:
+    """before + the k-th value (as %g) + after, bound now (the caller's loop moves on)."""
+    return lambda k: f"{before}{float(values[k]):g}{after}"
+
+
+def records(buf: bytes, offsets: Sequence[int], version: str, profile: str, cutters: Cutters | None
+            ) -> Iterator[Finding]:
+    """The record findings in validate's order, one at a time. Each check keeps only the
+    rows it flagged (a few bytes each) and makes a finding's message when it is read, so
+    memory stays a small multiple of the file however many findings it gives."""
     from . import validation as V
 
     one = V._one
     n = len(offsets)
     if n == 0:
-        return
+        return iter(())
     a = np.frombuffer(buf, dtype=np.uint8)
     off = np.asarray(offsets, dtype=np.int64)  # no copy when framing gave an int64 array
     hs = T.HEAD_SIZE
@@ -73,24 +104,29 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
     seq, code, copy = _uint(head, F[T.I_SEQ]), _uint(head, F[T.I_CODE]), _uint(head, F[T.I_COPY])
     nb, res, chk = _uint(head, F[T.I_SIZE]), _uint(head, F[T.I_RES]), _uint(head, F[T.I_CHK])
     del head  # each field is its own small array now (memory stays a few bytes a record)
-    pending: list[tuple[int, int, Any, int, str]] = []  # (record, order, check, offset, message)
+    groups: list[Iterator[Finding]] = []  # each sorted in validate's order
+    pending: list[Finding] = []  # the findings made one at a time (cutter table, nondecreasing, shapes)
 
-    def add(check: dict[str, Any] | None, rows: Any, order: int, offs: Any, msgs: Any) -> None:
-        if check is None:
-            return
-        for r, o, m in zip(rows, offs, msgs, strict=True):
-            pending.append((int(r), order, check, int(o), m))
+    narrow = np.int32 if len(buf) < 1 << 31 else np.int64  # what a group holds: 4 bytes a row and offset
+
+    def add(check: dict[str, Any] | None, rows: Any, offs: Any, keys: Any, msg: Callable[[Any], str]) -> None:
+        if check is not None and len(rows):
+            held = np.asarray(rows).astype(narrow)
+            groups.append(_lazy(check, held, np.asarray(offs).astype(narrow), held if keys is rows else keys, msg))
 
     # -- head checks ----------------------------------------------------------
     wrap = T.SEQ_MASK
-    bad = np.nonzero(seq != (np.arange(n, dtype=np.int64) & wrap))[0]
-    add(one("sequence"), bad, 0, off[bad] + F[T.I_SEQ].offset,
-        (f"sequence number {seq[i]}, expected {i & wrap}" for i in bad))
+    expected = np.arange(n, dtype=np.int64)
+    expected &= wrap  # in place: the peak of a file of empty records is here
+    bad = np.nonzero(seq != expected)[0]
+    del expected
+    add(one("sequence"), bad, _at(off, bad, F[T.I_SEQ].offset), bad,
+        lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
     bad = np.nonzero(res != 0)[0]
-    add(one("reserved_byte"), bad, 1, off[bad] + F[T.I_RES].offset, (f"reserved byte is 0x{res[i]:02X}" for i in bad))
+    add(one("reserved_byte"), bad, off[bad] + F[T.I_RES].offset, bad, lambda i: f"reserved byte is 0x{res[i]:02X}")
     bad = np.nonzero(copy != code)[0]
-    add(one("code_copy"), bad, 2, off[bad] + F[T.I_COPY].offset,
-        (f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}" for i in bad))
+    add(one("code_copy"), bad, off[bad] + F[T.I_COPY].offset, bad,
+        lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
     spec = T.CHECKSUMS["fields"]["args"]
     if T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]] == [
             {"region": "args", "start": None, "end": None, "exclude": []}]:
@@ -102,26 +138,27 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
         last = a.shape[0] - 1
         for k in range(int(nb.max())):
             sums += np.where(nb > k, a[np.minimum(starts + k, last)], 0)
-        want = sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)
+        want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
+        del sums, starts
     else:
         want = np.array([V._field_sum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
                          for o, s in zip(offsets, nb, strict=True)], dtype=np.int64)
     bad = np.nonzero(chk != want)[0]
-    add(one("arg_checksum"), bad, 3, off[bad] + T.ARG_CHECKSUM.offset,
-        (f"stored argument checksum {chk[i]}, computed {want[i]}" for i in bad))
+    add(one("arg_checksum"), bad, off[bad] + T.ARG_CHECKSUM.offset, bad,
+        lambda i: f"stored argument checksum {chk[i]}, computed {want[i]}")
 
     # -- command tables ------------------------------------------------------------
     known, avail, size_ok, lay_of, lays = _tables(version, profile)
     code_off = F[T.I_CODE].offset
     bad = np.nonzero(~known[code])[0]
-    add(one("unknown_code"), bad, 4, off[bad] + code_off, (f"unknown command code 0x{code[i]:02X}" for i in bad))
-    covering = V.availability_checks()
+    add(one("unknown_code"), bad, _at(off, bad, code_off), bad, lambda i: f"unknown command code 0x{code[i]:02X}")
+    covering = V.availability_checks()  # (version, command) -> the one check that covers it
     bad = np.nonzero(known[code] & ~avail[code])[0]
     for c in np.unique(code[bad]):
         name = T.BY_CODE[int(c)].name
         rows = bad[code[bad] == c]
-        add(covering.get((version, name)), rows, 5, off[rows] + code_off,
-            (f"{name} is not available in version {version}" for _ in rows))
+        add(covering.get((version, name)), rows, off[rows] + code_off, rows,
+            _const(f"{name} is not available in version {version}"))
     bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
 
     def sizes_msg(i: int) -> str:
@@ -129,7 +166,7 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
         sizes = sorted({lay.size for lay in cmd.candidates(version) if lay.accepted_under(profile)})
         return f"{cmd.name} with {nb[i]} argument bytes; expected {' or '.join(map(str, sizes))}"
 
-    add(one("arg_size"), bad, 6, off[bad] + F[T.I_SIZE].offset, (sizes_msg(int(i)) for i in bad))
+    add(one("arg_size"), bad, off[bad] + F[T.I_SIZE].offset, bad, lambda i: sizes_msg(int(i)))
 
     # -- arguments, one group per layout -------------------------------------------------
     which = lay_of[code, nb]
@@ -160,7 +197,8 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
                     cols[f.name] = col.astype(np.float64)
                 fin = np.isfinite(cols[f.name]) if f.count == 1 else np.isfinite(cols[f.name]).all(axis=1)
                 bad = np.nonzero(~fin)[0]
-                add(c_finite, rows[bad], 10, aoff[bad] + f.offset, (f"{cmd.name}.{f.name} is not finite" for _ in bad))
+                add(c_finite, rows[bad], aoff[bad] + f.offset, bad,
+                    _const(f"{cmd.name}.{f.name} is not finite"))
             elif f.kind == "string":
                 cols[f.name] = col
                 _strings(add, one, col, rows, aoff + f.offset, f"{cmd.name}.{f.name}")
@@ -181,8 +219,7 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
                 sub = V._Out()
                 _cutter(sub, one("cutter_table") or {}, cmd, lay, argd, int(r), int(aoff[k]), cutters,
                         T.TOL["cutter_mm"])
-                for fnd in sub.findings:
-                    pending.append((int(r), 13, one("cutter_table"), fnd.offset or 0, fnd.message))
+                pending.extend(sub.findings)
         m = cmd.motion
         if m is not None:
             motion_mask[rows] = True
@@ -204,13 +241,14 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
     for r, ch, key, msgname, v, at in nondec:
         k2 = (ch["id"], key)
         if k2 in prev and v < prev[k2]:
-            pending.append((r, 11, ch, at, f"{msgname} falls from {prev[k2]:g} to {v:g}"))
+            pending.append(Finding(ch["id"], ch["severity"], r, at, f"{msgname} falls from {prev[k2]:g} to {v:g}"))
         prev[k2] = v
-    _continuity(pending, one("continuity"), motion_parts)
-    _orientation(pending, one("orientation"), orient_parts)
+    del nondec
+    _continuity(add, one("continuity"), motion_parts)
+    _orientation(add, one("orientation"), orient_parts)
     _shapes(pending, one("shape"), shape_rows, motion_mask, off)
-    for r, _, ch, at, msg in pending:
-        out.add(ch, r, at, msg)
+    pending.sort(key=finding_order)
+    return iter(heapq.merge(iter(pending), *groups, key=finding_order))
 
 
 @lru_cache(maxsize=16)
@@ -234,7 +272,7 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
     return known, avail, size_ok, lay_of, lays
 
 
-def _strings(add: Any, one: Any, col: NDArray[np.uint8], rows: Any, offs: Any, name: str) -> None:
+def _strings(add: Add, one: Any, col: NDArray[np.uint8], rows: Any, offs: Any, name: str) -> None:
     is_nul = col == 0
     has_nul = is_nul.any(axis=1)
     first = np.where(has_nul, is_nul.argmax(axis=1), col.shape[1])
@@ -242,16 +280,16 @@ def _strings(add: Any, one: Any, col: NDArray[np.uint8], rows: Any, offs: Any, n
     after = pos[None, :] > first[:, None]
     tail = (after & (col != 0)).any(axis=1)
     bad = np.nonzero(tail)[0]
-    add(one("string_tail"), rows[bad], 10, offs[bad],
-        (f"{name}: bytes after the first NUL: {bytes(col[k, first[k] + 1:]).rstrip(bytes(1)).hex()}" for k in bad))
+    add(one("string_tail"), rows[bad], offs[bad], bad,
+        lambda k: f"{name}: bytes after the first NUL: {bytes(col[k, first[k] + 1:]).rstrip(bytes(1)).hex()}")
     before = pos[None, :] < first[:, None]
     nonascii = before & ((col < 0x20) | (col > 0x7E))
     bad = np.nonzero(nonascii.any(axis=1))[0]
-    add(one("string_ascii"), rows[bad], 10, offs[bad],
-        (f"{name}: non-ASCII byte 0x{int(col[k][nonascii[k]][0]):02X}" for k in bad))
+    add(one("string_ascii"), rows[bad], offs[bad], bad,
+        lambda k: f"{name}: non-ASCII byte 0x{int(col[k][nonascii[k]][0]):02X}")
 
 
-def _targeted(add: Any, ch: dict[str, Any], names: tuple[str, ...], cname: str, lay: T.LayoutInfo,
+def _targeted(add: Add, ch: dict[str, Any], names: tuple[str, ...], cname: str, lay: T.LayoutInfo,
               cols: dict[str, Any], rows: Any, aoff: Any, nondec: list[Any]) -> None:
     present = [nm for nm in names if nm in cols]
     kind = ch["kind"]
@@ -261,24 +299,23 @@ def _targeted(add: Any, ch: dict[str, Any], names: tuple[str, ...], cname: str, 
         vals = np.stack([cols[nm] for nm in names], axis=1)
         fin = np.isfinite(vals).all(axis=1)
         bad = np.nonzero(fin & (vals[:, :-1] > vals[:, 1:]).any(axis=1))[0]
-        add(ch, rows[bad], 12, aoff[bad],
-            (f"{cname}: {' <= '.join(f'{nm}={float(cols[nm][k]):g}' for nm in names)} does not hold" for k in bad))
+        add(ch, rows[bad], aoff[bad], bad,
+            lambda k: f"{cname}: {' <= '.join(f'{nm}={float(cols[nm][k]):g}' for nm in names)} does not hold")
         return
     for nm in present:
         v = cols[nm]
         at = aoff + next(f.offset for f in lay.args if f.name == nm)
         if kind == "positive":
             bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
-            add(ch, rows[bad], 12, at[bad], (f"{cname}.{nm} is {float(v[k]):g}, must be > 0" for k in bad))
+            add(ch, rows[bad], at[bad], bad, _valued(f"{cname}.{nm} is ", v, ", must be > 0"))
         elif kind == "nonzero_vector":
             bad = np.nonzero(np.isfinite(v).all(axis=1) & (v == 0.0).all(axis=1))[0]
-            add(ch, rows[bad], 12, at[bad], (f"{cname}.{nm} has zero length" for _ in bad))
+            add(ch, rows[bad], at[bad], bad, _const(f"{cname}.{nm} has zero length"))
         elif kind == "range":
             lo = -np.inf if ch["min"] is None else ch["min"]
             hi = np.inf if ch["max"] is None else ch["max"]
             bad = np.nonzero(np.isfinite(v) & ((v < lo) | (v > hi)))[0]
-            add(ch, rows[bad], 12, at[bad],
-                (f"{cname}.{nm} is {float(v[k]):g}, {range_text(ch)}" for k in bad))
+            add(ch, rows[bad], at[bad], bad, _valued(f"{cname}.{nm} is ", v, f", {range_text(ch)}"))
         elif kind == "nondecreasing":
             for k in np.nonzero(np.isfinite(v))[0]:
                 nondec.append((int(rows[k]), ch, f"{cname}.{nm}", f"{cname}.{nm}", float(v[k]), int(at[k])))
@@ -310,7 +347,7 @@ def _ends(m: dict[str, str], cols: dict[str, Any], k: int) -> Any:
     return end
 
 
-def _continuity(pending: list[Any], check: dict[str, Any] | None, parts: list[Any]) -> None:
+def _continuity(add: Add, check: dict[str, Any] | None, parts: list[Any]) -> None:
     if check is None or not parts:
         return
     rows = np.concatenate([p[0] for p in parts])
@@ -332,9 +369,8 @@ def _continuity(pending: list[Any], check: dict[str, Any] | None, parts: list[An
         return
     names = np.concatenate([np.full(len(p[0]), T.BY_CODE[p[3].code].name, dtype=object) for p in parts])[order]
     starts = np.concatenate([p[4] + _start_offset(p[3]) for p in parts])[order]
-    for k in bad:
-        pending.append((int(rows[k]), 14, check, int(starts[k]),
-                        f"{names[k]} starts {float(d[k]):.6g} mm from the current position"))
+    add(check, rows[bad], starts[bad], bad,
+        lambda k: f"{names[k]} starts {float(d[k]):.6g} mm from the current position")
 
 
 def _start_offset(lay: T.LayoutInfo) -> int:
@@ -342,7 +378,7 @@ def _start_offset(lay: T.LayoutInfo) -> int:
     return next((f.offset for f in lay.args if f.name == m.get("start")), 0)
 
 
-def _orientation(pending: list[Any], check: dict[str, Any] | None, parts: list[Any]) -> None:
+def _orientation(add: Add, check: dict[str, Any] | None, parts: list[Any]) -> None:
     if check is None or not parts:
         return
     rows = np.concatenate([p[0] for p in parts])
@@ -360,16 +396,18 @@ def _orientation(pending: list[Any], check: dict[str, Any] | None, parts: list[A
         cx = np.cross(start, prev)
         ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (start * prev).sum(axis=1)))
         bad = np.nonzero(s_ok & np.isfinite(prev).all(axis=1) & (ang > T.TOL["orientation_deg"]))[0]
-    for k in bad:
-        r = int(rows[k])
-        pending.append((r, 15, check, int(aoff[k]),
-                        f"{cnames[k]} starts {float(ang[k]):.6g} deg from the current orientation"))
+    add(check, rows[bad], aoff[bad], bad,
+        lambda k: f"{cnames[k]} starts {float(ang[k]):.6g} deg from the current orientation")
 
 
-def _shapes(pending: list[Any], check: dict[str, Any] | None, shape_rows: list[Any], motion: Any, off: Any) -> None:
+def _shapes(pending: list[Finding], check: dict[str, Any] | None, shape_rows: list[Any], motion: Any, off: Any
+            ) -> None:
     if check is None or not shape_rows:
         return
     from .validation import _s
+
+    def found(r: int, at: int, message: str) -> None:
+        pending.append(Finding(check["id"], check["severity"], r, at, message))
 
     cm = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(motion, dtype=np.int64)))
     shape_rows.sort()
@@ -378,19 +416,17 @@ def _shapes(pending: list[Any], check: dict[str, Any] | None, shape_rows: list[A
         at = int(off[r])
         if kind == 0:
             if open_ is not None:
-                pending.append((r, 16, check, at, f"{cname} inside the open shape of record {open_[0]}"))
+                found(r, at, f"{cname} inside the open shape of record {open_[0]}")
             open_ = (r, name, cnt)
         elif open_ is None:
-            pending.append((r, 16, check, at, f"{cname} without an open shape"))
+            found(r, at, f"{cname} without an open shape")
         else:
             si, sname, scnt = open_
             moves = int(cm[r] - cm[si + 1])
             if name != sname or cnt != scnt:
-                pending.append((r, 16, check, at,
-                                f"{cname} {_s(name)},{cnt} does not repeat record {si}'s {_s(sname)},{scnt}"))
+                found(r, at, f"{cname} {_s(name)},{cnt} does not repeat record {si}'s {_s(sname)},{scnt}")
             elif moves != scnt:
-                pending.append((r, 16, check, at, f"shape {_s(sname)} encloses {moves} motion commands, "
-                                                  f"declares {scnt}"))
+                found(r, at, f"shape {_s(sname)} encloses {moves} motion commands, declares {scnt}")
             open_ = None
     if open_ is not None:
-        pending.append((open_[0], 16, check, int(off[open_[0]]), f"shape {_s(open_[1])} is never closed"))
+        found(open_[0], int(off[open_[0]]), f"shape {_s(open_[1])} is never closed")
