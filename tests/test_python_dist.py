@@ -59,6 +59,8 @@ def test_cbf_wheel_alone_decodes_validates_converts(outside: Path) -> None:
     assert _run(py, "-c", "import jsonschema", cwd=outside, check=False).returncode != 0
     version = _run(py, "-c", "import cbf; print(cbf.__version__, cbf.SPEC_REVISION)", cwd=outside)
     assert version.stdout.split(" ", 1) == [cbf.__version__, cbf.SPEC_REVISION + "\n"]
+    assert _run(bin_ / "cbf", "--version", cwd=outside).stdout.strip() == \
+        f"cbf {cbf.__version__} (spec {cbf.SPEC_REVISION})"
     typed = _run(py, "-c", "import cbf, pathlib; print((pathlib.Path(cbf.__file__).parent / 'py.typed').exists())",
                  cwd=outside)
     assert typed.stdout.strip() == "True"
