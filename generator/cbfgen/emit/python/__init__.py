@@ -51,7 +51,7 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "commands": [
             {
                 "name": c.name, "code": c.code, "motion": c.motion, "orientation": c.orientation, "shape": c.shape,
-                "cutter": c.cutter, "progress": c.progress,
+                "cutter": c.cutter, "progress": c.progress, "sets": c.sets,
                 "layouts": [
                     {"variant": lay.variant, "class": lay.class_name, "versions": list(lay.versions),
                      "size": lay.size, "profiles": list(lay.profiles), "args": [_field_data(a) for a in lay.args]}
