@@ -363,6 +363,99 @@ def cmd_info(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+# -- toolpath tools (issue 16): convert, stats, diff, plot ------------------------
+def _load_any(path: str) -> Any:
+    """A CBF file, or CUT / canonical JSON text, as a model (the kind from its first bytes)."""
+    from .errors import CbfError
+
+    data = _read(path, 64 * _max_file_size())
+    if _not_cbf(data) is None and not _looks_like_text(data[:4]):
+        return _decode_bytes(path, data)
+    try:
+        text = data.decode("utf-8").lstrip("\ufeff")
+    except UnicodeDecodeError as exc:
+        raise _Fail(f"{path}: offset {exc.start}: neither a CBF file nor UTF-8 text") from None
+    if not text.strip():
+        raise _Fail(f"{path}: empty input")
+    try:
+        if text.lstrip().startswith("{"):
+            from .canonical import from_canonical
+
+            try:
+                return from_canonical(json.loads(text))
+            except json.JSONDecodeError as exc:
+                raise _Fail(f"{path}: line {exc.lineno}: not JSON ({exc.msg})") from None
+        from .cut import from_cut
+
+        return from_cut(text)
+    except CbfError as exc:
+        raise _Fail(f"{path}: {exc}") from None
+
+
+def _decode_bytes(path: str, data: bytes) -> Any:
+    from .codec import decode
+    from .errors import CbfError
+
+    if len(data) > _max_file_size():
+        raise _too_big(path, _max_file_size())
+    try:
+        return decode(data)
+    except CbfError as exc:
+        raise _Fail(f"{path}: {exc}") from None
+
+
+def _clean(path: str, model: Any) -> None:
+    """Refuse a model that fails validation: the tools below assume a sound file."""
+    from .validation import validate
+
+    errors = [f for f in validate(model) if f.severity == "error"]
+    if errors:
+        e = errors[0]
+        where = f"record {e.record}" if e.record is not None else "header"
+        raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); "
+                    f"run cbf validate {path}")
+
+
+def _mm(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a length in mm: {text!r}") from None
+    if not (x > 0.0 and x < float("inf")):
+        raise argparse.ArgumentTypeError(f"not a positive length in mm: {text!r}")
+    return x
+
+
+def cmd_convert(a: argparse.Namespace) -> int:
+    from .codec import encode
+    from .convert import convert
+    from .errors import CbfError
+
+    _check_output(a.output)
+    fill: dict[str, str] = {}
+    for item in a.fill:
+        name, eq, value = item.partition("=")
+        if not eq or not name or not value:
+            raise _Fail(f"--fill {item!r}: expected ARG=VALUE, e.g. --fill completion=0")
+        if name in fill:
+            raise _Fail(f"--fill {name}: given twice")
+        fill[name] = value
+    model = _load_any(a.file)
+    _clean(a.file, model)
+    try:
+        conv = convert(model, a.to_version, chord_tol=a.chord_tol, fill=fill, profile=a.profile)
+        out = encode(conv.model, profile=a.profile)
+    except CbfError as exc:
+        raise _Fail(f"{a.file}: {exc}") from None
+    _write(a.output, out)
+    report = sys.stderr if a.output == "-" else sys.stdout
+    report.write(f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
+                 f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "
+                 f"{conv.segments} line segment(s), largest deviation {conv.max_deviation:.6f} mm "
+                 f"(tolerance {conv.chord_tol} mm)\n")
+    return EXIT_OK
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
@@ -411,7 +504,26 @@ def parser() -> argparse.ArgumentParser:
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
     i.set_defaults(func=cmd_info)
+    _tool_parsers(sub, profiles, writable)
     return p
+
+
+def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
+    from . import tables as T
+
+    c = sub.add_parser("convert", help="move a file to another version (curves to line segments for versions "
+                                       "without them)")
+    c.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    c.add_argument("-o", "--output", required=True, help="output CBF file, or - for stdout")
+    c.add_argument("--to-version", required=True, choices=writable, help="the version to write")
+    c.add_argument("--chord-tol", type=_mm, metavar="MM",
+                   help=f"largest chordal deviation of a curve's line segments (default {T.TOL['position_mm']} "
+                        f"mm, tolerances.position_mm)")
+    c.add_argument("--fill", action="append", default=[], metavar="ARG=VALUE",
+                   help="value of an argument the source layout lacks: a number, or 'position' (the tool "
+                        "position at that record); e.g. --fill recovery_point=position --fill completion=0")
+    c.add_argument("--profile", choices=profiles, default=profiles[0])
+    c.set_defaults(func=cmd_convert)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
