@@ -456,6 +456,18 @@ def cmd_convert(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_stats(a: argparse.Namespace) -> int:
+    from .stats import render, stats
+
+    model = _load_any(a.file)
+    s = stats(model)
+    if a.json:
+        sys.stdout.write(json.dumps({"file": a.file, **s.as_dict()}, indent=1) + "\n")
+    else:
+        sys.stdout.write(render(s, a.file))
+    return EXIT_OK
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
@@ -524,6 +536,11 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
                         "position at that record); e.g. --fill recovery_point=position --fill completion=0")
     c.add_argument("--profile", choices=profiles, default=profiles[0])
     c.set_defaults(func=cmd_convert)
+    s = sub.add_parser("stats", help="toolpath summary: bounding box, path length, time estimate, shapes, "
+                                     "cutters, phases, checkpoints")
+    s.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    s.add_argument("--json", action="store_true", help="print JSON (shape: schemas/stats.schema.json)")
+    s.set_defaults(func=cmd_stats)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
