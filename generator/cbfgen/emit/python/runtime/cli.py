@@ -468,6 +468,20 @@ def cmd_stats(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_diff(a: argparse.Namespace) -> int:
+    from . import semdiff
+    from . import tables as T
+
+    ma, mb = _load_any(a.a), _load_any(a.b)
+    tol = T.TOL["position_mm"] if a.tol is None else a.tol
+    d = semdiff.diff(ma, mb, tol)
+    if a.json:
+        sys.stdout.write(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
+    else:
+        sys.stdout.write(semdiff.render(d, ma, mb, a.a, a.b))
+    return EXIT_OK if d.equal else EXIT_FINDINGS
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
@@ -541,6 +555,14 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
     s.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
     s.add_argument("--json", action="store_true", help="print JSON (shape: schemas/stats.schema.json)")
     s.set_defaults(func=cmd_stats)
+    f = sub.add_parser("diff", help="semantic diff of two files (CBF or CUT on either side); exit 0 equal "
+                                    "within --tol, 1 differ, 2 bad input")
+    f.add_argument("a", help="first file (CBF, CUT or JSON)")
+    f.add_argument("b", help="second file (CBF, CUT or JSON)")
+    f.add_argument("--tol", type=_mm, metavar="MM",
+                   help=f"numbers equal within this (default {T.TOL['position_mm']}, tolerances.position_mm)")
+    f.add_argument("--json", action="store_true", help="print JSON (shape: schemas/diff.schema.json)")
+    f.set_defaults(func=cmd_diff)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
