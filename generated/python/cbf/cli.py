@@ -482,6 +482,23 @@ def cmd_diff(a: argparse.Namespace) -> int:
     return EXIT_OK if d.equal else EXIT_FINDINGS
 
 
+def cmd_plot(a: argparse.Namespace) -> int:
+    from . import plot
+
+    _check_output(a.output)
+    fmt = a.format or Path(a.output).suffix.lstrip(".").lower()
+    if fmt not in plot.FORMATS:
+        raise _Fail(f"{a.output}: cannot tell the format from the name; end it in "
+                    f"{', '.join('.' + f for f in plot.FORMATS)} or give --format")
+    model = _load_any(a.file)
+    try:
+        out = plot.render(model, fmt, a.color, a.title if a.title is not None else a.file)
+    except plot.PlotUnavailable as exc:
+        raise _Fail(str(exc)) from None
+    _write(a.output, out)
+    return EXIT_OK
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
@@ -500,7 +517,8 @@ def parser() -> argparse.ArgumentParser:
 
     profiles = list(T.PROFILES)
     writable = [v.id for v in T.VERSIONS if v.writable]
-    p = _Parser(prog="cbf", description=f"{T.SPEC_TITLE} toolkit: decode, encode, validate, info.",
+    p = _Parser(prog="cbf", description=f"{T.SPEC_TITLE} toolkit: decode, encode, validate, info, "
+                                        f"convert, stats, diff, plot.",
                 epilog="Exit codes: 0 ok, 1 validation found an error, 2 bad usage or unreadable input.")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
     d = sub.add_parser("decode", help="CBF to canonical JSON or CUT text")
@@ -563,6 +581,15 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
                    help=f"numbers equal within this (default {T.TOL['position_mm']}, tolerances.position_mm)")
     f.add_argument("--json", action="store_true", help="print JSON (shape: schemas/diff.schema.json)")
     f.set_defaults(func=cmd_diff)
+    g = sub.add_parser("plot", help="draw the toolpath: isometric view and three projections (needs matplotlib, "
+                                    "the plot extra)")
+    g.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    g.add_argument("-o", "--output", required=True, help="OUT.png, OUT.svg or OUT.pdf (- for stdout with --format)")
+    g.add_argument("--format", choices=["png", "svg", "pdf"], help="default: from the output's extension")
+    g.add_argument("--color", choices=["cut", "phase", "shape", "cutter"], default="cut",
+                   help="colour moves by cutting / non-cutting (default), phase, shape or cutter")
+    g.add_argument("--title", help="figure title (default: the file name)")
+    g.set_defaults(func=cmd_plot)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
