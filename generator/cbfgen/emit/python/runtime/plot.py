@@ -61,10 +61,14 @@ def path_of(model: Cbf, mode: str = "cut") -> Path:
     shapes: list[tuple[int, str, G.Vec]] = []
     pos: G.Vec | None = None
     pending_shapes: list[tuple[int, str]] = []
+    pending_checks: list[int] = []
     for step in G.walk(model):
         cmd = step.cmd
-        if cmd.progress and pos is not None:
-            checkpoints.append((step.index, pos))
+        if cmd.progress:
+            if pos is not None:
+                checkpoints.append((step.index, pos))
+            else:  # before any motion: marked where the path starts
+                pending_checks.append(step.index)
         if cmd.shape and cmd.shape["kind"] == "start":
             pending_shapes.append((step.index, str(getattr(step.args, cmd.shape["name"]))))
         c = step.curve
@@ -73,6 +77,8 @@ def path_of(model: Cbf, mode: str = "cut") -> Path:
         for i, name in pending_shapes:
             shapes.append((i, name, c.start))
         pending_shapes = []
+        checkpoints.extend((i, c.start) for i in pending_checks)
+        pending_checks = []
         pts = c.points()
         cat = _category(step, mode)
         if lines and lines[-1][0] == cat and lines[-1][1][-1] == pts[0]:
