@@ -364,19 +364,42 @@ def cmd_info(a: argparse.Namespace) -> int:
 
 
 # -- toolpath tools (issue 16): convert, stats, diff, plot ------------------------
+def _peek(path: str) -> bytes:
+    """The first bytes of a file (not of stdin), with the errors _read gives."""
+    try:
+        if Path(path).is_dir():
+            raise _Fail(f"{path}: is a directory")
+        with Path(path).open("rb") as fh:
+            return fh.read(256)
+    except FileNotFoundError:
+        raise _Fail(f"{path}: no such file") from None
+    except PermissionError:
+        raise _Fail(f"{path}: permission denied") from None
+    except IsADirectoryError:
+        raise _Fail(f"{path}: is a directory") from None
+    except OSError as exc:
+        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+
+
 def _load_any(path: str) -> Any:
-    """A CBF file, or CUT / canonical JSON text, as a model (the kind from its first bytes)."""
+    """A CBF file, or CUT / canonical JSON text, as a model: text when the first bytes are text."""
     from .errors import CbfError
 
-    data = _read(path, 64 * _max_file_size())
-    if _not_cbf(data) is None and not _looks_like_text(data[:4]):
-        return _decode_bytes(path, data)
-    try:
-        text = data.decode("utf-8").lstrip("\ufeff")
-    except UnicodeDecodeError as exc:
-        raise _Fail(f"{path}: offset {exc.start}: neither a CBF file nor UTF-8 text") from None
+    if path == "-":
+        data = _read(path, 64 * _max_file_size())
+        if data and not _looks_like_text(data):
+            return _decode_bytes(path, data)
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise _Fail(f"{path}: offset {exc.start}: byte 0x{data[exc.start]:02X} is not UTF-8 text") from None
+    else:
+        head = _peek(path)
+        if head and not _looks_like_text(head):
+            return _decode(path)  # CBF: read with the CBF size limit
+        text = _read_text(path, 64 * _max_file_size()) if head else ""
     if not text.strip():
-        raise _Fail(f"{path}: empty input")
+        raise _Fail(f"{path}: offset 0: empty input (0 bytes of CBF, no CUT or JSON text)")
     try:
         if text.lstrip().startswith("{"):
             from .canonical import from_canonical
@@ -385,6 +408,8 @@ def _load_any(path: str) -> Any:
                 return from_canonical(json.loads(text))
             except json.JSONDecodeError as exc:
                 raise _Fail(f"{path}: line {exc.lineno}: not JSON ({exc.msg})") from None
+            except (RecursionError, ValueError) as exc:
+                raise _Fail(f"{path}: not JSON the codec reads ({type(exc).__name__})") from None
         from .cut import from_cut
 
         return from_cut(text)
@@ -486,11 +511,11 @@ def cmd_plot(a: argparse.Namespace) -> int:
     from . import plot
 
     _check_output(a.output)
+    model = _load_any(a.file)
     fmt = a.format or Path(a.output).suffix.lstrip(".").lower()
     if fmt not in plot.FORMATS:
         raise _Fail(f"{a.output}: cannot tell the format from the name; end it in "
                     f"{', '.join('.' + f for f in plot.FORMATS)} or give --format")
-    model = _load_any(a.file)
     try:
         out = plot.render(model, fmt, a.color, a.title if a.title is not None else a.file)
     except plot.PlotUnavailable as exc:
