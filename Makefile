@@ -14,6 +14,9 @@ export PYTHONPATH := $(CURDIR)/generator:$(CURDIR)/generated/python:$(CURDIR)
 export PYTHONDONTWRITEBYTECODE := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
+# Stamps of steps that run only when their inputs changed (a no-op `make` stays fast).
+STAMPS := build/stamps
+
 # Hooks the fragments in mk/*.mk append to (before the rules that use them).
 GENERATE_POST :=
 TEST_DEPS :=
@@ -27,13 +30,19 @@ help:
 	@grep -hE '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | sort
 
 # -- Python environment -------------------------------------------------------
-$(VENV)/.stamp: pyproject.toml
+$(VENV)/.stamp: pyproject.toml .ci/constraints.txt
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade "pip==24.3.1"
-	$(PY) -m pip install -q -e ".[dev]"
+	$(PY) -m pip install -q -c .ci/constraints.txt -e ".[dev]"
 	@touch $@
 
-venv: $(VENV)/.stamp  ## create .venv with the pinned dependencies
+# Toolchains (Python, Node, Go, JDK + Maven, gcc/clang, graphviz) from Debian's packages
+# when missing; elsewhere it stops and names what is missing (README "Prerequisites").
+.PHONY: setup
+setup:
+	@.ci/setup-debian.sh
+
+venv: setup $(VENV)/.stamp  ## create .venv with the pinned dependencies
 
 # -- generation ---------------------------------------------------------------
 check-spec: venv  ## load and check spec/cbf.yaml only
@@ -42,8 +51,8 @@ check-spec: venv  ## load and check spec/cbf.yaml only
 generate-py: venv  ## run every Python emitter (no ksc)
 	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated
 
-generate: generate-py  ## regenerate generated/ from the spec
-	@$(MAKE) generate-post
+# One make process runs the Python emitters once, then the later steps (ksc, ...).
+generate: generate-py $(GENERATE_POST)  ## regenerate generated/ from the spec
 
 # Later build steps (ksc, docs rendering) hook in here from mk/*.mk.
 .PHONY: generate-post
@@ -57,9 +66,12 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 
 # -- quality ------------------------------------------------------------------
 MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability bench/bench.py)
-lint: venv  ## ruff + mypy --strict on hand-written Python
+LINT_INPUTS = $(shell find generator conformance tests generated/python bench -name '*.py' -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
+lint: venv $(STAMPS)/lint  ## ruff + mypy --strict on hand-written Python
+$(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 	$(PY) -m ruff check generator conformance tests generated/python $(wildcard bench)
 	$(PY) -m mypy --strict $(MYPY_PATHS)
+	@mkdir -p $(@D) && touch $@
 
 test-py: venv
 	$(PY) -m pytest -p no:cacheprovider
@@ -69,5 +81,16 @@ test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what C
 	@$(MAKE) conformance
 	@$(MAKE) check-report
 
+# -- distributions (what users install) ------------------------------------------
+# `cbf` (codec + CLI, from generated/python) and `cbfgen` (the generator), as wheels and
+# sdists in dist/. Built with the pinned setuptools of .venv (no download at build time).
+.PHONY: dist
+dist: generate-py  ## build the cbf and cbfgen wheels and sdists into dist/
+	@rm -rf dist && mkdir -p dist
+	$(PY) -m build --no-isolation --outdir dist generated/python >/dev/null
+	$(PY) -m build --no-isolation --outdir dist generator >/dev/null
+	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info
+	@ls dist
+
 clean:
-	rm -rf $(VENV) node_modules build .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) node_modules build dist .pytest_cache .mypy_cache .ruff_cache

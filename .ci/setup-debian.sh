@@ -1,21 +1,48 @@
 #!/usr/bin/env bash
-# Install the Debian packages the project needs, only when missing.
-# Idempotent, non-interactive, safe without stdin. Used by the Makefile
-# fragments (c-deps, docs-check) and by CI through `make test`.
-#   clang + libclang-rt-14-dev   libFuzzer and the sanitizer runtimes (C binding)
-#   graphviz                     Kaitai's graphviz diagram in the docs (optional)
-#   chromium                     only with CBF_WANT_CHROMIUM=1: headless browser of
-#                                `make docs-check` (about 15 s to install on Debian 12)
+# Install what the project needs and is missing, on Debian or Ubuntu (apt-get);
+# anywhere else, stop at once and say what is missing. Idempotent, non-interactive,
+# safe without stdin. Used by the Makefile fragments (c-deps, docs-check) and so by CI
+# through `make test`. A tool counts as present when its command is on PATH (the
+# version checks are the README's "Prerequisites"), so toolchains installed outside
+# apt (Go in /usr/local/go, say) are used as they are.
+#   python3 (>= 3.11)            the generator, the Python codec, the tests
+#   node + npm (>= 20)           kaitai-struct-compiler 0.11 and its JavaScript runtime
+#   go (>= 1.23)                 the Kaitai Go parser's testee (Debian 12's golang-go is 1.19:
+#                                then install Go from go.dev; the script says so)
+#   javac + mvn (JDK >= 11)      the Kaitai Java parser's testee (runtime jar from Maven)
+#   gcc, g++, clang, libclang-rt-14-dev   the C binding, libFuzzer and sanitizers
+#   graphviz                     Kaitai's graphviz diagram in the docs
+#   chromium                     only with CBF_WANT_CHROMIUM=1: the headless browser
+#                                of `make docs-check`
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
-want=(clang libclang-rt-14-dev graphviz)
-[ "${CBF_WANT_CHROMIUM:-0}" = 1 ] && want+=(chromium)
+# command -> Debian package
+declare -A pkg_of=(
+  [python3]=python3 [node]=nodejs [npm]=npm [go]=golang-go [javac]=default-jdk-headless [mvn]=maven
+  [gcc]=gcc [g++]=g++ [make]=make [git]=git [clang]=clang [dot]=graphviz
+)
+order=(python3 node npm go javac mvn gcc g++ make git clang dot)
+[ "${CBF_WANT_CHROMIUM:-0}" = 1 ] && { pkg_of[chromium]=chromium; order+=(chromium); }
 missing=()
-for pkg in "${want[@]}"; do
-  dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
+for cmd in "${order[@]}"; do
+  command -v "$cmd" >/dev/null 2>&1 || missing+=("${pkg_of[$cmd]}")
 done
+# libFuzzer and the sanitizer runtimes are a library, not a command.
+if command -v dpkg >/dev/null 2>&1 && ! dpkg -s libclang-rt-14-dev >/dev/null 2>&1 \
+   && ! compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a" >/dev/null; then
+  missing+=(libclang-rt-14-dev)
+fi
 if [ ${#missing[@]} -eq 0 ]; then
+  goversion=$(go env GOVERSION 2>/dev/null || echo go0)
+  if ! printf '%s\n' go1.23 "$goversion" | sort -V -C; then
+    echo "setup: $goversion is older than go1.23, which the Kaitai Go runtime needs (README 'Prerequisites')" >&2
+    exit 1
+  fi
   exit 0
+fi
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "setup: missing ${missing[*]} (Debian package names); this script installs only on Debian or Ubuntu: install them, see README 'Prerequisites'" >&2
+  exit 1
 fi
 if [ "$(id -u)" != 0 ]; then
   sudo=sudo

@@ -1,5 +1,10 @@
-# Benchmarks (issue #8): `make bench` prints the table and writes bench/results.json.
+# Benchmarks (issue #8): `make bench` prints the table and writes bench/results.json and
+# bench/TABLE.md only. The README (tracked) changes only on `make bench-readme`, which copies
+# the table of the last run into it.
 BENCH_REPS ?= 5
-.PHONY: bench
-bench: venv generate c-deps  ## benchmark table (Kaitai vs Python vs C); writes bench/results.json
+.PHONY: bench bench-readme
+bench: venv generate c-deps  ## benchmark table (Kaitai vs Python vs C); writes bench/results.json and bench/TABLE.md
 	$(PY) -m bench --reps $(BENCH_REPS)
+
+bench-readme: venv  ## copy the table of the last `make bench` (bench/results.json) into README.md
+	$(PY) -m bench --readme README.md

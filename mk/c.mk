@@ -93,3 +93,16 @@ fuzz-c: c-build  ## run the C libFuzzer harness for FUZZ_SECONDS (default 30)
 
 c-fuzz-ci:
 	@$(MAKE) fuzz-c FUZZ_SECONDS=60
+
+# Install the C binding for consumers outside this repository (issue #14):
+#   $(PREFIX)/include/cbf.h, $(PREFIX)/bin/cbf-c, $(PREFIX)/lib/pkgconfig/cbf.pc
+# Then `pkg-config --cflags cbf` finds the header (PKG_CONFIG_PATH=$(PREFIX)/lib/pkgconfig
+# when PREFIX is not a system prefix). DESTDIR is honoured for staged installs.
+PREFIX ?= /usr/local
+.PHONY: install
+install: $(C_OUT)/cbf-c  ## install cbf.h, cbf-c and cbf.pc under PREFIX (default /usr/local)
+	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 0644 $(C_HDR) $(DESTDIR)$(PREFIX)/include/cbf.h
+	install -m 0755 $(C_OUT)/cbf-c $(DESTDIR)$(PREFIX)/bin/cbf-c
+	sed 's|@PREFIX@|$(PREFIX)|' $(C_GEN)/cbf.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cbf.pc
+	@echo "installed cbf.h, cbf-c and cbf.pc under $(DESTDIR)$(PREFIX)"

@@ -4,15 +4,30 @@
 golden: venv  ## re-assemble conformance/golden/*.hex into .cbf
 	$(PY) -m conformance.assembler
 
-golden-check: venv  ## fail when a committed golden .cbf differs from its .hex
+GOLDEN_FILES := $(wildcard conformance/golden/*)
+ASSEMBLER_FILES := $(wildcard conformance/assembler/*.py)
+golden-check: venv $(STAMPS)/golden-check  ## fail when a committed golden .cbf differs from its .hex
+$(STAMPS)/golden-check: $(GOLDEN_FILES) $(ASSEMBLER_FILES) spec/cbf.yaml
 	$(PY) -m conformance.assembler --check
+	@mkdir -p $(@D) && touch $@
 
+# The suite runs again only when something it reads changed: the generated bindings, the
+# golden cases, the runner, testees, failure lists, or a built testee. `make conformance
+# FORCE_CONFORMANCE=1` runs it regardless.
+CONFORMANCE_INPUTS = $(shell find generated conformance -type f -not -path '*/__pycache__/*' \
+  -not -name report.json -not -name 'report.json.tmp' -not -path 'generated/docs/*' 2>/dev/null) \
+  $(wildcard build/c/cbf_testee build/kaitai-go/testee build/kaitai-java/classes/Testee.class)
 CONFORMANCE_DEPS := venv golden-check
 conformance: $(CONFORMANCE_DEPS)  ## run every binding against the golden cases; writes conformance/report.json
 	@$(if $(strip $(CONFORMANCE_BUILD)),$(MAKE) $(CONFORMANCE_BUILD),true)
+	@$(if $(FORCE_CONFORMANCE),rm -f $(STAMPS)/conformance,true)
+	@$(MAKE) $(STAMPS)/conformance
+
+$(STAMPS)/conformance: $(CONFORMANCE_INPUTS)
 	$(PY) -m conformance.runner
 	@# The docs' traceability matrix reads report.json: keep the two together.
 	@$(MAKE) generate-py >/dev/null
+	@mkdir -p $(@D) && touch $@
 
 # The committed report and docs are the published evidence: CI fails when the
 # run it just made differs from them (run `make conformance` and commit both).

@@ -1,34 +1,36 @@
-# Format documentation (issue #6).
+# Format documentation (issues #6, #15).
 #   docs        generated/docs/ (Markdown + SVG, committed; also written by `make generate`)
 #               and the static HTML site in $(DOCS_HTML)/ (ignored): open $(DOCS_HTML)/index.html.
-#               The Kaitai graph (ksc's graphviz target, rendered by Graphviz `dot`) goes
-#               into $(DOCS_HTML)/kaitai/ only; without dot the site says it is not built.
-#   docs-check  headless Chromium (Debian `chromium`, installed by .ci/setup-debian.sh with
-#               CBF_WANT_CHROMIUM=1) renders the index and a command page to PNG and fails
-#               on any console message (see generator/cbfgen/emit/docs/browser.py).
+#               The site is self-contained: repository files it links (the spec, the golden
+#               README, hex sources) are copied in under files/; copy the folder anywhere.
+#               ksc's Graphviz view of the .ksy is not built: one graph of every type, about
+#               21 m wide, that no reader can use (the docs' byte-field diagrams show the layouts).
+#   docs-pdf    headless Chromium prints the reference to $(DOCS_PDF): contents with page
+#               numbers, page numbers in the footer; fails unless the PDF has the pages the
+#               contents promise, each chapter where they say (generator/cbfgen/emit/docs/pdf.py).
+#   docs-check  every link of the site stays inside it and resolves; in headless Chromium
+#               (Debian `chromium`, installed by .ci/setup-debian.sh with CBF_WANT_CHROMIUM=1)
+#               no page overflows at 1280 px or 390 px, every image loads, no console message
+#               (generator/cbfgen/emit/docs/browser.py); then docs-pdf.
 DOCS_HTML := build/docs-html
-DOCS_KAITAI := $(DOCS_HTML)/kaitai
-.PHONY: docs docs-kaitai docs-site docs-check
+DOCS_PDF := build/docs-pdf/cbf-reference.pdf
+.PHONY: docs docs-site docs-pdf docs-check docs-chromium
 
 docs: docs-site  ## Markdown docs (generated/docs/) and the HTML site ($(DOCS_HTML)/index.html)
 
-# After docs-kaitai: the pages link the Kaitai graph only when it was built.
-docs-site: generate-py docs-kaitai
+docs-site: generate-py
 	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML)
 
-# ksc's own view of the .ksy. Graphviz comes from .ci/setup-debian.sh (c-deps).
-docs-kaitai: kaitai-setup generate-py c-deps
-	@rm -rf $(DOCS_KAITAI) && mkdir -p $(DOCS_KAITAI)
-	@if command -v dot >/dev/null; then \
-	  node generator/cbfgen/emit/kaitai/ksc_driver.js generated/kaitai/cbf.ksy.json $(DOCS_KAITAI) graphviz >/dev/null; \
-	  dot -Tsvg -o $(DOCS_KAITAI)/cbf.svg $(DOCS_KAITAI)/graphviz/cbf.dot 2>$(DOCS_KAITAI)/dot.log; \
-	  echo "docs: $(DOCS_KAITAI)/cbf.svg (ksc graphviz, dot $$(dot -V 2>&1 | awk '{print $$5}'))"; \
-	else echo "docs: Graphviz 'dot' not found: the Kaitai graph is not built" >&2; fi
-
-docs-check: docs  ## render the HTML docs in headless Chromium; fail on console errors
+docs-chromium:
 	@CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh
-	$(PY) -m cbfgen.emit.docs.browser --site $(DOCS_HTML) --out build/docs-check
 
-# Installing chromium (about 15 s on Debian 12 with a warm apt mirror) and three
-# renders (about 5 s) fit in CI's budget: `make test` runs the browser check.
+docs-pdf: generate-py docs-chromium  ## the reference as one PDF ($(DOCS_PDF)), checked against its contents
+	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF)
+
+docs-check: docs docs-chromium  ## links stay in the site; Chromium: no overflow, images load, no console; the PDF
+	$(PY) -m cbfgen.emit.docs.browser --site $(DOCS_HTML) --out build/docs-check
+	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF)
+
+# Installing chromium (about 15 s on Debian 12 with a warm apt mirror), the browser
+# check (about 40 s) and the PDF (about 45 s) fit in CI's budget: `make test` runs them.
 TEST_DEPS += docs-check

@@ -3,7 +3,7 @@
 # Python, JavaScript, Java and Go. Conformance testees: Python and JavaScript.
 KAITAI_LANGS := python javascript java go
 
-node_modules/.stamp: package.json package-lock.json
+node_modules/.stamp: package.json package-lock.json | setup
 	npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
 
@@ -11,7 +11,16 @@ node_modules/.stamp: package.json package-lock.json
 kaitai-setup: node_modules/.stamp  ## npm ci: the Kaitai compiler and JavaScript runtime
 
 generate-ksc: kaitai-setup generate-py  ## compile generated/kaitai/cbf.ksy to $(KAITAI_LANGS)
+	@$(MAKE) $(STAMPS)/ksc
+
+# ksc runs only when the .ksy, the driver or the compiler changed; it rewrites only
+# the files whose content changed. A missing output file forces a run too.
+KSC_OUTPUTS := generated/kaitai/python/cbf_kaitai/cbf.py generated/kaitai/javascript/Cbf.js generated/kaitai/java/Cbf.java generated/kaitai/go/cbf.go
+KSC_MISSING = $(filter-out $(wildcard $(KSC_OUTPUTS)),$(KSC_OUTPUTS))
+.PHONY: ksc-force
+$(STAMPS)/ksc: generated/kaitai/cbf.ksy.json generator/cbfgen/emit/kaitai/ksc_driver.js node_modules/.stamp $(if $(KSC_MISSING),ksc-force)
 	node generator/cbfgen/emit/kaitai/ksc_driver.js generated/kaitai/cbf.ksy.json generated/kaitai $(KAITAI_LANGS) >/dev/null
+	@mkdir -p $(@D) && touch $@
 
 GENERATE_POST += generate-ksc
 CONFORMANCE_BUILD += kaitai-setup

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 import bench.bench as B
+
+REPO = Path(__file__).resolve().parents[1]
 
 
 def test_table_and_targets_from_a_result() -> None:
@@ -57,3 +60,24 @@ def test_readme_table_is_replaced_between_the_markers(tmp_path: Path) -> None:
     bare = tmp_path / "BARE.md"
     bare.write_text("no markers\n", encoding="utf-8")
     assert not B.update_readme(bare, "x") and bare.read_text() == "no markers\n"
+
+
+def test_bench_writes_its_own_files_and_the_readme_only_on_request(tmp_path: Path, monkeypatch: Any) -> None:
+    """`make bench` leaves the tracked README alone; `make bench-readme` copies the last run's table."""
+    result = {"reps": 1, "rows": []}
+    monkeypatch.setattr(B, "run", lambda reps: dict(result))
+    monkeypatch.setattr(B, "machine", lambda: {"cpu": "CPU Y", "cores": 2, "python": "3.11", "gcc": "12",
+                                               "load_1min_at_end": 0.1})
+    monkeypatch.setattr(B, "table", lambda r: "| measured | table |")
+    readme = REPO / "README.md"
+    before = readme.read_bytes()
+    out = tmp_path / "results.json"
+    assert B.main(["--reps", "1", "--out", str(out)]) == 0
+    assert readme.read_bytes() == before
+    assert json.loads(out.read_text())["machine"]["cpu"] == "CPU Y"
+    table = (tmp_path / "TABLE.md").read_text()
+    assert "| measured | table |" in table and "CPU Y" in table
+    mine = tmp_path / "README.md"
+    mine.write_text(f"x\n{B.README_BEGIN}\nold\n{B.README_END}\n", encoding="utf-8")
+    assert B.main(["--out", str(out), "--readme", str(mine)]) == 0
+    assert "| measured | table |" in mine.read_text() and "old" not in mine.read_text()

@@ -21,7 +21,7 @@ from markdown_it import MarkdownIt
 from markdown_it.token import Token
 
 import cbfgen.emit.docs as docs
-from cbfgen.emit.docs import site
+from cbfgen.emit.docs import golden, site, site_links
 from cbfgen.loader import load
 from cbfgen.model import Spec
 
@@ -29,6 +29,7 @@ REPO = Path(__file__).resolve().parents[1]
 SPEC = load(REPO / "spec" / "cbf.yaml")
 DOCS = REPO / "generated" / "docs"
 ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
+CASES = golden.load_cases(docs.GOLDEN)
 
 
 # -- helpers ---------------------------------------------------------------------
@@ -90,24 +91,8 @@ def _ids(tree: ET.Element) -> list[str]:
 
 
 def html_problems(out: Path) -> list[str]:
-    """Every link, image or anchor of the site that does not resolve, and every duplicate id."""
-    trees = {p.relative_to(out).as_posix(): parse_html(p.read_text(encoding="utf-8")) for p in out.rglob("*.html")}
-    ids = {page: _ids(tree) for page, tree in trees.items()}
-    problems = [f"{page}: duplicate id {i}" for page, lst in ids.items() for i in sorted(set(lst)) if lst.count(i) > 1]
-    for page, tree in trees.items():
-        for el in tree.iter():
-            href = el.attrib.get("href") or el.attrib.get("src")
-            if not href or _external(href):
-                continue
-            path, _, frag = href.partition("#")
-            target = (out / posixpath.dirname(page) / path).resolve() if path else (out / page).resolve()
-            if not target.exists():
-                problems.append(f"{page}: {href}: no such file")
-                continue
-            rel = target.relative_to(out.resolve()).as_posix() if target.is_relative_to(out.resolve()) else ""
-            if frag and rel.endswith(".html") and frag not in ids.get(rel, []):
-                problems.append(f"{page}: {href}: no such anchor")
-    return problems
+    """The site's own link checker (make docs-check runs it): links resolve, none leaves the site."""
+    return site_links.problems(out)
 
 
 def _text(tree: ET.Element) -> str:
@@ -126,7 +111,8 @@ def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_every_markdown_link_and_anchor_resolves() -> None:
     pages = _md_pages(SPEC)
     files = {rel[len("docs/"):] for rel in docs.emit(SPEC)}
-    assert len(pages) == 1 + len(SPEC.commands)
+    # the reference, a page per command, the golden index, a page per case, the field index
+    assert len(pages) == 1 + len(SPEC.commands) + 1 + len(CASES) + 1
     assert sum(len(_md_links(t)) for t in pages.values()) > 100
     assert md_problems(pages, files, DOCS) == []
 
@@ -197,7 +183,8 @@ def test_pages_and_figures_are_deterministic() -> None:
 
 def test_html_parses_without_errors(html_site: Path) -> None:
     pages = sorted(html_site.rglob("*.html"))
-    assert len(pages) == 1 + len(SPEC.commands)
+    own = [p for p in pages if "files" not in p.relative_to(html_site).parts]
+    assert len(own) == 3 + len(SPEC.commands) + len(CASES)
     for p in pages:
         parse_html(p.read_text(encoding="utf-8"))
 
@@ -218,6 +205,30 @@ def test_html_link_checker_finds_broken_links(tmp_path: Path) -> None:
         '<img src="svg/none.svg" alt=""></body></html>',
         encoding="utf-8")
     assert len(html_problems(tmp_path)) == 4
+
+
+@pytest.mark.parametrize("href", ["https://example.org/spec", "../../spec/cbf.yaml", "/etc/hosts",
+                                  "file:///work/spec/cbf.yaml", "mailto:owner@example.org", "sub/../../x.html"])
+def test_link_checker_fails_on_a_link_leaving_the_site(tmp_path: Path, href: str) -> None:
+    """A planted link out of the site: the checker names it, although the target may exist."""
+    (tmp_path / "index.html").write_text(
+        f'<!DOCTYPE html><html><head><title>t</title></head><body><a href="{href}">out</a></body></html>',
+        encoding="utf-8")
+    problems = html_problems(tmp_path)
+    assert problems == [f"index.html: {href}: leaves the site"]
+
+
+def test_site_works_alone_when_copied(html_site: Path, tmp_path: Path) -> None:
+    """The site copied to an empty folder: every link still resolves, the spec and golden README are in it."""
+    import shutil
+
+    copy = tmp_path / "moved" / "site"
+    shutil.copytree(html_site, copy)
+    assert html_problems(copy) == []
+    assert (copy / "files" / "spec" / "cbf.yaml").read_bytes() == (REPO / "spec" / "cbf.yaml").read_bytes()
+    assert (copy / "files" / "conformance" / "golden" / "README.html").exists()
+    index = (copy / "index.html").read_text(encoding="utf-8")
+    assert 'href="files/spec/cbf.yaml.html"' in index
 
 
 def test_html_is_self_contained(html_site: Path) -> None:
@@ -255,15 +266,6 @@ def test_html_traceability_matrix_lists_every_check(html_site: Path) -> None:
             if cells and cells[0].tag == "td":
                 listed.append("".join(cells[0].itertext()))
     assert listed == [k.id for k in SPEC.checks]
-
-
-def test_site_links_the_kaitai_graph_when_built(tmp_path: Path) -> None:
-    (tmp_path / "kaitai").mkdir()
-    (tmp_path / "kaitai" / "cbf.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"/>\n', encoding="utf-8")
-    site.build(SPEC, tmp_path)
-    assert 'href="kaitai/cbf.svg"' in (tmp_path / "index.html").read_text(encoding="utf-8")
-    assert (tmp_path / "kaitai" / "cbf.svg").exists()
-    assert html_problems(tmp_path) == []
 
 
 # -- a new command in the spec ----------------------------------------------------

@@ -64,7 +64,7 @@ def test_compiles_without_warnings(tmp_path: Path) -> None:
                           "python", "javascript", "java", "go"], cwd=REPO, capture_output=True, text=True)
     assert res.returncode == 0, res.stderr
     assert res.stderr == ""
-    for f in ("python/cbf.py", "javascript/Cbf.js", "java/Cbf.java", "go/cbf.go"):
+    for f in ("python/cbf_kaitai/cbf.py", "javascript/Cbf.js", "java/Cbf.java", "go/cbf.go"):
         assert (tmp_path / f).stat().st_size > 10_000
 
 
@@ -75,7 +75,7 @@ def test_new_command_reaches_parsers_and_testees(tmp_path: Path) -> None:
     subprocess.run(["node", str(DRIVER), str(out / "kaitai" / "cbf.ksy.json"), str(out / "kaitai"),
                     "python", "javascript", "java", "go"], cwd=REPO, check=True, capture_output=True)
     assert "args_dwell" in (out / "kaitai" / "cbf.ksy").read_text()
-    assert "class ArgsDwell" in (out / "kaitai" / "python" / "cbf.py").read_text()
+    assert "class ArgsDwell" in (out / "kaitai" / "python" / "cbf_kaitai" / "cbf.py").read_text()
     assert "ArgsDwell" in (out / "kaitai" / "javascript" / "Cbf.js").read_text()
     assert "ArgsDwell" in (out / "kaitai" / "java" / "Cbf.java").read_text()
     assert "ArgsDwell" in (out / "kaitai" / "go" / "cbf.go").read_text()

@@ -102,7 +102,7 @@ def test_cbf_starts_without_matplotlib() -> None:
     r = subprocess.run([sys.executable, "-c", code, str(GOLDEN / "valid.v3.small.cbf"), "/tmp/unused-h7.png"],
                        capture_output=True, text=True)
     assert r.returncode == 2
-    assert r.stderr.strip().endswith("pip install 'cbf-toolkit[plot]'") and r.stderr.count("\n") == 1
+    assert r.stderr.strip().endswith("pip install 'cbf[plot]'") and r.stderr.count("\n") == 1
     r = subprocess.run([sys.executable, "-c", "import sys; sys.modules['matplotlib'] = None\n"
                         "from cbf.cli import main; sys.exit(main(['stats', sys.argv[1]]))",
                         str(GOLDEN / "valid.v3.small.cbf")], capture_output=True, text=True)

@@ -84,7 +84,7 @@ types:
           == 4 and version_minor == 0 ? 4 : 4))))'
         doc: 1-based index of the spec's version entry (1 = 1.x, 2 = 2.x, 3 = 3.0, 4 = 4.0); unknown versions read as 4.0.
   header_v2:
-    doc: File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1).
+    doc: File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1.
     seq:
     - id: implant_descriptor
       type: str
@@ -110,7 +110,7 @@ types:
       doc: Special pattern indicating end of header, the complement of the start pattern (N5, bytes 6D 48 5E AC).
       doc-ref: 300071 rev 03, 4.2
   header_v1:
-    doc: File header of version 1.x, before 7.2.2.1 shortened the implant descriptor.
+    doc: File header before 7.2.2.1 shortened the implant descriptor.
     seq:
     - id: implant_descriptor
       type: str

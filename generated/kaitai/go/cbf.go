@@ -1974,7 +1974,7 @@ func (this *Cbf_Header) VersionIndex() (v int8, err error) {
  */
 
 /**
- * File header of version 1.x, before 7.2.2.1 shortened the implant descriptor.
+ * File header before 7.2.2.1 shortened the implant descriptor.
  */
 type Cbf_HeaderV1 struct {
 	ImplantDescriptor string
@@ -2052,7 +2052,7 @@ func (this *Cbf_HeaderV1) Read(io *kaitai.Stream, parent *Cbf_Header, root *Cbf)
  */
 
 /**
- * File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1).
+ * File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1.
  */
 type Cbf_HeaderV2 struct {
 	ImplantDescriptor string

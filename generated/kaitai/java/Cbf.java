@@ -1944,7 +1944,7 @@ public class Cbf extends KaitaiStruct {
     }
 
     /**
-     * File header of version 1.x, before 7.2.2.1 shortened the implant descriptor.
+     * File header before 7.2.2.1 shortened the implant descriptor.
      */
     public static class HeaderV1 extends KaitaiStruct {
         public static HeaderV1 fromFile(String fileName) throws IOException {
@@ -2012,7 +2012,7 @@ public class Cbf extends KaitaiStruct {
     }
 
     /**
-     * File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1).
+     * File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1.
      */
     public static class HeaderV2 extends KaitaiStruct {
         public static HeaderV2 fromFile(String fileName) throws IOException {

@@ -1223,7 +1223,7 @@ var Cbf = (function() {
   })();
 
   /**
-   * File header of version 1.x, before 7.2.2.1 shortened the implant descriptor.
+   * File header before 7.2.2.1 shortened the implant descriptor.
    */
 
   var HeaderV1 = Cbf.HeaderV1 = (function() {
@@ -1268,7 +1268,7 @@ var Cbf = (function() {
   })();
 
   /**
-   * File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1).
+   * File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1.
    */
 
   var HeaderV2 = Cbf.HeaderV2 = (function() {

@@ -11,7 +11,7 @@ import sys
 
 from kaitaistruct import KaitaiStream, ValidationFailedError, BytesIO
 
-from cbf import Cbf
+from cbf_kaitai import Cbf
 
 HEADER_SIZE = 128
 HEADER_FIELDS = [('start_pattern', 'uint', 1), ('file_checksum', 'uint', 1), ('header_checksum', 'uint', 1), ('reserved_ecc', 'bytes', 1), ('version_major', 'uint', 1), ('version_minor', 'uint', 1)]

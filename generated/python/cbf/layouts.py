@@ -73,7 +73,7 @@ class CommandCode(IntEnum):
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class HeaderV2:
-    """File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1).
+    """File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1.
 
     128 bytes (4.2).
     """
@@ -102,7 +102,7 @@ class HeaderV2:
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class HeaderV1:
-    """File header of version 1.x, before 7.2.2.1 shortened the implant descriptor.
+    """File header before 7.2.2.1 shortened the implant descriptor.
 
     128 bytes (7.2.2.1).
     """

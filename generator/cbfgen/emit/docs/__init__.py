@@ -1,11 +1,15 @@
 """Format documentation emitter: Markdown pages and SVG figures from the spec model.
 
 Every command, field, check, clause, decision and erratum comes from the
-model; the golden hex dumps, the traceability status and the reliability
-figures come from conformance/ (the committed report.json and
-reliability.json; when one is missing the page says so). The pages are
-index.md and one page per command under commands/; the figures are under
-svg/. The HTML site (site.py, `make docs`) renders the same pages.
+model; free text passes through text.prose (escaped, tolerances as values,
+decision ids as links). The golden cases (their .cbf read with the model by
+hexdump.py, see golden.py), the traceability status with each binding's
+failure list, and the reliability figures come from conformance/ (when a
+report is missing the page says so). The pages are index.md, one page per
+command under commands/, golden/index.md and one page per golden case, and
+fields.md (the static index of every field and check); the figures are under
+svg/. The HTML site (site.py, `make docs`), the browser check (browser.py)
+and the PDF (pdf.py) render the same pages.
 """
 
 from __future__ import annotations
@@ -16,14 +20,15 @@ import struct
 from pathlib import Path
 from typing import Any
 
+from ... import __version__
 from ...model import Check, Command, Layout, Spec, ident
 from ...render import environment
-from . import svg
+from . import golden, svg, text
 
 HERE = Path(__file__).parent
 REPO = HERE.parents[3]
 OUT = "docs"
-DUMPS = ("valid.v3.small", "check.6.4.4.arg_checksum")
+GOLDEN = REPO / "conformance" / "golden"
 REPORT = REPO / "conformance" / "report.json"
 RELIABILITY = REPO / "conformance" / "reliability.json"
 
@@ -41,6 +46,15 @@ def layout_svg(lay: Layout) -> str:
     """The argument diagram of a layout, relative to the docs folder."""
     suffix = f"-{_anchor(lay.variant)}" if lay.variant else ""
     return f"svg/cmd-{_anchor(lay.command)}{suffix}.svg"
+
+
+def case_page(name: str) -> str:
+    """The page of a golden case, relative to the docs folder."""
+    return f"golden/{name}.md"
+
+
+GOLDEN_INDEX = "golden/index.md"
+FIELD_INDEX = "fields.md"
 
 
 def header_svg(layout_id: str) -> str:
@@ -67,22 +81,42 @@ def _reliability_file() -> dict[str, Any] | None:
     return _read_json(RELIABILITY)
 
 
+FAILURES = REPO / "conformance" / "failures"
+
+
+def known_failures(binding: str) -> tuple[set[str], list[str]]:
+    """The cases a binding's failure list names, and the list's own explanation (its comment lines)."""
+    try:
+        text = (FAILURES / f"{binding}.txt").read_text(encoding="utf-8")
+    except OSError:
+        return set(), []
+    names = {line.split()[0] for line in text.splitlines() if line.strip() and not line.startswith("#")}
+    notes = [line[1:].strip() for line in text.splitlines() if line.startswith("#")]
+    start = next((k + 1 for k, line in enumerate(notes) if line.lower().startswith("why")), 0)
+    return names, notes[start:]
+
+
 def _traceability(spec: Spec, report: dict[str, Any] | None) -> list[dict[str, Any]]:
+    """Per check: its golden cases and, per binding, counts of pass / not expressible / fail / not run."""
     rows = []
+    bindings = sorted((report or {}).get("bindings", {}).items())
+    listed = {name: known_failures(name)[0] for name, _ in bindings}
     for check in spec.checks:
         cases = []
         if report:
             cases = sorted(name for name, c in report.get("cases", {}).items() if check.id in c.get("checks", []))
-        status: dict[str, str] = {}
-        if report:
-            for binding, b in sorted(report.get("bindings", {}).items()):
-                res = [b["results"].get(name, {}).get("status", "skip") for name in cases]
-                if not b.get("available", True) or not res:
-                    status[binding] = "not run"
-                elif all(r == "pass" for r in res):
-                    status[binding] = f"pass ({len(res)})"
+        status: dict[str, dict[str, int]] = {}
+        for binding, b in bindings:
+            counts = {"pass": 0, "not expressible": 0, "fail": 0, "not run": 0}
+            for name in cases:
+                res = b.get("results", {}).get(name, {}).get("status", "skip") if b.get("available", True) else "skip"
+                if res == "pass":
+                    counts["pass"] += 1
+                elif res == "fail":
+                    counts["not expressible" if name in listed[binding] else "fail"] += 1
                 else:
-                    status[binding] = f"FAIL ({sum(r == 'fail' for r in res)}/{len(res)})"
+                    counts["not run"] += 1
+            status[binding] = counts
         rows.append({"check": check, "cases": cases, "status": status})
     return rows
 
@@ -139,13 +173,6 @@ def _reliability(data: dict[str, Any] | None) -> dict[str, Any] | None:
     }
 
 
-def _hexdump(name: str) -> str | None:
-    path = REPO / "conformance" / "golden" / f"{name}.hex"
-    if not path.exists():
-        return None
-    return path.read_text(encoding="utf-8")
-
-
 def _worked_example(spec: Spec) -> dict[str, Any]:
     """A checksum example computed here from a record the model describes (the first motion command)."""
     cmd = next(c for c in spec.commands if c.motion and c.motion.get("kind") == "line")
@@ -193,20 +220,85 @@ def figures(spec: Spec) -> dict[str, str]:
     return out
 
 
+def _quantities(spec: Spec) -> list[dict[str, Any]]:
+    """Tolerances and limits as the reader needs them: a label, the value with its unit, the key for a tooltip."""
+    rows = []
+    for table, values in (("tolerances", spec.tolerances), ("limits", spec.limits)):
+        for key in values:
+            base, _, suffix = key.rpartition("_")
+            label = (base if base and suffix in spec.units else key).replace("_", " ")
+            rows.append({"kind": table[:-1], "label": label, "key": f"{table}.{key}",
+                         "value": text.value_html(spec, table, key)})
+    return rows
+
+
+def _cut_rows(spec: Spec) -> list[dict[str, Any]]:
+    """Every layout of every command in the CUT keyword table (version-specific layouts included)."""
+    rows = []
+    for c in spec.commands:
+        kw = c.name.lower() if spec.cut["keyword_case"] == "lower" else c.name
+        for lay in c.layouts:
+            args = []
+            for a in lay.args:
+                if a.reserved:
+                    continue
+                how = (" (vector)" if a.is_vector else " (rest of line)" if a.text
+                       else " (word)" if a.kind == "string" else "")
+                args.append(a.name + how)
+            rows.append({"command": c, "keyword": kw, "layout": lay, "args": args})
+    return rows
+
+
+def _field_index(spec: Spec) -> list[dict[str, str]]:
+    """Every field and check with where it is described: the static search page."""
+    rows = []
+    for h in spec.headers.values():
+        for f in h.fields:
+            rows.append({"name": f.name, "what": f"header {h.id} field, offset {f.offset}",
+                         "href": f"index.md#header-{h.id}"})
+    for f in spec.record.fields:
+        rows.append({"name": f.name, "what": f"record head field, offset {f.offset}", "href": "index.md#records"})
+    for c in spec.commands:
+        for lay in c.layouts:
+            tag = f" ({lay.variant})" if lay.variant else ""
+            for a in lay.args:
+                rows.append({"name": a.name, "what": f"{c.name}{tag} argument, offset {a.offset}",
+                             "href": f"{command_page(c)}#layout-{_anchor(lay.variant or 'primary')}"})
+        rows.append({"name": c.name, "what": f"command 0x{c.code:02X}", "href": command_page(c)})
+    for k in spec.checks:
+        rows.append({"name": k.id, "what": f"check ({k.kind}, {k.severity})",
+                     "href": f"index.md#check-{_anchor(k.id)}"})
+    for d in spec.decisions:
+        rows.append({"name": d.id, "what": f"decision: {d.topic}", "href": f"index.md#decision-{_anchor(d.id)}"})
+    return sorted(rows, key=lambda r: (r["name"].lower(), r["what"]))
+
+
 def context(spec: Spec) -> dict[str, Any]:
     """The context every page (Markdown and HTML) is rendered from."""
     report = _report()
+    cases = golden.load_cases(GOLDEN)
+    bindings = sorted((report or {}).get("bindings", {}))
     return {
         "spec": spec,
+        "revision": spec.revision,
+        "toolkit_version": __version__,
         "report": report,
         "trace": _traceability(spec, report),
+        "limitations": {b: known_failures(b)[1] for b in bindings},
         "reliability": _reliability(_reliability_file()),
-        "dumps": {name: _hexdump(name) for name in DUMPS},
+        "cases": cases,
+        "examples": golden.examples(spec, cases),
+        "header_example": golden.header_example(spec, cases),
         "example": _worked_example(spec),
         "versions": [v.id for v in spec.versions],
         "figures": figures(spec),
         "record_svg": RECORD_SVG,
         "motion_svg": MOTION_SVG,
+        "quantities": _quantities(spec),
+        "cut_rows": _cut_rows(spec),
+        "field_index": _field_index(spec),
+        "golden_index": GOLDEN_INDEX,
+        "field_index_page": FIELD_INDEX,
     }
 
 
@@ -217,6 +309,8 @@ def _why(k: Check, c: Command) -> str | None:
     if any(t.command == c.name for t in k.targets):
         return f"names {c.name}"
     if k.kind == "availability":
+        if c.name not in k.commands:  # another availability check covers this command
+            return None
         missing = [v for v in k.versions if not c.available_in(v)]
         return f"{c.name} is not in version {', '.join(missing)}" if missing else None
     reasons = {
@@ -235,17 +329,31 @@ def _checks_of(spec: Spec, c: Command) -> list[tuple[Check, str]]:
     return [(k, why) for k in spec.checks if (why := _why(k, c)) is not None]
 
 
-def emit(spec: Spec) -> dict[str, bytes]:
+def _environment(spec: Spec) -> Any:
     env = environment(HERE / "templates")
     env.filters["anchor"] = _anchor
     env.filters["page"] = command_page
+    env.filters["case_page"] = case_page
     env.filters["layout_svg"] = layout_svg
     env.filters["header_svg"] = header_svg
-    ctx = context(spec)
+    env.filters["prose"] = lambda value, index="": text.prose(spec, value, index)
+    env.filters["md"] = text.md_escape
+    return env
+
+
+def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
+    """Every Markdown page and figure, by path under generated/ (ctx: a context(spec) already built)."""
+    env = _environment(spec)
+    ctx = ctx if ctx is not None else context(spec)
     files = {f"{OUT}/index.md": env.get_template("index.md.j2").render(**ctx).encode()}
     page = env.get_template("command.md.j2")
     for c in spec.commands:
         files[f"{OUT}/{command_page(c)}"] = page.render(c=c, checks=_checks_of(spec, c), **ctx).encode()
-    for rel, text in ctx["figures"].items():
-        files[f"{OUT}/{rel}"] = text.encode()
+    files[f"{OUT}/{GOLDEN_INDEX}"] = env.get_template("golden_index.md.j2").render(**ctx).encode()
+    case_tpl = env.get_template("golden_case.md.j2")
+    for case in ctx["cases"]:
+        files[f"{OUT}/{case_page(case.name)}"] = case_tpl.render(**golden.page_context(spec, case), **ctx).encode()
+    files[f"{OUT}/{FIELD_INDEX}"] = env.get_template("fields.md.j2").render(**ctx).encode()
+    for rel, svg_text in ctx["figures"].items():
+        files[f"{OUT}/{rel}"] = svg_text.encode()
     return files

@@ -3,10 +3,13 @@
 The pages are the Markdown pages of the docs emitter, rendered from the same
 model context, turned into HTML by markdown-it-py and placed in the page
 shell templates/page.html.j2 (also rendered from that context: the command
-navigation comes from the model). Links between pages point to .html, links
-to files of the repository (the spec, the golden cases) are rewritten to
-reach them from the site folder, and the SVG figures are copied beside the
-pages. No CDN, no JavaScript: one inline style sheet per page.
+navigation comes from the model). Links between pages point to .html. A
+link to a file of the repository outside the docs (the spec, the golden
+README, a case's hex source) is copied into the site under files/ (a
+Markdown file rendered as a page, any other text file also as a page with
+its text, beside the verbatim copy), so the site works alone wherever it is
+copied. The SVG figures are copied beside the pages. No CDN, no JavaScript:
+one inline style sheet per page.
 
     python -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out build/docs-html
 """
@@ -14,10 +17,11 @@ pages. No CDN, no JavaScript: one inline style sheet per page.
 from __future__ import annotations
 
 import argparse
-import os
+import html
 import posixpath
 import shutil
 import sys
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -29,39 +33,54 @@ from ...model import Spec
 from ...render import environment
 from . import HERE, OUT, REPO, command_page, context, emit
 
-KAITAI_SVG = "kaitai/cbf.svg"  # written by `make docs` (ksc graphviz + dot) before the pages
-KEEP = ("kaitai",)  # folders of the site that later or earlier build steps own
+DOCS = f"generated/{OUT}"  # where the Markdown pages live in the repository
+FILES = "files"  # repository files the pages link to, copied in
+
+
+@dataclass
+class Imports:
+    """Repository files (relative to REPO) that pages link to, collected while the links are rewritten."""
+
+    paths: set[str] = field(default_factory=set)
 
 
 def _markdown() -> MarkdownIt:
     return MarkdownIt("commonmark", {"html": True}).enable("table")
 
 
-def rewrite(href: str, page: str, out: Path) -> str:
-    """A link of the Markdown page `page` (relative to the docs folder) as the HTML site needs it."""
+def imported(repo_rel: str) -> str:
+    """Where a repository file is published in the site: a page for text, named after the file."""
+    return f"{FILES}/{repo_rel}.html" if not repo_rel.endswith(".md") else f"{FILES}/{repo_rel[:-3]}.html"
+
+
+def rewrite(href: str, page: str, imports: Imports, source: str | None = None) -> str:
+    """A link of a Markdown page as the HTML site needs it. page: the HTML page's path in the site;
+    source: the Markdown file's path in the repository (default: the docs page of that name)."""
     path, hash_, frag = href.partition("#")
     if not path or "://" in path or path.startswith(("mailto:", "/")):
         return href
-    target = posixpath.normpath(posixpath.join(posixpath.dirname(page), path))
-    if not target.startswith("../"):
+    source = source or f"{DOCS}/{page[:-5]}.md"
+    repo_target = posixpath.normpath(posixpath.join(posixpath.dirname(source), path))
+    if repo_target.startswith(DOCS + "/"):
+        target = repo_target[len(DOCS) + 1:]
         if target.endswith(".md"):
             target = target[:-3] + ".html"
-        rel = posixpath.relpath(target, posixpath.dirname(page) or ".")
-        return rel + hash_ + frag
-    # Outside the docs: a file of the repository, reached from the site folder.
-    in_repo = (REPO / "generated" / OUT / posixpath.dirname(page) / path).resolve()
-    rel = os.path.relpath(in_repo, (out / posixpath.dirname(page)).resolve())
-    return Path(rel).as_posix() + hash_ + frag
+    elif not repo_target.startswith("../") and (REPO / repo_target).is_file():
+        imports.paths.add(repo_target)
+        target = imported(repo_target)
+    else:
+        return href  # left as it is: the link checker reports it
+    return posixpath.relpath(target, posixpath.dirname(page) or ".") + hash_ + frag
 
 
-def _walk(tokens: list[Token], page: str, out: Path) -> None:
+def _walk(tokens: list[Token], page: str, imports: Imports, source: str | None) -> None:
     for tok in tokens:
         for attr in ("href", "src"):
             value = tok.attrs.get(attr)
             if isinstance(value, str):
-                tok.attrs[attr] = rewrite(value, page, out)
+                tok.attrs[attr] = rewrite(value, page, imports, source)
         if tok.children:
-            _walk(tok.children, page, out)
+            _walk(tok.children, page, imports, source)
 
 
 def _title(tokens: list[Token]) -> str:
@@ -71,44 +90,69 @@ def _title(tokens: list[Token]) -> str:
     return ""
 
 
-def to_html(md: MarkdownIt, text: str, page: str, out: Path) -> tuple[str, str]:
-    """(title, body HTML) of one Markdown page."""
+def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
+            source: str | None = None) -> tuple[str, str]:
+    """(title, body HTML) of one Markdown page (page: its HTML path in the site)."""
     tokens = md.parse(text)
-    _walk(tokens, page, out)
+    _walk(tokens, page, imports, source)
     return _title(tokens), md.renderer.render(tokens, md.options, {})
 
 
-def pages(spec: Spec, out: Path, kaitai: bool) -> dict[str, bytes]:
-    """Every file of the site (HTML pages and figures), by path relative to out."""
-    files = emit(spec)
+def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:
+    return [(c.name, root + command_page(c)[:-3] + ".html") for c in spec.commands]
+
+
+def pages(spec: Spec) -> dict[str, bytes]:
+    """Every file of the site (HTML pages, figures, imported repository files), by path relative to it."""
     ctx: dict[str, Any] = context(spec)
+    files = emit(spec, ctx)
     env = environment(HERE / "templates")
     shell = env.get_template("page.html.j2")
     md = _markdown()
     prefix = OUT + "/"
     site: dict[str, bytes] = {}
+    imports = Imports()
+
+    def render(page: str, title: str, body: str) -> bytes:
+        root = "../" * page.count("/")
+        return shell.render(title=title, body=body, root=root, nav=_nav(spec, root), current=page,
+                            **ctx).encode()
+
     for rel, data in sorted(files.items()):
         page = rel[len(prefix):]
         if not page.endswith(".md"):
             site[page] = data
             continue
-        title, body = to_html(md, data.decode(), page, out)
-        root = "../" * page.count("/")
-        nav = [(c.name, root + command_page(c)[:-3] + ".html") for c in spec.commands]
-        html = shell.render(title=title, body=body, root=root, nav=nav, current=page[:-3] + ".html",
-                            kaitai=root + KAITAI_SVG if kaitai else None, **ctx)
-        site[page[:-3] + ".html"] = html.encode()
+        html_page = page[:-3] + ".html"
+        title, body = to_html(md, data.decode(), html_page, imports)
+        site[html_page] = render(html_page, title, body)
+    done: set[str] = set()
+    while imports.paths - done:  # an imported Markdown file may link further files
+        repo_rel = sorted(imports.paths - done)[0]
+        done.add(repo_rel)
+        text = (REPO / repo_rel).read_text(encoding="utf-8")
+        page = imported(repo_rel)
+        if repo_rel.endswith(".md"):
+            # Links of the imported page are relative to its place in the repository.
+            title, body = to_html(md, text, page, imports, source=repo_rel)
+            title = title or repo_rel
+        else:
+            title = repo_rel
+            raw = posixpath.basename(repo_rel)
+            site[f"{FILES}/{repo_rel}"] = text.encode()
+            body = (f"<h1>{html.escape(repo_rel)}</h1>\n<p>A copy of <code>{html.escape(repo_rel)}</code> "
+                    f"from the repository (<a href=\"{html.escape(raw)}\">the file itself</a>).</p>\n"
+                    f"<pre><code>{html.escape(text)}</code></pre>\n")
+        site[page] = render(page, title, body)
     return site
 
 
 def build(spec: Spec, out: Path) -> int:
-    """Write the site into out (its old pages removed, the KEEP folders kept); the number of files."""
+    """Write the site into out (its old content removed); the number of files."""
     out.mkdir(parents=True, exist_ok=True)
     for p in sorted(out.iterdir()):
-        if p.name in KEEP:
-            continue
         shutil.rmtree(p) if p.is_dir() else p.unlink()
-    site = pages(spec, out.resolve(), (out / KAITAI_SVG).exists())
+    site = pages(spec)
     for rel, data in site.items():
         (out / rel).parent.mkdir(parents=True, exist_ok=True)
         (out / rel).write_bytes(data)

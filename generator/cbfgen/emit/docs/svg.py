@@ -85,20 +85,32 @@ def _open(width: float, height: float, title: str) -> list[str]:
     ]
 
 
+def box_label(k: int, name: str, width: float, cont: bool) -> list[str]:
+    """The lines written in one box of field k: its name, or its legend number when the name does not fit;
+    every piece after the first is marked as a continuation. Never empty: a box always says what it is."""
+    first = [[name], [str(k)]]
+    rest = [[f"{name} (cont.)"], [name, "(cont.)"], [str(k), "(cont.)"], [str(k), "cont."], [f"{k}+"]]
+    for lines in rest if cont else first:
+        if all(_label(line, width) for line in lines):
+            return lines
+    return (rest if cont else first)[-1]
+
+
 def _field_shapes(k: int, f: Field, per_row: int) -> list[str]:
     segs = _segments(f, per_row)
     fill = FILL.get(category(f), "#ffffff")
     out = [f"<g><title>{escape(f'{f.name}: offset {f.offset}, {f.size} bytes, {_type_text(f)}')}</title>"]
-    widest = max(segs, key=lambda s: (s[2], -s[0]))
-    for row, col, n in segs:
+    for n_seg, (row, col, n) in enumerate(segs):
         x, y, w = LEFT + col * CELL, TOP + row * ROW, n * CELL
         out.append(f'<rect x="{_x(x)}" y="{_x(y)}" width="{_x(w)}" height="{ROW}" fill="{fill}" stroke="#333333"/>')
-        if (row, col, n) != widest:
-            continue
-        text = f.name if _label(f.name, w) else str(k) if _label(str(k), w) else ""
-        if text:
-            cx, cy = _x(x + w / 2), _x(y + ROW / 2 + 4)
-            out.append(f'<text x="{cx}" y="{cy}" text-anchor="middle">{escape(text)}</text>')
+        lines = box_label(k, f.name, w, n_seg > 0)
+        cx = _x(x + w / 2)
+        if len(lines) == 1:
+            out.append(f'<text x="{cx}" y="{_x(y + ROW / 2 + 4)}" text-anchor="middle">{escape(lines[0])}</text>')
+        else:
+            top, bottom = (escape(t) for t in lines)
+            out.append(f'<text x="{cx}" y="{_x(y + ROW / 2 - 3)}" text-anchor="middle">{top}'
+                       f'<tspan x="{cx}" dy="14">{bottom}</tspan></text>')
     out.append("</g>")
     return out
 

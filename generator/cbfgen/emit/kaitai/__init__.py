@@ -14,14 +14,16 @@ from typing import Any
 
 import yaml
 
-from ...model import Command, Field, Layout, Spec, ident
+from ... import __license__ as TOOLKIT_LICENSE
+from ... import __version__ as TOOLKIT_VERSION
+from ...model import Command, Field, Layout, Spec, camel, ident
 from ...render import environment
 
 HERE = Path(__file__).parent
 
 OUT = "kaitai"
 # Produced by ksc after the Python emitters (mk/kaitai.mk); not stale.
-KEEP = ("kaitai/python/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/Cbf.java", "kaitai/go/cbf.go")
+KEEP = ("kaitai/python/cbf_kaitai/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/Cbf.java", "kaitai/go/cbf.go")
 
 
 def _doc(text: str) -> str:
@@ -273,8 +275,19 @@ def emit(spec: Spec) -> dict[str, bytes]:
         f"{OUT}/java/Testee.java": env.get_template("Testee.java.j2").render(**ctx).encode(),
     }
     text = yaml.dump(ksy, Dumper=_Dumper, sort_keys=False, width=120, allow_unicode=False)
+    pkg = {"spec": spec, "version": TOOLKIT_VERSION, "license": TOOLKIT_LICENSE, "cls": camel(spec.meta["id"]),
+           "module": spec.meta["id"]}
+    packages = {
+        f"{OUT}/python/{rel}": env.get_template(f"package/python/{rel}.j2").render(**pkg).encode()
+        for rel in ("pyproject.toml", "README.md", "cbf_kaitai/__init__.py")
+    }
+    packages.update({
+        f"{OUT}/javascript/{rel}": env.get_template(f"package/javascript/{rel}.j2").render(**pkg).encode()
+        for rel in ("package.json", "README.md")
+    })
     return {
         f"{OUT}/cbf.ksy": ("# Generated from spec/cbf.yaml by cbfgen; do not edit.\n" + text).encode(),
         f"{OUT}/cbf.ksy.json": (json.dumps(ksy, indent=1) + "\n").encode(),
         **testees,
+        **packages,
     }

@@ -1,7 +1,9 @@
 // Compile a .ksy (given as JSON, converted by cbfgen) with the npm build of
 // kaitai-struct-compiler, whose only interface is the API
 // compile(lang, ksyObject, importer, debug). Writes every produced file under
-// OUTDIR/<lang>/ and exits non-zero on any error or warning.
+// OUTDIR/<lang>/ and exits non-zero on any error or warning. A file whose
+// content is unchanged is not rewritten, so its mtime stays and `make` does not
+// rebuild the Go and Java testees that depend on it.
 //   node ksc_driver.js KSY.json OUTDIR lang...
 'use strict';
 const fs = require('fs');
@@ -14,7 +16,9 @@ async function main() {
   const importer = { importYaml: (name) => Promise.reject(new Error('no imports expected: ' + name)) };
   for (const lang of langs) {
     const files = await ksc.compile(lang, ksy, importer, false);
-    const dir = path.join(outDir, lang);
+    // The Python parser is the package cbf_kaitai (its module cbf.py), so that it never
+    // shadows the codec's `cbf` package on a user's path.
+    const dir = lang === 'python' ? path.join(outDir, lang, 'cbf_kaitai') : path.join(outDir, lang);
     fs.mkdirSync(dir, { recursive: true });
     for (const name of Object.keys(files).sort()) {
       const target = path.join(dir, name);
@@ -22,6 +26,9 @@ async function main() {
       let text = files[name];
       // The npm build takes no --go-package option: name the package here.
       if (lang === 'go' && !/^package /m.test(text)) text = 'package ' + ksy.meta.id + '\n\n' + text;
+      let old = null;
+      try { old = fs.readFileSync(target, 'utf8'); } catch (e) { old = null; }
+      if (old === text) continue;
       fs.writeFileSync(target, text);
       console.log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
     }

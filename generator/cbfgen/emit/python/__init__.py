@@ -8,12 +8,20 @@ import json
 from pathlib import Path
 from typing import Any
 
+from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...render import environment
 
 HERE = Path(__file__).parent
 PKG = "python/cbf"
+# What the `cbf` distribution needs at run time, as ranges a user's resolver can meet
+# (the development pins are in .ci/constraints.txt). Only the codec's own imports.
+DEPENDENCIES = ("numpy>=2.0,<3",)
+EXTRAS: dict[str, tuple[str, ...]] = {
+    "testing": ("hypothesis>=6.100,<7",),  # cbf.testing: strategies
+    "plot": ("matplotlib>=3.8,<4",),  # cbf plot, imported lazily
+}
 
 
 def _py_type(f: Field) -> str:
@@ -70,12 +78,14 @@ def spec_data(spec: Spec) -> dict[str, Any]:
             "fields": {f.field: {"algorithm": f.algorithm, "coverage": f.coverage} for f in spec.checksums.fields},
             "fill_order": list(spec.checksums.fill_order),
         },
-        "profiles": {p.id: {"file_coverages": list(p.file_coverages), "hint_coverages": list(p.hint_coverages)}
+        "profiles": {p.id: {"file_coverages": list(p.file_coverages), "hint_coverages": list(p.hint_coverages),
+                            "file_algorithm": p.file_algorithm or spec.checksums.for_field("file").algorithm}
                      for p in spec.profiles},
         "tolerances": spec.tolerances,
         "limits": spec.limits,
         "checks": [
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
+             "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args)} for t in c.targets],
              "min": c.min, "max": c.max, "input": c.input}
             for c in spec.checks
@@ -137,6 +147,10 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["pytype"] = _py_type
     out: dict[str, bytes] = {}
     out[f"{PKG}/spec_data.json"] = (json.dumps(spec_data(spec), indent=1) + "\n").encode()
+    dist = {"spec": spec, "version": TOOLKIT_VERSION, "license": TOOLKIT_LICENSE,
+            "dependencies": DEPENDENCIES, "extras": EXTRAS}
+    out["python/pyproject.toml"] = env.get_template("pyproject.toml.j2").render(**dist).encode()
+    out["python/README.md"] = env.get_template("README.md.j2").render(**dist).encode()
     out[f"{PKG}/version.py"] = (
         '"""The toolkit version and the spec revision this package was generated from."""\n\n'
         f"__version__ = {TOOLKIT_VERSION!r}\n"

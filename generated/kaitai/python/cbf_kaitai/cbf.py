@@ -985,7 +985,7 @@ class Cbf(KaitaiStruct):
 
 
     class HeaderV1(KaitaiStruct):
-        """File header of version 1.x, before 7.2.2.1 shortened the implant descriptor."""
+        """File header before 7.2.2.1 shortened the implant descriptor."""
         def __init__(self, _io, _parent=None, _root=None):
             super(Cbf.HeaderV1, self).__init__(_io)
             self._parent = _parent
@@ -1006,7 +1006,7 @@ class Cbf(KaitaiStruct):
 
 
     class HeaderV2(KaitaiStruct):
-        """File header of versions 2.x, 3.0 and 4.0 (4.2, 7.2.2.1)."""
+        """File header as 4.2 gives it, with the configuration descriptor of 7.2.2.1."""
         def __init__(self, _io, _parent=None, _root=None):
             super(Cbf.HeaderV2, self).__init__(_io)
             self._parent = _parent

@@ -1,0 +1,99 @@
+"""The Python distributions used from outside this repository (issue 14): the `cbf` wheel
+installs alone into a clean venv (no generator dependency comes with it) and decodes,
+validates and converts a file there; the `cbfgen` wheel generates a binding from a spec
+given on its command line, with no checkout around it."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+import cbf
+import cbfgen
+
+REPO = Path(__file__).resolve().parents[1]
+GOLDEN = REPO / "conformance" / "golden"
+
+
+# A consumer's environment: none of this checkout's paths.
+CLEAN_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+
+
+def _run(*cmd: str | Path, cwd: Path, check: bool = True) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check, env=CLEAN_ENV)
+
+
+def _build(src: Path, work: Path) -> Path:
+    """Build a wheel from a copy of src (the tree stays clean), with the pinned setuptools."""
+    copy = work / src.name
+    shutil.copytree(src, copy, ignore=shutil.ignore_patterns("__pycache__", "build", "*.egg-info"))
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", copy, cwd=work)
+    return next((work / "dist").glob("*.whl"))
+
+
+def _venv(where: Path, *wheels: Path) -> Path:
+    _run(sys.executable, "-m", "venv", where, cwd=where.parent)
+    _run(where / "bin" / "python", "-m", "pip", "install", "-q", "--disable-pip-version-check", *wheels,
+         cwd=where.parent)
+    return where / "bin"
+
+
+@pytest.fixture(scope="module")
+def outside(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return tmp_path_factory.mktemp("consumer")
+
+
+def test_cbf_wheel_alone_decodes_validates_converts(outside: Path) -> None:
+    wheel = _build(REPO / "generated" / "python", outside / "cbf-build")
+    assert wheel.name.startswith(f"cbf-{cbf.__version__}-")
+    bin_ = _venv(outside / "venv-cbf", wheel)
+    py = bin_ / "python"
+    # only the codec's own dependencies came along
+    assert _run(py, "-c", "import jinja2", cwd=outside, check=False).returncode != 0
+    assert _run(py, "-c", "import jsonschema", cwd=outside, check=False).returncode != 0
+    version = _run(py, "-c", "import cbf; print(cbf.__version__, cbf.SPEC_REVISION)", cwd=outside)
+    assert version.stdout.split(" ", 1) == [cbf.__version__, cbf.SPEC_REVISION + "\n"]
+    typed = _run(py, "-c", "import cbf, pathlib; print((pathlib.Path(cbf.__file__).parent / 'py.typed').exists())",
+                 cwd=outside)
+    assert typed.stdout.strip() == "True"
+    golden = next(p for p in sorted(GOLDEN.glob("valid.v3.*.cbf")) if p.stat().st_size < 100_000)
+    work = outside / "files"
+    work.mkdir()
+    shutil.copy(golden, work / "part.cbf")
+    assert _run(bin_ / "cbf", "validate", "part.cbf", cwd=work).returncode == 0
+    _run(bin_ / "cbf", "decode", "part.cbf", "--to", "cut", "-o", "part.cut", cwd=work)
+    _run(bin_ / "cbf", "encode", "part.cut", "-o", "back.cbf", cwd=work)
+    assert cbf.decode((work / "back.cbf").read_bytes()).records == cbf.decode(golden.read_bytes()).records
+
+
+def test_cbf_wheel_declares_ranges_not_pins() -> None:
+    project = tomllib.loads((REPO / "generated" / "python" / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+    gen = tomllib.loads((REPO / "generator" / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+    for dep in [*project["dependencies"], *gen["dependencies"],
+                *(d for ds in project["optional-dependencies"].values() for d in ds)]:
+        assert "==" not in dep and "<" in dep and ">=" in dep, dep
+    deps = " ".join(project["dependencies"])
+    for generator_only in ("jinja2", "jsonschema", "pyyaml"):
+        assert generator_only not in deps.lower()
+
+
+def test_cbfgen_wheel_generates_from_a_spec_argument(outside: Path) -> None:
+    wheel = _build(REPO / "generator", outside / "cbfgen-build")
+    assert wheel.name.startswith(f"cbfgen-{cbfgen.__version__}-")
+    bin_ = _venv(outside / "venv-cbfgen", wheel)
+    work = outside / "gen"
+    work.mkdir()
+    shutil.copy(REPO / "spec" / "cbf.yaml", work / "format.yaml")
+    # no spec here and none given: one line, exit 2
+    missing = _run(bin_ / "cbfgen", "--out", "out", cwd=work, check=False)
+    assert missing.returncode == 2 and len(missing.stderr.strip().splitlines()) == 1
+    assert "Traceback" not in missing.stderr
+    _run(bin_ / "cbfgen", "--spec", "format.yaml", "--out", "out", "--only", "python", "--only", "c", cwd=work)
+    for rel in ("python/cbf/spec_data.json", "python/pyproject.toml", "c/cbf.h"):
+        assert (work / "out" / rel).read_bytes() == (REPO / "generated" / rel).read_bytes(), rel
