@@ -309,6 +309,7 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
             orientation=dict(c["orientation"]) if "orientation" in c else None,
             shape=dict(c["shape"]) if "shape" in c else None,
             cutter=dict(c["cutter"]) if "cutter" in c else None,
+            sets=dict(c["sets"]) if "sets" in c else None,
             progress=c.get("progress"),
             declared_size=c.get("declared_size"), listed_size=c.get("listed_size"), erratum=c.get("erratum"),
         )
@@ -318,6 +319,9 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
                 if key == "kind":
                     continue
                 _require_arg(ctx, c, cmd, argname, f"{role}.{key}")
+        for key, value in (cmd.sets or {}).items():
+            if isinstance(value, str):
+                _require_arg(ctx, c, cmd, value, f"sets.{key}")
         if cmd.progress:
             _require_arg(ctx, c, cmd, cmd.progress, "progress")
         _check_roles(ctx, c, cmd)

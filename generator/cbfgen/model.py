@@ -102,6 +102,8 @@ class Command:
     orientation: dict[str, str] | None = None
     shape: dict[str, str] | None = None
     cutter: dict[str, str] | None = None
+    # M2: machine state set by the command: state -> argument name, or a constant (bool).
+    sets: dict[str, str | bool] | None = None
     progress: str | None = None
     declared_size: int | None = None
     listed_size: int | None = None

@@ -104,6 +104,8 @@ class CommandInfo:
     cutter: dict[str, str] | None
     progress: str | None
     by_version: dict[str, tuple[LayoutInfo, ...]]
+    # M2: the machine state the command sets: state -> argument name, or a constant.
+    sets: dict[str, str | bool] | None = None
 
     def layouts_for(self, version: str) -> tuple[LayoutInfo, ...]:
         return self.by_version.get(version, ())
@@ -217,7 +219,7 @@ def _command(c: dict[str, Any]) -> CommandInfo:
                                frozenset(lay["profiles"]), args, _struct(args), _struct(args, bits=True)))
     by_version = {v["id"]: tuple(x for x in lays if v["id"] in x.versions) for v in SPEC["versions"]}
     return CommandInfo(c["name"], c["code"], tuple(lays), c["motion"], c["orientation"], c["shape"], c["cutter"],
-                       c["progress"], {k: v for k, v in by_version.items() if v})
+                       c["progress"], {k: v for k, v in by_version.items() if v}, c.get("sets"))
 
 
 COMMANDS: tuple[CommandInfo, ...] = tuple(_command(c) for c in SPEC["commands"])

@@ -18,7 +18,10 @@ PKG = "python/cbf"
 # What the `cbf` distribution needs at run time, as ranges a user's resolver can meet
 # (the development pins are in .ci/constraints.txt). Only the codec's own imports.
 DEPENDENCIES = ("numpy>=2.0,<3",)
-EXTRAS: dict[str, tuple[str, ...]] = {"testing": ("hypothesis>=6.100,<7",)}  # cbf.testing: strategies
+EXTRAS: dict[str, tuple[str, ...]] = {
+    "testing": ("hypothesis>=6.100,<7",),  # cbf.testing: strategies
+    "plot": ("matplotlib>=3.8,<4",),  # cbf plot, imported lazily
+}
 
 
 def _py_type(f: Field) -> str:
@@ -56,7 +59,7 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "commands": [
             {
                 "name": c.name, "code": c.code, "motion": c.motion, "orientation": c.orientation, "shape": c.shape,
-                "cutter": c.cutter, "progress": c.progress,
+                "cutter": c.cutter, "progress": c.progress, "sets": c.sets,
                 "layouts": [
                     {"variant": lay.variant, "class": lay.class_name, "versions": list(lay.versions),
                      "size": lay.size, "profiles": list(lay.profiles), "args": [_field_data(a) for a in lay.args]}

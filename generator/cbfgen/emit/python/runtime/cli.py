@@ -462,6 +462,167 @@ def cmd_info(a: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+# -- toolpath tools (issue 16): convert, stats, diff, plot ------------------------
+def _peek(path: str) -> bytes:
+    """The first bytes of a file (not of stdin), with the errors _read gives."""
+    try:
+        if Path(path).is_dir():
+            raise _Fail(f"{path}: is a directory")
+        with Path(path).open("rb") as fh:
+            return fh.read(256)
+    except FileNotFoundError:
+        raise _Fail(f"{path}: no such file") from None
+    except PermissionError:
+        raise _Fail(f"{path}: permission denied") from None
+    except IsADirectoryError:
+        raise _Fail(f"{path}: is a directory") from None
+    except OSError as exc:
+        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+
+
+def _load_any(path: str) -> Any:
+    """A CBF file, or CUT / canonical JSON text, as a model: text when the first bytes are text."""
+    from .errors import CbfError
+
+    if path == "-":
+        data = _read(path, 64 * _max_file_size())
+        if data and not _looks_like_text(data):
+            return _decode_bytes(path, data)
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise _Fail(f"{path}: offset {exc.start}: byte 0x{data[exc.start]:02X} is not UTF-8 text") from None
+    else:
+        head = _peek(path)
+        if head and not _looks_like_text(head):
+            return _decode(path)  # CBF: read with the CBF size limit
+        text = _read_text(path, 64 * _max_file_size()) if head else ""
+    if not text.strip():
+        raise _Fail(f"{path}: offset 0: empty input (0 bytes of CBF, no CUT or JSON text)")
+    try:
+        if text.lstrip().startswith("{"):
+            from .canonical import from_canonical
+
+            try:
+                return from_canonical(json.loads(text))
+            except json.JSONDecodeError as exc:
+                raise _Fail(f"{path}: line {exc.lineno}: not JSON ({exc.msg})") from None
+            except (RecursionError, ValueError) as exc:
+                raise _Fail(f"{path}: not JSON the codec reads ({type(exc).__name__})") from None
+        from .cut import from_cut
+
+        return from_cut(text)
+    except CbfError as exc:
+        raise _Fail(f"{path}: {exc}") from None
+
+
+def _decode_bytes(path: str, data: bytes) -> Any:
+    from .codec import decode
+    from .errors import CbfError
+
+    if len(data) > _max_file_size():
+        raise _too_big(path, _max_file_size())
+    try:
+        return decode(data)
+    except CbfError as exc:
+        raise _Fail(f"{path}: {exc}") from None
+
+
+def _clean(path: str, model: Any) -> None:
+    """Refuse a model that fails validation: the tools below assume a sound file."""
+    from .validation import validate
+
+    errors = [f for f in validate(model) if f.severity == "error"]
+    if errors:
+        e = errors[0]
+        where = f"record {e.record}" if e.record is not None else "header"
+        raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); "
+                    f"run cbf validate {path}")
+
+
+def _mm(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a length in mm: {text!r}") from None
+    if not (x > 0.0 and x < float("inf")):
+        raise argparse.ArgumentTypeError(f"not a positive length in mm: {text!r}")
+    return x
+
+
+def cmd_convert(a: argparse.Namespace) -> int:
+    from .codec import encode
+    from .convert import convert
+    from .errors import CbfError
+
+    _check_output(a.output)
+    fill: dict[str, str] = {}
+    for item in a.fill:
+        name, eq, value = item.partition("=")
+        if not eq or not name or not value:
+            raise _Fail(f"--fill {item!r}: expected ARG=VALUE, e.g. --fill completion=0")
+        if name in fill:
+            raise _Fail(f"--fill {name}: given twice")
+        fill[name] = value
+    model = _load_any(a.file)
+    _clean(a.file, model)
+    try:
+        conv = convert(model, a.to_version, chord_tol=a.chord_tol, fill=fill, profile=a.profile)
+        out = encode(conv.model, profile=a.profile)
+    except CbfError as exc:
+        raise _Fail(f"{a.file}: {exc}") from None
+    _write(a.output, out)
+    report = sys.stderr if a.output == "-" else sys.stdout
+    report.write(f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
+                 f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "
+                 f"{conv.segments} line segment(s), largest deviation {conv.max_deviation:.6f} mm "
+                 f"(tolerance {conv.chord_tol} mm)\n")
+    return EXIT_OK
+
+
+def cmd_stats(a: argparse.Namespace) -> int:
+    from .stats import render, stats
+
+    model = _load_any(a.file)
+    s = stats(model)
+    if a.json:
+        sys.stdout.write(json.dumps({"file": a.file, **s.as_dict()}, indent=1) + "\n")
+    else:
+        sys.stdout.write(render(s, a.file))
+    return EXIT_OK
+
+
+def cmd_diff(a: argparse.Namespace) -> int:
+    from . import semdiff
+    from . import tables as T
+
+    ma, mb = _load_any(a.a), _load_any(a.b)
+    tol = T.TOL["position_mm"] if a.tol is None else a.tol
+    d = semdiff.diff(ma, mb, tol)
+    if a.json:
+        sys.stdout.write(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
+    else:
+        sys.stdout.write(semdiff.render(d, ma, mb, a.a, a.b))
+    return EXIT_OK if d.equal else EXIT_FINDINGS
+
+
+def cmd_plot(a: argparse.Namespace) -> int:
+    from . import plot
+
+    _check_output(a.output)
+    model = _load_any(a.file)
+    fmt = a.format or Path(a.output).suffix.lstrip(".").lower()
+    if fmt not in plot.FORMATS:
+        raise _Fail(f"{a.output}: cannot tell the format from the name; end it in "
+                    f"{', '.join('.' + f for f in plot.FORMATS)} or give --format")
+    try:
+        out = plot.render(model, fmt, a.color, a.title if a.title is not None else a.file)
+    except plot.PlotUnavailable as exc:
+        raise _Fail(str(exc)) from None
+    _write(a.output, out)
+    return EXIT_OK
+
+
 class _Parser(argparse.ArgumentParser):
     def print_help(self, file: Any = None) -> None:
         # argparse ignores a failed write; --help into a full stdout must not (exit 2)
@@ -504,7 +665,8 @@ def parser() -> argparse.ArgumentParser:
 
     profiles = list(T.PROFILES)
     writable = [v.id for v in T.VERSIONS if v.writable]
-    p = _Parser(prog="cbf", description=f"{T.SPEC_TITLE} toolkit: decode, encode, validate, info.",
+    p = _Parser(prog="cbf", description=f"{T.SPEC_TITLE} toolkit: decode, encode, validate, info, "
+                                        f"convert, stats, diff, plot.",
                 epilog="Exit codes: 0 ok, 1 validation found an error, 2 bad usage or unreadable input.")
     p.add_argument("--version", action=_Version, help="print the toolkit version and the spec revision, and exit")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
@@ -536,6 +698,7 @@ def parser() -> argparse.ArgumentParser:
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
     i.set_defaults(func=cmd_info)
+    _tool_parsers(sub, profiles, writable)
     return p
 
 
@@ -560,6 +723,46 @@ def _drop_stdout() -> None:
         os.dup2(null, fd)
     finally:
         os.close(null)
+
+
+def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
+    from . import tables as T
+
+    c = sub.add_parser("convert", help="move a file to another version (curves to line segments for versions "
+                                       "without them)")
+    c.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    c.add_argument("-o", "--output", required=True, help="output CBF file, or - for stdout")
+    c.add_argument("--to-version", required=True, choices=writable, help="the version to write")
+    c.add_argument("--chord-tol", type=_mm, metavar="MM",
+                   help=f"largest chordal deviation of a curve's line segments (default {T.TOL['position_mm']} "
+                        f"mm, tolerances.position_mm)")
+    c.add_argument("--fill", action="append", default=[], metavar="ARG=VALUE",
+                   help="value of an argument the source layout lacks: a number, or 'position' (the tool "
+                        "position at that record); e.g. --fill recovery_point=position --fill completion=0")
+    c.add_argument("--profile", choices=profiles, default=profiles[0])
+    c.set_defaults(func=cmd_convert)
+    s = sub.add_parser("stats", help="toolpath summary: bounding box, path length, time estimate, shapes, "
+                                     "cutters, phases, checkpoints")
+    s.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    s.add_argument("--json", action="store_true", help="print JSON (shape: schemas/stats.schema.json)")
+    s.set_defaults(func=cmd_stats)
+    f = sub.add_parser("diff", help="semantic diff of two files (CBF or CUT on either side); exit 0 equal "
+                                    "within --tol, 1 differ, 2 bad input")
+    f.add_argument("a", help="first file (CBF, CUT or JSON)")
+    f.add_argument("b", help="second file (CBF, CUT or JSON)")
+    f.add_argument("--tol", type=_mm, metavar="MM",
+                   help=f"numbers equal within this (default {T.TOL['position_mm']}, tolerances.position_mm)")
+    f.add_argument("--json", action="store_true", help="print JSON (shape: schemas/diff.schema.json)")
+    f.set_defaults(func=cmd_diff)
+    g = sub.add_parser("plot", help="draw the toolpath: isometric view and three projections (needs matplotlib, "
+                                    "the plot extra)")
+    g.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
+    g.add_argument("-o", "--output", required=True, help="OUT.png, OUT.svg or OUT.pdf (- for stdout with --format)")
+    g.add_argument("--format", choices=["png", "svg", "pdf"], help="default: from the output's extension")
+    g.add_argument("--color", choices=["cut", "phase", "shape", "cutter"], default="cut",
+                   help="colour moves by cutting / non-cutting (default), phase, shape or cutter")
+    g.add_argument("--title", help="figure title (default: the file name)")
+    g.set_defaults(func=cmd_plot)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -1,0 +1,431 @@
+"""`cbf convert`: move a file to another version of the format.
+
+Everything version-specific comes from the model: which commands the
+target version lacks (no layout for it), what a motion becomes (a command
+the target has whose motion role is a plain line, with an orientation path
+when the source has one), how arguments and header fields carry over (by
+name), and where the format version is recorded (``sets.format_version``).
+
+- A command the target lacks, with a curved motion (ARC*, CIRCLE*, HELIX*),
+  becomes the fewest line segments that keep the chordal deviation within
+  ``chord_tol``: n = ceil(angle / (2 acos(1 - tol / r))), one more while
+  the deviation measured along the true curve exceeds the tolerance (the
+  inner vertices are rounded to binary32 away from the axis, which keeps
+  the sagitta). Each
+  segment starts at the binary32 point the last one ended at; the first
+  starts at the record's own start, an arc's last ends at its stored end.
+  An orientation path is slerped (directions along the great circle, their
+  lengths linearly) at the same parameters.
+- A command the target has is copied byte for byte when its layout is the
+  same, else argument by argument; an argument the source layout lacks is
+  refused with its record unless ``fill`` names a value for it (a number,
+  or ``position``: the tool position at that record).
+- Shape counts grow by the segments added; the format version stamp is
+  rewritten; the result must validate without error (encode refuses it
+  otherwise) and fit the count field.
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, fields
+from typing import Any
+
+from . import geometry as G
+from . import tables as T
+from .codec import pack_args, unpack_args
+from .errors import CbfError
+from .model import Cbf, Record, new_header
+
+_F32 = struct.Struct("<f")
+
+
+class ConvertError(CbfError):
+    """The file cannot be converted as asked (names the record and why)."""
+
+    kind = "convert"
+
+
+def f32(x: float) -> float:
+    return float(_F32.unpack(_F32.pack(x))[0])
+
+
+def f32v(v: G.Vec) -> G.Vec:
+    return (f32(v[0]), f32(v[1]), f32(v[2]))
+
+
+@dataclass(frozen=True)
+class Conversion:
+    model: Cbf
+    source_version: str
+    target_version: str
+    chord_tol: float
+    max_deviation: float  # mm, the largest chordal deviation introduced
+    curves: int  # records replaced by line segments
+    segments: int  # line records written for them
+    filled: int  # --fill arguments used
+
+
+# -- linearisation ---------------------------------------------------------------
+def _rounding(points: Sequence[G.Vec]) -> float:
+    """A bound on how far binary32 rounding moves a point of this size (half an ulp per axis)."""
+    big = max((abs(x) for p in points for x in p), default=0.0)
+    return math.sqrt(3.0) * big * 2.0 ** -24
+
+
+def analytic_segments(angle: float, radius: float, tol: float) -> int:
+    """The fewest chords of a circular arc of ``radius`` turning ``angle`` (rad) within ``tol``."""
+    if angle <= 0.0 or radius <= 0.0:
+        return 1
+    x = 1.0 - tol / radius
+    step = 2.0 * math.pi if x <= -1.0 else 2.0 * math.acos(x)
+    return max(1, math.ceil(angle / step - 1e-12))
+
+
+def chord_deviation(curve: G.Curve, pts: Sequence[G.Vec], samples: int = 16) -> float:
+    """The largest distance from the true curve (sampled) to its chord, segment by segment."""
+    n = len(pts) - 1
+    worst = 0.0
+    for k in range(n):
+        a, b = pts[k], pts[k + 1]
+        for j in range(samples + 1):
+            t = (k + j / samples) / n
+            worst = max(worst, G.point_segment_distance(curve.at(t), a, b))
+    return worst
+
+
+def _neighbours(x: float) -> tuple[float, ...]:
+    """The binary32 values bracketing ``x`` (one when it is one)."""
+    y = f32(x)
+    if y == x:
+        return (y,)
+    import numpy as np
+
+    return (y, float(np.nextafter(np.float32(y), np.float32(math.inf if x > y else -math.inf))))
+
+
+def _outward(curve: G.Curve, t: float) -> G.Vec:
+    """The binary32 point nearest p(t) that lies no nearer the axis than the curve.
+
+    Rounding a vertex inwards would add to the chord's sagitta; outwards it
+    costs at most the rounding itself, so the count stays the analytic one."""
+    p = curve.at(t)
+    axis_pt = G.add(curve.center, G.scale(curve.rise, t))
+    k = G.cross(curve.e1, curve.e2)
+    best: tuple[float, G.Vec] | None = None
+    fallback: tuple[float, G.Vec] | None = None
+    for x in _neighbours(p[0]):
+        for y in _neighbours(p[1]):
+            for z in _neighbours(p[2]):
+                q = (x, y, z)
+                d = G.norm(G.sub(q, p))
+                rel = G.sub(q, axis_pt)
+                radial = G.norm(G.sub(rel, G.scale(k, G.dot(rel, k))))
+                if fallback is None or d < fallback[0]:
+                    fallback = (d, q)
+                if radial >= curve.radius and (best is None or d < best[0]):
+                    best = (d, q)
+    chosen = best or fallback
+    assert chosen is not None
+    return chosen[1]
+
+
+def linearise(curve: G.Curve, tol: float, exact_end: bool) -> tuple[list[G.Vec], float]:
+    """Binary32 points p0..pn of the fewest chords within ``tol``, and the deviation measured.
+
+    p0 is the curve's start; pn its end as stored (``exact_end``) or rounded outwards."""
+    if not curve.curved:
+        return [curve.start, curve.end if exact_end else f32v(curve.end)], 0.0
+    margin = _rounding(G.curve_bounds(curve))
+    if 2.0 * margin >= tol:
+        raise ConvertError(f"a chord tolerance of {tol} mm is below the binary32 resolution here ({margin:.3g} mm)")
+    n = analytic_segments(curve.angle, curve.radius, tol)
+    limit = T.LIMITS["max_commands"]
+    while True:
+        if n > limit:
+            raise ConvertError(f"needs more than {limit} segments to stay within {tol} mm")
+        pts = [curve.start] + [_outward(curve, k / n) for k in range(1, n)]
+        pts.append(curve.end if exact_end else _outward(curve, 1.0))
+        dev = chord_deviation(curve, pts)
+        if dev <= tol:
+            return pts, dev
+        n += 1
+
+
+def slerp(a: G.Vec, b: G.Vec, t: float) -> G.Vec:
+    """Directions along the great circle from a to b, lengths linearly (zero vectors: linearly)."""
+    la, lb = G.norm(a), G.norm(b)
+    if la == 0.0 or lb == 0.0:
+        return G.add(G.scale(a, 1.0 - t), G.scale(b, t))
+    ua, ub = G.scale(a, 1.0 / la), G.scale(b, 1.0 / lb)
+    omega = math.atan2(G.norm(G.cross(ua, ub)), G.dot(ua, ub))
+    length = la + (lb - la) * t
+    if omega < 1e-12:
+        u = G.add(G.scale(ua, 1.0 - t), G.scale(ub, t))
+    elif math.pi - omega < 1e-9:
+        # opposite directions: no unique great circle; turn about any axis normal to a
+        axis = G.cross(ua, (1.0, 0.0, 0.0) if abs(ua[0]) < 0.9 else (0.0, 1.0, 0.0))
+        axis = G.scale(axis, 1.0 / G.norm(axis))
+        th = math.pi * t
+        u = G.add(G.scale(ua, math.cos(th)), G.scale(G.cross(axis, ua), math.sin(th)))
+    else:
+        s = math.sin(omega)
+        u = G.add(G.scale(ua, math.sin((1.0 - t) * omega) / s), G.scale(ub, math.sin(t * omega) / s))
+    un = G.norm(u)
+    return G.scale(u, length / un) if un else u
+
+
+# -- the plan: what each command becomes -------------------------------------------
+def _line_target(src: T.CommandInfo, version: str) -> tuple[T.CommandInfo, T.LayoutInfo] | None:
+    """A command of ``version`` whose motion is a plain line, with an orientation path iff ``src`` has one."""
+    want_path = bool(src.orientation and src.orientation["kind"] == "path")
+    for c in T.COMMANDS:
+        m = c.motion
+        if not m or m["kind"] != "line" or "through" in m or not c.layouts_for(version):
+            continue
+        has_path = bool(c.orientation and c.orientation["kind"] == "path")
+        if has_path == want_path:
+            return c, c.layouts_for(version)[0]
+    return None
+
+
+def _layout_in(cmd: T.CommandInfo, src: T.LayoutInfo, version: str, profile: str) -> T.LayoutInfo | None:
+    lays = [lay for lay in cmd.layouts_for(version) if lay.accepted_under(profile)]
+    for lay in lays:
+        if lay.variant == src.variant or lay.size == src.size:
+            return lay
+    return lays[0] if lays else None
+
+
+def _same_shape(a: T.LayoutInfo, b: T.LayoutInfo) -> bool:
+    return [(f.name, f.kind, f.offset, f.size) for f in a.args] == [(f.name, f.kind, f.offset, f.size) for f in b.args]
+
+
+def _zero(f: T.FieldInfo) -> Any:
+    if f.kind == "string":
+        return ""
+    if f.kind == "bytes":
+        return bytes(f.size)
+    if f.kind == "float":
+        return (0.0,) * f.count if f.count > 1 else 0.0
+    return 0
+
+
+def _fill_value(f: T.FieldInfo, text: str, pos: G.Vec | None, where: str) -> Any:
+    if text == "position":
+        if f.kind != "float" or f.count != 3:
+            raise ConvertError(f"{where}: --fill {f.name}=position needs a 3-vector argument")
+        if pos is None:
+            raise ConvertError(f"{where}: --fill {f.name}=position, but no motion precedes this record")
+        return pos
+    try:
+        x = float(text)
+    except ValueError:
+        raise ConvertError(f"{where}: --fill {f.name}={text!r} is neither a number nor 'position'") from None
+    if f.kind == "float":
+        return (x,) * f.count if f.count > 1 else x
+    if f.kind == "uint" and x.is_integer() and 0 <= x < (1 << (8 * f.elem_size)):
+        return int(x)
+    raise ConvertError(f"{where}: --fill {f.name}={text!r} does not fit a {f.kind} argument")
+
+
+def _carry(old: Any, src: T.LayoutInfo, dst: T.LayoutInfo, fill: Mapping[str, str], pos: G.Vec | None,
+           where: str, used: set[str]) -> Any:
+    have = {f.name: f for f in src.args}
+    values: dict[str, Any] = {}
+    for f in dst.args:
+        g = have.get(f.name)
+        if g is not None and (g.kind, g.count) == (f.kind, f.count) and (f.kind != "bytes" or g.size == f.size):
+            v = getattr(old, f.name)
+            if f.kind == "string" and len(v.encode("latin-1")) > f.size:
+                raise ConvertError(f"{where}: {f.name} {v!r} is longer than the {f.size} bytes of version "
+                                   f"{', '.join(sorted(dst.versions))}")
+            values[f.name] = v
+        elif f.reserved:
+            values[f.name] = _zero(f)
+        elif f.name in fill:
+            values[f.name] = _fill_value(f, fill[f.name], pos, where)
+            used.add(f.name)
+        else:
+            raise ConvertError(f"{where}: {dst.command} of version {', '.join(sorted(dst.versions))} needs "
+                               f"{f.name}, which this layout lacks (give it with --fill {f.name}=VALUE)")
+    for g in src.args:  # nothing may be dropped silently
+        if g.name not in values and not g.reserved:
+            raise ConvertError(f"{where}: {src.command} argument {g.name} has no place in the target layout")
+    return dst.cls(**values)
+
+
+def _header(model: Cbf, target: str) -> Any:
+    src_info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
+    dst_info = T.HEADERS[T.VERSION_BY_ID[target].header]
+    derived = {"start_pattern", "end_pattern", "checksum", "command_count", "version_major", "version_minor"}
+    by_role = {f.role: f for f in src_info.fields if f.role not in derived and f.role != "reserved"}
+    by_name = {f.name: f for f in src_info.fields}
+    values: dict[str, Any] = {}
+    used: set[str] = set()
+    for f in dst_info.fields:
+        if f.role in derived:
+            continue
+        g = by_name.get(f.name) or by_role.get(f.role or "")
+        if g is None or g.kind != f.kind:
+            continue
+        v = getattr(model.header, g.name)
+        if f.kind == "string" and len(v.encode("latin-1")) > f.size:
+            raise ConvertError(f"header: {g.name} ({len(v)} characters) does not fit the {f.size} bytes of "
+                               f"{f.name} in version {target}", offset=g.offset)
+        if f.kind == "bytes" and len(v) != f.size:
+            continue
+        values[f.name] = v
+        used.add(g.name)
+    for g in src_info.fields:
+        if g.role in derived or g.name in used:
+            continue
+        v = getattr(model.header, g.name)
+        if v not in ("", 0) and (g.kind != "bytes" or any(v)):
+            raise ConvertError(f"header: {g.name} is not empty and has no place in version {target}", offset=g.offset)
+    return new_header(target, **values)
+
+
+def _stamp(cmd: T.CommandInfo, lay: T.LayoutInfo, raw: bytes, text: str) -> bytes | None:
+    """``raw`` with the format version argument rewritten, or None when the command has none."""
+    name = (cmd.sets or {}).get("format_version")
+    if not isinstance(name, str):
+        return None
+    args = unpack_args(lay, raw)
+    if getattr(args, name) == text:
+        return None
+    values = {f.name: getattr(args, f.name) for f in fields(args)}
+    values[name] = text
+    return pack_args(lay, lay.cls(**values))
+
+
+def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill: Mapping[str, str] | None = None,
+            profile: str = "default") -> Conversion:
+    """``model`` in version ``to_version``; raises ConvertError naming the record that cannot go."""
+    if to_version not in T.VERSION_BY_ID or not T.VERSION_BY_ID[to_version].writable:
+        writable = ", ".join(v.id for v in T.VERSIONS if v.writable)
+        raise ConvertError(f"version {to_version} cannot be written (writable: {writable})")
+    tol = T.TOL["position_mm"] if chord_tol is None else chord_tol
+    if not (math.isfinite(tol) and tol > 0.0):
+        raise ConvertError(f"--chord-tol must be a positive number of mm, not {chord_tol}")
+    fill = dict(fill or {})
+    src_v = model.version_id
+    if model.trailing:
+        raise ConvertError(f"{len(model.trailing)} trailing byte(s) after the last record; nothing to carry them")
+    tv = T.VERSION_BY_ID[to_version]
+    stamp_text = f"{tv.major}.{tv.minor if tv.minor is not None else 0}"
+    header = _header(model, to_version)
+
+    out: list[Record] = []
+    shape_open: tuple[int, T.LayoutInfo] | None = None  # the open shape's start: output index, layout
+    extra = 0  # segments added inside the open shape
+    worst, curves, segments = 0.0, 0, 0
+    filled: set[str] = set()
+    pos: G.Vec | None = None
+    for i, r in enumerate(model.records):
+        where = f"record {i}"
+        cmd = r.command
+        if cmd is None:
+            raise ConvertError(f"{where}: unknown command code 0x{r.code:02X}", offset=r.offset)
+        src_lay = cmd.layout_for_size(src_v, len(r.raw_args))
+        if src_lay is None:
+            raise ConvertError(f"{where}: {cmd.name} of {len(r.raw_args)} argument bytes has no layout",
+                               offset=r.offset)
+        args = unpack_args(src_lay, r.raw_args)
+        curve = G.curve_of(cmd.motion, args, pos) if cmd.motion else None
+        if cmd.motion and curve is None:
+            raise ConvertError(f"{where}: {cmd.name} has non-finite values or a zero axis", offset=r.offset)
+        dst_lay = _layout_in(cmd, src_lay, to_version, profile)
+        if dst_lay is not None:
+            if _same_shape(src_lay, dst_lay):
+                raw = r.raw_args
+            else:
+                raw = pack_args(dst_lay, _carry(args, src_lay, dst_lay, fill, pos, f"{where} ({cmd.name})", filled))
+            raw = _stamp(cmd, dst_lay, raw, stamp_text) or raw
+            rec = Record(code=cmd.code, raw_args=raw, reserved=r.reserved)
+            if cmd.shape and cmd.shape["kind"] == "start":
+                shape_open, extra = (len(out), dst_lay), 0
+            elif cmd.shape and shape_open is not None:
+                if extra:
+                    at, start_lay = shape_open
+                    out[at] = _grown(out[at], start_lay, extra, where)
+                    rec = _grown(rec, dst_lay, extra, where)
+                shape_open = None
+            out.append(rec)
+        elif curve is not None:
+            target = _line_target(cmd, to_version)
+            if target is None:
+                raise ConvertError(f"{where}: {cmd.name} is not in version {to_version}, and no line command "
+                                   f"of it can carry its motion", offset=r.offset)
+            motion = cmd.motion or {}
+            pts, dev = linearise(curve, tol, "end" in motion)  # an arc ends exactly where it says
+            worst = max(worst, dev)
+            curves += 1
+            segments += len(pts) - 1
+            if shape_open is not None:
+                extra += len(pts) - 2
+            out.extend(_segments(target, cmd, args, pts, r.reserved))
+            if len(out) > T.LIMITS["max_commands"]:
+                raise ConvertError(f"{where}: the result passes {T.LIMITS['max_commands']} records, the most the "
+                                   f"count holds; raise --chord-tol", offset=r.offset)
+            pos = pts[-1]
+        else:
+            raise ConvertError(f"{where}: {cmd.name} is not in version {to_version} and has no motion to carry "
+                               f"over", offset=r.offset)
+        if curve is not None and dst_lay is not None:
+            pos = curve.end
+    if len(out) > T.LIMITS["max_commands"]:
+        raise ConvertError(f"the result has {len(out)} records, at most {T.LIMITS['max_commands']} fit the count")
+    unused = sorted(set(fill) - filled)
+    if unused:
+        raise ConvertError(f"--fill {unused[0]}: no record of this file needs it")
+    return Conversion(Cbf(header, out), src_v, to_version, tol, worst, curves, segments, len(filled))
+
+
+def _grown(rec: Record, lay: T.LayoutInfo, extra: int, where: str) -> Record:
+    """A shape record (of layout ``lay``) whose count is grown by ``extra``."""
+    c = rec.command
+    assert c is not None and c.shape is not None
+    name = c.shape["count"]
+    a = unpack_args(lay, rec.raw_args)
+    f = next(x for x in lay.args if x.name == name)
+    n = int(getattr(a, name)) + extra
+    if n >= 1 << (8 * f.elem_size):
+        raise ConvertError(f"{where}: the shape would enclose {n} motions; its {f.name} field holds at most "
+                           f"{(1 << (8 * f.elem_size)) - 1}; raise --chord-tol")
+    values = {x.name: getattr(a, x.name) for x in fields(a)}
+    values[name] = n
+    return Record(code=rec.code, raw_args=pack_args(lay, lay.cls(**values)), reserved=rec.reserved)
+
+
+def _segments(target: tuple[T.CommandInfo, T.LayoutInfo], src: T.CommandInfo, args: Any, pts: list[G.Vec],
+              reserved: int) -> list[Record]:
+    cmd, lay = target
+    m = cmd.motion or {}
+    o = cmd.orientation
+    n = len(pts) - 1
+    orients: list[G.Vec] = []
+    if o and src.orientation:
+        a = G.vec(getattr(args, src.orientation["start"]))
+        b = G.vec(getattr(args, src.orientation["end"]))
+        orients = [a] + [f32v(slerp(a, b, k / n)) for k in range(1, n)] + [b]
+    recs = []
+    for k in range(n):
+        values: dict[str, Any] = {}
+        for f in lay.args:
+            if f.name == m.get("start"):
+                values[f.name] = pts[k]
+            elif f.name == m.get("end"):
+                values[f.name] = pts[k + 1]
+            elif o and f.name == o.get("start"):
+                values[f.name] = orients[k]
+            elif o and f.name == o.get("end"):
+                values[f.name] = orients[k + 1]
+            elif f.reserved:
+                values[f.name] = _zero(f)
+            else:
+                raise ConvertError(f"{cmd.name}: argument {f.name} has no value when it carries a motion")
+        recs.append(Record(code=cmd.code, raw_args=pack_args(lay, lay.cls(**values)), reserved=reserved))
+    return recs

@@ -1,0 +1,109 @@
+"""cbf plot: a known straight path lights the expected pixels and leaves the others blank."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from cbf import tables as T
+from cbf.model import Cbf, Record, new_header
+
+pytest.importorskip("matplotlib")
+
+from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
+from matplotlib.colors import to_rgb  # noqa: E402
+
+from cbf import plot  # noqa: E402
+
+V = next(v.id for v in T.VERSIONS if v.writable)
+GOLDEN = Path(__file__).resolve().parents[1] / "conformance" / "golden"
+
+
+def _straight() -> Cbf:
+    """POINT at the origin, then one LINE 100 mm along X, cutter never on."""
+    point = next(c for c in T.COMMANDS if c.motion and c.motion["kind"] == "point" and c.layouts_for(V))
+    line = next(c for c in T.COMMANDS if c.motion and c.motion["kind"] == "line" and "through" not in c.motion
+                and not c.orientation and c.layouts_for(V))
+    pm, lm = point.motion, line.motion
+    assert pm and lm
+    recs = [Record.of(point.layouts_for(V)[0].cls(**{pm["end"]: (0.0, 0.0, 0.0)})),
+            Record.of(line.layouts_for(V)[0].cls(**{lm["start"]: (0.0, 0.0, 0.0), lm["end"]: (100.0, 0.0, 0.0)}))]
+    return Cbf(new_header(V), recs)
+
+
+def _near(rgb: np.ndarray, color: str, tol: float = 0.12) -> np.ndarray:
+    return np.all(np.abs(rgb - np.array(to_rgb(color))) < tol, axis=-1)  # type: ignore[no-any-return]
+
+
+def test_a_straight_path_lights_the_expected_pixels() -> None:
+    fig = plot.figure(_straight())
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    img = np.asarray(canvas.buffer_rgba())[:, :, :3].astype(float) / 255.0
+    height = img.shape[0]
+    top = next(ax for ax in fig.axes if ax.get_title() == plot.VIEWS[0][0])
+
+    def pixel(x: float, y: float) -> tuple[int, int]:
+        px, py = top.transData.transform((x, y))
+        return int(round(height - py)), int(round(px))
+
+    # on the line: the non-cutting colour, within a pixel of where the line runs
+    for x in np.linspace(5, 95, 19):
+        row, col = pixel(float(x), 0.0)
+        window = img[row - 1:row + 2, col]
+        assert _near(window, plot.NON_CUTTING).any(), (x, window)
+        assert not _near(window, plot.CUTTING).any()
+    # off the line, away from grid lines: blank
+    for x in (13.0, 37.0, 63.0, 87.0):
+        for y in (-30.0, -10.0, 10.0, 30.0):
+            row, col = pixel(x, y)
+            assert (img[row, col] > 0.93).all(), (x, y, img[row, col])
+    # nothing else in the top view has the path's colour
+    (x0, y0), (x1, y1) = top.bbox.get_points()
+    r0, r1 = int(height - y1) + 2, int(height - y0) - 2
+    c0, c1 = int(x0) + 2, int(x1) - 2
+    rows, cols = np.nonzero(_near(img[r0:r1, c0:c1], plot.NON_CUTTING))
+    line_row = pixel(50.0, 0.0)[0] - r0
+    assert rows.size > 0
+    assert np.abs(rows - line_row).max() <= 2
+    start_col, end_col = pixel(0.0, 0.0)[1] - c0, pixel(100.0, 0.0)[1] - c0
+    assert cols.min() >= start_col - 2 and cols.max() <= end_col + 2
+
+
+def test_every_colour_mode_and_format_renders() -> None:
+    model = _straight()
+    assert plot.render(model, "png").startswith(b"\x89PNG")
+    assert b"<svg" in plot.render(model, "svg", "phase")
+    assert plot.render(model, "pdf", "cutter").startswith(b"%PDF")
+    with pytest.raises(ValueError):
+        plot.render(model, "bmp")
+
+
+def test_cli_plot_and_bad_output(tmp_path: Path) -> None:
+    src = GOLDEN / "valid.v3.all_commands.cbf"
+    out = tmp_path / "p.svg"
+    r = subprocess.run([sys.executable, "-m", "cbf", "plot", str(src), "-o", str(out), "--color", "shape"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert out.read_bytes().lstrip().startswith(b"<?xml")
+    r = subprocess.run([sys.executable, "-m", "cbf", "plot", str(src), "-o", str(tmp_path / "p.bmp")],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--format" in r.stderr
+
+
+def test_cbf_starts_without_matplotlib() -> None:
+    code = ("import sys; sys.modules['matplotlib'] = None\n"
+            "from cbf.cli import main\n"
+            "sys.exit(main(['plot', sys.argv[1], '-o', sys.argv[2]]))")
+    r = subprocess.run([sys.executable, "-c", code, str(GOLDEN / "valid.v3.small.cbf"), "/tmp/unused-h7.png"],
+                       capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr.strip().endswith("pip install 'cbf[plot]'") and r.stderr.count("\n") == 1
+    r = subprocess.run([sys.executable, "-c", "import sys; sys.modules['matplotlib'] = None\n"
+                        "from cbf.cli import main; sys.exit(main(['stats', sys.argv[1]]))",
+                        str(GOLDEN / "valid.v3.small.cbf")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
