@@ -33,6 +33,9 @@ def spec_with_fixture_command(tmp: Path) -> Path:
     extra = yaml.safe_load((REPO / "tests" / "fixtures" / "dwell_command.yaml").read_text(encoding="utf-8"))
     spec["units"].update(extra["units"])
     spec["commands"].append(extra["command"])
+    for check in spec["checks"]:
+        if str(check["id"]) in extra.get("covered_by", []):
+            check["commands"].append(extra["command"]["name"])
     path = tmp / "cbf.yaml"
     path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
     return path

@@ -22,8 +22,8 @@ STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-
 
 DWELL = {
     "name": "DWELL", "code": 0x44, "clause": "5.1", "doc": "Dwell.",
-    # 1.x lacks it (gated by check 7.2.2.4); the loader wants every version
-    # without the command covered by an availability check, so 2.x has it too.
+    # 1.x lacks it: the test names it in the availability check that covers 1.x
+    # (the loader wants every version without the command covered by one check).
     "layouts": [{"versions": ["2.x", "3.0", "4.0"], "size": 4,
                  "args": [{"name": "seconds", "type": "f4", "unit": "s", "doc": "Dwell time."}]}],
 }
@@ -93,6 +93,11 @@ def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
     doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
     doc["units"]["s"] = {"doc": "second"}
     doc["commands"].append(DWELL)
+    # every version without the command is named by exactly one availability check (loader.py)
+    for v in doc["versions"]:
+        if v["id"] not in DWELL["layouts"][0]["versions"]:
+            gate = next(c for c in doc["checks"] if c["kind"] == "availability" and v["id"] in c["versions"])
+            gate["commands"].append(DWELL["name"])
     spec = tmp_path / "cbf.yaml"
     spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
     out = tmp_path / "gen"

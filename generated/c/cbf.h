@@ -1040,7 +1040,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 
 /* ---- the model's vocabulary, numbered --------------------------------- */
 enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
-enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC32 };
+enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C, CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32 };
 enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS };
 enum { CBF__MOTION_NONE = 0, CBF__MOTION_POINT, CBF__MOTION_LINE, CBF__MOTION_CIRCLE, CBF__MOTION_HELIX };
 enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M__COUNT };
@@ -1417,10 +1417,44 @@ typedef struct cbf__profile {
     const char *id;
     int file[CBF__MAX_COVERAGES]; /* coverages accepted for the file checksum, -1 ends */
     int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
+    int file_alg;                 /* the file checksum's algorithm under this profile */
+    int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
 } cbf__profile;
 static const cbf__profile cbf__profiles[2] = {
-    { "default", { 2 }, { 3 } },
-    { "implib", { 3 }, { 2 } },
+    { "default", { 2 }, { 3 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
+    { "implib", { 3 }, { 2 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
+};
+
+/* Per command and version: the availability check that covers the command
+ * missing from that version (exactly one, loader.py), -1 when it is there. */
+static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
+    { -1, -1, -1, -1 }, /* CHECKPOINT */
+    { -1, -1, -1, -1 }, /* CUTTER */
+    { -1, -1, -1, -1 }, /* ORIENT */
+    { -1, -1, -1, -1 }, /* ORIENT5B */
+    { 14, -1, -1, -1 }, /* PHASE */
+    { -1, -1, -1, -1 }, /* ENABLE_SKIP */
+    { -1, -1, -1, -1 }, /* STARTSHAPE */
+    { -1, -1, -1, -1 }, /* ENDSHAPE */
+    { 14, -1, -1, -1 }, /* DECEL_OFF */
+    { 14, -1, -1, -1 }, /* DECEL_ON */
+    { -1, -1, -1, -1 }, /* POINT */
+    { -1, -1, -1, -1 }, /* LINE */
+    { -1, -1, -1, -1 }, /* LINE5B */
+    { -1, -1, -1, 13 }, /* ARC */
+    { -1, -1, -1, 13 }, /* ARC5B */
+    { -1, -1, -1, 13 }, /* CIRCLE */
+    { -1, -1, -1, 13 }, /* CIRCLE5B */
+    { 14, -1, -1, 13 }, /* HELIX */
+    { -1, -1, -1, 13 }, /* HELIX5B */
+    { -1, -1, -1, -1 }, /* SPEED */
+    { -1, -1, -1, -1 }, /* ACCEL */
+    { -1, -1, -1, -1 }, /* CUTTER_ON */
+    { -1, -1, -1, -1 }, /* CUTTER_OFF */
+    { -1, -1, -1, -1 }, /* GUIDE */
+    { 14, -1, -1, -1 }, /* FCPARMS */
+    { 14, -1, -1, -1 }, /* VERSION */
+    { -1, -1, -1, -1 }, /* COMMENT */
 };
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
@@ -2215,13 +2249,26 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 
-/* ---- checksums ----------------------------------------------------------- */
-typedef struct cbf__ck { int alg; uint32_t acc; } cbf__ck;
+/* ---- checksums -----------------------------------------------------------
+ * Every algorithm kind of the model, implemented once here (parameters as in
+ * spec/cbf.yaml checksums.algorithms and the CRC catalogue):
+ *   SUM          unsigned byte sum, reduced to the width of the field
+ *   CRC16_CCITT  CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, xorout 0
+ *   CRC32        CRC-32/ISO-HDLC: poly 0x04C11DB7 (reflected 0xEDB88320), init/xorout 0xFFFFFFFF
+ *   CRC32C       CRC-32C Castagnoli: poly 0x1EDC6F41 (reflected 0x82F63B78), init/xorout 0xFFFFFFFF
+ *   FLETCHER16   bytes, sums modulo 255, sum2 << 8 | sum1
+ *   FLETCHER32   16-bit little-endian words (odd tail padded with 0), sums modulo 65535, sum2 << 16 | sum1
+ * A coverage feeds several ranges as one stream: Fletcher-32 keeps a pending odd byte. */
+typedef struct cbf__ck { int alg; uint32_t acc, acc2; int odd; uint8_t pend; } cbf__ck;
 
 static void cbf__ck_init(cbf__ck *c, int alg)
 {
     c->alg = alg;
-    c->acc = alg == CBF__ALG_CRC32 ? 0xFFFFFFFFu : 0u;
+    c->acc = (alg == CBF__ALG_CRC32 || alg == CBF__ALG_CRC32C) ? 0xFFFFFFFFu
+             : alg == CBF__ALG_CRC16_CCITT ? 0xFFFFu : 0u;
+    c->acc2 = 0u;
+    c->odd = 0;
+    c->pend = 0u;
 }
 
 /* The plain byte sum of p[0..n), modulo 2^32. Eight bytes at a time: the bytes
@@ -2253,21 +2300,64 @@ static uint32_t cbf__sum(const uint8_t *p, size_t n)
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
 {
     size_t i;
-    if (c->alg == CBF__ALG_CRC32) {
+    unsigned b;
+    switch (c->alg) {
+    case CBF__ALG_CRC32:
+    case CBF__ALG_CRC32C: {
+        const uint32_t poly = c->alg == CBF__ALG_CRC32 ? 0xEDB88320u : 0x82F63B78u;
         for (i = 0; i < n; i++) {
-            unsigned b;
             c->acc ^= p[i];
             for (b = 0; b < 8u; b++)
-                c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ 0xEDB88320u) : (c->acc >> 1);
+                c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ poly) : (c->acc >> 1);
         }
-    } else {
+        break;
+    }
+    case CBF__ALG_CRC16_CCITT:
+        for (i = 0; i < n; i++) {
+            c->acc ^= (uint32_t)p[i] << 8;
+            for (b = 0; b < 8u; b++)
+                c->acc = (c->acc & 0x8000u) ? (((c->acc << 1) ^ 0x1021u) & 0xFFFFu) : ((c->acc << 1) & 0xFFFFu);
+        }
+        break;
+    case CBF__ALG_FLETCHER16:
+        for (i = 0; i < n; i++) {
+            c->acc = (c->acc + p[i]) % 255u;
+            c->acc2 = (c->acc2 + c->acc) % 255u;
+        }
+        break;
+    case CBF__ALG_FLETCHER32:
+        for (i = 0; i < n; i++) {
+            if (!c->odd) {
+                c->pend = p[i];
+                c->odd = 1;
+                continue;
+            }
+            c->acc = (c->acc + ((uint32_t)c->pend | ((uint32_t)p[i] << 8))) % 65535u;
+            c->acc2 = (c->acc2 + c->acc) % 65535u;
+            c->odd = 0;
+        }
+        break;
+    default:
         c->acc += cbf__sum(p, n);
+        break;
     }
 }
 
 static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
 {
-    uint32_t v = c->alg == CBF__ALG_CRC32 ? (c->acc ^ 0xFFFFFFFFu) : c->acc;
+    uint32_t v = c->acc, s1 = c->acc, s2 = c->acc2;
+    if (c->alg == CBF__ALG_CRC32 || c->alg == CBF__ALG_CRC32C) {
+        v = c->acc ^ 0xFFFFFFFFu;
+    } else if (c->alg == CBF__ALG_FLETCHER16) {
+        v = (s2 << 8) | s1;
+    } else if (c->alg == CBF__ALG_FLETCHER32) {
+        if (c->odd) { /* the odd last byte, padded with a zero high byte */
+            s1 = (s1 + c->pend) % 65535u;
+            s2 = (s2 + s1) % 65535u;
+        }
+        v = (s2 << 16) | s1;
+    }
+    /* only a sum is wider than its field (loader.py refuses any other such algorithm) */
     return width >= 4u ? v : (v & ((1u << (8u * width)) - 1u));
 }
 
@@ -2638,7 +2728,8 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         cov = (tag == CBF__CK_FILE && cbf__profiles[profile].file[0] >= 0) ? cbf__profiles[profile].file[0]
                                                                              : k->coverage;
         cbf__put_u(w->buf + f->offset,
-                   cbf__cover(cov, k->alg, f->elem, w->buf, w->len, w->records_end, NULL, 0), f->elem);
+                   cbf__cover(cov, tag == CBF__CK_FILE ? cbf__profiles[profile].file_alg : k->alg, f->elem, w->buf,
+                              w->len, w->records_end, NULL, 0), f->elem);
     }
     return (long)w->len;
 }
@@ -3569,8 +3660,8 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != want)
-                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "%s is %lu, the header sums to %lu",
-                          f->name, (unsigned long)got, (unsigned long)want);
+                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
+                          (unsigned long)got, (unsigned long)want);
         }
     }
     cbf__check_part_number(&v);
@@ -3623,7 +3714,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             uint32_t got = cbf__get_u(p + fck->offset, fck->elem);
             if (got != want)
                 cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + fck->offset,
-                          "argument checksum %lu, the arguments sum to %lu", (unsigned long)got,
+                          "stored argument checksum %lu, computed %lu", (unsigned long)got,
                           (unsigned long)want);
         }
         if (res != 0u) {
@@ -3635,13 +3726,12 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos, "unknown command code 0x%02lx", (unsigned long)code);
         } else {
             int accepted = 0, k, ci;
-            /* availability: the command has no layout for the file's version (fallback included) */
-            for (ci = 0; !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)) && ci < CBF__NCHECKS; ci++) {
-                const cbf__check *ch = &cbf__checks[ci];
-                if (ch->kind == CBF__KIND_AVAILABILITY && (ch->versions & CBF__VBIT(v.eff)))
-                    cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
-                             cbf__versions[v.eff].id);
-            }
+            /* availability: the command has no layout for the file's version (fallback included);
+             * the finding names the one check that covers this command in this version */
+            ci = cbf__avail_check[cmd][v.eff];
+            if (ci >= 0 && !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)))
+                cbf__say(&v, ci, rec, pos, "%s is not available in version %s", cbf__commands[cmd].name,
+                         cbf__versions[v.eff].id);
             if (seen_nb[cmd] == (long)nb) { /* same command and size as last time: same answers */
                 accepted = seen_ok[cmd];
                 layout = seen_layout[cmd];
@@ -3695,7 +3785,8 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             uint32_t got = cbf__get_u(buf + f->offset, f->elem), first = 0u;
             int c, match = 0;
             for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
-                uint32_t want = cbf__cover(cbf__profiles[profile].file[c], k->alg, f->elem, buf, len, pos, NULL, 0);
+                uint32_t want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem,
+                                           buf, len, pos, NULL, 0);
                 if (c == 0)
                     first = want;
                 if (want == got)
@@ -3704,7 +3795,8 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             if (!match) {
                 const char *hint = NULL;
                 for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
-                    if (cbf__cover(cbf__profiles[profile].hint[c], k->alg, f->elem, buf, len, pos, NULL, 0) == got) {
+                    if (cbf__cover(cbf__profiles[profile].hint[c], cbf__profiles[profile].hint_alg[c], f->elem, buf,
+                                   len, pos, NULL, 0) == got) {
                         hint = cbf__coverages[cbf__profiles[profile].hint[c]].name;
                         break;
                     }

@@ -16,6 +16,7 @@ import jsonschema
 import yaml
 
 from .model import (
+    ALGORITHM_KINDS,
     Algorithm,
     Check,
     ChecksumField,
@@ -341,12 +342,25 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
                     raise ctx.fail(s, f"coverage {k}: unknown record field {ex!r}", "exclude")
             segs.append(seg)
         coverages[k] = Coverage(k, str(cov["doc"]).strip(), tuple(segs))
+    # the stored field of each checksum tag: its width bounds the algorithm's result
+    widths = {f.checksum: f.size for h in headers.values() for f in h.fields if f.checksum}
+    widths.update({f.checksum: f.size for f in rfields if f.checksum})
+
+    def fits(node: _Map, key: str, tag: str, alg_name: str, what: str) -> None:
+        bits = ALGORITHM_KINDS[algorithms[alg_name].kind]
+        if tag in widths and bits is not None and bits > 8 * widths[tag]:
+            raise ctx.fail(node, f"{what}: algorithm {alg_name} gives {bits} bits, the {tag} checksum field "
+                                 f"holds {8 * widths[tag]}", key)
+
     cfields: list[ChecksumField] = []
     for f in cs["fields"]:
         if f["algorithm"] not in algorithms:
             raise ctx.fail(f, f"checksum {f['field']}: unknown algorithm {f['algorithm']!r}", "algorithm")
         if f["coverage"] not in coverages:
             raise ctx.fail(f, f"checksum {f['field']}: unknown coverage {f['coverage']!r}", "coverage")
+        if any(o.field == f["field"] for o in cfields):
+            raise ctx.fail(f, f"checksum {f['field']}: defined twice", "field")
+        fits(f, "algorithm", f["field"], f["algorithm"], f"checksum {f['field']}")
         cfields.append(ChecksumField(f["field"], f["algorithm"], f["coverage"], f["clause"]))
     tags = {f.field for f in cfields}
     for tag in ("args", "header", "file"):
@@ -364,7 +378,12 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
         for cov_name in list(p["file_coverages"]) + list(p["hint_coverages"]):
             if cov_name not in coverages:
                 raise ctx.fail(p, f"profile {p['id']}: unknown coverage {cov_name!r}")
-        profiles.append(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]), tuple(p["hint_coverages"])))
+        if "file_algorithm" in p:
+            if p["file_algorithm"] not in algorithms:
+                raise ctx.fail(p, f"profile {p['id']}: unknown algorithm {p['file_algorithm']!r}", "file_algorithm")
+            fits(p, "file_algorithm", "file", p["file_algorithm"], f"profile {p['id']}")
+        profiles.append(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]), tuple(p["hint_coverages"]),
+                                p.get("file_algorithm")))
     if profiles[0].id != "default":
         raise ctx.fail(raw["profiles"], "the first profile must be 'default'")
 
@@ -389,17 +408,17 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
             raise ctx.fail(ch, f"check {ch['id']}: kind {ch['kind']} needs targets", "kind")
         if ch["kind"] == "availability" and not ch.get("versions"):
             raise ctx.fail(ch, f"check {ch['id']}: availability needs versions", "kind")
+        for cname in ch.get("commands", []):
+            if cname not in cmd_by_name:
+                raise ctx.fail(ch, f"check {ch['id']}: unknown command {cname}", "commands")
         checks.append(
             Check(id=str(ch["id"]), kind=ch["kind"], severity=ch["severity"], text=str(ch["text"]).strip(),
                   fails=" ".join(str(ch["fails"]).split()), line=ch.line, clause=ch.get("clause"),
                   decision=ch.get("decision"), input=ch.get("input"), versions=tuple(ch.get("versions", [])),
-                  targets=tuple(targets), min=ch.get("min"), max=ch.get("max"))
+                  commands=tuple(ch.get("commands", [])), targets=tuple(targets), min=ch.get("min"),
+                  max=ch.get("max"))
         )
-    gated = {v for ch in checks if ch.kind == "availability" for v in ch.versions}
-    for v in vids:
-        if v not in gated and any(not c.available_in(v) for c in commands):
-            missing = [c.name for c in commands if not c.available_in(v)]
-            raise ctx.fail(raw["checks"], f"version {v} lacks {', '.join(missing)} but no availability check covers it")
+    _check_availability(ctx, raw["checks"], checks, commands, vids)
 
     for c in commands:
         if not any(c.available_in(v.id) for v in versions):
@@ -436,6 +455,35 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
         history=history,
         raw=_plain(raw),
     )
+
+
+def _check_availability(ctx: _Ctx, raws: _Seq, checks: list[Check], commands: list[Command],
+                        vids: list[str]) -> None:
+    """Every (version, command) pair where the command has no layout is covered by exactly one
+    availability check, and a check covers only such pairs: its findings name the right clause."""
+    raw_of = {str(r["id"]): r for r in raws}
+    covered: dict[tuple[str, str], Check] = {}
+    for ch in checks:
+        if ch.kind != "availability":
+            continue
+        node = raw_of[ch.id]
+        for v in ch.versions:
+            for name in ch.commands:
+                cmd = next(c for c in commands if c.name == name)
+                if cmd.available_in(v):
+                    raise ctx.fail(node, f"check {ch.id}: {name} has a layout in version {v}, nothing to cover",
+                                   "commands")
+                other = covered.get((v, name))
+                if other is not None:
+                    raise ctx.fail(node, f"check {ch.id}: {name} in version {v} is already covered by check "
+                                         f"{other.id} (line {other.line}); one check per command and version",
+                                   "commands")
+                covered[(v, name)] = ch
+    for v in vids:
+        for cmd in commands:
+            if not cmd.available_in(v) and (v, cmd.name) not in covered:
+                raise SpecError(ctx.path, cmd.line, f"{cmd.name} has no layout in version {v} and no availability "
+                                                    f"check covers it (name it in a check's commands)")
 
 
 def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str) -> None:

@@ -198,11 +198,39 @@ class Coverage:
     segments: tuple[Segment, ...]
 
 
+# The checksum algorithm kinds every runtime implements, with the width of
+# their result in bits (None: a byte sum, reduced to the width of its field).
+# Parameters, by the names of the CRC catalogue (reveng):
+#   crc16_ccitt  CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, xorout 0
+#   crc32        CRC-32/ISO-HDLC: poly 0x04C11DB7, init 0xFFFFFFFF, reflected, xorout 0xFFFFFFFF
+#   crc32c       CRC-32/ISCSI (Castagnoli): poly 0x1EDC6F41, init 0xFFFFFFFF, reflected, xorout 0xFFFFFFFF
+#   fletcher16   over bytes, both sums modulo 255, result sum2 << 8 | sum1
+#   fletcher32   over 16-bit little-endian words (an odd last byte padded with 0),
+#                both sums modulo 65535, result sum2 << 16 | sum1
+ALGORITHM_KINDS: dict[str, int | None] = {
+    "sum": None,
+    "crc16_ccitt": 16,
+    "crc32": 32,
+    "crc32c": 32,
+    "fletcher16": 16,
+    "fletcher32": 32,
+}
+
+
 @dataclass(frozen=True)
 class Algorithm:
     name: str
-    kind: str  # sum | crc32
+    kind: str  # a key of ALGORITHM_KINDS
     doc: str
+
+    @property
+    def is_sum(self) -> bool:
+        return self.kind == "sum"
+
+    @property
+    def bits(self) -> int | None:
+        """Width of the result; None for a sum (it takes its field's width)."""
+        return ALGORITHM_KINDS[self.kind]
 
 
 @dataclass(frozen=True)
@@ -233,6 +261,7 @@ class Profile:
     doc: str
     file_coverages: tuple[str, ...]
     hint_coverages: tuple[str, ...]
+    file_algorithm: str | None = None  # None: the file checksum field's own algorithm
 
 
 @dataclass(frozen=True)
@@ -253,6 +282,7 @@ class Check:
     decision: str | None = None
     input: str | None = None
     versions: tuple[str, ...] = ()
+    commands: tuple[str, ...] = ()  # availability: the commands it covers in its versions
     targets: tuple[Target, ...] = ()
     min: float | None = None
     max: float | None = None
@@ -323,6 +353,21 @@ class Spec:
 
     def checks_of_kind(self, kind: str) -> tuple[Check, ...]:
         return tuple(c for c in self.checks if c.kind == kind)
+
+    def availability_check(self, command: str, version: str) -> Check | None:
+        """The one availability check that covers a command missing from a version (the loader
+        guarantees exactly one); None when the version has the command."""
+        for c in self.checks:
+            if c.kind == "availability" and version in c.versions and command in c.commands:
+                return c
+        return None
+
+    def file_algorithm(self, profile: str) -> str:
+        """The algorithm of the file checksum under a profile."""
+        for p in self.profiles:
+            if p.id == profile and p.file_algorithm:
+                return p.file_algorithm
+        return self.checksums.for_field("file").algorithm
 
     def header_for(self, vid: str) -> HeaderLayout:
         return self.headers[self.version(vid).header]

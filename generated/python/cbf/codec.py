@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import struct
-import zlib
 from array import array
 from collections.abc import Iterable, Sequence
 from typing import Any
 
 from . import tables as T
+from .checksums import compute
 from .errors import EncodeError, TruncatedError
 from .model import Cbf, RecordList
 
@@ -95,25 +95,14 @@ def _width(tag: str) -> int:
     return f.size
 
 
-def _byte_sum(part: Buffer) -> int:
-    """Sum of the bytes; numpy for long ranges (the same number, faster)."""
-    if len(part) < 1 << 18:
-        return sum(part)
-    import numpy as np
-
-    return int(np.frombuffer(part, dtype=np.uint8).sum(dtype=np.uint64))
-
-
 def checksum(algorithm: str, parts: Iterable[Buffer], width: int) -> int:
-    kind = T.CHECKSUMS["algorithms"][algorithm]
-    if kind == "sum":
-        return sum(_byte_sum(p) for p in parts) & ((1 << (8 * width)) - 1)
-    if kind == "crc32":
-        crc = 0
-        for p in parts:
-            crc = zlib.crc32(p, crc)
-        return crc & ((1 << (8 * width)) - 1)
-    raise ValueError(f"unknown checksum algorithm kind {kind!r}")
+    """The checksum of a spec algorithm (a key of checksums.algorithms) over parts."""
+    return compute(T.CHECKSUMS["algorithms"][algorithm], parts, width)
+
+
+def file_algorithm(profile: str) -> str:
+    """The file checksum's algorithm under a profile (its file_algorithm, else the field's own)."""
+    return str(T.PROFILES[profile].get("file_algorithm") or T.CHECKSUMS["fields"]["file"]["algorithm"])
 
 
 def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buffer | None = None) -> list[Buffer]:
@@ -142,9 +131,10 @@ def coverage_parts(coverage: str, buf: Buffer, offsets: Sequence[int], args: Buf
 
 
 def field_checksum(tag: str, buf: Buffer, offsets: Sequence[int], coverage: str | None = None,
-                   args: Buffer | None = None) -> int:
+                   args: Buffer | None = None, algorithm: str | None = None) -> int:
     spec = T.CHECKSUMS["fields"][tag]
-    return checksum(spec["algorithm"], coverage_parts(coverage or spec["coverage"], buf, offsets, args), _width(tag))
+    return checksum(algorithm or spec["algorithm"], coverage_parts(coverage or spec["coverage"], buf, offsets, args),
+                    _width(tag))
 
 
 def arg_checksum(raw: Buffer) -> int:
@@ -270,4 +260,5 @@ def _fill_header(out: bytearray, offsets: list[int], count: int, profile: str) -
         if tag == "args":
             continue  # written with each record
         cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
-        _put(out, T.HEADER_CHECKSUM_FIELDS[tag], field_checksum(tag, out, offsets, cov))
+        alg = file_algorithm(profile) if tag == "file" else None
+        _put(out, T.HEADER_CHECKSUM_FIELDS[tag], field_checksum(tag, out, offsets, cov, algorithm=alg))

@@ -56,7 +56,7 @@ except ImportError as exc:  # pragma: no cover - depends on the environment
     raise ImportError("cbf.testing needs hypothesis: pip install hypothesis") from exc
 
 from . import tables as T
-from .codec import _fill_header, encode, field_checksum, frame
+from .codec import _fill_header, encode, field_checksum, file_algorithm, frame
 from .model import Cbf, Record, new_header
 from .validation import _motion_end
 
@@ -544,7 +544,8 @@ def reseal_checksums(data: bytes | bytearray, profile: str = "default") -> bytes
     for tag in T.CHECKSUMS["fill_order"]:
         if tag != "args":
             cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
-            _put(b, T.HEADER_CHECKSUM_FIELDS[tag], 0, field_checksum(tag, b, offsets, cov))
+            alg = file_algorithm(profile) if tag == "file" else None
+            _put(b, T.HEADER_CHECKSUM_FIELDS[tag], 0, field_checksum(tag, b, offsets, cov, algorithm=alg))
     return bytes(b)
 
 

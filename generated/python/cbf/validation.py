@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import tables as T
-from .codec import Buffer, checksum, coverage_parts, frame, header_info
+from .codec import Buffer, field_checksum, file_algorithm, frame, header_info
 from .model import Cbf
 
 
@@ -50,6 +50,12 @@ class _Out:
 def _one(kind: str) -> dict[str, Any] | None:
     found = T.checks_of(kind)
     return found[0] if found else None
+
+
+def availability_checks() -> dict[tuple[str, str], dict[str, Any]]:
+    """(version, command) -> the one availability check that covers the pair (the loader
+    refuses a pair covered twice or not at all), so a finding names the right clause."""
+    return {(v, name): c for c in T.checks_of("availability") for v in c["versions"] for name in c["commands"]}
 
 
 def _finite(v: Any) -> bool:
@@ -136,12 +142,16 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
     if fsum is not None:
         stored = header[fsum.name]
         prof = T.PROFILES[profile]
-        if not any(_field_sum("file", buf, offsets, cov) == stored for cov in prof["file_coverages"]):
-            want = _field_sum("file", buf, offsets, prof["file_coverages"][0])
+        alg = file_algorithm(profile)
+        if not any(_field_sum("file", buf, offsets, cov, algorithm=alg) == stored for cov in prof["file_coverages"]):
+            want = _field_sum("file", buf, offsets, prof["file_coverages"][0], algorithm=alg)
             msg = f"stored file checksum {stored}, computed {want}"
             for cov in prof["hint_coverages"]:
-                if _field_sum("file", buf, offsets, cov) == stored:
-                    msg += f"; it matches coverage {cov} (use profile {_profile_with(cov)})"
+                # a hint coverage is computed as the profile that accepts it computes it
+                owner = _profile_with(cov)
+                hint_alg = file_algorithm(owner) if owner in T.PROFILES else alg
+                if _field_sum("file", buf, offsets, cov, algorithm=hint_alg) == stored:
+                    msg += f"; it matches coverage {cov} (use profile {owner})"
             out.add(_one("file_checksum"), None, fsum.offset, msg)
 
     if engine == "numpy" or (engine == "auto" and len(offsets) >= VECTOR_MIN_RECORDS):
@@ -187,11 +197,9 @@ def _profile_with(coverage: str) -> str:
     return "?"
 
 
-def _field_sum(tag: str, buf: bytes, offsets: Sequence[int], coverage: str | None = None, args: bytes | None = None
-               ) -> int:
-    spec = T.CHECKSUMS["fields"][tag]
-    f = T.ARG_CHECKSUM if tag == "args" else T.HEADER_CHECKSUM_FIELDS[tag]
-    return checksum(spec["algorithm"], coverage_parts(coverage or spec["coverage"], buf, offsets, args), f.size)
+def _field_sum(tag: str, buf: bytes, offsets: Sequence[int], coverage: str | None = None, args: bytes | None = None,
+               algorithm: str | None = None) -> int:
+    return field_checksum(tag, buf, offsets, coverage, args, algorithm)
 
 
 def _part_number(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any], part_number: str) -> None:
@@ -246,7 +254,7 @@ def _records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profil
     c_res, c_unknown = _one("reserved_byte"), _one("unknown_code")
     c_finite, c_cont, c_orient, c_shape = _one("finite"), _one("continuity"), _one("orientation"), _one("shape")
     c_cutter = _one("cutter_table") if cutters is not None else None
-    avail = {v: c for c in T.checks_of("availability") for v in c["versions"]}
+    avail = availability_checks()
     targeted: dict[str, list[tuple[dict[str, Any], tuple[str, ...]]]] = {}
     for kind in ("positive", "nonzero_vector", "range", "nondecreasing", "ordered"):
         for ch in T.checks_of(kind):
@@ -287,7 +295,7 @@ def _records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profil
             out.add(c_unknown, i, off + T.RECORD_FIELDS[i_code].offset, f"unknown command code 0x{code:02X}")
             continue
         if not cmd.layouts_for(version):
-            out.add(avail.get(version), i, off + T.RECORD_FIELDS[i_code].offset,
+            out.add(avail.get((version, cmd.name)), i, off + T.RECORD_FIELDS[i_code].offset,
                     f"{cmd.name} is not available in version {version}")
         cands = cmd.candidates(version)
         if not any(lay.size == nb and lay.accepted_under(profile) for lay in cands):

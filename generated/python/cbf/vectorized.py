@@ -115,10 +115,13 @@ def records(out: _Out, buf: bytes, offsets: Sequence[int], version: str, profile
     code_off = F[T.I_CODE].offset
     bad = np.nonzero(~known[code])[0]
     add(one("unknown_code"), bad, 4, off[bad] + code_off, (f"unknown command code 0x{code[i]:02X}" for i in bad))
-    avail_check = {v: c for c in T.checks_of("availability") for v in c["versions"]}.get(version)
+    covering = V.availability_checks()
     bad = np.nonzero(known[code] & ~avail[code])[0]
-    add(avail_check, bad, 5, off[bad] + code_off,
-        (f"{T.BY_CODE[int(code[i])].name} is not available in version {version}" for i in bad))
+    for c in np.unique(code[bad]):
+        name = T.BY_CODE[int(c)].name
+        rows = bad[code[bad] == c]
+        add(covering.get((version, name)), rows, 5, off[rows] + code_off,
+            (f"{name} is not available in version {version}" for _ in rows))
     bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
 
     def sizes_msg(i: int) -> str:

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from ... import __version__ as TOOLKIT_VERSION
-from ...model import Field, Layout, Spec
+from ...model import ALGORITHM_KINDS, Field, Layout, Spec
 from ...render import environment
 
 HERE = Path(__file__).parent
@@ -41,7 +41,7 @@ SHAPE_KINDS = ("start", "end")
 SHAPE_KEYS = ("name", "count")
 CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
-ALGORITHMS = ("sum", "crc32")
+ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in the template's checksum section
 CHECKSUM_TAGS = ("args", "header", "file")
 CHECK_KINDS = (
     "truncated_header", "truncated_record", "part_number", "cutter_table", "file_checksum", "command_count",
@@ -265,15 +265,33 @@ def context(spec: Spec) -> dict[str, Any]:
             raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
         ckfields.append({"tag": tag, "alg": "ALG_" + macro(kind), "coverage": cov_names.index(cf.coverage)})
     fill = ["CK_" + macro(t) for t in spec.checksums.fill_order]
+    def alg_macro(name: str) -> str:
+        return "CBF__ALG_" + macro(spec.checksums.algorithms[name].kind)
+
     profile_rows: list[dict[str, Any]] = []
     for p in spec.profiles:
+        # a hint coverage is computed with the algorithm of the profile that accepts it
+        owners = [next((q for q in spec.profiles if x in q.file_coverages), p) for x in p.hint_coverages]
         profile_rows.append({"id": p.id, "macro": macro(p.id), "doc": comment(p.doc),
                              "file": [cov_names.index(x) for x in p.file_coverages],
-                             "hint": [cov_names.index(x) for x in p.hint_coverages]})
+                             "hint": [cov_names.index(x) for x in p.hint_coverages],
+                             "file_alg": alg_macro(spec.file_algorithm(p.id)),
+                             "hint_alg": [alg_macro(spec.file_algorithm(q.id)) for q in owners]})
     max_cov = max([len(r["file"]) for r in profile_rows] + [len(r["hint"]) for r in profile_rows] + [1])
     for prow in profile_rows:
         prow["file_pad"] = prow["file"] + [-1] * (max_cov - len(prow["file"]))
         prow["hint_pad"] = prow["hint"] + [-1] * (max_cov - len(prow["hint"]))
+        prow["hint_alg_pad"] = prow["hint_alg"] + ["CBF__ALG_NONE"] * (max_cov - len(prow["hint_alg"]))
+    # per command and version: the index of the one availability check covering a
+    # command the version lacks (the loader guarantees one), -1 when it has it
+    check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
+    avail_rows = []
+    for c in spec.commands:
+        row = []
+        for v in spec.versions:
+            ach = spec.availability_check(c.name, v.id)
+            row.append(check_index[ach.id] if ach is not None else -1)
+        avail_rows.append({"name": c.name, "row": row})
 
     checks: list[dict[str, Any]] = []
     targets: list[dict[str, Any]] = []
@@ -348,6 +366,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "segments": segments,
         "coverages": coverages,
         "ckfields": ckfields,
+        "avail_rows": avail_rows,
         "fill": fill,
         "profiles": profile_rows,
         "max_cov": max_cov,

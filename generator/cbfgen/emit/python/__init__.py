@@ -70,12 +70,14 @@ def spec_data(spec: Spec) -> dict[str, Any]:
             "fields": {f.field: {"algorithm": f.algorithm, "coverage": f.coverage} for f in spec.checksums.fields},
             "fill_order": list(spec.checksums.fill_order),
         },
-        "profiles": {p.id: {"file_coverages": list(p.file_coverages), "hint_coverages": list(p.hint_coverages)}
+        "profiles": {p.id: {"file_coverages": list(p.file_coverages), "hint_coverages": list(p.hint_coverages),
+                            "file_algorithm": p.file_algorithm or spec.checksums.for_field("file").algorithm}
                      for p in spec.profiles},
         "tolerances": spec.tolerances,
         "limits": spec.limits,
         "checks": [
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
+             "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args)} for t in c.targets],
              "min": c.min, "max": c.max, "input": c.input}
             for c in spec.checks
