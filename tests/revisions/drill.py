@@ -129,7 +129,7 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
     slots: list[tuple[Any, Any]] = [(None, None)]
     nodes = [root]
     for i, tok in enumerate(toks):
-        where = ".".join(toks[: i + 1])
+        where = "".join(t if t.startswith("[") or j == 0 else "." + t for j, t in enumerate(toks[: i + 1]))
         slots = [s for n in nodes for s in _step(n, tok, where)]
         if i < len(toks) - 1:
             nodes = []
@@ -249,12 +249,12 @@ def copy_tree(dest: Path) -> None:
         shutil.copytree(jars, dest / "build" / "kaitai-java" / "lib")
 
 
-def _steps(root: Path, quick: bool) -> list[tuple[str, list[str], dict[str, str]]]:
+def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str, list[str], dict[str, str]]]:
     make = ["make", "-C", str(root), "-o", ".venv/.stamp", "-o", "node_modules/.stamp"]
     env = {"PYTHONPATH": os.pathsep.join(str(root / p) for p in ("generator", "generated/python", "."))}
     py = str(REPO / ".venv" / "bin" / "python") if (REPO / ".venv").exists() else sys.executable
     tests = [t for t in QUICK_TESTS if (root / t).exists()] if quick else ["tests"]
-    pytest = [py, "-m", "pytest", "-p", "no:cacheprovider", "-q", "-x", *tests,
+    pytest = [py, "-m", "pytest", "-p", "no:cacheprovider", "-q", *([] if keep_going else ["-x"]), *tests,
               *(f"--ignore={t}" for t in SELF_TESTS)]
     return [("generate", [*make, "generate"], {}),
             ("golden", [*make, "golden"], {}),
@@ -262,7 +262,7 @@ def _steps(root: Path, quick: bool) -> list[tuple[str, list[str], dict[str, str]
             ("pytest" + (" (subset)" if quick else ""), pytest, env)]
 
 
-def drill(fx: Fixture, quick: bool, keep: bool) -> bool:
+def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> bool:
     root = Path(tempfile.mkdtemp(prefix=f"cbf-drill-{fx.name}-"))
     ok = True
     try:
@@ -275,7 +275,7 @@ def drill(fx: Fixture, quick: bool, keep: bool) -> bool:
         print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
               f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s with the copy)")
         ok = not problems
-        for name, cmd, extra in _steps(root, quick):
+        for name, cmd, extra in _steps(root, quick, keep_going):
             t = time.monotonic()
             env = dict(os.environ, **extra)
             for var in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS"):
@@ -285,7 +285,7 @@ def drill(fx: Fixture, quick: bool, keep: bool) -> bool:
             print(f"  {'ok' if good else 'FAIL':<4} {name} ({time.monotonic() - t:.1f} s)", flush=True)
             if not good:
                 ok = False
-                tail = (res.stdout + res.stderr).strip().splitlines()[-40:]
+                tail = (res.stdout + res.stderr).strip().splitlines()[-(80 if keep_going else 40):]
                 print("\n".join("       | " + line for line in tail))
                 break
         return ok
@@ -306,6 +306,7 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("fixture", nargs="*", type=Path)
     r.add_argument("--quick", action="store_true", help="the subset `make test` runs")
     r.add_argument("--keep", action="store_true", help="keep the temporary trees")
+    r.add_argument("--keep-going", action="store_true", help="report every failing test, not the first")
     args = ap.parse_args(argv)
     try:
         if args.cmd == "apply":
@@ -316,7 +317,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"drill: {exc}", file=sys.stderr)
         return 2
     t0 = time.monotonic()
-    results = {fx.name: drill(fx, args.quick, args.keep) for fx in chosen}
+    results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
     bad = [n for n, good in results.items() if not good]
     print(f"revision drill{' (quick)' if args.quick else ''}: {len(results) - len(bad)} of {len(results)} "
           f"fixture(s) pass in {time.monotonic() - t0:.0f} s" + (f"; failing: {', '.join(bad)}" if bad else ""))
