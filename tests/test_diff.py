@@ -300,3 +300,19 @@ def test_generation_keeps_its_command_line() -> None:
     res = subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(SPEC_PATH), "--check-spec"],
                          capture_output=True, text=True, cwd=REPO)
     assert res.returncode == 0 and f"{len(SPEC.commands)} commands" in res.stdout
+
+
+def test_the_changes_page_is_the_diff_of_each_version_with_the_one_before() -> None:
+    from cbfgen.diff import version_steps
+    from cbfgen.emit import docs
+
+    page = docs.emit(SPEC)["docs/changes.md"].decode()
+    steps = version_steps(SPEC)
+    assert len(steps) == len(SPEC.versions) - 1
+    for prev, vid, changes in steps:
+        assert f"### {vid}, relative to {prev}" in page
+        for c in changes:
+            assert f"| {c.command or 'header'} | {c.detail} |" in page
+    for h in SPEC.history:
+        assert f"| {h.id} | {h.date} | {h.clause} | {h.text} |" in page
+    assert SPEC.revision in page.splitlines()[0]

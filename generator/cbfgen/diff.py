@@ -81,7 +81,11 @@ def describe_field(f: Field) -> str:
 
 
 def _layout_name(lay: Layout) -> str:
-    return f"layout {lay.variant}" if lay.variant else "layout"
+    return f"layout {lay.variant}" if lay.variant else "primary layout"
+
+
+def _pair_name(o: Layout, n: Layout) -> str:
+    return _layout_name(o) if o.variant == n.variant else f"{_layout_name(o)} -> {_layout_name(n)}"
 
 
 def _coverage_text(cov: Coverage | None) -> str:
@@ -165,7 +169,7 @@ def _compare_layouts(old: tuple[Layout, ...], new: tuple[Layout, ...], version: 
     out: list[Change] = []
     pairs, removed, added = _pair_layouts(old, new)
     for o, n in pairs:
-        name = _layout_name(o)
+        name = _pair_name(o, n)
         if o.size != n.size:
             out.append(Change("layout_resized", version, command,
                               f"{name}: argument size {o.size} -> {n.size} byte(s)", breaking))

@@ -16,6 +16,7 @@ import struct
 from pathlib import Path
 from typing import Any
 
+from ...diff import version_steps
 from ...model import Check, Command, Layout, Spec, ident
 from ...render import environment
 from . import svg
@@ -248,4 +249,8 @@ def emit(spec: Spec) -> dict[str, bytes]:
         files[f"{OUT}/{command_page(c)}"] = page.render(c=c, checks=_checks_of(spec, c), **ctx).encode()
     for rel, text in ctx["figures"].items():
         files[f"{OUT}/{rel}"] = text.encode()
+    # The "Changes" page: each version against the one before it, by cbfgen diff's comparison (issue 12).
+    available = {v.id: [c.name for c in spec.commands if c.available_in(v.id)] for v in spec.versions}
+    files[f"{OUT}/changes.md"] = env.get_template("changes.md.j2").render(
+        steps=version_steps(spec), available=available, **ctx).encode()
     return files
