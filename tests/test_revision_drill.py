@@ -9,6 +9,7 @@ revision.
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -89,3 +90,12 @@ def test_make_breaking_reads_the_spec_at_a_git_ref() -> None:
     assert res.returncode in (0, 1), res.stderr
     assert res.stdout.startswith("cbfgen diff: HEAD:spec/cbf.yaml -> spec/cbf.yaml:")
     assert "TEST_DEPS += revision-drill-quick" in (REPO / "mk" / "revision.mk").read_text(encoding="utf-8")
+
+
+def test_the_readme_lists_no_versions_by_hand() -> None:
+    """A list of versions in the README goes stale with the next revision: it points to the model instead."""
+    ids = [v.id for v in load(SPEC).versions]
+    for n, line in enumerate((REPO / "README.md").read_text(encoding="utf-8").splitlines(), 1):
+        found = {v for v in ids if re.search(rf"(?<![\w.]){re.escape(v)}(?![\w])", line)}
+        assert len(found) < 3, f"README.md:{n} lists versions {sorted(found)}: {line}"
+        assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
