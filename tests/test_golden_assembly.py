@@ -42,25 +42,19 @@ def test_assembler_language() -> None:
     u16 0x0304     # little-endian
     f32 1.0 -0
     str 4 "AB"
-    sum16 >
-    {
-    ff ff
-    }
+    zeros 2
     """
     out = assemble_text(text)
-    assert out == bytes([1, 2, 4, 3]) + bytes.fromhex("0000803f00000080") + b"AB\0\0" + bytes([0xFE, 0x01, 0xFF, 0xFF])
-
-
-def test_sums_wait_for_inner_sums() -> None:
-    out = assemble_text("sum16 outer\n{outer\nsum16 >\n{\n05\n}\n}\n")
-    assert out == bytes([10, 0, 5, 0, 5])  # outer = 5 + 0 (inner sum 5) + 5
+    assert out == bytes([1, 2, 4, 3]) + bytes.fromhex("0000803f00000080") + b"AB\0\0" + bytes(2)
 
 
 def test_errors_name_the_line() -> None:
     with pytest.raises(AsmError, match=r"<text>:2: .*unknown directive"):
         assemble_text("01\n0g\n")
-    with pytest.raises(AsmError, match="never closed"):
-        assemble_text("{a\n01\n")
+    with pytest.raises(AsmError, match=r"<text>:2: .*defines no 'nonsense' checksum"):
+        assemble_text("01\nchecksum nonsense\n")
+    with pytest.raises(AsmError, match=r"<text>:1: .*unknown profile"):
+        assemble_text("checksum file no_such_profile\n")
 
 
 def test_assembler_imports_no_binding() -> None:

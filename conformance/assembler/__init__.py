@@ -1,15 +1,17 @@
 """A tiny assembler for annotated-hex golden files.
 
-It knows bytes, little-endian numbers, NUL-padded strings, ranges and byte
-sums, and nothing about CBF: it shares no code with generator/ or
-generated/ and imports no binding, so a golden file is never made by the
-code it tests. The language is described in conformance/golden/README.md.
+It knows bytes, little-endian numbers, NUL-padded strings and checksum
+placeholders. How a checksum is computed (its field, algorithm and coverage,
+and what a profile changes) it reads from spec/cbf.yaml with plain yaml
+(spec.py), and it computes it with its own implementations (checksums.py):
+it shares no code with generator/ or generated/ and imports no binding, so a
+golden file is never made by the code it tests. The language is described in
+conformance/golden/README.md.
 """
 
 from __future__ import annotations
 
 import ast
-import bisect
 import functools
 import math
 import operator
@@ -19,6 +21,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from . import checksums
+from .spec import SpecSums
+from .spec import load as load_spec
+
 
 class AsmError(Exception):
     def __init__(self, path: str, line: int, message: str) -> None:
@@ -27,24 +33,37 @@ class AsmError(Exception):
 
 @dataclass
 class _Hole:
+    """A checksum placeholder: the spec's `tag` checksum (under `profile` for the file checksum)."""
+
     offset: int
     width: int
-    target: str  # range name
+    tag: str
+    profile: str | None
     line: int
 
 
 @dataclass
 class _State:
+    spec: SpecSums
     base: Path | None = None
     patches: list[tuple[int, bytes, bool, int]] = field(default_factory=list)  # offset, bytes, after sums, line
     truncate: int | None = None  # keep only this many bytes, after the sums
+    cut: tuple[int, str, int] | None = None  # (bytes kept, checksum tag it precedes, line): `truncate N before TAG`
     overrides: list[tuple[int, bytes, int]] = field(default_factory=list)
     out: bytearray = field(default_factory=bytearray)
-    ranges: dict[str, list[tuple[int, int]]] = field(default_factory=dict)
-    open: list[tuple[str, int]] = field(default_factory=list)
     holes: list[_Hole] = field(default_factory=list)
-    pending_anon: list[_Hole] = field(default_factory=list)
-    anon: int = 0
+
+
+@functools.lru_cache(maxsize=8)
+def _spec(path: Path | None) -> SpecSums:
+    return load_spec() if path is None else load_spec(path)
+
+
+def _env(spec: SpecSums) -> dict[str, int]:
+    """Variables every source may use, read from the spec: spec_next_major is one above the
+    newest major version, a version no revision of this spec has yet (never made real by
+    adding a version: the next revision moves it on)."""
+    return {"spec_next_major": max(spec.majors) + 1}
 
 
 _OPS: dict[type, Any] = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
@@ -94,24 +113,22 @@ def _tokens(text: str) -> list[str]:
     return _TOKEN.findall(text)
 
 
-def assemble_text(text: str, path: str = "<text>", base: Path | None = None) -> bytes:
+def assemble_text(text: str, path: str = "<text>", base: Path | None = None, spec: Path | None = None) -> bytes:
     lines = text.splitlines()
-    st = _State(base=base)
-    _run(lines, 0, len(lines), st, {}, path)
-    if st.open:
-        raise AsmError(path, len(lines), f"range {st.open[-1][0]!r} never closed")
-    if st.pending_anon:
-        raise AsmError(path, st.pending_anon[0].line, "sum placeholder without a following { range")
+    st = _State(spec=_spec(spec), base=base)
+    _run(lines, 0, len(lines), st, _env(st.spec), path)
     for off, data, after, line in st.patches:
         if not after:
             _patch(st, off, data, path, line)
     for off, data, line in st.overrides:
         hit = [h for h in st.holes if h.offset == off and h.width == len(data)]
         if not hit:
-            raise AsmError(path, line, f"override at {off}: no {len(data)}-byte sum placeholder there")
+            raise AsmError(path, line, f"override at {off}: no {len(data)}-byte checksum placeholder there")
         st.holes.remove(hit[0])
         _patch(st, off, data, path, line)
     _fill(st, path)
+    if st.cut is not None and st.cut[0] < len(st.out):  # no checksum of that tag or after it to wait for
+        del st.out[st.cut[0]:]
     for off, data, after, line in st.patches:
         if after:
             _patch(st, off, data, path, line)
@@ -120,14 +137,15 @@ def assemble_text(text: str, path: str = "<text>", base: Path | None = None) -> 
     return bytes(st.out)
 
 
-def listing(text: str, path: str = "<text>", base: Path | None = None) -> str:
+def listing(text: str, path: str = "<text>", base: Path | None = None, spec: Path | None = None) -> str:
     """Offsets of every source line, to help a person write patches and expectations."""
     lines = text.splitlines()
-    st = _State(base=base)
+    st = _State(spec=_spec(spec), base=base)
+    env = _env(st.spec)
     rows = []
     for n, line in enumerate(lines):
         before = len(st.out)
-        _run(lines, n, n + 1, st, {}, path) if not line.strip().lower().startswith(("repeat", "end")) else None
+        _run(lines, n, n + 1, st, env, path) if not line.strip().lower().startswith(("repeat", "end")) else None
         rows.append(f"{before:6d}  {line}")
     return "\n".join(rows)
 
@@ -197,28 +215,16 @@ def _directive(op: str, toks: list[str], st: _State, env: dict[str, int], lineno
         out += raw + bytes(size - len(raw))
     elif op == "zeros":
         out += bytes(int(_eval(args[0], env)))
-    elif op in ("sum16", "sum32"):
-        hole = _Hole(len(out), 2 if op == "sum16" else 4, args[0], lineno)
+    elif op == "checksum":
+        # checksum TAG [PROFILE]: the spec's TAG checksum, as wide as its field, computed at
+        # the end with the spec's algorithm and coverage (the profile's, for the file checksum)
+        if not 1 <= len(args) <= 2:
+            raise ValueError("checksum TAG [PROFILE]")
+        tag, profile = args[0], (args[1] if len(args) > 1 else None)
+        st.spec.rule(tag, profile)  # refuse an unknown tag or profile at its line
+        hole = _Hole(len(out), st.spec.slots[tag].width, tag, profile, lineno)
         out += bytes(hole.width)
-        if args[0] == ">":
-            st.pending_anon.append(hole)
-        else:
-            st.holes.append(hole)
-    elif op.startswith("{"):
-        name = op[1:]
-        if not name:
-            if not st.pending_anon:
-                raise ValueError("anonymous range without a sum placeholder before it")
-            hole = st.pending_anon.pop(0)
-            st.anon += 1
-            name = hole.target = f"~{st.anon}"
-            st.holes.append(hole)
-        st.open.append((name, len(out)))
-    elif op == "}":
-        if not st.open:
-            raise ValueError("} without an open range")
-        name, begin = st.open.pop()
-        st.ranges.setdefault(name, []).append((begin, len(out)))
+        st.holes.append(hole)
     elif op == "include":
         if st.base is None:
             raise ValueError("include needs a file path")
@@ -228,48 +234,85 @@ def _directive(op: str, toks: list[str], st: _State, env: dict[str, int], lineno
     elif op == "set":
         env[args[0]] = int(_eval(args[1], env))
     elif op == "override":
-        # override OFFSET bytes: literal bytes that replace a sum placeholder (a wrong checksum on purpose)
+        # override OFFSET bytes: the stored value, literally, instead of the checksum placeholder at
+        # OFFSET (a wrong checksum on purpose: it stays wrong under any algorithm)
         st.overrides.append((int(_eval(args[0], env)), bytes(int(t, 16) for t in args[1:]), lineno))
     elif op in ("patch", "patch_after_sums"):
         # patch OFFSET then bytes as for a hex line, u16/u32/f32/str directives are not allowed here
         data = bytes(int(t, 16) for t in args[1:])
         st.patches.append((int(_eval(args[0], env)), data, op == "patch_after_sums", lineno))
     elif op == "truncate":
-        st.truncate = int(_eval(args[0], env))
+        # truncate N: keep the first N bytes after everything else; truncate N before TAG: the
+        # file loses its tail before the TAG checksum (and those after it in the fill order) is
+        # computed, so that checksum covers the bytes that are left under any algorithm
+        if len(args) == 3 and args[1] == "before":
+            st.spec.rule(args[2], None if args[2] != "file" else st.spec.default_profile)
+            st.cut = (int(_eval(args[0], env)), args[2], lineno)
+        elif len(args) == 1:
+            st.truncate = int(_eval(args[0], env))
+        else:
+            raise ValueError("truncate N [before TAG]")
     else:
         raise ValueError(f"unknown directive {op!r}")
 
 
-def _fill(st: _State, path: str) -> None:
-    """Resolve sums; a sum waits until no unresolved placeholder lies in its range."""
-    todo = sorted(st.holes, key=lambda h: h.offset)
-    while todo:
-        waiting = [h.offset for h in todo]
-        left: list[_Hole] = []
-        done: list[_Hole] = []
-        for hole in todo:
-            spans = st.ranges.get(hole.target)
-            if spans is None:
-                raise AsmError(path, hole.line, f"no range named {hole.target!r}")
-            blocked = False
-            for b, e in spans:
-                k = bisect.bisect_left(waiting, b)
-                while k < len(waiting) and waiting[k] < e:
-                    if waiting[k] != hole.offset:
-                        blocked = True
-                        break
-                    k += 1
-                if blocked:
+def _coverage(st: _State, hole: _Hole, coverage: str) -> bytes:
+    """The bytes a spec coverage feeds, in order, over the assembled file."""
+    sp, buf = st.spec, st.out
+    bo: Any = sp.byte_order
+    parts: list[bytes] = []
+    for seg in sp.coverages[coverage]:
+        region = seg["region"]
+        if region == "file":
+            parts.append(bytes(buf[seg["start"]:]))
+        elif region == "header":
+            parts.append(bytes(buf[seg["start"]:seg["end"]]))
+        elif region == "args":
+            rec = hole.offset - sp.slots["args"].offset
+            nb = int.from_bytes(buf[rec + sp.arg_size.offset:rec + sp.arg_size.offset + sp.arg_size.width], bo)
+            start = rec + sp.head_size
+            if start + nb > len(buf):
+                raise ValueError(f"the record at {rec} needs {nb} argument bytes, the file ends first")
+            parts.append(bytes(buf[start:start + nb]))
+        elif region == "records":
+            skip = sorted((sp.record_fields[n].offset, sp.record_fields[n].width) for n in seg.get("exclude", []))
+            pos = sp.header_size
+            while pos + sp.head_size <= len(buf):
+                nb = int.from_bytes(buf[pos + sp.arg_size.offset:pos + sp.arg_size.offset + sp.arg_size.width], bo)
+                end = pos + sp.head_size + nb
+                if end > len(buf):
                     break
-            (left if blocked else done).append(hole)
-        if not done:
-            raise AsmError(path, todo[0].line, "sums depend on each other in a cycle")
-        for hole in done:
-            total = sum(sum(st.out[b:e]) for b, e in st.ranges[hole.target])
-            st.out[hole.offset:hole.offset + hole.width] = (total % (1 << (8 * hole.width))).to_bytes(
-                hole.width, "little")
-        todo = left
+                cur = pos
+                for s_off, s_width in skip:
+                    parts.append(bytes(buf[cur:pos + s_off]))
+                    cur = pos + s_off + s_width
+                parts.append(bytes(buf[cur:end]))
+                pos = end
+        else:
+            raise ValueError(f"coverage {coverage}: unknown region {region!r}")
+    return b"".join(parts)
 
 
-def assemble(path: Path) -> bytes:
-    return assemble_text(path.read_text(encoding="utf-8"), str(path), base=path.parent)
+def _fill(st: _State, path: str) -> None:
+    """Compute the checksums in the spec's fill order (each later one covers the earlier ones)."""
+    order = {tag: i for i, tag in enumerate(st.spec.fill_order)}
+    cut = st.cut
+    for hole in sorted(st.holes, key=lambda h: (order.get(h.tag, len(order)), h.offset)):
+        if cut is not None and order.get(hole.tag, len(order)) >= order.get(cut[1], len(order)):
+            if not 0 <= cut[0] <= len(st.out):
+                raise AsmError(path, cut[2], f"truncate at {cut[0]}: the file has {len(st.out)} bytes")
+            del st.out[cut[0]:]
+            cut = None
+        if hole.offset + hole.width > len(st.out):
+            raise AsmError(path, hole.line, f"checksum {hole.tag}: its field was cut off")
+        try:
+            kind, coverage = st.spec.rule(hole.tag, hole.profile)
+            value = checksums.compute(kind, _coverage(st, hole, coverage), hole.width)
+        except ValueError as exc:
+            raise AsmError(path, hole.line, f"checksum {hole.tag}: {exc}") from None
+        bo: Any = st.spec.byte_order
+        st.out[hole.offset:hole.offset + hole.width] = value.to_bytes(hole.width, bo)
+
+
+def assemble(path: Path, spec: Path | None = None) -> bytes:
+    return assemble_text(path.read_text(encoding="utf-8"), str(path), base=path.parent, spec=spec)

@@ -15,11 +15,12 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="conformance.assembler")
     ap.add_argument("--check", action="store_true", help="fail when a committed .cbf differs")
     ap.add_argument("--dir", type=Path, default=GOLDEN)
+    ap.add_argument("--spec", type=Path, default=None, help="the format spec (default: spec/cbf.yaml)")
     args = ap.parse_args(argv)
     stale = 0
     for src in sorted(args.dir.glob("*.hex")):
         try:
-            data = assemble(src)
+            data = assemble(src, args.spec)
         except AsmError as exc:
             print(exc, file=sys.stderr)
             return 2

@@ -1,0 +1,173 @@
+"""Checksums as data (#12 point 7): every algorithm kind, once per runtime, against published values.
+
+The check values are facts of the algorithms, not of the CBF format: the
+"123456789" check of the CRC catalogue (reveng) for the CRCs, and the
+published Fletcher examples ("abcde", "abcdef", "abcdefgh"). Each is run
+through the Python runtime (cbf.checksums), the C header (cbf.h's checksum
+section) and the golden assembler (conformance/assembler/checksums.py), whole
+and split into odd pieces (a coverage feeds several ranges as one stream).
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import yaml
+
+from cbf import checksums as runtime
+from cbfgen.loader import SpecError, load
+from cbfgen.model import ALGORITHM_KINDS
+from conformance.assembler import checksums as assembler
+
+ROOT = Path(__file__).resolve().parents[1]
+SPEC = ROOT / "spec" / "cbf.yaml"
+
+# (kind, data, value): published check values
+VECTORS = [
+    ("sum", b"123456789", 477),
+    ("crc16_ccitt", b"123456789", 0x29B1),  # CRC-16/CCITT-FALSE
+    ("crc32", b"123456789", 0xCBF43926),  # CRC-32/ISO-HDLC
+    ("crc32c", b"123456789", 0xE3069283),  # CRC-32/ISCSI
+    ("fletcher16", b"abcde", 0xC8F0),
+    ("fletcher16", b"abcdef", 0x2057),
+    ("fletcher16", b"abcdefgh", 0x0627),
+    ("fletcher32", b"abcde", 0xF04FC729),
+    ("fletcher32", b"abcdef", 0x56502D2A),
+    ("fletcher32", b"abcdefgh", 0xEBE19591),
+]
+
+
+def _pieces(data: bytes) -> list[bytes]:
+    return [data[:1], data[1:4], b"", data[4:]]
+
+
+def test_vectors_cover_every_kind() -> None:
+    assert {k for k, _, _ in VECTORS} == set(ALGORITHM_KINDS) == set(runtime.KINDS) == set(assembler.ALGORITHMS)
+
+
+@pytest.mark.parametrize(("kind", "data", "value"), VECTORS)
+def test_python_runtime(kind: str, data: bytes, value: int) -> None:
+    assert runtime.compute(kind, [data], 4) == value
+    assert runtime.compute(kind, _pieces(data), 4) == value
+    assert runtime.compute(kind, [memoryview(data)], 4) == value
+
+
+@pytest.mark.parametrize(("kind", "data", "value"), VECTORS)
+def test_assembler(kind: str, data: bytes, value: int) -> None:
+    assert assembler.compute(kind, data, 4) == value
+
+
+def test_a_sum_is_reduced_to_its_field_and_nothing_else_is() -> None:
+    data = bytes([0xFF]) * 300  # 76500
+    assert runtime.compute("sum", [data], 2) == assembler.compute("sum", data, 2) == 76500 % 65536
+    with pytest.raises(ValueError, match="wider than its 2-byte field"):
+        assembler.compute("crc32", b"123456789", 2)
+
+
+C_PROGRAM = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+static const char *data[] = { "123456789", "abcde", "abcdef", "abcdefgh" };
+static const int kinds[] = { CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C,
+                             CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32 };
+static const char *names[] = { "sum", "crc16_ccitt", "crc32", "crc32c", "fletcher16", "fletcher32" };
+int main(void)
+{
+    size_t a, d;
+    for (a = 0; a < sizeof kinds / sizeof kinds[0]; a++) {
+        for (d = 0; d < sizeof data / sizeof data[0]; d++) {
+            cbf__ck whole, split;
+            size_t n = strlen(data[d]);
+            cbf__ck_init(&whole, kinds[a]);
+            cbf__ck_feed(&whole, (const uint8_t *)data[d], n);
+            cbf__ck_init(&split, kinds[a]);
+            cbf__ck_feed(&split, (const uint8_t *)data[d], 1u);
+            cbf__ck_feed(&split, (const uint8_t *)data[d] + 1, 3u);
+            cbf__ck_feed(&split, (const uint8_t *)data[d] + 4, 0u);
+            cbf__ck_feed(&split, (const uint8_t *)data[d] + 4, n - 4u);
+            printf("%s %s %lu %lu\n", names[a], data[d], (unsigned long)cbf__ck_value(&whole, 4u),
+                   (unsigned long)cbf__ck_value(&split, 4u));
+        }
+    }
+    return 0;
+}
+"""
+
+
+def test_c_header(tmp_path: Path) -> None:
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    src = tmp_path / "ck.c"
+    src.write_text(C_PROGRAM, encoding="utf-8")
+    exe = tmp_path / "ck"
+    subprocess.run([cc, "-std=c99", "-Wall", "-Werror", "-Wno-unused-function", "-I", str(ROOT / "generated" / "c"),
+                    "-o", str(exe), str(src), "-lm"], check=True, capture_output=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout.split("\n")
+    got = {(k, d): (int(w), int(s)) for k, d, w, s in (line.split() for line in out if line)}
+    for kind, data, value in VECTORS:
+        assert got[(kind, data.decode())] == (value, value), (kind, data)
+
+
+# -- the loader: algorithms are data, and a result must fit its field ---------------
+def _spec_with(tmp_path: Path, edit: object) -> tuple[Path, list[str]]:
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    assert callable(edit)
+    edit(doc)
+    text = yaml.safe_dump(doc, sort_keys=False)
+    path = tmp_path / "cbf.yaml"
+    path.write_text(text, encoding="utf-8")
+    return path, text.splitlines()
+
+
+def _narrowest(doc: dict[str, object]) -> tuple[str, int]:
+    """The checksum tag whose field is narrowest, and its width in bits (read from the YAML)."""
+    sizes = {n: t.get("size") for n, t in doc["types"].items()}  # type: ignore[attr-defined]
+    fields = [f for h in doc["headers"].values() for f in h["fields"]] + doc["record"]["fields"]  # type: ignore[attr-defined]
+    tagged = [(f["checksum"], 8 * sizes[f["type"]]) for f in fields if "checksum" in f]
+    return min(tagged, key=lambda t: t[1])
+
+
+def test_loader_refuses_a_result_wider_than_its_field(tmp_path: Path) -> None:
+    doc0 = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    tag, bits = _narrowest(doc0)
+    wide = next(name for name, a in doc0["checksums"]["algorithms"].items()
+                if (ALGORITHM_KINDS[a["kind"]] or 0) > bits)
+
+    def edit(doc: dict[str, object]) -> None:
+        for f in doc["checksums"]["fields"]:  # type: ignore[index]
+            if f["field"] == tag:
+                f["algorithm"] = wide
+
+    path, lines = _spec_with(tmp_path, edit)
+    with pytest.raises(SpecError) as err:
+        load(path)
+    assert f"algorithm {wide} gives" in err.value.message and f"holds {bits}" in err.value.message
+    assert "algorithm:" in lines[err.value.line - 1] and wide in lines[err.value.line - 1]
+
+
+def test_a_profile_chooses_the_file_algorithm(tmp_path: Path) -> None:
+    doc0 = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    pid = doc0["profiles"][-1]["id"]
+    current = next(f["algorithm"] for f in doc0["checksums"]["fields"] if f["field"] == "file")
+    other = next(n for n, a in doc0["checksums"]["algorithms"].items() if n != current and a["kind"] != "sum")
+
+    def edit(doc: dict[str, object]) -> None:
+        doc["profiles"][-1]["file_algorithm"] = other  # type: ignore[index]
+
+    path, _ = _spec_with(tmp_path, edit)
+    spec = load(path)
+    assert spec.file_algorithm(pid) == other
+    assert spec.file_algorithm(spec.profiles[0].id) == (current if pid != spec.profiles[0].id else other)
+
+    def bad(doc: dict[str, object]) -> None:
+        doc["profiles"][-1]["file_algorithm"] = "no_such_algorithm"  # type: ignore[index]
+
+    path, lines = _spec_with(tmp_path, bad)
+    with pytest.raises(SpecError, match="unknown algorithm 'no_such_algorithm'") as err:
+        load(path)
+    assert "file_algorithm" in lines[err.value.line - 1]

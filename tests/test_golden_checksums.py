@@ -1,0 +1,219 @@
+"""Goldens follow the spec's checksums (#12 point 2).
+
+The assembler computes every checksum with the algorithm and coverage the
+spec declares. Under a revision that changes them (made here from the spec's
+own lists, not from rev 03's values), every golden case assembled with the
+revised spec must still meet its unchanged expectation in a Python runtime
+generated from the same revised spec: the two share no code, so a fixed
+algorithm in either one fails this test. For rev 03 itself the committed
+bytes do not change (test_golden_assembly).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+
+from cbfgen.model import ALGORITHM_KINDS
+from conformance.assembler import assemble, assemble_text
+from conformance.assembler.spec import load as load_sums
+from conformance.runner.compare import findings_difference
+
+ROOT = Path(__file__).resolve().parents[1]
+SPEC = ROOT / "spec" / "cbf.yaml"
+GOLDEN = ROOT / "conformance" / "golden"
+Doc = dict[str, Any]
+
+
+def _widths(doc: Doc) -> dict[str, int]:
+    """Bits of the field that stores each checksum tag, read from the YAML."""
+    sizes = {n: t.get("size") for n, t in doc["types"].items()}
+    fields = [f for h in doc["headers"].values() for f in h["fields"]] + doc["record"]["fields"]
+    return {f["checksum"]: 8 * sizes[f["type"]] for f in fields if "checksum" in f}
+
+
+def _fitting(doc: Doc, bits: int, avoid: set[str]) -> str:
+    """A non-sum algorithm of the spec whose result fits `bits`, not in `avoid` when possible."""
+    fit = [n for n, a in doc["checksums"]["algorithms"].items()
+           if a["kind"] != "sum" and (ALGORITHM_KINDS[a["kind"]] or 0) <= bits]
+    assert fit, "the spec lists no non-sum algorithm that fits"
+    return next((n for n in fit if n not in avoid), fit[0])
+
+
+def every_field_another_algorithm(doc: Doc) -> None:
+    """Each checksum field switches to another, non-sum algorithm (profiles follow the file field)."""
+    widths, used = _widths(doc), set()
+    for f in doc["checksums"]["fields"]:
+        f["algorithm"] = _fitting(doc, widths[f["field"]], used | {f["algorithm"]})
+        used.add(f["algorithm"])
+
+
+def last_profile_another_algorithm(doc: Doc) -> None:
+    """The last profile computes the file checksum with another, non-sum algorithm."""
+    file_alg = next(f["algorithm"] for f in doc["checksums"]["fields"] if f["field"] == "file")
+    doc["profiles"][-1]["file_algorithm"] = _fitting(doc, _widths(doc)["file"], {file_alg})
+
+
+def header_coverage_moves(doc: Doc) -> None:
+    """The header checksum covers fewer bytes (its first header segment starts 6 bytes later)."""
+    cov = next(f["coverage"] for f in doc["checksums"]["fields"] if f["field"] == "header")
+    seg = next(s for s in doc["checksums"]["coverages"][cov]["segments"] if s["region"] == "header")
+    assert seg["end"] - seg["start"] > 6
+    seg["start"] += 6
+
+
+def _every(name: str, profile: str, source: str, doc: Doc) -> bool:
+    return True
+
+
+def _unchanged_profiles(name: str, profile: str, source: str, doc: Doc) -> bool:
+    """A profile that changes its algorithm changes what a file written by another profile means
+    under it (an empty file then fails its file checksum): those expectations are the revision's
+    to change. Kept: every other profile, and the cases written as the changed profile writes."""
+    changed = doc["profiles"][-1]["id"]
+    return profile != changed or f"checksum file {changed}" in source
+
+
+# name -> (the spec edit, which (case, profile) expectations it leaves unchanged)
+REVISIONS: dict[str, tuple[Callable[[Doc], None], Callable[[str, str, str, Doc], bool]]] = {
+    "every_field_another_algorithm": (every_field_another_algorithm, _every),
+    "last_profile_another_algorithm": (last_profile_another_algorithm, _unchanged_profiles),
+    "header_coverage_moves": (header_coverage_moves, _every),
+}
+
+SCRIPT = r"""
+import json, sys
+import cbf
+out = []
+for path, profile, part_number, cutters in json.loads(sys.stdin.read()):
+    from cbf.cutters import load_cutter_table
+    table = load_cutter_table(cutters) if cutters else None
+    found = cbf.validate(open(path, "rb").read(), profile=profile, part_number=part_number, cutters=table)
+    out.append([[f.check, f.severity, f.record] for f in found])
+print(json.dumps(out))
+"""
+
+
+def _python(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    env = dict(os.environ, PYTHONPATH=str(gen / "python"))
+    run = subprocess.run([sys.executable, "-c", SCRIPT], input=json.dumps(jobs), env=env, cwd=tmp_path,
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return list(json.loads(run.stdout))
+
+
+def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    testee = tmp_path / "testee"
+    subprocess.run([cc, "-std=c99", "-O1", "-o", str(testee), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
+                   capture_output=True)
+    req = "".join(json.dumps({"op": "validate", "file": f, "profile": p, "part_number": pn, "cutters": ct}) + "\n"
+                  for f, p, pn, ct in jobs) + '{"op": "quit"}\n'
+    ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)
+    out = []
+    for line in ans.stdout.splitlines():
+        a = json.loads(line)
+        assert a["ok"], a
+        out.append([[f["check"], f["severity"], f["record"]] for f in a["findings"]])
+    return out
+
+
+BINDINGS = {"python": _python, "c": _c}
+
+
+@pytest.mark.parametrize("binding", sorted(BINDINGS))
+@pytest.mark.parametrize("revision", sorted(REVISIONS))
+def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Path, revision: str,
+                                                                   binding: str) -> None:
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    edit, keeps = REVISIONS[revision]
+    edit(doc)
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    gen = tmp_path / "gen"
+    for only in ("python", binding):
+        subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", only],
+                       check=True, cwd=ROOT, capture_output=True)
+    jobs: list[tuple[str, str, str | None, str | None]] = []
+    wanted: list[tuple[str, str, list[Any]]] = []
+    changed = 0
+    for src in sorted(GOLDEN.glob("*.hex")):
+        name = src.name[: -len(".hex")]
+        data = assemble(src, spec)
+        changed += data != (GOLDEN / f"{name}.cbf").read_bytes()
+        path = tmp_path / f"{name}.cbf"
+        path.write_bytes(data)
+        exp = yaml.safe_load((GOLDEN / f"{name}.expect.yaml").read_text(encoding="utf-8"))
+        opts = exp.get("options") or {}
+        cutters = str(GOLDEN / opts["cutters"]) if opts.get("cutters") else None
+        for profile, findings in (exp.get("validate") or {}).items():
+            if not keeps(name, profile, src.read_text(encoding="utf-8"), doc):
+                continue
+            jobs.append((str(path), profile, opts.get("part_number"), cutters))
+            wanted.append((name, profile, findings or []))
+    assert changed, "the revision must change the bytes of golden files"
+    assert len(wanted) > len(list(GOLDEN.glob("*.hex"))), "most expectations are kept"
+    got = BINDINGS[binding](gen, jobs, tmp_path)
+    assert len(got) == len(wanted)
+    diffs = [f"{name} [{profile}] {d}" for (name, profile, exp), act in zip(wanted, got, strict=True)
+             if (d := findings_difference(exp, [dict(zip(("check", "severity", "record"), a, strict=True))
+                                                for a in act]))]
+    assert not diffs, "\n".join(diffs)
+
+
+def test_version_premise_follows_the_spec() -> None:
+    """spec_next_major is a major no version of the spec has, also after a version is added."""
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    majors = {v["major"] for v in doc["versions"]}
+    out = assemble_text("u8 spec_next_major\n")
+    assert out[0] not in majors and out[0] == max(majors) + 1
+
+
+def test_a_new_version_moves_the_premise(tmp_path: Path) -> None:
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    newest = max(doc["versions"], key=lambda v: v["major"])
+    doc["versions"].append({**newest, "id": f"{newest['major'] + 1}.0", "major": newest["major"] + 1})
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    assert assemble_text("u8 spec_next_major\n", spec=spec)[0] == newest["major"] + 2
+
+
+def test_an_override_is_stored_literally_under_any_algorithm(tmp_path: Path) -> None:
+    """A wrong checksum on purpose is the literal of its `override` line, whatever the spec's algorithm."""
+    src = GOLDEN / "check.6.3.1.header_checksum.hex"
+    line = next(ln for ln in src.read_text(encoding="utf-8").splitlines() if ln.startswith("override"))
+    off, *hexbytes = line.split("#", 1)[0].split()[1:]
+    literal = bytes(int(b, 16) for b in hexbytes)
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    every_field_another_algorithm(doc)
+    last_profile_another_algorithm(doc)
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    for s in (None, spec):
+        data = assemble(src, s)
+        assert data[int(off):int(off) + len(literal)] == literal
+
+
+def test_assembler_reads_the_checksum_rules_from_the_spec() -> None:
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    sums = load_sums(SPEC)
+    for f in doc["checksums"]["fields"]:
+        if f["field"] != "file":
+            assert sums.rule(f["field"], None) == (doc["checksums"]["algorithms"][f["algorithm"]]["kind"],
+                                                   f["coverage"])
+    for p in doc["profiles"]:
+        alg = p.get("file_algorithm") or next(f["algorithm"] for f in doc["checksums"]["fields"]
+                                              if f["field"] == "file")
+        assert sums.rule("file", p["id"]) == (doc["checksums"]["algorithms"][alg]["kind"], p["file_coverages"][0])
+    assert {t: 8 * s.width for t, s in sums.slots.items()} == _widths(doc)
