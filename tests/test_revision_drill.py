@@ -48,6 +48,10 @@ def test_a_fixture_adds_golden_cases_and_expectations_only(path: Path, tmp_path:
         assert rel.startswith("conformance/golden/") and rel.endswith((".hex", ".expect.yaml")), rel
     for edit in fx.edits:
         rel = edit.get("file", drill.SPEC)
+        if edit["op"] == "append_line":  # a new case a Kaitai parser cannot decode, listed as a known failure
+            assert re.fullmatch(r"conformance/failures/kaitai-[a-z]+\.txt", rel), rel
+            assert any(str(edit["value"]).startswith(c.split("/")[-1][: -len(".hex")] + " ") for c in fx.files), edit
+            continue
         assert rel == drill.SPEC or (rel.startswith("conformance/golden/") and rel.endswith(".expect.yaml")), rel
     cases = {r[: -len(".hex")] for r in fx.files if r.endswith(".hex")}
     assert cases == {r[: -len(".expect.yaml")] for r in fx.files if r.endswith(".expect.yaml")}
