@@ -8,12 +8,16 @@
 #                             copy of the tree, then `cbfgen diff` (the classification the
 #                             fixture states), `make generate`, `make golden`,
 #                             `make conformance` (every binding) and the whole pytest suite.
-#   revision-drill-quick      the same, with the pytest subset QUICK_TESTS of
-#                             tests/revisions/drill.py (spec loader, check coverage, codec,
-#                             CUT, docs, golden assembly, rev 03 facts, diff, CLI).
-# `make test` runs revision-drill-quick: the full suite four more times would take
-# about 8 more minutes on 2 cores, the quick drill about 1 minute a fixture (measured:
-# copy 1-3 s, generate 7-15 s, golden 8-12 s, conformance 60-105 s, subset 10-20 s).
+#   revision-drill-quick      the same with the subset of tests/revisions/drill.py: conformance
+#                             of QUICK_BINDINGS (python, c, kaitai-javascript: the two runtimes
+#                             that implement the checks and one Kaitai parser) and the pytest
+#                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
+#                             golden assembly, rev 03 facts, CLI).
+# `make test` runs revision-drill-quick. Measured on the shared 2-core machine (load 6-9):
+# the quick drill takes 205-267 s for the four fixtures (150-160 s of CPU): per fixture,
+# copy 1-2 s, generate 6-9 s, golden 3-5 s, C testee 9-10 s, conformance 14-20 s, tests
+# 24-45 s. The full drill takes 3-7 minutes a fixture (every binding's build and the whole
+# suite four more times), too much for the ten minutes `make test` may take.
 BASE ?= HEAD
 .PHONY: breaking revision-drill revision-drill-quick
 

@@ -116,15 +116,15 @@ def test_table_5_1_is_the_command_table_of_3_0_and_4_0() -> None:
 
 
 def test_table_5_1_arguments_are_the_layouts_floats_and_strings() -> None:
-    for r in _table_5_1():
-        lay = SPEC.command(r.name).layouts_for(r.versions[0])[0]
+    for r, vid in [(row, v) for row in _table_5_1() for v in row.versions]:
+        lay = SPEC.command(r.name).layouts_for(vid)[0]
         floats = 3 * len(re.findall(r"float\(3\)", r.args)) + len(re.findall(r"float(?!\()", r.args))
         strings = sorted(int(x) for x in re.findall(r"string\((\d+)\)", r.args))
         model_floats = sum(a.count for a in lay.args if a.kind == "float")
         # ORIENT lists its reserved bytes as float(3)
         model_floats += sum(a.size // 4 for a in lay.args if a.reserved and "float" in a.doc)
-        assert model_floats == floats, r.name
-        assert sorted(a.size for a in lay.args if a.kind == "string") == strings, r.name
+        assert model_floats == floats, (r.name, vid)
+        assert sorted(a.size for a in lay.args if a.kind == "string") == strings, (r.name, vid)
 
 
 def test_table_4_2_is_the_header_of_3_0_and_4_0() -> None:
@@ -167,6 +167,8 @@ def test_checksums_are_plain_byte_sums_c1() -> None:
     """Decision C1: all three checksums are byte sums; a golden file's stored values are the sums by hand."""
     assert {f.field: SPEC.checksums.algorithms[f.algorithm].kind for f in SPEC.checksums.fields} == {
         "args": "sum", "header": "sum", "file": "sum"}
+    for p in SPEC.profiles:  # no profile chooses another algorithm for the file checksum
+        assert SPEC.checksums.algorithms[SPEC.file_algorithm(p.id)].kind == "sum", p.id
     data = (REPO / "conformance" / "golden" / "valid.v3.small.cbf").read_bytes()
     assert int.from_bytes(data[4:8], "little") == sum(data[8:]) % 2**32
     assert int.from_bytes(data[8:10], "little") == sum(data[10:128]) % 2**16
