@@ -171,3 +171,49 @@ def test_a_profile_chooses_the_file_algorithm(tmp_path: Path) -> None:
     with pytest.raises(SpecError, match="unknown algorithm 'no_such_algorithm'") as err:
         load(path)
     assert "file_algorithm" in lines[err.value.line - 1]
+
+
+# -- messages: "checksum", never "sums to" -------------------------------------------
+def _checksum_cases() -> tuple[set[str], list[Path]]:
+    """The checksum check ids (by kind, from the spec) and the golden files that fail one of them."""
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    ids = {str(c["id"]) for c in doc["checks"] if c["kind"] in ("file_checksum", "header_checksum", "arg_checksum")}
+    golden = ROOT / "conformance" / "golden"
+    cases = []
+    for exp_path in sorted(golden.glob("*.expect.yaml")):
+        exp = yaml.safe_load(exp_path.read_text(encoding="utf-8"))
+        if any(str(f[0]) in ids for f in (exp.get("validate") or {}).get("default") or []):
+            cases.append(golden / exp_path.name.replace(".expect.yaml", ".cbf"))
+    return ids, cases
+
+
+def _assert_messages(messages: list[str]) -> None:
+    assert messages
+    for m in messages:
+        assert "checksum" in m and "sums to" not in m and "sum to" not in m, m
+
+
+def test_checksum_messages_python() -> None:
+    import cbf
+
+    ids, cases = _checksum_cases()
+    assert {f.check for p in cases for f in cbf.validate(p.read_bytes())} >= ids
+    _assert_messages([f.message for p in cases for f in cbf.validate(p.read_bytes()) if f.check in ids])
+
+
+def test_checksum_messages_c(tmp_path: Path) -> None:
+    import json
+
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    ids, cases = _checksum_cases()
+    testee = tmp_path / "testee"
+    subprocess.run([cc, "-std=c99", "-O1", "-o", str(testee), str(ROOT / "generated" / "c" / "cbf_testee.c"), "-lm"],
+                   check=True, capture_output=True)
+    req = "".join(json.dumps({"op": "validate", "file": str(p), "profile": "default", "part_number": None,
+                              "cutters": None}) + "\n" for p in cases) + '{"op": "quit"}\n'
+    ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)
+    found = [f for line in ans.stdout.splitlines() for f in json.loads(line)["findings"]]
+    assert {f["check"] for f in found} >= ids
+    _assert_messages([f["message"] for f in found if f["check"] in ids])

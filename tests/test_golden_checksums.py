@@ -217,3 +217,59 @@ def test_assembler_reads_the_checksum_rules_from_the_spec() -> None:
                                               if f["field"] == "file")
         assert sums.rule("file", p["id"]) == (doc["checksums"]["algorithms"][alg]["kind"], p["file_coverages"][0])
     assert {t: 8 * s.width for t, s in sums.slots.items()} == _widths(doc)
+
+
+def _testee(binding: str, gen: Path, tmp_path: Path) -> list[str]:
+    if binding == "python":
+        return [sys.executable, str(ROOT / "conformance" / "testees" / "python" / "testee.py")]
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    exe = tmp_path / "testee"
+    subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
+                   capture_output=True)
+    return [str(exe)]
+
+
+@pytest.mark.parametrize("binding", sorted(BINDINGS))
+def test_writers_fill_the_profile_algorithm(tmp_path: Path, binding: str) -> None:
+    """Under a revision where a profile has its own file algorithm, every writer fills each valid
+    golden (written as that profile writes) to the bytes the assembler made from the spec."""
+    import base64
+
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    every_field_another_algorithm(doc)
+    last_profile_another_algorithm(doc)
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    gen = tmp_path / "gen"
+    for only in ("python", binding):
+        subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", only],
+                       check=True, cwd=ROOT, capture_output=True)
+    cases: list[tuple[str, str, bytes]] = []
+    for src in sorted(GOLDEN.glob("*.hex")):
+        name = src.name[: -len(".hex")]
+        exp = yaml.safe_load((GOLDEN / f"{name}.expect.yaml").read_text(encoding="utf-8"))
+        if not exp.get("encode") or exp.get("encode_fill") is False:
+            continue
+        for profile, findings in (exp.get("validate") or {}).items():
+            if not findings and _unchanged_profiles(name, profile, src.read_text(encoding="utf-8"), doc):
+                cases.append((name, profile, assemble(src, spec)))
+    assert {p for _, p, _ in cases} == {p["id"] for p in doc["profiles"]}, "every profile writes some case"
+    reqs = []
+    for name, _, data in cases:
+        (tmp_path / f"{name}.cbf").write_bytes(data)
+        reqs.append({"op": "decode", "file": str(tmp_path / f"{name}.cbf")})
+    env = dict(os.environ, PYTHONPATH=str(gen / "python"))
+    cmd = _testee(binding, gen, tmp_path)
+    run = subprocess.run(cmd, input="".join(json.dumps(r) + "\n" for r in reqs) + '{"op": "quit"}\n', env=env,
+                         capture_output=True, text=True, check=True)
+    decoded = [json.loads(line) for line in run.stdout.splitlines()]
+    enc = [{"op": "encode", "json": d["result"], "keep_stored": False, "profile": p}
+           for d, (_, p, _) in zip(decoded, cases, strict=True)]
+    run = subprocess.run(cmd, input="".join(json.dumps(r) + "\n" for r in enc) + '{"op": "quit"}\n', env=env,
+                         capture_output=True, text=True, check=True)
+    for line, (name, profile, data) in zip(run.stdout.splitlines(), cases, strict=True):
+        ans = json.loads(line)
+        assert ans["ok"], (name, profile, ans)
+        assert base64.b64decode(ans["bytes"]) == data, (name, profile)
