@@ -277,8 +277,11 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
                 continue
             a, b = getattr(oc, f.name), getattr(nc, f.name)
             if a != b:
+                breaking = applies_to_old(nc) and "error" in (oc.severity, nc.severity)
+                if f.name in ("versions", "commands") and oc.kind == nc.kind == "availability":
+                    breaking = _covered(old, oc, old) != _covered(old, nc, new)  # new versions, commands: no
                 out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)}",
-                                  applies_to_old(nc) and "error" in (oc.severity, nc.severity)))
+                                  breaking))
     old_by_id = {c.id for c in old.checks}
     for nc in new.checks:
         if nc.id not in old_by_id:
@@ -287,6 +290,15 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
             out.append(Change("check_added", None, None, f"{nc.id} ({nc.kind}, {nc.severity}){scope}",
                               nc.severity == "error" and applies_to_old(nc) and not _only_gates_new(old, new, nc)))
     return out
+
+
+def _covered(old: Spec, check: Check, spec: Spec) -> set[tuple[str, str]]:
+    """The (version, command) pairs of OLD's versions and commands an availability check covers in spec."""
+    named = set(getattr(check, "commands", ()) or ())
+    old_ids = {v.id for v in old.versions}
+    old_names = {c.name for c in old.commands}
+    return {(v, c.name) for v in check.versions if v in old_ids for c in spec.commands
+            if c.name in old_names and not c.available_in(v) and (not named or c.name in named)}
 
 
 def _only_gates_new(old: Spec, new: Spec, check: Check) -> bool:
