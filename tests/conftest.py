@@ -5,7 +5,9 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from collections.abc import Iterable
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
@@ -27,15 +29,34 @@ REPO = Path(__file__).resolve().parents[1]
 SPEC = REPO / "spec" / "cbf.yaml"
 
 
+def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iterable[str] = ()) -> None:
+    """Name a command added to a parsed spec in one availability check for each version it lacks (loader.py):
+    a preferred check when it covers that version, else the first that does, else a new one."""
+    has = {v for lay in command["layouts"] for v in lay["versions"]}
+    preferred = {str(p) for p in preferred}
+    gates = [c for c in spec["checks"] if c["kind"] == "availability"]
+    for v in spec["versions"]:
+        if v["id"] in has:
+            continue
+        covering = [c for c in gates if v["id"] in c["versions"]]
+        if not covering:  # a version that lacks nothing else yet
+            covering = [{"id": f"fixture_{v['id']}", "kind": "availability", "severity": "error",
+                         "versions": [v["id"]], "commands": [], "decision": spec["decisions"][0]["id"],
+                         "text": "The fixture command is not in this version.", "fails": "A record holds it."}]
+            spec["checks"].append(covering[0])
+            gates.append(covering[0])
+        chosen = next((c for c in covering if str(c["id"]) in preferred), covering[0])
+        if command["name"] not in chosen["commands"]:
+            chosen["commands"].append(command["name"])
+
+
 def spec_with_fixture_command(tmp: Path) -> Path:
     """spec/cbf.yaml plus tests/fixtures/dwell_command.yaml, written to tmp."""
     spec = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
     extra = yaml.safe_load((REPO / "tests" / "fixtures" / "dwell_command.yaml").read_text(encoding="utf-8"))
     spec["units"].update(extra["units"])
     spec["commands"].append(extra["command"])
-    for check in spec["checks"]:
-        if str(check["id"]) in extra.get("covered_by", []):
-            check["commands"].append(extra["command"]["name"])
+    cover_missing(spec, extra["command"], extra.get("covered_by", ()))
     path = tmp / "cbf.yaml"
     path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
     return path

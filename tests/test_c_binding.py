@@ -14,6 +14,9 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import cover_missing
+
+from cbfgen.loader import load
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
@@ -100,10 +103,7 @@ def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
     doc["units"]["s"] = {"doc": "second"}
     doc["commands"].append(DWELL)
     # every version without the command is named by exactly one availability check (loader.py)
-    for v in doc["versions"]:
-        if v["id"] not in DWELL["layouts"][0]["versions"]:
-            gate = next(c for c in doc["checks"] if c["kind"] == "availability" and v["id"] in c["versions"])
-            gate["commands"].append(DWELL["name"])
+    cover_missing(doc, DWELL)
     spec = tmp_path / "cbf.yaml"
     spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
     out = tmp_path / "gen"
@@ -113,9 +113,12 @@ def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
                    "unit s (second)", "int cbf_encode_dwell(cbf_writer *w, const struct cbf_dwell_args *args);",
                    "CBF_LAYOUT_DWELL =", '"DWELL"'):
         assert needle in header, needle
-    # The enum is sorted by code: DWELL (0x44) sits between 0x3C and 0x47.
-    assert header.index("CBF_CMD_CHECKPOINT = 0x3C") < header.index("CBF_CMD_DWELL = 0x44") < header.index(
-        "CBF_CMD_ACCEL = 0x47")
+    # The enum is sorted by code: DWELL sits between the commands with the codes around its own.
+    model = load(SPEC)
+    below = max((c for c in model.commands if c.code < DWELL["code"]), key=lambda c: c.code)
+    above = min((c for c in model.commands if c.code > DWELL["code"]), key=lambda c: c.code)
+    assert header.index(f"CBF_CMD_{below.name} = 0x{below.code:02X}") < header.index("CBF_CMD_DWELL = 0x44") < (
+        header.index(f"CBF_CMD_{above.name} = 0x{above.code:02X}"))
 
     src = tmp_path / "dwell.c"
     src.write_text(PROGRAM, encoding="utf-8")
@@ -156,7 +159,7 @@ int main(void)
     long n;
     if (cbf_header_init(&h, CBF_DEFAULT_VERSION) != CBF_OK) return 10;
     if (cbf_encode_begin(&w, buf, sizeof buf, &h) != CBF_OK) return 11;
-    if (cbf_encode_record(&w, CBF_CMD_CUTTER_ON, NULL, 0) != CBF_OK) return 12;
+    if (cbf_encode_record(&w, CBF_CMD_@EMPTY@, NULL, 0) != CBF_OK) return 12;
     n = cbf_encode_end(&w, CBF_PROFILE_DEFAULT, 1);
     if (n < 0) return 13;
     memset(&opt, 0, sizeof opt);
@@ -177,22 +180,29 @@ int main(void)
 def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
     """FORMAT-NOTES: another algorithm must be a one-line spec change; the C codec follows it."""
     cc = _need("gcc")
-    text = SPEC.read_text(encoding="utf-8")
-    line = "    - {field: file, algorithm: byte_sum, coverage: file, clause: \"6.2.1\"}"
-    assert line in text
+    model = load(SPEC)
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    next(f for f in doc["checksums"]["fields"] if f["field"] == "file")["algorithm"] = "crc32"
+    for p in doc["profiles"]:
+        p.pop("file_algorithm", None)  # the field's algorithm, under every profile
+    (segment,) = model.checksums.coverages[model.checksums.for_field("file").coverage].segments
+    assert segment.region == "file" and segment.start is not None
+    stored = model.header_checksum_field("file")
+    # a command without arguments, so that the file is header plus one record head
+    empty = next(c for c in model.commands if any(lay.size == 0 for lay in c.layouts_for(model.default_version)))
     spec = tmp_path / "cbf.yaml"
-    spec.write_text(text.replace(line, line.replace("byte_sum", "crc32")), encoding="utf-8")
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
     out = tmp_path / "gen"
     _generate(spec, out)
     src = tmp_path / "crc.c"
-    src.write_text(CRC_PROGRAM, encoding="utf-8")
+    src.write_text(CRC_PROGRAM.replace("@EMPTY@", empty.name), encoding="utf-8")
     exe = tmp_path / "crc"
     subprocess.run([cc, *STRICT, "-I", str(out / "c"), "-o", str(exe), str(src), "-lm"], check=True,
                    capture_output=True)
     run = subprocess.run([str(exe)], cwd=tmp_path, capture_output=True, text=True)
     assert run.returncode == 0, run.returncode
     data = (tmp_path / "crc.cbf").read_bytes()
-    assert int.from_bytes(data[4:8], "little") == zlib.crc32(data[8:])
+    assert int.from_bytes(data[stored.offset:stored.end], "little") == zlib.crc32(data[segment.start:])
 
 
 def test_templates_and_emitter_name_no_format_detail() -> None:

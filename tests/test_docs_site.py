@@ -111,8 +111,8 @@ def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_every_markdown_link_and_anchor_resolves() -> None:
     pages = _md_pages(SPEC)
     files = {rel[len("docs/"):] for rel in docs.emit(SPEC)}
-    # the reference, a page per command, the golden index, a page per case, the field index
-    assert len(pages) == 1 + len(SPEC.commands) + 1 + len(CASES) + 1
+    # the reference, the changes, a page per command, the golden index, a page per case, the field index
+    assert len(pages) == 2 + len(SPEC.commands) + 1 + len(CASES) + 1
     assert sum(len(_md_links(t)) for t in pages.values()) > 100
     assert md_problems(pages, files, DOCS) == []
 
@@ -184,7 +184,7 @@ def test_pages_and_figures_are_deterministic() -> None:
 def test_html_parses_without_errors(html_site: Path) -> None:
     pages = sorted(html_site.rglob("*.html"))
     own = [p for p in pages if "files" not in p.relative_to(html_site).parts]
-    assert len(own) == 3 + len(SPEC.commands) + len(CASES)
+    assert len(own) == 4 + len(SPEC.commands) + len(CASES)
     for p in pages:
         parse_html(p.read_text(encoding="utf-8"))
 

@@ -1,4 +1,10 @@
-"""`python -m cbfgen`: load the spec and run every emitter.
+"""`python -m cbfgen`: load the spec and run every emitter; `cbfgen diff` compares two specs.
+
+    python -m cbfgen [--spec spec/cbf.yaml] [--out generated] [--only EMITTER] [--check-spec]
+    python -m cbfgen diff OLD.yaml NEW.yaml [--json]
+
+`diff` exits 0 when nothing is breaking, 1 when something is, 2 on bad input
+(a spec that does not load: the loader's one-line message).
 
 Each emitter is a subpackage of cbfgen.emit exposing
 ``emit(spec: Spec) -> dict[str, bytes]`` (paths relative to the output
@@ -18,7 +24,10 @@ import tempfile
 from pathlib import Path
 
 from . import emit as emit_pkg
+from .diff import diff, render
 from .loader import SpecError, load
+
+EXIT_OK, EXIT_BREAKING, EXIT_BAD_INPUT = 0, 1, 2
 
 
 def emitters() -> list[str]:
@@ -45,7 +54,32 @@ def write_atomic(path: Path, data: bytes) -> bool:
     return True
 
 
+def diff_main(argv: list[str]) -> int:
+    ap = argparse.ArgumentParser(prog="cbfgen diff", description=(
+        "List every change from OLD to NEW by version and command, and mark BREAKING each change to the wire "
+        "meaning of a version OLD already has. Exit 0: nothing breaking, 1: breaking, 2: bad input."))
+    ap.add_argument("old", help="the spec before the revision")
+    ap.add_argument("new", help="the spec after the revision")
+    ap.add_argument("--json", action="store_true", help="one JSON document for tools")
+    ap.add_argument("--old-name", help="name OLD by this in the output (default: its path)")
+    args = ap.parse_args(argv)
+    try:
+        old, new = load(args.old), load(args.new)
+    except SpecError as exc:
+        print(f"cbfgen diff: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    result = diff(old, new, args.old_name or args.old, args.new)
+    sys.stdout.write(render(result, args.json))
+    return EXIT_BREAKING if result.breaking else EXIT_OK
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["diff"]:
+        try:
+            return diff_main(argv[1:])
+        except SystemExit as exc:  # argparse: usage errors are bad input
+            return EXIT_BAD_INPUT if exc.code else EXIT_OK
     ap = argparse.ArgumentParser(prog="cbfgen", description="Generate every CBF binding from the spec.")
     ap.add_argument("--spec", default="spec/cbf.yaml", help="the format spec (default: %(default)s)")
     ap.add_argument("--out", default="generated", help="output folder (default: %(default)s)")

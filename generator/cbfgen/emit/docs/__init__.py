@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ... import __version__
+from ...diff import version_steps
 from ...model import Check, Command, Layout, Spec, ident
 from ...render import environment
 from . import golden, svg, text
@@ -356,4 +357,8 @@ def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
     files[f"{OUT}/{FIELD_INDEX}"] = env.get_template("fields.md.j2").render(**ctx).encode()
     for rel, svg_text in ctx["figures"].items():
         files[f"{OUT}/{rel}"] = svg_text.encode()
+    # The "Changes" page: each version against the one before it, by cbfgen diff's comparison (issue 12).
+    available = {v.id: [c.name for c in spec.commands if c.available_in(v.id)] for v in spec.versions}
+    files[f"{OUT}/changes.md"] = env.get_template("changes.md.j2").render(
+        steps=version_steps(spec), available=available, **ctx).encode()
     return files

@@ -1,0 +1,424 @@
+"""`cbfgen diff OLD.yaml NEW.yaml`: what a format revision changes, and what it breaks.
+
+Both specs are loaded into the model (loader.load) and compared version by
+version and command by command. A change is BREAKING when it changes the
+wire meaning of a version that already exists in OLD: a file of that
+version, written or read by code generated from OLD, would mean something
+else (or be judged otherwise) under NEW. Adding a version, and anything
+inside a version that OLD does not have, is not breaking; those changes are
+listed relative to the version before it, so a reader sees what the new
+version changes.
+
+The same comparison of two versions of one spec (`version_steps`) builds
+the docs' "Changes" page.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from .model import Check, Coverage, Field, HeaderLayout, Layout, Spec
+
+# Attributes of a check that define what it judges (not its prose or line).
+_CHECK_IGNORED = frozenset({"id", "severity", "text", "fails", "line", "clause", "decision"})
+# Attributes of a profile that define what it accepts (not its prose).
+_PROFILE_IGNORED = frozenset({"id", "doc", "hint_coverages"})
+# Meta keys that define how bytes are read.
+_WIRE_META = ("byte_order", "float_format", "string_encoding", "string_padding")
+
+
+@dataclass(frozen=True)
+class Change:
+    """One change. version/command are None when the change is not tied to one."""
+
+    kind: str
+    version: str | None
+    command: str | None
+    detail: str
+    breaking: bool
+
+    def as_json(self) -> dict[str, Any]:
+        return dataclasses.asdict(self)
+
+
+@dataclass(frozen=True)
+class Diff:
+    old: str
+    new: str
+    changes: tuple[Change, ...]
+
+    @property
+    def breaking(self) -> tuple[Change, ...]:
+        return tuple(c for c in self.changes if c.breaking)
+
+    def as_json(self) -> dict[str, Any]:
+        return {"old": self.old, "new": self.new, "breaking": bool(self.breaking),
+                "changes": [c.as_json() for c in self.changes]}
+
+    def text(self) -> str:
+        n, b = len(self.changes), len(self.breaking)
+        lines = [f"cbfgen diff: {self.old} -> {self.new}: {n} change(s), {b} breaking"]
+        for c in self.changes:
+            mark = "BREAKING" if c.breaking else "        "
+            where = f"{c.version or 'all'} {c.command or '-'}"
+            lines.append(f"  {mark}  {where:<22} {c.kind}: {c.detail}")
+        lines.append("breaking: the wire meaning of a version in OLD changes" if b
+                     else "not breaking: every version in OLD keeps its wire meaning")
+        return "\n".join(lines) + "\n"
+
+
+# -- descriptions ---------------------------------------------------------------
+def _type_text(f: Field) -> str:
+    return f"{f.type}[{f.count}]" if f.count > 1 else f.type
+
+
+def describe_field(f: Field) -> str:
+    return f"{f.name} ({_type_text(f)}, {f.size} byte(s) at offset {f.offset})"
+
+
+def _layout_name(lay: Layout) -> str:
+    return f"layout {lay.variant}" if lay.variant else "primary layout"
+
+
+def _pair_name(o: Layout, n: Layout) -> str:
+    return _layout_name(o) if o.variant == n.variant else f"{_layout_name(o)} -> {_layout_name(n)}"
+
+
+def _coverage_text(cov: Coverage | None) -> str:
+    if cov is None:
+        return "(none)"
+    parts = []
+    for s in cov.segments:
+        rng = f"{'' if s.start is None else s.start}..{'' if s.end is None else s.end}"
+        ex = f" without {', '.join(s.exclude)}" if s.exclude else ""
+        parts.append(f"{s.region}[{rng}]{ex}")
+    return f"{cov.name} = " + " + ".join(parts)
+
+
+# -- fields ---------------------------------------------------------------------
+def compare_fields(old: Iterable[Field], new: Iterable[Field], version: str | None, command: str | None,
+                   where: str, breaking: bool) -> list[Change]:
+    """Fields matched by name, then unmatched ones by offset (a rename or a replacement)."""
+    olds, news = list(old), list(new)
+    out: list[Change] = []
+
+    def add(kind: str, detail: str) -> None:
+        out.append(Change(kind, version, command, f"{where}: {detail}", breaking))
+
+    new_by_name = {f.name: f for f in news}
+    old_names = {f.name for f in olds}
+    rest_old = [f for f in olds if f.name not in new_by_name]
+    rest_new = [f for f in news if f.name not in old_names]
+    for o in olds:
+        n = new_by_name.get(o.name)
+        if n is None:
+            continue
+        if o.offset != n.offset:
+            add("field_moved", f"{o.name} moved from offset {o.offset} to {n.offset}")
+        if o.size != n.size:
+            add("field_resized", f"{o.name} resized from {o.size} to {n.size} byte(s)")
+        if (o.type, o.count) != (n.type, n.count):
+            add("field_retyped", f"{o.name} retyped from {_type_text(o)} to {_type_text(n)}")
+        for attr, kind in (("unit", "field_unit_changed"), ("magic", "field_value_changed"),
+                           ("role", "field_role_changed"), ("checksum", "field_role_changed"),
+                           ("reserved", "field_role_changed"), ("text", "field_role_changed")):
+            a, b = getattr(o, attr), getattr(n, attr)
+            if a != b:
+                add(kind, f"{o.name} {attr} changed from {a!r} to {b!r}")
+    by_offset = {f.offset: f for f in rest_new}
+    matched: set[str] = set()
+    for o in rest_old:
+        n = by_offset.get(o.offset)
+        if n is None:
+            add("field_removed", describe_field(o))
+            continue
+        matched.add(n.name)
+        if (o.type, o.count, o.size) == (n.type, n.count, n.size):
+            add("field_renamed", f"{o.name} renamed to {n.name} at offset {o.offset} (the CUT and JSON forms change)")
+        else:
+            add("field_retyped", f"{describe_field(o)} replaced by {describe_field(n)}")
+    for n in rest_new:
+        if n.name not in matched:
+            add("field_added", describe_field(n))
+    return out
+
+
+def _pair_layouts(old: tuple[Layout, ...], new: tuple[Layout, ...]) -> tuple[list[tuple[Layout, Layout]],
+                                                                              list[Layout], list[Layout]]:
+    """Pairs by variant name, then by size, then the last one left on each side."""
+    pairs: list[tuple[Layout, Layout]] = []
+    rest_o, rest_n = list(old), list(new)
+    for key in ("variant", "size"):
+        for o in list(rest_o):
+            n = next((x for x in rest_n if getattr(x, key) == getattr(o, key)), None)
+            if n is not None:
+                pairs.append((o, n))
+                rest_o.remove(o)
+                rest_n.remove(n)
+    if len(rest_o) == 1 and len(rest_n) == 1:
+        pairs.append((rest_o.pop(), rest_n.pop()))
+    return pairs, rest_o, rest_n
+
+
+def _compare_layouts(old: tuple[Layout, ...], new: tuple[Layout, ...], version: str, command: str,
+                     breaking: bool) -> list[Change]:
+    out: list[Change] = []
+    pairs, removed, added = _pair_layouts(old, new)
+    for o, n in pairs:
+        name = _pair_name(o, n)
+        if o.size != n.size:
+            out.append(Change("layout_resized", version, command,
+                              f"{name}: argument size {o.size} -> {n.size} byte(s)", breaking))
+        out += compare_fields(o.args, n.args, version, command, name, breaking)
+        if set(o.profiles) != set(n.profiles):
+            out.append(Change("layout_profiles_changed", version, command,
+                              f"{name}: accepted under {list(o.profiles) or 'every profile'} -> "
+                              f"{list(n.profiles) or 'every profile'}", breaking))
+    for o in removed:
+        out.append(Change("layout_removed", version, command, f"{_layout_name(o)} of {o.size} byte(s)", breaking))
+    for n in added:
+        out.append(Change("layout_added", version, command, f"{_layout_name(n)} of {n.size} byte(s)", breaking))
+    return out
+
+
+# -- one version against another ----------------------------------------------------
+def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: bool) -> list[Change]:
+    """The header and command table of old_vid in OLD against new_vid in NEW, labelled new_vid."""
+    out: list[Change] = []
+    ov, nv = old.version(old_vid), new.version(new_vid)
+    if (ov.major, ov.minor) != (nv.major, nv.minor) and old_vid == new_vid:
+        out.append(Change("version_number_changed", new_vid, None,
+                          f"header bytes match {ov.major}.{ov.minor} -> {nv.major}.{nv.minor}", breaking))
+    if ov.writable != nv.writable and old_vid == new_vid:
+        # Which versions the toolkit writes is policy, not the meaning of a file.
+        out.append(Change("writable_changed", new_vid, None, f"writable {ov.writable} -> {nv.writable}", False))
+    oh, nh = old.header_for(old_vid), new.header_for(new_vid)
+    out += _compare_header(oh, nh, new_vid, breaking)
+    new_cmds = {c.name: c for c in new.commands}
+    old_cmds = {c.name: c for c in old.commands}
+    for oc in old.commands:
+        olays = oc.layouts_for(old_vid)
+        nc = new_cmds.get(oc.name)
+        nlays = nc.layouts_for(new_vid) if nc else ()
+        if olays and not nlays:
+            renamed = [c.name for c in new.commands if c.code == oc.code and c.name not in old_cmds
+                       and c.available_in(new_vid)]
+            if renamed:
+                out.append(Change("command_renamed", new_vid, oc.name,
+                                  f"{oc.name} renamed to {renamed[0]} (code 0x{oc.code:02X}; the CUT and JSON forms "
+                                  "change)", breaking))
+                out += _compare_layouts(olays, new.command(renamed[0]).layouts_for(new_vid), new_vid, renamed[0],
+                                        breaking)
+            else:
+                out.append(Change("command_removed", new_vid, oc.name, f"code 0x{oc.code:02X}", breaking))
+            continue
+        if not nlays or nc is None:
+            continue
+        if not olays:
+            continue  # reported below as added
+        if oc.code != nc.code:
+            out.append(Change("command_code_changed", new_vid, oc.name,
+                              f"code 0x{oc.code:02X} -> 0x{nc.code:02X}", breaking))
+        out += _compare_layouts(olays, nlays, new_vid, oc.name, breaking)
+    for nc in new.commands:
+        if not nc.available_in(new_vid):
+            continue
+        was = old_cmds.get(nc.name)
+        if was is not None and was.available_in(old_vid):
+            continue
+        if any(c.code == nc.code and c.available_in(old_vid) and c.name not in new_cmds for c in old.commands):
+            continue  # a rename, reported above
+        sizes = "/".join(str(lay.size) for lay in nc.layouts_for(new_vid))
+        out.append(Change("command_added", new_vid, nc.name,
+                          f"code 0x{nc.code:02X}, {sizes} argument byte(s)", breaking))
+    return out
+
+
+def _compare_header(oh: HeaderLayout, nh: HeaderLayout, vid: str, breaking: bool) -> list[Change]:
+    out: list[Change] = []
+    if oh.size != nh.size:
+        out.append(Change("header_resized", vid, None, f"header size {oh.size} -> {nh.size} byte(s)", breaking))
+    out += compare_fields(oh.fields, nh.fields, vid, None, "header", breaking)
+    return out
+
+
+# -- whole specs ----------------------------------------------------------------------
+def _previous(spec: Spec, vid: str) -> str | None:
+    """The version listed before vid in spec, if any."""
+    ids = [v.id for v in spec.versions]
+    i = ids.index(vid)
+    return ids[i - 1] if i > 0 else None
+
+
+def _checks(old: Spec, new: Spec) -> list[Change]:
+    out: list[Change] = []
+    old_ids = {v.id for v in old.versions}
+    new_by_id = {c.id: c for c in new.checks}
+
+    def applies_to_old(c: Check) -> bool:
+        vs = getattr(c, "versions", ())
+        return not vs or any(v in old_ids for v in vs)
+
+    for oc in old.checks:
+        nc = new_by_id.get(oc.id)
+        if nc is None:
+            out.append(Change("check_removed", None, None, f"{oc.id} ({oc.kind}, {oc.severity})",
+                              oc.severity == "error"))
+            continue
+        if oc.severity != nc.severity:
+            out.append(Change("check_severity_changed", None, None, f"{oc.id}: {oc.severity} -> {nc.severity}",
+                              applies_to_old(nc)))
+        for f in dataclasses.fields(oc):
+            if f.name in _CHECK_IGNORED:
+                continue
+            a, b = getattr(oc, f.name), getattr(nc, f.name)
+            if a != b:
+                breaking = applies_to_old(nc) and "error" in (oc.severity, nc.severity)
+                if f.name in ("versions", "commands") and oc.kind == nc.kind == "availability":
+                    breaking = _covered(old, oc, old) != _covered(old, nc, new)  # new versions, commands: no
+                out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)}",
+                                  breaking))
+    old_by_id = {c.id for c in old.checks}
+    for nc in new.checks:
+        if nc.id not in old_by_id:
+            vs = getattr(nc, "versions", ())
+            scope = f" for {', '.join(vs)}" if vs else ""
+            out.append(Change("check_added", None, None, f"{nc.id} ({nc.kind}, {nc.severity}){scope}",
+                              nc.severity == "error" and applies_to_old(nc) and not _only_gates_new(old, new, nc)))
+    return out
+
+
+def _covered(old: Spec, check: Check, spec: Spec) -> set[tuple[str, str]]:
+    """The (version, command) pairs of OLD's versions and commands an availability check covers in spec."""
+    named = set(getattr(check, "commands", ()) or ())
+    old_ids = {v.id for v in old.versions}
+    old_names = {c.name for c in old.commands}
+    return {(v, c.name) for v in check.versions if v in old_ids for c in spec.commands
+            if c.name in old_names and not c.available_in(v) and (not named or c.name in named)}
+
+
+def _only_gates_new(old: Spec, new: Spec, check: Check) -> bool:
+    """An availability check that covers only commands OLD did not have in those versions (already errors there)."""
+    if check.kind != "availability":
+        return False
+    named: tuple[str, ...] = tuple(getattr(check, "commands", ()) or ())
+    vids = [v for v in check.versions if any(o.id == v for o in old.versions)]
+    pairs = [(c.name, v) for c in new.commands for v in vids
+             if not c.available_in(v) and (not named or c.name in named)]
+    old_cmds = {c.name: c for c in old.commands}
+    return not any(n in old_cmds and old_cmds[n].available_in(v) for n, v in pairs)
+
+
+def _short(x: Any) -> str:
+    if isinstance(x, tuple) and x and dataclasses.is_dataclass(x[0]):
+        return repr([dataclasses.astuple(t) for t in x])
+    return repr(list(x) if isinstance(x, tuple) else x)
+
+
+def _checksums(old: Spec, new: Spec, breaking: bool) -> list[Change]:
+    out: list[Change] = []
+    ocs, ncs = old.checksums, new.checksums
+    for of in ocs.fields:
+        nf = next((f for f in ncs.fields if f.field == of.field), None)
+        if nf is None:
+            continue  # the loader requires all three
+        if of.algorithm != nf.algorithm or ocs.algorithms[of.algorithm].kind != ncs.algorithms[nf.algorithm].kind:
+            out.append(Change("checksum_algorithm_changed", None, None,
+                              f"{of.field} checksum: {of.algorithm} -> {nf.algorithm}", breaking))
+        ocov, ncov = ocs.coverages.get(of.coverage), ncs.coverages.get(nf.coverage)
+        if _coverage_text(ocov).split(" = ")[-1] != _coverage_text(ncov).split(" = ")[-1]:
+            out.append(Change("checksum_coverage_changed", None, None,
+                              f"{of.field} checksum: {_coverage_text(ocov)} -> {_coverage_text(ncov)}", breaking))
+    if ocs.fill_order != ncs.fill_order:
+        out.append(Change("checksum_fill_order_changed", None, None,
+                          f"{list(ocs.fill_order)} -> {list(ncs.fill_order)}", breaking))
+    return out
+
+
+def _profiles(old: Spec, new: Spec) -> list[Change]:
+    out: list[Change] = []
+    new_by_id = {p.id: p for p in new.profiles}
+    for op in old.profiles:
+        np_ = new_by_id.get(op.id)
+        if np_ is None:
+            out.append(Change("profile_removed", None, None, op.id, True))
+            continue
+        for f in dataclasses.fields(op):
+            if f.name in _PROFILE_IGNORED:
+                continue
+            a, b = getattr(op, f.name), getattr(np_, f.name)
+            if f.name.endswith("coverages"):
+                a = [_coverage_text(old.checksums.coverages.get(x)).split(" = ")[-1] for x in a]
+                b = [_coverage_text(new.checksums.coverages.get(x)).split(" = ")[-1] for x in b]
+            if a != b:
+                kind = "profile_checksum_algorithm_changed" if "algorithm" in f.name else "profile_changed"
+                out.append(Change(kind, None, None, f"profile {op.id}: {f.name} {_short(a)} -> {_short(b)}", True))
+    old_ids = {p.id for p in old.profiles}
+    for np_ in new.profiles:
+        if np_.id not in old_ids:
+            out.append(Change("profile_added", None, None, np_.id, False))
+    return out
+
+
+def diff(old: Spec, new: Spec, old_name: str = "OLD", new_name: str = "NEW") -> Diff:
+    """Every change from old to new, by version and command; see the module doc for BREAKING."""
+    out: list[Change] = []
+    new_ids = {v.id for v in new.versions}
+    old_ids = [v.id for v in old.versions]
+    for key in _WIRE_META:
+        if old.meta.get(key) != new.meta.get(key):
+            out.append(Change("encoding_changed", None, None, f"meta.{key}: {old.meta.get(key)!r} -> "
+                              f"{new.meta.get(key)!r}", True))
+    if old.record.head_size != new.record.head_size:
+        out.append(Change("record_head_resized", None, None,
+                          f"record head {old.record.head_size} -> {new.record.head_size} byte(s)", True))
+    out += compare_fields(old.record.fields, new.record.fields, None, None, "record head", True)
+    out += _checksums(old, new, bool(set(old_ids) & new_ids))
+    out += _profiles(old, new)
+    for vid in old_ids:
+        if vid not in new_ids:
+            out.append(Change("version_removed", vid, None, f"files of {vid} are no longer read as {vid}", True))
+            continue
+        out += compare_version(old, vid, new, vid, True)
+    for v in new.versions:
+        if v.id in old_ids:
+            continue
+        prev = _previous(new, v.id)
+        rel = f"; relative to {prev}" if prev else ""
+        out.append(Change("version_added", v.id, None,
+                          f"major {v.major}, minor {'any' if v.minor is None else v.minor}, "
+                          f"writable {v.writable}{rel}", False))
+        if prev is not None:
+            out += compare_version(new, prev, new, v.id, False)
+    out += _checks(old, new)
+    if old.default_version != new.default_version:
+        out.append(Change("default_version_changed", None, None,
+                          f"{old.default_version} -> {new.default_version}", False))
+    if old.fallback_version != new.fallback_version:
+        out.append(Change("fallback_version_changed", None, None,
+                          f"{old.fallback_version} -> {new.fallback_version}", False))
+    for name in sorted(set(old.tolerances) | set(new.tolerances)):
+        a, b = old.tolerances.get(name), new.tolerances.get(name)
+        if a != b:
+            out.append(Change("tolerance_changed", None, None, f"{name}: {a} -> {b}", False))
+    if old.revision != new.revision:
+        out.append(Change("revision_changed", None, None, f"{old.revision} -> {new.revision}", False))
+    return Diff(old_name, new_name, tuple(out))
+
+
+def version_steps(spec: Spec) -> list[tuple[str, str, list[Change]]]:
+    """(previous version, version, changes) for each version after the first, in spec order."""
+    steps = []
+    for v in spec.versions[1:]:
+        prev = _previous(spec, v.id)
+        assert prev is not None
+        steps.append((prev, v.id, compare_version(spec, prev, spec, v.id, False)))
+    return steps
+
+
+def render(d: Diff, as_json: bool) -> str:
+    return json.dumps(d.as_json(), indent=2) + "\n" if as_json else d.text()

@@ -1,0 +1,35 @@
+# Format revisions (issue #12).
+#   breaking BASE=<git ref>   `cbfgen diff` of spec/cbf.yaml at BASE (via `git show`) against the
+#                             working tree's spec: every change by version and command; exit 1
+#                             when one changes the wire meaning of a version BASE has.
+#   revision-drill            every fixture of tests/revisions/ (a new command, a new version
+#                             dropping a command, a layout change in one version, another
+#                             checksum algorithm chosen by a profile) applied to a temporary
+#                             copy of the tree, then `cbfgen diff` (the classification the
+#                             fixture states), `make generate`, `make golden`,
+#                             `make conformance` (every binding) and the whole pytest suite.
+#   revision-drill-quick      the same with the subset of tests/revisions/drill.py: conformance
+#                             of QUICK_BINDINGS (python, c, kaitai-javascript: the two runtimes
+#                             that implement the checks and one Kaitai parser) and the pytest
+#                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
+#                             golden assembly, rev 03 facts, CLI).
+# `make test` runs revision-drill-quick. Measured on the shared 2-core machine (load 6-9):
+# the quick drill takes 205-267 s for the four fixtures (150-160 s of CPU): per fixture,
+# copy 1-2 s, generate 6-9 s, golden 3-5 s, C testee 9-10 s, conformance 14-20 s, tests
+# 24-45 s. The full drill takes 3-7 minutes a fixture (every binding's build and the whole
+# suite four more times), too much for the ten minutes `make test` may take.
+BASE ?= HEAD
+.PHONY: breaking revision-drill revision-drill-quick
+
+breaking: venv  ## cbfgen diff of spec/cbf.yaml at BASE=<git ref> (default HEAD) against the working tree
+	@tmp=$$(mktemp -d) && trap 'rm -rf "$$tmp"' EXIT && \
+	  git show "$(BASE):spec/cbf.yaml" > "$$tmp/cbf.yaml" && \
+	  $(PY) -m cbfgen diff "$$tmp/cbf.yaml" spec/cbf.yaml --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json)
+
+revision-drill: venv kaitai-setup  ## apply every tests/revisions/ fixture in a temp copy: generate, golden, conformance, tests
+	$(PY) tests/revisions/drill.py run
+
+revision-drill-quick: venv kaitai-setup
+	$(PY) tests/revisions/drill.py run --quick
+
+TEST_DEPS += revision-drill-quick

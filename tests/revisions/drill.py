@@ -1,0 +1,343 @@
+"""The format-revision drill (issue 12, point 4): `make revision-drill`.
+
+Each fixture tests/revisions/*.yaml is a small, patch-like revision of
+spec/cbf.yaml: a list of edits addressed by path into the YAML (so it keeps
+applying while unrelated parts of the spec change), the files the revision
+adds (a golden case for a new check, a new expectation for a golden whose
+meaning changes), and what `cbfgen diff` must say about it.
+
+    python tests/revisions/drill.py apply FIXTURE ROOT     apply to the tree at ROOT
+    python tests/revisions/drill.py run [--quick] [FIXTURE ...]
+
+`run` copies the working tree (tracked and untracked files, not ignored
+ones) into a temporary folder per fixture, applies the fixture there, and
+runs, in order: `cbfgen diff` (the classification the fixture states),
+`make generate`, `make golden` (the golden .cbf re-assembled from their
+.hex: the assembler follows the revised checksums), `make conformance`
+(every binding) and the test suite. `--quick` runs the subset `make test`
+uses (QUICK_BINDINGS and QUICK_TESTS below; mk/revision.mk has the times). It prints one line per step with its time and
+exits 1 when a step fails, showing the end of that step's output.
+
+Path syntax of an edit: keys separated by dots; `[N]` indexes a list,
+`[key=value]` picks the list item whose key equals value, `[*]` every
+item. Operations:
+    set      replace (or create) the value at path
+    merge    update the mapping at path with value
+    append   append value to the list(s) at path
+    extend_where   append value to every list at path that holds `contains`
+    remove   delete the item at path, or, with value, remove value from the list(s) at path
+    append_line    (no path) append the line value to the text `file:` (a known-failure list)
+An edit applies to spec/cbf.yaml unless it names another `file:` (an
+expectation of a golden case, a binding's known-failure list).
+`files:` maps new paths to their text.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+REPO = Path(__file__).resolve().parents[2]
+HERE = Path(__file__).resolve().parent
+SPEC = "spec/cbf.yaml"
+_TOKEN = re.compile(r"\[([^\]]*)\]|([^.\[\]]+)")
+# The drill's own test compares fixtures with the unrevised spec: not run inside a revision.
+SELF_TESTS = ("tests/test_revision_drill.py",)
+# The subset of `make test` (`--quick`), measured to keep `make test` under ten minutes on
+# 2 cores: conformance of the bindings whose runtimes implement the checks and of one Kaitai
+# parser (QUICK_BINDINGS; the full drill runs every binding), and the suites that read the
+# spec, the codec, the CUT form, the docs and the golden cases (QUICK_TESTS; the full drill
+# runs the whole suite).
+QUICK_BINDINGS = ("python", "c", "kaitai-javascript")
+QUICK_TESTS = ("tests/test_spec_loader.py", "tests/test_check_coverage.py", "tests/test_codec.py", "tests/test_cut.py",
+               "tests/test_docs.py", "tests/test_golden_assembly.py", "tests/test_rev03_facts.py", "tests/test_cli.py")
+
+class FixtureError(Exception):
+    """A fixture that does not apply: str() names the fixture, the edit and why."""
+
+
+@dataclass(frozen=True)
+class Fixture:
+    name: str
+    path: Path
+    title: str
+    adds: str
+    breaking: bool
+    expect: tuple[dict[str, Any], ...]
+    edits: tuple[dict[str, Any], ...]
+    files: dict[str, str]
+
+
+def fixtures() -> list[Path]:
+    return sorted(HERE.glob("*.yaml"))
+
+
+def load_fixture(path: Path) -> Fixture:
+    try:
+        doc = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except (OSError, yaml.YAMLError) as exc:
+        raise FixtureError(f"{path}: {' '.join(str(exc).split())}") from None
+    if not isinstance(doc, dict):
+        raise FixtureError(f"{path}: not a mapping")
+    missing = {"title", "adds", "breaking", "expect", "edits"} - set(doc)
+    if missing:
+        raise FixtureError(f"{path}: missing {', '.join(sorted(missing))}")
+    return Fixture(path.stem, path, str(doc["title"]), " ".join(str(doc["adds"]).split()), bool(doc["breaking"]),
+                   tuple(doc["expect"]), tuple(doc["edits"]), dict(doc.get("files") or {}))
+
+
+# -- edits ----------------------------------------------------------------------
+def _tokens(path: str) -> list[str]:
+    out = []
+    for m in _TOKEN.finditer(path):
+        out.append(f"[{m.group(1)}]" if m.group(1) is not None else m.group(2))
+    return out
+
+
+def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
+    """The (container, key) pairs tok selects in node."""
+    if tok.startswith("["):
+        sel = tok[1:-1]
+        if not isinstance(node, list):
+            raise FixtureError(f"{where}: {tok} needs a list")
+        if sel == "*":
+            return [(node, i) for i in range(len(node))]
+        if "=" in sel:
+            key, value = sel.split("=", 1)
+            hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict) and str(item.get(key)) == value]
+            if not hits:
+                raise FixtureError(f"{where}: no item with {key}={value}")
+            return hits
+        return [(node, int(sel))]
+    if not isinstance(node, dict):
+        raise FixtureError(f"{where}: key {tok!r} needs a mapping")
+    return [(node, tok)]
+
+
+def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
+    toks = _tokens(path)
+    if not toks:
+        raise FixtureError("empty path")
+    slots: list[tuple[Any, Any]] = [(None, None)]
+    nodes = [root]
+    for i, tok in enumerate(toks):
+        where = "".join(t if t.startswith("[") or j == 0 else "." + t for j, t in enumerate(toks[: i + 1]))
+        slots = [s for n in nodes for s in _step(n, tok, where)]
+        if i < len(toks) - 1:
+            nodes = []
+            for c, k in slots:
+                try:
+                    nodes.append(c[k])
+                except (KeyError, IndexError):
+                    raise FixtureError(f"{where}: not found") from None
+    return slots
+
+
+def apply_edit(root: Any, edit: dict[str, Any]) -> None:
+    op, path = edit.get("op"), str(edit.get("path", ""))
+    slots = _resolve(root, path)
+    value = edit.get("value")
+    if op == "set":
+        for c, k in slots:
+            c[k] = value
+    elif op == "merge":
+        for c, k in slots:
+            c[k].update(value)
+    elif op == "append":
+        for c, k in slots:
+            c[k].append(value)
+    elif op == "extend_where":
+        hits = 0
+        for c, k in slots:
+            if edit["contains"] in c[k] and value not in c[k]:
+                c[k].append(value)
+                hits += 1
+        if not hits:
+            raise FixtureError(f"{path}: no list holds {edit['contains']!r}")
+    elif op == "remove":
+        if "value" in edit:
+            for c, k in slots:
+                if value not in c[k]:
+                    raise FixtureError(f"{path}: {value!r} is not there")
+                c[k].remove(value)
+        else:
+            for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
+                del c[k]
+    else:
+        raise FixtureError(f"{path}: unknown op {op!r}")
+
+
+def _dump(doc: Any) -> str:
+    return yaml.safe_dump(doc, sort_keys=False, width=1000, allow_unicode=False)
+
+
+def apply(fx: Fixture, root: Path) -> None:
+    """Apply fx to the tree at root: the spec, the YAML files it edits, the files it adds."""
+    docs: dict[str, Any] = {}
+    for i, edit in enumerate(fx.edits):
+        rel = str(edit.get("file", SPEC))
+        if edit.get("op") == "append_line":  # a line of a text file (a binding's known-failure list)
+            with (root / rel).open("a", encoding="utf-8") as fh:
+                fh.write(str(edit["value"]).rstrip("\n") + "\n")
+            continue
+        if rel not in docs:
+            docs[rel] = yaml.safe_load((root / rel).read_text(encoding="utf-8"))
+        try:
+            apply_edit(docs[rel], edit)
+        except FixtureError as exc:
+            raise FixtureError(f"{fx.path.name}: edit {i + 1} ({rel}): {exc}") from None
+    for rel, doc in docs.items():
+        head = f"# Revised by tests/revisions/{fx.path.name}: {fx.title}\n"
+        (root / rel).write_text(head + _dump(doc), encoding="utf-8")
+    for rel, text in fx.files.items():
+        (root / rel).parent.mkdir(parents=True, exist_ok=True)
+        (root / rel).write_text(text, encoding="utf-8")
+
+
+def revised_spec(fx: Fixture, base: Path, out: Path) -> Path:
+    """The spec at base, revised by fx, written to out/cbf.yaml (no other file)."""
+    doc = yaml.safe_load(base.read_text(encoding="utf-8"))
+    for i, edit in enumerate(fx.edits):
+        if str(edit.get("file", SPEC)) == SPEC:
+            try:
+                apply_edit(doc, edit)
+            except FixtureError as exc:
+                raise FixtureError(f"{fx.path.name}: edit {i + 1}: {exc}") from None
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "cbf.yaml"
+    path.write_text(_dump(doc), encoding="utf-8")
+    return path
+
+
+def check_diff(fx: Fixture, base: Path, revised: Path, python: str = sys.executable) -> list[str]:
+    """What is wrong with `cbfgen diff base revised --json` for fx; empty when it says what fx expects."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "generator"), os.environ.get("PYTHONPATH", "")]))
+    res = subprocess.run([python, "-m", "cbfgen", "diff", str(base), str(revised), "--json"], capture_output=True,
+                         text=True, env=env, cwd=REPO)
+    if res.returncode not in (0, 1):
+        return [f"cbfgen diff exit {res.returncode}: {res.stderr.strip()}"]
+    doc = json.loads(res.stdout)
+    problems = []
+    if res.returncode != (1 if fx.breaking else 0) or doc["breaking"] != fx.breaking:
+        problems.append(f"expected {'breaking' if fx.breaking else 'not breaking'}, cbfgen diff exit {res.returncode}")
+    for want in fx.expect:
+        if not any(all(c.get(k) == v for k, v in want.items()) for c in doc["changes"]):
+            problems.append(f"no change {want}")
+    return problems
+
+
+# -- the drill --------------------------------------------------------------------
+def copy_tree(dest: Path) -> None:
+    """The working tree (tracked and untracked, not ignored) with mtimes, and links to .venv and node_modules."""
+    listed = subprocess.run(["git", "ls-files", "-z", "-co", "--exclude-standard"], cwd=REPO, check=True,
+                            capture_output=True).stdout.decode().split("\0")
+    for rel in listed:
+        src = REPO / rel
+        if not rel or not src.is_file() or src.is_symlink():
+            continue
+        (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(src, dest / rel)
+    for link in (".venv", "node_modules"):
+        if (REPO / link).exists():
+            (dest / link).symlink_to(REPO / link)
+    jars = REPO / "build" / "kaitai-java" / "lib"  # Maven's download, not a product of the spec
+    if jars.is_dir():
+        shutil.copytree(jars, dest / "build" / "kaitai-java" / "lib")
+
+
+def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str, list[str], dict[str, str]]]:
+    make = ["make", "-C", str(root), "-o", ".venv/.stamp", "-o", "node_modules/.stamp"]
+    env = {"PYTHONPATH": os.pathsep.join(str(root / p) for p in ("generator", "generated/python", "."))}
+    py = str(REPO / ".venv" / "bin" / "python") if (REPO / ".venv").exists() else sys.executable
+    tests = [t for t in QUICK_TESTS if (root / t).exists()] if quick else ["tests"]
+    pytest = [py, "-m", "pytest", "-p", "no:cacheprovider", "-q", *([] if keep_going else ["-x"]), *tests,
+              *(f"--ignore={t}" for t in SELF_TESTS)]
+    if quick:
+        runner = [py, "-m", "conformance.runner", "--report", str(root / "build" / "drill-report.json"),
+                  *(a for b in QUICK_BINDINGS for a in ("--binding", b))]
+        conformance = [("build C testee", [*make, "golden-check", "build/c/cbf_testee"], {}),
+                       (f"conformance ({', '.join(QUICK_BINDINGS)})", runner, env)]
+    else:
+        conformance = [("conformance (every binding)", [*make, "conformance"], {})]
+    return [("generate", [*make, "generate"], {}),
+            ("golden", [*make, "golden"], {}),
+            *conformance,
+            ("pytest" + (" (subset)" if quick else ""), pytest, env)]
+
+
+def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> bool:
+    root = Path(tempfile.mkdtemp(prefix=f"cbf-drill-{fx.name}-"))
+    ok = True
+    try:
+        t0 = time.monotonic()
+        copy_tree(root)
+        apply(fx, root)
+        problems = check_diff(fx, REPO / SPEC, root / SPEC)
+        print(f"{fx.name}: {fx.title}\n  adds: {fx.adds}")
+        verdict = "breaking" if fx.breaking else "not breaking"
+        print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
+              f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s with the copy)")
+        ok = not problems
+        for name, cmd, extra in _steps(root, quick, keep_going):
+            t = time.monotonic()
+            env = dict(os.environ, **extra)
+            for var in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS"):
+                env.pop(var, None)
+            res = subprocess.run(cmd, cwd=root, env=env, capture_output=True, text=True, stdin=subprocess.DEVNULL)
+            good = res.returncode == 0
+            print(f"  {'ok' if good else 'FAIL':<4} {name} ({time.monotonic() - t:.1f} s)", flush=True)
+            if not good:
+                ok = False
+                tail = (res.stdout + res.stderr).strip().splitlines()[-(80 if keep_going else 40):]
+                print("\n".join("       | " + line for line in tail))
+                break
+        return ok
+    finally:
+        if keep or not ok:
+            print(f"  tree kept: {root}")
+        else:
+            shutil.rmtree(root, ignore_errors=True)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="drill.py", description=__doc__.split("\n\n")[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    a = sub.add_parser("apply", help="apply a fixture to a tree")
+    a.add_argument("fixture", type=Path)
+    a.add_argument("root", type=Path)
+    r = sub.add_parser("run", help="run the drill")
+    r.add_argument("fixture", nargs="*", type=Path)
+    r.add_argument("--quick", action="store_true", help="the subset `make test` runs")
+    r.add_argument("--keep", action="store_true", help="keep the temporary trees")
+    r.add_argument("--keep-going", action="store_true", help="report every failing test, not the first")
+    args = ap.parse_args(argv)
+    try:
+        if args.cmd == "apply":
+            apply(load_fixture(args.fixture), args.root)
+            return 0
+        chosen = [load_fixture(p) for p in (args.fixture or fixtures())]
+    except FixtureError as exc:
+        print(f"drill: {exc}", file=sys.stderr)
+        return 2
+    t0 = time.monotonic()
+    results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
+    bad = [n for n, good in results.items() if not good]
+    print(f"revision drill{' (quick)' if args.quick else ''}: {len(results) - len(bad)} of {len(results)} "
+          f"fixture(s) pass in {time.monotonic() - t0:.0f} s" + (f"; failing: {', '.join(bad)}" if bad else ""))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,105 @@
+"""The revision fixtures of tests/revisions/ and `cbfgen diff` of the real spec against each.
+
+The drill itself (`make revision-drill`, a temporary tree per fixture through
+generate, golden, conformance and tests) runs from mk/revision.mk; this file
+checks the fixtures and their classification without building anything. It
+compares with the unrevised spec, so the drill does not run it inside a
+revision.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import yaml
+from revisions import drill
+
+from cbfgen.loader import load
+
+REPO = Path(__file__).resolve().parents[1]
+SPEC = REPO / "spec" / "cbf.yaml"
+FIXTURES = drill.fixtures()
+
+
+def test_four_kinds_of_revision_are_drilled() -> None:
+    kinds = {(w["kind"], w.get("breaking")) for p in FIXTURES for w in drill.load_fixture(p).expect}
+    assert len(FIXTURES) >= 4
+    assert {("command_added", True), ("version_added", False), ("command_removed", False), ("field_retyped", True),
+            ("profile_checksum_algorithm_changed", True)} <= kinds
+
+
+@pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
+def test_cbfgen_diff_classifies_the_fixture(path: Path, tmp_path: Path) -> None:
+    fx = drill.load_fixture(path)
+    revised = drill.revised_spec(fx, SPEC, tmp_path)
+    assert drill.check_diff(fx, SPEC, revised) == []
+    assert load(revised).revision != load(SPEC).revision, "a revision names itself in meta.revision"
+
+
+@pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
+def test_a_fixture_adds_golden_cases_and_expectations_only(path: Path, tmp_path: Path) -> None:
+    fx = drill.load_fixture(path)
+    assert fx.title and fx.adds, "a fixture says what it adds beyond the spec edit"
+    for rel in fx.files:
+        assert rel.startswith("conformance/golden/") and rel.endswith((".hex", ".expect.yaml")), rel
+    for edit in fx.edits:
+        rel = edit.get("file", drill.SPEC)
+        if edit["op"] == "append_line":  # a new case a Kaitai parser cannot decode, listed as a known failure
+            assert re.fullmatch(r"conformance/failures/kaitai-[a-z]+\.txt", rel), rel
+            assert any(str(edit["value"]).startswith(c.split("/")[-1][: -len(".hex")] + " ") for c in fx.files), edit
+            continue
+        assert rel == drill.SPEC or (rel.startswith("conformance/golden/") and rel.endswith(".expect.yaml")), rel
+    cases = {r[: -len(".hex")] for r in fx.files if r.endswith(".hex")}
+    assert cases == {r[: -len(".expect.yaml")] for r in fx.files if r.endswith(".expect.yaml")}
+    # A check the revision adds has a case that reports it and nothing else.
+    new_checks = {str(c["id"]) for e in fx.edits if e.get("path") == "checks" and e["op"] == "append"
+                  for c in [e["value"]]}
+    reported = {str(f[0]) for r, text in fx.files.items() if r.endswith(".expect.yaml")
+                for f in (yaml.safe_load(text).get("validate") or {}).get("default", [])}
+    assert new_checks <= reported
+
+
+def test_apply_writes_the_revision_into_a_tree(tmp_path: Path) -> None:
+    fx = next(drill.load_fixture(p) for p in FIXTURES if any("file" in e for e in drill.load_fixture(p).edits))
+    for rel in {drill.SPEC, *(e["file"] for e in fx.edits if "file" in e)}:
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(REPO / rel, tmp_path / rel)
+    drill.apply(fx, tmp_path)
+    spec = load(tmp_path / drill.SPEC)
+    assert spec.revision == load(drill.revised_spec(fx, SPEC, tmp_path / "r")).revision
+    for e in fx.edits:
+        if "file" in e:
+            assert (tmp_path / e["file"]).read_text(encoding="utf-8").startswith("# Revised by tests/revisions/")
+
+
+def test_a_fixture_that_does_not_apply_names_the_edit(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(yaml.safe_dump({"title": "t", "adds": "nothing", "breaking": False, "expect": [],
+                                   "edits": [{"op": "set", "path": "commands[name=NO_SUCH].code", "value": 1}]}))
+    with pytest.raises(drill.FixtureError, match=r"bad.yaml: edit 1: commands\[name=NO_SUCH\]: no item with name"):
+        drill.revised_spec(drill.load_fixture(bad), SPEC, tmp_path / "out")
+    bad.write_text("title: [\n")
+    with pytest.raises(drill.FixtureError, match="bad.yaml"):
+        drill.load_fixture(bad)
+
+
+def test_make_breaking_reads_the_spec_at_a_git_ref() -> None:
+    if shutil.which("git") is None or not (REPO / ".git").exists():
+        pytest.skip("not a git checkout")
+    res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD"], cwd=REPO, capture_output=True, text=True)
+    assert res.returncode in (0, 1), res.stderr
+    assert res.stdout.startswith("cbfgen diff: HEAD:spec/cbf.yaml -> spec/cbf.yaml:")
+    assert "TEST_DEPS += revision-drill-quick" in (REPO / "mk" / "revision.mk").read_text(encoding="utf-8")
+
+
+def test_the_readme_lists_no_versions_by_hand() -> None:
+    """A list of versions in the README goes stale with the next revision: it points to the model instead."""
+    ids = [v.id for v in load(SPEC).versions]
+    for n, line in enumerate((REPO / "README.md").read_text(encoding="utf-8").splitlines(), 1):
+        found = {v for v in ids if re.search(rf"(?<![\w.]){re.escape(v)}(?![\w])", line)}
+        assert len(found) < 3, f"README.md:{n} lists versions {sorted(found)}: {line}"
+        assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
