@@ -159,10 +159,14 @@ def test_a_profile_chooses_the_file_algorithm(tmp_path: Path) -> None:
     def edit(doc: dict[str, object]) -> None:
         doc["profiles"][-1]["file_algorithm"] = other  # type: ignore[index]
 
+    before = load(SPEC)
     path, _ = _spec_with(tmp_path, edit)
     spec = load(path)
     assert spec.file_algorithm(pid) == other
-    assert spec.file_algorithm(spec.profiles[0].id) == (current if pid != spec.profiles[0].id else other)
+    # every other profile keeps what it had (the field's algorithm, or its own file_algorithm)
+    for prof in spec.profiles:
+        if prof.id != pid:
+            assert spec.file_algorithm(prof.id) == before.file_algorithm(prof.id)
 
     def bad(doc: dict[str, object]) -> None:
         doc["profiles"][-1]["file_algorithm"] = "no_such_algorithm"  # type: ignore[index]
