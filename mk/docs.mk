@@ -18,8 +18,11 @@ DOCS_PDF := build/docs-pdf/cbf-reference.pdf
 
 docs: docs-site  ## Markdown docs (generated/docs/) and the HTML site ($(DOCS_HTML)/index.html)
 
+# The site shows the toolpath gallery (`cbf plot` and `cbf stats` of every golden file that
+# validates clean, mk/gallery.mk) on a page of its own.
 docs-site: generate-py
-	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML)
+	@rm -rf $(GALLERY) && $(PY) -m cbf.gallery $(GALLERY) conformance/golden/*.cbf
+	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY)
 
 docs-chromium:
 	@CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh

@@ -33,7 +33,8 @@ def test_expectation_is_well_formed(name: str) -> None:
     for profile, findings in exp["validate"].items():
         assert profile in ("default", "implib")
         for f in findings:
-            assert len(f) == 3 and f[1] in ("error", "warning") and (f[2] is None or isinstance(f[2], int))
+            assert len(f) == 4 and f[1] in ("error", "warning") and (f[2] is None or isinstance(f[2], int))
+            assert isinstance(f[3], int) and f[3] >= 0, f"{f}: the offset of the field concerned"
 
 
 def test_assembler_language() -> None:

@@ -98,7 +98,7 @@ for path, profile, part_number, cutters in json.loads(sys.stdin.read()):
     from cbf.cutters import load_cutter_table
     table = load_cutter_table(cutters) if cutters else None
     found = cbf.validate(open(path, "rb").read(), profile=profile, part_number=part_number, cutters=table)
-    out.append([[f.check, f.severity, f.record] for f in found])
+    out.append([[f.check, f.severity, f.record, f.offset] for f in found])
 print(json.dumps(out))
 """
 
@@ -125,7 +125,7 @@ def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
     for line in ans.stdout.splitlines():
         a = json.loads(line)
         assert a["ok"], a
-        out.append([[f["check"], f["severity"], f["record"]] for f in a["findings"]])
+        out.append([[f["check"], f["severity"], f["record"], f["offset"]] for f in a["findings"]])
     return out
 
 
@@ -167,7 +167,7 @@ def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Pat
     got = BINDINGS[binding](gen, jobs, tmp_path)
     assert len(got) == len(wanted)
     diffs = [f"{name} [{profile}] {d}" for (name, profile, exp), act in zip(wanted, got, strict=True)
-             if (d := findings_difference(exp, [dict(zip(("check", "severity", "record"), a, strict=True))
+             if (d := findings_difference(exp, [dict(zip(("check", "severity", "record", "offset"), a, strict=True))
                                                 for a in act]))]
     assert not diffs, "\n".join(diffs)
 

@@ -56,6 +56,7 @@ def case_page(name: str) -> str:
 
 GOLDEN_INDEX = "golden/index.md"
 FIELD_INDEX = "fields.md"
+GALLERY = "gallery"  # the toolpath gallery's folder in the site (site.py, made by cbf.gallery)
 
 
 def header_svg(layout_id: str) -> str:

@@ -25,7 +25,7 @@ import sys
 from pathlib import Path
 
 from ...loader import load
-from . import FIELD_INDEX, GOLDEN_INDEX, command_page, site_links
+from . import FIELD_INDEX, GALLERY, GOLDEN_INDEX, command_page, site_links
 from .cdp import Browser, CdpError
 
 WIDTHS = (1280, 390)
@@ -108,7 +108,10 @@ def main(argv: list[str] | None = None) -> int:
     first = next((c for c in spec.commands if c.motion and c.motion.get("kind") == "circle"), spec.commands[0])
     shots = ["index.html", command_page(first)[:-3] + ".html"]
     pages = ["index.html", *(command_page(c)[:-3] + ".html" for c in spec.commands),
-             GOLDEN_INDEX[:-3] + ".html", FIELD_INDEX[:-3] + ".html"]
+             GOLDEN_INDEX[:-3] + ".html", FIELD_INDEX[:-3] + ".html", "changes.html"]
+    if (Path(args.site) / GALLERY / "index.html").exists():  # the toolpath gallery's drawings load too
+        pages.append(f"{GALLERY}/index.html")
+        shots.append(f"{GALLERY}/index.html")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     try:

@@ -31,7 +31,7 @@ from markdown_it.token import Token
 from ...loader import SpecError, load
 from ...model import Spec
 from ...render import environment
-from . import HERE, OUT, REPO, command_page, context, emit
+from . import GALLERY, HERE, OUT, REPO, command_page, context, emit
 
 DOCS = f"generated/{OUT}"  # where the Markdown pages live in the repository
 FILES = "files"  # repository files the pages link to, copied in
@@ -102,10 +102,23 @@ def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:
     return [(c.name, root + command_page(c)[:-3] + ".html") for c in spec.commands]
 
 
-def pages(spec: Spec) -> dict[str, bytes]:
-    """Every file of the site (HTML pages, figures, imported repository files), by path relative to it."""
+def gallery_files(folder: Path) -> dict[str, bytes]:
+    """The toolpath gallery that `python -m cbf.gallery` wrote into folder: its index page and the
+    SVG drawings, as docs files under gallery/ (the stats text is already on the page)."""
+    files = {f"{OUT}/{GALLERY}/index.md": (folder / "index.md").read_bytes()}
+    for svg_file in sorted(folder.glob("*.svg")):
+        files[f"{OUT}/{GALLERY}/{svg_file.name}"] = svg_file.read_bytes()
+    return files
+
+
+def pages(spec: Spec, gallery: Path | None = None) -> dict[str, bytes]:
+    """Every file of the site (HTML pages, figures, imported repository files), by path relative to it.
+    gallery: a folder made by `python -m cbf.gallery`, shown as the site's toolpath gallery."""
     ctx: dict[str, Any] = context(spec)
+    ctx["gallery_page"] = f"{GALLERY}/index.html" if gallery is not None else None
     files = emit(spec, ctx)
+    if gallery is not None:
+        files.update(gallery_files(gallery))
     env = environment(HERE / "templates")
     shell = env.get_template("page.html.j2")
     md = _markdown()
@@ -147,12 +160,12 @@ def pages(spec: Spec) -> dict[str, bytes]:
     return site
 
 
-def build(spec: Spec, out: Path) -> int:
+def build(spec: Spec, out: Path, gallery: Path | None = None) -> int:
     """Write the site into out (its old content removed); the number of files."""
     out.mkdir(parents=True, exist_ok=True)
     for p in sorted(out.iterdir()):
         shutil.rmtree(p) if p.is_dir() else p.unlink()
-    site = pages(spec)
+    site = pages(spec, gallery)
     for rel, data in site.items():
         (out / rel).parent.mkdir(parents=True, exist_ok=True)
         (out / rel).write_bytes(data)
@@ -163,13 +176,14 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="cbfgen-docs-site", description="Build the HTML format documentation.")
     ap.add_argument("--spec", default="spec/cbf.yaml")
     ap.add_argument("--out", default="build/docs-html")
+    ap.add_argument("--gallery", type=Path, help="a folder written by `python -m cbf.gallery`, shown in the site")
     args = ap.parse_args(argv)
     try:
         spec = load(args.spec)
     except SpecError as exc:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2
-    n = build(spec, Path(args.out))
+    n = build(spec, Path(args.out), args.gallery)
     print(f"docs-site: {args.spec} -> {args.out}/index.html ({n} files)")
     return 0
 
