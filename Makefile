@@ -73,8 +73,10 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 	$(PY) -m mypy --strict $(MYPY_PATHS)
 	@mkdir -p $(@D) && touch $@
 
+# One worker per core; a test file stays on one worker (--dist loadfile), so module-scoped
+# fixtures (built wheels, venvs) are made once.
 test-py: venv
-	$(PY) -m pytest -p no:cacheprovider
+	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile
 
 test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what CI runs)
 	@$(MAKE) test-py

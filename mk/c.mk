@@ -4,7 +4,8 @@
 #   c-check    strict builds: gcc and clang C99, g++ as C++, clang -Weverything
 #   c-test     C conformance smoke test of the sanitizer testee (also in CI)
 #   fuzz-c     libFuzzer for FUZZ_SECONDS (default 30) from the golden files
-#   c-fuzz-ci  the same for 60 s (part of `make test`)
+#   c-fuzz-ci  a fixed seed and a fixed number of runs from the golden files only, so that
+#              `make test` is deterministic (part of `make test`; fuzz-c and fuzz-long explore)
 # Needs gcc, g++, clang and libclang-rt-14-dev (libFuzzer, sanitizers):
 # .ci/setup-debian.sh installs them when clang is missing.
 
@@ -91,8 +92,14 @@ fuzz-c: c-build  ## run the C libFuzzer harness for FUZZ_SECONDS (default 30)
 	$(C_OUT)/cbf_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$(C_OUT)/ -max_len=$(FUZZ_MAX_LEN) \
 	  $(C_OUT)/fuzz-corpus $(C_OUT)/fuzz-seeds
 
-c-fuzz-ci:
-	@$(MAKE) fuzz-c FUZZ_SECONDS=60
+# Deterministic: one process, -seed fixed, -runs fixed, a fresh corpus of the golden files
+# alone (no corpus kept from earlier runs), so the same commit runs the same inputs.
+FUZZ_CI_RUNS ?= 20000
+c-fuzz-ci: c-build
+	@rm -rf $(C_OUT)/fuzz-ci && mkdir -p $(C_OUT)/fuzz-ci/corpus $(C_OUT)/fuzz-ci/seeds
+	@for f in $(C_GOLDEN); do cp -f $$f $(C_OUT)/fuzz-ci/seeds/; done
+	$(C_OUT)/cbf_fuzz -seed=1 -runs=$(FUZZ_CI_RUNS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	  -artifact_prefix=$(C_OUT)/ -max_len=$(FUZZ_MAX_LEN) $(C_OUT)/fuzz-ci/corpus $(C_OUT)/fuzz-ci/seeds
 
 # Install the C binding for consumers outside this repository (issue #14):
 #   $(PREFIX)/include/cbf.h, $(PREFIX)/bin/cbf-c, $(PREFIX)/lib/pkgconfig/cbf.pc

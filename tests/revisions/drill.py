@@ -43,6 +43,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -311,6 +312,26 @@ def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> boo
             shutil.rmtree(root, ignore_errors=True)
 
 
+def _in_parallel(chosen: list[Fixture], args: argparse.Namespace) -> dict[str, bool]:
+    """Each fixture drilled by its own `drill.py run FIXTURE` process, args.jobs at a time; each
+    report printed whole, in the fixtures' order, so the log reads as a serial run."""
+    flags = [f for f, on in (("--quick", args.quick), ("--keep", args.keep), ("--keep-going", args.keep_going)) if on]
+
+    def one(fx: Fixture) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, __file__, "run", str(fx.path), *flags], capture_output=True, text=True)
+
+    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        done = list(pool.map(one, chosen))
+    results: dict[str, bool] = {}
+    for fx, res in zip(chosen, done, strict=True):
+        report = res.stdout.rstrip("\n").splitlines()
+        print("\n".join(line for line in report if not line.startswith("revision drill")), flush=True)
+        if res.stderr.strip():
+            print(res.stderr.rstrip(), flush=True)
+        results[fx.name] = res.returncode == 0
+    return results
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="drill.py", description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -322,6 +343,7 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--quick", action="store_true", help="the subset `make test` runs")
     r.add_argument("--keep", action="store_true", help="keep the temporary trees")
     r.add_argument("--keep-going", action="store_true", help="report every failing test, not the first")
+    r.add_argument("--jobs", type=int, default=1, help="fixtures drilled at once (each in its own process)")
     args = ap.parse_args(argv)
     try:
         if args.cmd == "apply":
@@ -332,7 +354,10 @@ def main(argv: list[str] | None = None) -> int:
         print(f"drill: {exc}", file=sys.stderr)
         return 2
     t0 = time.monotonic()
-    results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
+    if args.jobs > 1 and len(chosen) > 1:
+        results = _in_parallel(chosen, args)
+    else:
+        results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
     bad = [n for n, good in results.items() if not good]
     print(f"revision drill{' (quick)' if args.quick else ''}: {len(results) - len(bad)} of {len(results)} "
           f"fixture(s) pass in {time.monotonic() - t0:.0f} s" + (f"; failing: {', '.join(bad)}" if bad else ""))
