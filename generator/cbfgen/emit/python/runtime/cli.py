@@ -54,6 +54,17 @@ def _max_file_size() -> int:
 _CHUNK = 1 << 16
 
 
+def _unreadable(path: str, exc: OSError) -> _Fail:
+    """The one line for input that cannot be read (README, exit codes: 2)."""
+    if isinstance(exc, FileNotFoundError):
+        return _Fail(f"{path}: no such file")
+    if isinstance(exc, PermissionError):
+        return _Fail(f"{path}: permission denied")
+    if isinstance(exc, IsADirectoryError):
+        return _Fail(f"{path}: is a directory")
+    return _Fail(f"{path}: cannot read ({exc.strerror})")
+
+
 def _too_big(path: str, limit: int) -> _Fail:
     return _Fail(f"{path}: larger than {limit} bytes, the most a CBF file (or its text) can hold")
 
@@ -72,14 +83,8 @@ def _read(path: str, limit: int) -> bytes:
                 if stat.S_ISREG(st.st_mode) and st.st_size > limit:
                     raise _too_big(path, limit)  # refused unread
                 data = fh.read(limit + 1)
-    except FileNotFoundError:
-        raise _Fail(f"{path}: no such file") from None
-    except PermissionError:
-        raise _Fail(f"{path}: permission denied") from None
-    except IsADirectoryError:
-        raise _Fail(f"{path}: is a directory") from None
     except OSError as exc:
-        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+        raise _unreadable(path, exc) from None
     if len(data) > limit:
         raise _too_big(path, limit)
     return data
@@ -98,14 +103,8 @@ def _read_text(path: str, limit: int) -> str:
             if stat.S_ISREG(st.st_mode) and st.st_size > limit:
                 raise _too_big(path, limit)
             return _decode_chunks(path, fh, limit)
-    except FileNotFoundError:
-        raise _Fail(f"{path}: no such file") from None
-    except PermissionError:
-        raise _Fail(f"{path}: permission denied") from None
-    except IsADirectoryError:
-        raise _Fail(f"{path}: is a directory") from None
     except OSError as exc:
-        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+        raise _unreadable(path, exc) from None
 
 
 def _decode_chunks(path: str, fh: Any, limit: int) -> str:
@@ -470,14 +469,8 @@ def _peek(path: str) -> bytes:
             raise _Fail(f"{path}: is a directory")
         with Path(path).open("rb") as fh:
             return fh.read(256)
-    except FileNotFoundError:
-        raise _Fail(f"{path}: no such file") from None
-    except PermissionError:
-        raise _Fail(f"{path}: permission denied") from None
-    except IsADirectoryError:
-        raise _Fail(f"{path}: is a directory") from None
     except OSError as exc:
-        raise _Fail(f"{path}: cannot read ({exc.strerror})") from None
+        raise _unreadable(path, exc) from None
 
 
 def _load_any(path: str) -> Any:
