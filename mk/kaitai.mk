@@ -29,10 +29,10 @@ CONFORMANCE_BUILD += kaitai-setup
 # runtime pinned by conformance/testees/kaitai-go/go.mod and go.sum.
 KAITAI_GO := build/kaitai-go
 .PHONY: kaitai-go-build
-$(KAITAI_GO)/testee: generated/kaitai/go/cbf.go generated/kaitai/go/testee.go conformance/testees/kaitai-go/main.go conformance/testees/kaitai-go/go.mod conformance/testees/kaitai-go/go.sum
+$(KAITAI_GO)/testee: generated/kaitai/go/cbf.go generated/kaitai/go-testee/testee.go conformance/testees/kaitai-go/main.go conformance/testees/kaitai-go/go.mod conformance/testees/kaitai-go/go.sum
 	@mkdir -p $(KAITAI_GO)/cbf
 	cp conformance/testees/kaitai-go/go.mod conformance/testees/kaitai-go/go.sum conformance/testees/kaitai-go/main.go $(KAITAI_GO)/
-	cp generated/kaitai/go/cbf.go generated/kaitai/go/testee.go $(KAITAI_GO)/cbf/
+	cp generated/kaitai/go/cbf.go generated/kaitai/go-testee/testee.go $(KAITAI_GO)/cbf/
 	cd $(KAITAI_GO) && GOFLAGS=-mod=readonly go build -o testee .
 kaitai-go-build: $(KAITAI_GO)/testee  ## build the Kaitai Go conformance testee
 CONFORMANCE_BUILD += kaitai-go-build

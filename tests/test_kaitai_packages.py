@@ -65,3 +65,48 @@ def test_javascript_parser_npm_pack_and_install(tmp_path: Path) -> None:
         "const f = new Cbf(new KaitaiStream(require('fs').readFileSync(process.argv[2])));\n"
         "console.log(JSON.stringify(f.records.map((r) => r.code)));\n", encoding="utf-8")
     assert json.loads(_run("node", "parse.js", GOLDEN, cwd=scratch)) == CODES
+
+
+GO_CONSUMER = """package main
+
+import (
+	"fmt"
+	"os"
+
+	cbf "cbf-kaitai"
+	"github.com/kaitai-io/kaitai_struct_go_runtime/kaitai"
+)
+
+func main() {
+	file, err := os.Open(os.Args[1])
+	if err != nil {
+		panic(err)
+	}
+	f := cbf.NewCbf()
+	if err := f.Read(kaitai.NewStream(file), nil, f); err != nil {
+		panic(err)
+	}
+	for _, r := range f.Records {
+		fmt.Println(r.Code)
+	}
+}
+"""
+
+
+@pytest.mark.skipif(shutil.which("go") is None or not (KAITAI / "go" / "cbf.go").exists(), reason="needs go")
+def test_go_parser_module_through_replace(tmp_path: Path) -> None:
+    mod = (KAITAI / "go" / "go.mod").read_text(encoding="utf-8")
+    module = next(line.split()[1] for line in mod.splitlines() if line.startswith("module "))
+    assert not (KAITAI / "go" / "testee.go").exists(), "the testee is not part of the parser's module"
+    consumer = tmp_path / "consumer"
+    consumer.mkdir()
+    requires = [line.strip() for line in mod.split("require (", 1)[1].split(")", 1)[0].splitlines() if line.strip()]
+    (consumer / "go.mod").write_text(
+        "module consumer\n\ngo 1.23.0\n\nrequire (\n\t" + module + " v0.0.0\n"
+        + "".join(f"\t{r}\n" for r in requires) + f")\n\nreplace {module} => {KAITAI / 'go'}\n", encoding="utf-8")
+    shutil.copy(KAITAI / "go" / "go.sum", consumer / "go.sum")
+    (consumer / "main.go").write_text(GO_CONSUMER, encoding="utf-8")
+    env = dict(CLEAN_ENV, GOFLAGS="-mod=readonly")
+    subprocess.run(["go", "build", "-o", "consumer", "."], cwd=consumer, env=env, check=True, capture_output=True)
+    out = subprocess.run([str(consumer / "consumer"), str(GOLDEN)], capture_output=True, text=True, check=True)
+    assert [int(x) for x in out.stdout.split()] == CODES

@@ -1,4 +1,4 @@
-// Command testee runs the generated Kaitai Go testee (generated/kaitai/go/testee.go).
+// Command testee runs the generated Kaitai Go testee (generated/kaitai/go-testee/testee.go).
 package main
 
 import (

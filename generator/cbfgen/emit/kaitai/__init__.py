@@ -23,6 +23,10 @@ HERE = Path(__file__).parent
 
 OUT = "kaitai"
 # Produced by ksc after the Python emitters (mk/kaitai.mk); not stale.
+# The Go parser is the module GO_MODULE (package cbf), requiring the Kaitai Go runtime. The
+# pinned versions and their checksums (go.sum beside this file) are dependency facts, not format facts.
+GO_MODULE = "cbf-kaitai"
+GO_REQUIRES = ("github.com/kaitai-io/kaitai_struct_go_runtime v0.11.0", "golang.org/x/text v0.28.0 // indirect")
 KEEP = ("kaitai/python/cbf_kaitai/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/Cbf.java", "kaitai/go/cbf.go")
 
 
@@ -248,6 +252,7 @@ def testee_context(spec: Spec, ksy: dict[str, Any]) -> dict[str, Any]:
         "args_json": json.dumps({k: _js_fields(v) for k, v in args.items()}),
         "commands_json": json.dumps({str(c.code): c.name for c in spec.commands}),
         "package": spec.meta["id"],
+        "go_module": GO_MODULE,
         "header_fields_go": _go_fields(header_fields),
         "header_tails_go": {f"Cbf_{k}": _go_fields(v) for k, v in tails.items()},
         "record_fields_go": _go_fields(record_fields),
@@ -271,16 +276,19 @@ def emit(spec: Spec) -> dict[str, bytes]:
     testees = {
         f"{OUT}/python/testee.py": env.get_template("testee.py.j2").render(**ctx).encode(),
         f"{OUT}/javascript/testee.js": env.get_template("testee.js.j2").render(**ctx).encode(),
-        f"{OUT}/go/testee.go": env.get_template("testee.go.j2").render(**ctx).encode(),
+        f"{OUT}/go-testee/testee.go": env.get_template("testee.go.j2").render(**ctx).encode(),
         f"{OUT}/java/Testee.java": env.get_template("Testee.java.j2").render(**ctx).encode(),
     }
     text = yaml.dump(ksy, Dumper=_Dumper, sort_keys=False, width=120, allow_unicode=False)
-    pkg = {"spec": spec, "version": TOOLKIT_VERSION, "license": TOOLKIT_LICENSE, "cls": camel(spec.meta["id"]),
-           "module": spec.meta["id"]}
+    pkg = {"go_module": GO_MODULE, "go_requires": GO_REQUIRES, "spec": spec, "version": TOOLKIT_VERSION,
+           "license": TOOLKIT_LICENSE, "cls": camel(spec.meta["id"]), "module": spec.meta["id"]}
     packages = {
         f"{OUT}/python/{rel}": env.get_template(f"package/python/{rel}.j2").render(**pkg).encode()
         for rel in ("pyproject.toml", "README.md", "cbf_kaitai/__init__.py")
     }
+    packages[f"{OUT}/go/go.mod"] = env.get_template("package/go/go.mod.j2").render(**pkg).encode()
+    packages[f"{OUT}/go/go.sum"] = (HERE / "go.sum").read_bytes()
+    packages[f"{OUT}/go/README.md"] = env.get_template("package/go/README.md.j2").render(**pkg).encode()
     packages.update({
         f"{OUT}/javascript/{rel}": env.get_template(f"package/javascript/{rel}.j2").render(**pkg).encode()
         for rel in ("package.json", "README.md")

@@ -2,7 +2,9 @@ package cbf
 
 // Conformance testee of the Kaitai-generated Go parser (conformance/PROTOCOL.md).
 // Generated from spec/cbf.yaml by cbfgen; do not edit. Decode only: it drives the
-// parser record by record and turns the object tree into the canonical JSON.
+// parser record by record and turns the object tree into the canonical JSON. It lives
+// outside the parser's module (generated/kaitai/go-testee/); the build puts it beside
+// cbf.go, because driving the parser record by record needs its unexported fields.
 
 import (
 	"bufio"
