@@ -13,7 +13,8 @@
 #                             that implement the checks and one Kaitai parser) and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI).
-# `make test` runs revision-drill-quick. Measured on the shared 2-core machine (load 6-9):
+# `make test` runs revision-drill-quick, two fixtures at once (DRILL_JOBS): 77-97 s on an idle
+# 2-core machine. Measured serially on the shared machine (load 6-9):
 # the quick drill takes 205-267 s for the four fixtures (150-160 s of CPU): per fixture,
 # copy 1-2 s, generate 6-9 s, golden 3-5 s, C testee 9-10 s, conformance 14-20 s, tests
 # 24-45 s. The full drill takes 3-7 minutes a fixture (every binding's build and the whole
@@ -29,7 +30,7 @@ breaking: venv  ## cbfgen diff of spec/cbf.yaml at BASE=<git ref> (default HEAD)
 	  $(PY) -m cbfgen diff "$$tmp/cbf.yaml" spec/cbf.yaml --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json)
 
 revision-drill: venv kaitai-setup  ## apply every tests/revisions/ fixture in a temp copy: generate, golden, conformance, tests
-	$(PY) tests/revisions/drill.py run
+	$(PY) tests/revisions/drill.py run --jobs $(DRILL_JOBS)
 
 revision-drill-quick: venv kaitai-setup
 	$(PY) tests/revisions/drill.py run --quick --jobs $(DRILL_JOBS)
