@@ -14,6 +14,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+import yaml
 from markdown_it import MarkdownIt
 
 import cbfgen.emit.docs as docs
@@ -119,21 +120,16 @@ def test_no_page_and_no_spec_text_cites_a_file_the_reader_lacks(md_pages: dict[s
 
 # -- the units table ---------------------------------------------------------------------
 
-def _spec_with(tmp_path: Path, old: str, new: str) -> Path:
-    src = (REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8")
-    assert old in src
-    path = tmp_path / "cbf.yaml"
-    path.write_text(src.replace(old, new, 1), encoding="utf-8")
-    return path
-
-
 def test_units_table_refuses_unknown_keys(tmp_path: Path) -> None:
     """An unquoted comma in a unit's doc splits it into two keys: the schema refuses the second."""
     unit, doc = next(iter(SPEC.units.items()))
-    line = next(ln for ln in (REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8").splitlines()
-                if ln.strip().startswith(f"{unit}:") and "doc:" in ln)
+    raw = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    raw["units"][unit] = yaml.safe_load(f"{{doc: {doc}, 0 to 100}}")  # what the unquoted comma parses to
+    assert set(raw["units"][unit]) == {"doc", "0 to 100"}
+    path = tmp_path / "cbf.yaml"
+    path.write_text(yaml.safe_dump(raw, sort_keys=False), encoding="utf-8")
     with pytest.raises(SpecError):
-        load(_spec_with(tmp_path, line, f"  {unit}: {{doc: {doc}, 0 to 100}}"))
+        load(path)
 
 
 def test_unit_docs_reach_the_docs_whole(md_pages: dict[str, str]) -> None:
