@@ -64,8 +64,13 @@ def test_compiles_without_warnings(tmp_path: Path) -> None:
                           "python", "javascript", "java", "go"], cwd=REPO, capture_output=True, text=True)
     assert res.returncode == 0, res.stderr
     assert res.stderr == ""
-    for f in ("python/cbf_kaitai/cbf.py", "javascript/Cbf.js", "java/Cbf.java", "go/cbf.go"):
+    # with the options cbfgen writes beside the .ksy, the Java parser is in its package (ksc's
+    # --java-package) and in the Maven source folder of that package
+    package = json.loads((KSY.parent / "ksc-options.json").read_text(encoding="utf-8"))["java_package"]
+    java = Path("java", "src", "main", "java", *package.split("."), "Cbf.java")
+    for f in (Path("python/cbf_kaitai/cbf.py"), Path("javascript/Cbf.js"), java, Path("go/cbf.go")):
         assert (tmp_path / f).stat().st_size > 10_000
+    assert f"\npackage {package};\n" in (tmp_path / java).read_text(encoding="utf-8")
 
 
 @pytest.mark.skipif(not HAVE_KSC, reason="kaitai-struct-compiler not installed (make kaitai-setup)")
@@ -77,8 +82,9 @@ def test_new_command_reaches_parsers_and_testees(tmp_path: Path) -> None:
     assert "args_dwell" in (out / "kaitai" / "cbf.ksy").read_text()
     assert "class ArgsDwell" in (out / "kaitai" / "python" / "cbf_kaitai" / "cbf.py").read_text()
     assert "ArgsDwell" in (out / "kaitai" / "javascript" / "Cbf.js").read_text()
-    assert "ArgsDwell" in (out / "kaitai" / "java" / "Cbf.java").read_text()
+    assert "ArgsDwell" in next((out / "kaitai" / "java" / "src").rglob("Cbf.java")).read_text()
     assert "ArgsDwell" in (out / "kaitai" / "go" / "cbf.go").read_text()
     assert "ArgsDwell" in (out / "kaitai" / "python" / "testee.py").read_text()
+    assert "ArgsDwell" in (out / "kaitai" / "java-testee" / "Testee.java").read_text()
     js = (out / "kaitai" / "javascript" / "testee.js").read_text()
     assert "ArgsDwell" in js and '"DWELL"' in js

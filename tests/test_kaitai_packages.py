@@ -1,19 +1,23 @@
 """The Kaitai parsers used from outside this repository (issue 14): the Python parser
 installs as the `cbf-kaitai` wheel (module cbf_kaitai, never shadowing the codec's `cbf`),
-the JavaScript parser as an npm tarball; each parses a golden file in a scratch project."""
+the JavaScript parser as an npm tarball, the Java parser as a Maven artifact, the Go parser
+as a module; each parses a golden file in a scratch project."""
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
 
 import cbf
+from cbf import tables
 
 REPO = Path(__file__).resolve().parents[1]
 KAITAI = REPO / "generated" / "kaitai"
@@ -110,3 +114,107 @@ def test_go_parser_module_through_replace(tmp_path: Path) -> None:
     subprocess.run(["go", "build", "-o", "consumer", "."], cwd=consumer, env=env, check=True, capture_output=True)
     out = subprocess.run([str(consumer / "consumer"), str(GOLDEN)], capture_output=True, text=True, check=True)
     assert [int(x) for x in out.stdout.split()] == CODES
+
+
+POM_NS = {"m": "http://maven.apache.org/POM/4.0.0"}
+JAVA_CONSUMER = """package org.example.consumer;
+
+import {package}.Cbf;
+
+public class Main {{
+    public static void main(String[] args) throws Exception {{
+        Cbf f = Cbf.fromFile(args[0]);
+        for (Cbf.Record r : f.records()) {{
+            System.out.println(r.code() + " " + r.command());
+        }}
+    }}
+}}
+"""
+CONSUMER_POM = """<?xml version="1.0" encoding="UTF-8"?>
+<project xmlns="http://maven.apache.org/POM/4.0.0">
+  <modelVersion>4.0.0</modelVersion>
+  <groupId>org.example</groupId>
+  <artifactId>consumer</artifactId>
+  <version>1.0</version>
+  <properties>
+    <project.build.sourceEncoding>UTF-8</project.build.sourceEncoding>
+    <maven.compiler.release>11</maven.compiler.release>
+  </properties>
+  <dependencies>
+    <dependency>
+      <groupId>{group}</groupId>
+      <artifactId>{artifact}</artifactId>
+      <version>{version}</version>
+    </dependency>
+  </dependencies>
+  <build>
+    <pluginManagement>{plugins}</pluginManagement>
+  </build>
+</project>
+"""
+# The user's ~/.m2 is read as a repository (file://), never written: everything this test
+# installs or fetches goes to a temporary local repository. Central stays the fallback, so
+# a cold ~/.m2 costs a download; `make kaitai-java-build` (dependency:go-offline) warms it.
+MAVEN_SETTINGS = """<settings xmlns="http://maven.apache.org/SETTINGS/1.0.0">
+  <profiles><profile><id>warm</id>
+    <repositories><repository><id>warm</id><url>{url}</url></repository></repositories>
+    <pluginRepositories><pluginRepository><id>warm</id><url>{url}</url></pluginRepository></pluginRepositories>
+  </profile></profiles>
+  <activeProfiles><activeProfile>warm</activeProfile></activeProfiles>
+</settings>
+"""
+
+
+def _coordinates(element: ET.Element) -> tuple[str, str, str]:
+    group, artifact, version = (element.findtext(f"m:{k}", namespaces=POM_NS) or ""
+                                for k in ("groupId", "artifactId", "version"))
+    return group, artifact, version
+
+
+def _jar(repo: Path, coordinates: tuple[str, str, str]) -> Path:
+    """Where Maven keeps an artifact's jar in the local repository `repo`."""
+    group, artifact, version = coordinates
+    return repo / Path(*group.split(".")) / artifact / version / f"{artifact}-{version}.jar"
+
+
+@pytest.mark.skipif(shutil.which("mvn") is None or shutil.which("java") is None
+                    or not list((KAITAI / "java" / "src").rglob("Cbf.java")),
+                    reason="needs mvn, a JDK and the ksc output")
+def test_java_parser_mvn_install_and_a_consumer_in_a_named_package(tmp_path: Path) -> None:
+    pom = ET.parse(KAITAI / "java" / "pom.xml").getroot()
+    parser_id = _coordinates(pom)
+    assert parser_id[2] == cbf.__version__
+    sources = KAITAI / "java" / "src" / "main" / "java"
+    source = next(sources.rglob("Cbf.java"))
+    package = re.search(r"^package ([\w.]+);$", source.read_text(encoding="utf-8"), re.M)
+    assert package, "the parser is in a named package"
+    assert source.parent.relative_to(sources).as_posix() == package[1].replace(".", "/")
+    runtime = pom.find("m:dependencies/m:dependency", POM_NS)
+    assert runtime is not None and _coordinates(runtime)[1] == "kaitai-struct-runtime"
+
+    repo = tmp_path / "repo"
+    warm = Path.home() / ".m2" / "repository"
+    (tmp_path / "settings.xml").write_text(MAVEN_SETTINGS.format(url=warm.as_uri()), encoding="utf-8")
+    mvn = ["mvn", "-q", "-B", "-Dstyle.color=never", "-s", str(tmp_path / "settings.xml"), f"-Dmaven.repo.local={repo}"]
+    parser = tmp_path / "parser"
+    shutil.copytree(KAITAI / "java", parser, ignore=shutil.ignore_patterns("target"))
+    _run(*mvn, "install", cwd=parser)
+    assert _jar(repo, parser_id).is_file()
+
+    consumer = tmp_path / "consumer"
+    main = consumer / "src" / "main" / "java" / "org" / "example" / "consumer" / "Main.java"
+    main.parent.mkdir(parents=True)
+    main.write_text(JAVA_CONSUMER.format(package=package[1]), encoding="utf-8")
+    # the same plugin versions as the parser's pom, so that nothing new is fetched
+    managed = pom.find("m:build/m:pluginManagement/m:plugins", POM_NS)
+    assert managed is not None
+    plugins = ET.tostring(managed, encoding="unicode").replace("ns0:", "").replace(":ns0", "")
+    group, artifact, version = parser_id
+    (consumer / "pom.xml").write_text(CONSUMER_POM.format(group=group, artifact=artifact, version=version,
+                                                          plugins=plugins), encoding="utf-8")
+    # javac needs the Kaitai runtime (Cbf's superclass): Maven finds it through the parser's pom.
+    _run(*mvn, "compile", cwd=consumer)
+    classpath = os.pathsep.join(str(p) for p in (consumer / "target" / "classes", _jar(repo, parser_id),
+                                                 _jar(repo, _coordinates(runtime))))
+    out = _run("java", "-cp", classpath, "org.example.consumer.Main", GOLDEN, cwd=consumer)
+    assert out.splitlines() == [f"{code} {tables.BY_CODE[code].name}" for code in CODES]

@@ -27,7 +27,26 @@ OUT = "kaitai"
 # pinned versions and their checksums (go.sum beside this file) are dependency facts, not format facts.
 GO_MODULE = "cbf-kaitai"
 GO_REQUIRES = ("github.com/kaitai-io/kaitai_struct_go_runtime v0.11.0", "golang.org/x/text v0.28.0 // indirect")
-KEEP = ("kaitai/python/cbf_kaitai/cbf.py", "kaitai/javascript/Cbf.js", "kaitai/java/Cbf.java", "kaitai/go/cbf.go")
+# The Java parser is the Maven artifact JAVA_GROUP:JAVA_ARTIFACT (the toolkit version), its class
+# in JAVA_PACKAGE (ksc's --java-package, done by ksc_driver.js from ksc-options.json), built for
+# Java JAVA_RELEASE. The runtime and the Maven plugins are pinned in the pom (dependency facts).
+JAVA_GROUP = "com.thinksurgical.cbf"
+JAVA_ARTIFACT = "cbf-kaitai"
+JAVA_PACKAGE = "com.thinksurgical.cbf.kaitai"
+JAVA_RELEASE = 11
+JAVA_RUNTIME = ("io.kaitai", "kaitai-struct-runtime", "0.11")
+MAVEN_PLUGINS = (
+    ("maven-resources-plugin", "3.3.1"),
+    ("maven-compiler-plugin", "3.13.0"),
+    ("maven-jar-plugin", "3.4.2"),
+    ("maven-install-plugin", "3.1.3"),
+    ("maven-surefire-plugin", "3.5.2"),
+    ("maven-dependency-plugin", "3.8.1"),
+)
+JAVA_SOURCE = "kaitai/java/src/main/java/" + JAVA_PACKAGE.replace(".", "/") + "/"
+# ksc's output, and Maven's target/ if a user builds the parser in place.
+KEEP = ("kaitai/python/cbf_kaitai/cbf.py", "kaitai/javascript/Cbf.js", JAVA_SOURCE + "Cbf.java", "kaitai/go/cbf.go",
+        "kaitai/java/target/")
 
 
 def _doc(text: str) -> str:
@@ -252,6 +271,7 @@ def testee_context(spec: Spec, ksy: dict[str, Any]) -> dict[str, Any]:
         "args_json": json.dumps({k: _js_fields(v) for k, v in args.items()}),
         "commands_json": json.dumps({str(c.code): c.name for c in spec.commands}),
         "package": spec.meta["id"],
+        "java_package": JAVA_PACKAGE,
         "go_module": GO_MODULE,
         "header_fields_go": _go_fields(header_fields),
         "header_tails_go": {f"Cbf_{k}": _go_fields(v) for k, v in tails.items()},
@@ -277,11 +297,13 @@ def emit(spec: Spec) -> dict[str, bytes]:
         f"{OUT}/python/testee.py": env.get_template("testee.py.j2").render(**ctx).encode(),
         f"{OUT}/javascript/testee.js": env.get_template("testee.js.j2").render(**ctx).encode(),
         f"{OUT}/go-testee/testee.go": env.get_template("testee.go.j2").render(**ctx).encode(),
-        f"{OUT}/java/Testee.java": env.get_template("Testee.java.j2").render(**ctx).encode(),
+        f"{OUT}/java-testee/Testee.java": env.get_template("Testee.java.j2").render(**ctx).encode(),
     }
     text = yaml.dump(ksy, Dumper=_Dumper, sort_keys=False, width=120, allow_unicode=False)
     pkg = {"go_module": GO_MODULE, "go_requires": GO_REQUIRES, "spec": spec, "version": TOOLKIT_VERSION,
-           "license": TOOLKIT_LICENSE, "cls": camel(spec.meta["id"]), "module": spec.meta["id"]}
+           "license": TOOLKIT_LICENSE, "cls": camel(spec.meta["id"]), "module": spec.meta["id"],
+           "java_group": JAVA_GROUP, "java_artifact": JAVA_ARTIFACT, "java_package": JAVA_PACKAGE,
+           "java_release": JAVA_RELEASE, "java_runtime": JAVA_RUNTIME, "maven_plugins": MAVEN_PLUGINS}
     packages = {
         f"{OUT}/python/{rel}": env.get_template(f"package/python/{rel}.j2").render(**pkg).encode()
         for rel in ("pyproject.toml", "README.md", "cbf_kaitai/__init__.py")
@@ -293,7 +315,13 @@ def emit(spec: Spec) -> dict[str, bytes]:
         f"{OUT}/javascript/{rel}": env.get_template(f"package/javascript/{rel}.j2").render(**pkg).encode()
         for rel in ("package.json", "README.md")
     })
+    packages.update({
+        f"{OUT}/java/{rel}": env.get_template(f"package/java/{rel}.j2").render(**pkg).encode()
+        for rel in ("pom.xml", "README.md")
+    })
+    options = {"java_package": JAVA_PACKAGE}
     return {
+        f"{OUT}/ksc-options.json": (json.dumps(options, indent=1, sort_keys=True) + "\n").encode(),
         f"{OUT}/cbf.ksy": ("# Generated from spec/cbf.yaml by cbfgen; do not edit.\n" + text).encode(),
         f"{OUT}/cbf.ksy.json": (json.dumps(ksy, indent=1) + "\n").encode(),
         **testees,

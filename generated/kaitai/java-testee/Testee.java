@@ -1,7 +1,9 @@
 // Conformance testee of the Kaitai-generated Java parser (conformance/PROTOCOL.md).
 // Generated from spec/cbf.yaml by cbfgen; do not edit. Decode only: it drives the
-// parser record by record and writes the canonical JSON.
+// parser record by record and writes the canonical JSON. It uses the parser as a
+// user does: the class Cbf of the package com.thinksurgical.cbf.kaitai.
 
+import com.thinksurgical.cbf.kaitai.Cbf;
 import io.kaitai.struct.ByteBufferKaitaiStream;
 import io.kaitai.struct.KaitaiStream;
 import java.io.BufferedReader;
