@@ -9,7 +9,7 @@
 #   node + npm (>= 20)           kaitai-struct-compiler 0.11 and its JavaScript runtime
 #   go (>= 1.23)                 the Kaitai Go parser's testee (Debian 12's golang-go is 1.19:
 #                                then install Go from go.dev; the script says so)
-#   javac + mvn (JDK >= 11)      the Kaitai Java parser's testee (runtime jar from Maven)
+#   javac + mvn (JDK >= 11)      the Kaitai Java parser: its Maven package, testee and consumer test
 #   gcc, g++, clang, libclang-rt-14-dev   the C binding, libFuzzer and sanitizers
 #   graphviz                     Kaitai's graphviz diagram in the docs
 #   chromium                     only with CBF_WANT_CHROMIUM=1: the headless browser
