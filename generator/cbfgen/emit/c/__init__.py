@@ -4,7 +4,8 @@ a generic table-driven codec and validator; plus the conformance testee, the
 `cbf-c` tool and a libFuzzer harness, all from templates beside this file.
 
 Nothing here names a command, field, offset or check: every identifier and
-number comes from the model. The C engine in templates/cbf.h.j2 knows only
+number comes from the model. The C engine in templates/cbf.h.j2 (one template a section, in
+templates/cbf/) knows only
 the model's vocabulary (field kinds and roles, check kinds, motion kinds,
 coverage regions, algorithm kinds).
 """
