@@ -992,7 +992,9 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
  *  in the spec's fill order (the file checksum with the profile's coverage).
  *  With fill != 0 the version must be writable and every record (stored ones
  *  too) a command of that version with the size of one of its layouts that the
- *  profile accepts, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
+ *  profile accepts, else CBF_ERR_NOT_WRITABLE. A command with a layout of the
+ *  profile's own (N8) is cut to that layout when the fields cut off are
+ *  reserved and zero, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
  *  kept as given (a faulty file reproduced). Returns the file size or the
  *  writer's first error (errors are sticky: a refused record fails the end). */
 long cbf_encode_end(cbf_writer *w, int profile, int fill);
@@ -2683,6 +2685,49 @@ static inline int cbf__profile_accepts(int layout, int profile)
     return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
 }
 
+static int cbf__same_field(const cbf_field_info *a, const cbf_field_info *b)
+{
+    return strcmp(a->name, b->name) == 0 && a->kind == b->kind && a->flags == b->flags && a->offset == b->offset
+           && a->elem == b->elem && a->count == b->count
+           && (a->unit == b->unit || (a->unit && b->unit && strcmp(a->unit, b->unit) == 0));
+}
+
+/* The layout a profile's writers write a record in (N8: implib writes the
+ * short layout its profile lists): a command with a layout of its own under
+ * the profile in the version is written in the first such layout. A record in
+ * a longer layout that starts with the same fields is cut to it when the
+ * fields cut off are reserved and zero. Returns the size to keep (nb when nothing changes), or -1 when the
+ * record cannot be written so (the profile's reader could not read it). */
+static long cbf__profile_size(int version, int code, const uint8_t *args, size_t nb, int profile)
+{
+    int cmd = cbf__cmd_index(code), have = cbf_args_layout(code, version, nb), own = -1, k;
+    size_t i;
+    const cbf__layout *L, *H;
+    if (cmd < 0 || have == CBF_LAYOUT__NONE || version < 0 || version >= CBF__NVERSIONS)
+        return (long)nb;
+    for (k = 0; k < cbf__commands[cmd].nlayouts && own < 0; k++) {
+        int lay = cbf__commands[cmd].first_layout + k;
+        if ((cbf__layouts[lay].versions & CBF__VBIT(version)) && (cbf__layouts[lay].profiles & CBF__PBIT(profile)))
+            own = lay;
+    }
+    if (own < 0 || (cbf__layouts[have].profiles & CBF__PBIT(profile)))
+        return (long)nb;
+    L = &cbf__layouts[own];
+    H = &cbf__layouts[have];
+    if (L->nargs > H->nargs || L->size > H->size)
+        return -1;
+    for (i = 0; i < L->nargs; i++)
+        if (!cbf__same_field(&cbf__args[L->first_arg + i], &cbf__args[H->first_arg + i]))
+            return -1;
+    for (i = L->nargs; i < H->nargs; i++)
+        if (!(cbf__args[H->first_arg + i].flags & CBF__F_RESERVED))
+            return -1;
+    for (i = L->size; i < nb; i++)
+        if (args[i] != 0u)
+            return -1;
+    return (long)L->size;
+}
+
 
 int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs)
 {
@@ -2751,12 +2796,27 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         /* records appended with cbf_encode_record_stored pass the same test */
         const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
         const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+        const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
         size_t pos = CBF_HEADER_SIZE;
         while (f_code && f_nb && pos < w->records_end) {
-            const uint8_t *p = w->buf + pos;
+            uint8_t *p = w->buf + pos;
             int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
             size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
-            int layout = cbf_args_layout(code, w->version, nb);
+            long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
+            int layout;
+            if (keep < 0)
+                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+            if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
+                size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
+                memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
+                w->len -= cut;
+                w->records_end -= cut;
+                nb = (size_t)keep;
+                cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
+                if (f_ck)
+                    cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
+            }
+            layout = cbf_args_layout(code, w->version, nb);
             if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
                 return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
             pos += CBF_RECORD_HEAD_SIZE + nb;
