@@ -3716,10 +3716,10 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
         cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
 }
 
-/* The checks of a record whose arguments decode, one function a layout, in a
+/* ---- validation: the record checks of each layout, and cbf_validate ---------
+ * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
- * targets (check order), the cutter table, continuity, orientation, shapes.
- * A new per-record check goes into this sequence, generated from the model. */
+ * targets (check order), the cutter table, continuity, orientation, shapes. */
 /* CHECKPOINT: 32 argument bytes */
 static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
