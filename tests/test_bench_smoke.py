@@ -20,6 +20,7 @@ def test_table_and_targets_from_a_result() -> None:
         "rows": {"Kaitai Python parse (1x)": {"65535 records": {**st, "median": 1.0}},
                  "Python decode + full validate": {"65535 records": st},
                  "C validate": {"65535 records": {**st, "MB/s": 2000.0, "records/s": 1e6}},
+                 B.C_BYTESUM: {"65535 records": {**st, "median": 0.004}},
                  "cbf validate (process, small)": {"small (30)": {**st, "median": 0.1}},
                  "generate without ksc": {"spec": {**st, "median": 1.0}}},
         "memory": {"python_decode_validate_peak_extra_bytes": 1000, "file_bytes": 100},
@@ -28,7 +29,12 @@ def test_table_and_targets_from_a_result() -> None:
     assert result["targets"]["python decode+validate >= 20x Kaitai"] == {"value": 100.0, "met": True}
     assert result["targets"]["python peak RSS < 10x file"]["met"] is False
     text = B.table(result)
-    assert "100.0x" in text and "| C validate >= 1 GB/s | 2000.0 MB/s | yes |" in text
+    assert "100.0x" in text and "| C validate / byte sum <= 2.5x (65535 records) | 2.5 x | yes |" in text
+    # a file without both C rows has no ratio; over the target is reported as not met
+    assert not any("5-axis" in name for name in result["targets"])
+    result["rows"][B.C_BYTESUM]["65535 records"]["median"] = 0.0039
+    assert B._targets(result)["C validate / byte sum <= 2.5x (65535 records)"] == {"value": 2.56, "unit": "x",
+                                                                                   "met": False}
 
 
 def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

@@ -12,9 +12,11 @@ Commands, sizes and check ids come from the spec tables, not from this file.
 
 from __future__ import annotations
 
+import base64
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -125,6 +127,55 @@ def test_implib_writes_its_own_layout_from_json(tmp_path: Path) -> None:
     # the default profile still writes the default layout, unchanged
     res = run("encode", str(src), "-o", str(out))
     assert res.returncode == 0 and out.read_bytes() == SMALL.read_bytes()
+
+
+def _c_testee(tmp_path: Path) -> Path:
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    exe = tmp_path / "cbf_testee"
+    subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(REPO / "generated" / "c" / "cbf_testee.c"), "-lm"],
+                   check=True, capture_output=True)
+    return exe
+
+
+def _c_encode(exe: Path, doc: dict[str, object], profile: str) -> dict[str, object]:
+    req = json.dumps({"op": "encode", "json": doc, "profile": profile}) + "\n" + '{"op": "quit"}\n'
+    ans = subprocess.run([str(exe)], input=req, capture_output=True, text=True, check=True, timeout=120)
+    out: dict[str, object] = json.loads(ans.stdout.splitlines()[0])
+    return out
+
+
+def test_c_writer_writes_the_implib_layout_like_python(tmp_path: Path) -> None:
+    """The C writer under implib writes the profile's own layout (the 16-byte VERSION), byte for
+    byte what the Python writer writes; the default profile keeps the JSON's layout."""
+    profile = _implib()
+    names = {cmd.name: (lay, other) for cmd, lay, other in _profile_layouts(profile)}
+    doc = cbf.to_canonical(cbf.decode(SMALL.read_bytes()))
+    assert any(r["command"] in names for r in doc["records"])
+    exe = _c_testee(tmp_path)
+    got = _c_encode(exe, doc, profile)
+    assert got["ok"] is True, got
+    data = base64.b64decode(str(got["bytes"]))
+    want = cbf.encode(cbf.from_canonical(doc), profile=profile)
+    assert data == want
+    cut = [(T.BY_CODE[r.code].name, len(r.raw_args)) for r in cbf.decode(data).records
+           if T.BY_CODE[r.code].name in names]
+    assert cut and all(n == names[name][0].size for name, n in cut)
+    assert cbf.validate(data, profile=profile) == []
+    default = _c_encode(exe, doc, "default")
+    assert default["ok"] is True and base64.b64decode(str(default["bytes"])) == SMALL.read_bytes()
+
+
+def test_c_writer_refuses_what_the_implib_layout_cannot_hold(tmp_path: Path) -> None:
+    profile = _implib()
+    cmd, lay, other = _profile_layouts(profile)[0]
+    doc = cbf.to_canonical(cbf.decode(SMALL.read_bytes()))
+    rec = next(r for r in doc["records"] if r["command"] == cmd.name)
+    cut_off = [f for f in other.args if f not in lay.args]
+    rec["args"][cut_off[0].name] = "01" + "00" * (cut_off[0].size - 1)  # a non-zero reserved byte
+    got = _c_encode(_c_testee(tmp_path), doc, profile)
+    assert got["ok"] is False, got
 
 
 def test_implib_refuses_what_its_layout_cannot_hold(tmp_path: Path) -> None:

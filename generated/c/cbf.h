@@ -992,7 +992,9 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
  *  in the spec's fill order (the file checksum with the profile's coverage).
  *  With fill != 0 the version must be writable and every record (stored ones
  *  too) a command of that version with the size of one of its layouts that the
- *  profile accepts, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
+ *  profile accepts, else CBF_ERR_NOT_WRITABLE. A command with a layout of the
+ *  profile's own (N8) is cut to that layout when the fields cut off are
+ *  reserved and zero, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
  *  kept as given (a faulty file reproduced). Returns the file size or the
  *  writer's first error (errors are sticky: a refused record fails the end). */
 long cbf_encode_end(cbf_writer *w, int profile, int fill);
@@ -1345,64 +1347,63 @@ typedef struct cbf__command {
     unsigned versions;
     int motion, orient, shape, cutter;
     signed char candidates[CBF__NVERSIONS][CBF__MAX_CANDIDATES]; /* decode order per version, -1 ends */
-    size_t first_ct, n_ct; /* its (check, target) pairs in cbf__ctargets */
 } cbf__command;
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
     { 0x3C, "CHECKPOINT", 0, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } }, 0, 2 },
+      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } } },
     { 0xA3, "CUTTER", 2, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 1,
-      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } }, 2, 1 },
+      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } } },
     { 0x58, "ORIENT", 4, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_SET, CBF__SHAPE_NONE, 0,
-      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } }, 3, 0 },
+      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } } },
     { 0x59, "ORIENT5B", 5, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } }, 3, 0 },
+      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } } },
     { 0x21, "PHASE", 6, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } }, 3, 0 },
+      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } } },
     { 0x22, "ENABLE_SKIP", 7, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } }, 3, 0 },
+      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } } },
     { 0xC9, "STARTSHAPE", 8, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_START, 0,
-      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } }, 3, 0 },
+      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } } },
     { 0x65, "ENDSHAPE", 9, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_END, 0,
-      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } }, 3, 0 },
+      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } } },
     { 0x2B, "DECEL_OFF", 10, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } }, 3, 0 },
+      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } } },
     { 0x4E, "DECEL_ON", 11, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } }, 3, 0 },
+      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } } },
     { 0x33, "POINT", 12, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_POINT, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } }, 3, 0 },
+      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } } },
     { 0xB6, "LINE", 13, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } }, 3, 0 },
+      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } } },
     { 0xB7, "LINE5B", 14, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } }, 3, 0 },
+      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } } },
     { 0x94, "ARC", 15, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } }, 3, 0 },
+      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } } },
     { 0x95, "ARC5B", 16, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } }, 3, 0 },
+      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } } },
     { 0x7A, "CIRCLE", 17, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } }, 3, 1 },
+      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } } },
     { 0x7B, "CIRCLE5B", 18, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } }, 4, 1 },
+      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } } },
     { 0xE2, "HELIX", 19, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } }, 5, 1 },
+      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } } },
     { 0xE3, "HELIX5B", 20, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } }, 6, 1 },
+      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } } },
     { 0x8B, "SPEED", 21, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } }, 7, 1 },
+      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } } },
     { 0x47, "ACCEL", 22, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } }, 8, 1 },
+      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } } },
     { 0xBB, "CUTTER_ON", 23, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } }, 9, 0 },
+      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } } },
     { 0x66, "CUTTER_OFF", 24, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } }, 9, 0 },
+      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } } },
     { 0x11, "GUIDE", 25, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } }, 9, 0 },
+      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } } },
     { 0xFC, "FCPARMS", 26, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } }, 9, 1 },
+      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } } },
     { 0x55, "VERSION", 27, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } }, 10, 0 },
+      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } } },
     { 0x5A, "COMMENT", 29, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } }, 10, 0 },
+      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } } },
 };
 
 typedef struct cbf__segment {
@@ -1492,20 +1493,6 @@ static const cbf__target cbf__targets[10] = {
     { 0, 9, 1 }, /* CHECKPOINT completion */
     { 0, 10, 1 }, /* CHECKPOINT completion */
     { 24, 11, 3 }, /* FCPARMS min_speed nom_speed max_speed */
-};
-/* The (check, target) pairs of each command, grouped by command in check order. */
-typedef struct cbf__ctarget { int check; size_t target; } cbf__ctarget;
-static const cbf__ctarget cbf__ctargets[10] = {
-    { 27, 7 }, /* checkpoint_range: CHECKPOINT completion */
-    { 28, 8 }, /* checkpoint_falling: CHECKPOINT completion */
-    { 25, 2 }, /* cutter_positive: CUTTER length radius */
-    { 26, 3 }, /* normal_nonzero: CIRCLE normal */
-    { 26, 4 }, /* normal_nonzero: CIRCLE5B normal */
-    { 26, 5 }, /* normal_nonzero: HELIX normal */
-    { 26, 6 }, /* normal_nonzero: HELIX5B normal */
-    { 23, 0 }, /* speed_positive: SPEED speed */
-    { 24, 1 }, /* accel_positive: ACCEL accel decel */
-    { 29, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
 };
 /* The targets' arguments (cbf__target.first, n index these rows): each one's index in
  * every layout, -1 where the layout has no argument of that name. */
@@ -1924,15 +1911,6 @@ static int cbf__ffirst(const uint8_t *base, const cbf_field_info *f, double *fir
             *first = (double)cbf__bits_f4(u);
     }
     return finite;
-}
-
-static inline int cbf__ffinite(const uint8_t *base, const cbf_field_info *f)
-{
-    unsigned i;
-    for (i = 0; i < f->count; i++)
-        if (!cbf__bits_finite(cbf__get_u(base + f->offset + 4u * i, 4)))
-            return 0;
-    return 1;
 }
 
 /* Load fields from bytes into a struct (byte-wise through memcpy). */
@@ -2683,6 +2661,49 @@ static inline int cbf__profile_accepts(int layout, int profile)
     return cbf__layouts[layout].profiles == 0u || (cbf__layouts[layout].profiles & CBF__PBIT(profile)) != 0u;
 }
 
+static int cbf__same_field(const cbf_field_info *a, const cbf_field_info *b)
+{
+    return strcmp(a->name, b->name) == 0 && a->kind == b->kind && a->flags == b->flags && a->offset == b->offset
+           && a->elem == b->elem && a->count == b->count
+           && (a->unit == b->unit || (a->unit && b->unit && strcmp(a->unit, b->unit) == 0));
+}
+
+/* The layout a profile's writers write a record in (N8: implib writes the
+ * short layout its profile lists): a command with a layout of its own under
+ * the profile in the version is written in the first such layout. A record in
+ * a longer layout that starts with the same fields is cut to it when the
+ * fields cut off are reserved and zero. Returns the size to keep (nb when nothing changes), or -1 when the
+ * record cannot be written so (the profile's reader could not read it). */
+static long cbf__profile_size(int version, int code, const uint8_t *args, size_t nb, int profile)
+{
+    int cmd = cbf__cmd_index(code), have = cbf_args_layout(code, version, nb), own = -1, k;
+    size_t i;
+    const cbf__layout *L, *H;
+    if (cmd < 0 || have == CBF_LAYOUT__NONE || version < 0 || version >= CBF__NVERSIONS)
+        return (long)nb;
+    for (k = 0; k < cbf__commands[cmd].nlayouts && own < 0; k++) {
+        int lay = cbf__commands[cmd].first_layout + k;
+        if ((cbf__layouts[lay].versions & CBF__VBIT(version)) && (cbf__layouts[lay].profiles & CBF__PBIT(profile)))
+            own = lay;
+    }
+    if (own < 0 || (cbf__layouts[have].profiles & CBF__PBIT(profile)))
+        return (long)nb;
+    L = &cbf__layouts[own];
+    H = &cbf__layouts[have];
+    if (L->nargs > H->nargs || L->size > H->size)
+        return -1;
+    for (i = 0; i < L->nargs; i++)
+        if (!cbf__same_field(&cbf__args[L->first_arg + i], &cbf__args[H->first_arg + i]))
+            return -1;
+    for (i = L->nargs; i < H->nargs; i++)
+        if (!(cbf__args[H->first_arg + i].flags & CBF__F_RESERVED))
+            return -1;
+    for (i = L->size; i < nb; i++)
+        if (args[i] != 0u)
+            return -1;
+    return (long)L->size;
+}
+
 
 int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs)
 {
@@ -2751,12 +2772,27 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         /* records appended with cbf_encode_record_stored pass the same test */
         const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
         const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+        const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
         size_t pos = CBF_HEADER_SIZE;
         while (f_code && f_nb && pos < w->records_end) {
-            const uint8_t *p = w->buf + pos;
+            uint8_t *p = w->buf + pos;
             int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
             size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
-            int layout = cbf_args_layout(code, w->version, nb);
+            long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
+            int layout;
+            if (keep < 0)
+                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+            if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
+                size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
+                memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
+                w->len -= cut;
+                w->records_end -= cut;
+                nb = (size_t)keep;
+                cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
+                if (f_ck)
+                    cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
+            }
+            layout = cbf_args_layout(code, w->version, nb);
             if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
                 return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
             pos += CBF_RECORD_HEAD_SIZE + nb;
@@ -3255,6 +3291,7 @@ typedef struct cbf__vctx {
     double pos[3];
     int ori_ok;
     double ori[3];
+    double ori_tan2; /* tan^2 of just under the orientation tolerance (0: always compute the angle) */
     int shape_open;
     long shape_rec;
     size_t shape_off;
@@ -3380,51 +3417,70 @@ static void cbf__check_descriptor_word(cbf__vctx *v)
 
 static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-/* A float vector (3) or scalar argument as double: 1 when finite, -1 when not, 0 when the
- * layout has no such float argument. Each element's bytes are read once, for the finite
- * test and the value alike. */
-static int cbf__vec(const uint8_t *args, int layout, int idx, double out[3])
+/* The straight-line checks below are called from one generated function per
+ * layout (cbf__layout_checks_*) with the layout's offsets as constants; forced
+ * inline, each folds to a few loads and compares. An offset of -1 means the
+ * layout has no such argument. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__INLINE static inline __attribute__((always_inline))
+#else
+#define CBF__INLINE static inline
+#endif
+
+/* Whether the n binary32 elements at p are all finite. */
+CBF__INLINE int cbf__finite_at(const uint8_t *p, unsigned n)
 {
-    const cbf_field_info *f = cbf__layout_arg(layout, idx);
-    const uint8_t *p;
     unsigned i;
     int finite = 1;
-    if (!f || f->kind != CBF__K_FLOAT || f->count != 3u)
+    for (i = 0; i < n; i++)
+        finite &= cbf__bits_finite(cbf__get_u(p + 4u * i, 4));
+    return finite;
+}
+
+/* The 3-element float argument at args + off as doubles: 1 when every element
+ * is finite, else 0 (also when off < 0). Each element is read once. */
+CBF__INLINE int cbf__vec_at(const uint8_t *args, long off, double out[3])
+{
+    unsigned i;
+    int finite = 1;
+    if (off < 0)
         return 0;
-    p = args + f->offset;
     for (i = 0; i < 3u; i++) {
-        uint32_t u = cbf__get_u(p + 4u * i, 4);
+        uint32_t u = cbf__get_u(args + off + 4u * i, 4);
         finite &= cbf__bits_finite(u);
         out[i] = (double)cbf__bits_f4(u);
     }
-    return finite ? 1 : -1;
+    return finite;
 }
 
-static int cbf__scalar(const uint8_t *args, int layout, int idx, double *out)
+/* A float argument of n elements: its first as double; 1 when all are finite. */
+CBF__INLINE int cbf__scalar_at(const uint8_t *args, long off, unsigned n, double *out)
 {
-    const cbf_field_info *f = cbf__layout_arg(layout, idx);
-    if (!f || f->kind != CBF__K_FLOAT)
+    unsigned i;
+    int finite = 1;
+    *out = 0.0;
+    if (off < 0)
         return 0;
-    return cbf__ffirst(args, f, out) ? 1 : -1;
+    for (i = 0; i < n; i++) {
+        uint32_t u = cbf__get_u(args + off + 4u * i, 4);
+        finite &= cbf__bits_finite(u);
+        if (i == 0u)
+            *out = (double)cbf__bits_f4(u);
+    }
+    return finite;
 }
 
-/* 6.4.5: continuity of motion commands (M1). A point motion sets the current
- * position; every other motion command is compared with it when its start is
- * finite, then moves it to its end (none when a value is not finite or the
- * normal is zero). Double precision, operations in the reference order. */
-static int cbf__motion_end(int kind, int layout, const uint8_t *args, double end[3])
+/* Where a circle or helix ends (none when a value is not finite or the normal
+ * is zero). Double precision, operations in the reference order. */
+static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
+                        unsigned n_deg, long o_len, unsigned n_len, double end[3])
 {
-    const cbf__layout *L = &cbf__layouts[layout];
     double start[3], center[3], normal[3], k[3], p[3], kxv[3], rot[3], deg = 0.0, length = 0.0, c, s, th, kdv, nn;
     int i;
-    if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE)
-        return cbf__vec(args, layout, L->motion[CBF__M_END], end) > 0;
-    if (cbf__vec(args, layout, L->motion[CBF__M_START], start) <= 0
-        || cbf__vec(args, layout, L->motion[CBF__M_CENTER], center) <= 0
-        || cbf__vec(args, layout, L->motion[CBF__M_NORMAL], normal) <= 0
-        || cbf__scalar(args, layout, L->motion[CBF__M_DEGREES], &deg) <= 0)
+    if (!cbf__vec_at(args, o_start, start) || !cbf__vec_at(args, o_center, center)
+        || !cbf__vec_at(args, o_normal, normal) || !cbf__scalar_at(args, o_deg, n_deg, &deg))
         return 0;
-    if (kind == CBF__MOTION_HELIX && cbf__scalar(args, layout, L->motion[CBF__M_LENGTH], &length) <= 0)
+    if (kind == CBF__MOTION_HELIX && !cbf__scalar_at(args, o_len, n_len, &length))
         return 0;
     nn = cbf__norm(normal);
     if (nn == 0.0)
@@ -3447,26 +3503,30 @@ static int cbf__motion_end(int kind, int layout, const uint8_t *args, double end
     return 1;
 }
 
-static void cbf__continuity(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+/* 6.4.5: continuity of motion commands (M1). A point motion sets the current
+ * position; every other motion command is compared with it when its start is
+ * finite, then moves it to its end (none when a value is not finite or the
+ * normal is zero). */
+CBF__INLINE void cbf__continuity_at(cbf__vctx *v, int cmd, int kind, const uint8_t *args, long rec, size_t args_off,
+                                    long o_start, long o_end, long o_center, long o_normal, long o_deg,
+                                    unsigned n_deg, long o_len, unsigned n_len)
 {
-    const cbf__layout *L = &cbf__layouts[layout];
-    int kind = cbf__commands[cmd].motion, i;
     double start[3], end[3];
-    if (kind == CBF__MOTION_NONE)
-        return;
-    if (kind != CBF__MOTION_POINT && v->pos_ok && cbf__vec(args, layout, L->motion[CBF__M_START], start) > 0) {
+    int i;
+    if (kind != CBF__MOTION_POINT && v->pos_ok && cbf__vec_at(args, o_start, start)) {
         double d[3], dist;
         for (i = 0; i < 3; i++)
             d[i] = start[i] - v->pos[i];
         dist = cbf__norm(d);
-        if (dist > cbf__tol_position) {
-            const cbf_field_info *f = cbf__layout_arg(layout, L->motion[CBF__M_START]);
-            cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + f->offset,
+        if (dist > cbf__tol_position)
+            cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + (size_t)o_start,
                       "%s starts %.6g mm from the current position (%.9g, %.9g, %.9g)",
                       cbf__commands[cmd].name, dist, v->pos[0], v->pos[1], v->pos[2]);
-        }
     }
-    v->pos_ok = cbf__motion_end(kind, layout, args, end);
+    if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE)
+        v->pos_ok = cbf__vec_at(args, o_end, end);
+    else
+        v->pos_ok = cbf__arc_end(kind, args, o_start, o_center, o_normal, o_deg, n_deg, o_len, n_len, end);
     if (v->pos_ok)
         for (i = 0; i < 3; i++)
             v->pos[i] = end[i];
@@ -3474,26 +3534,28 @@ static void cbf__continuity(cbf__vctx *v, int cmd, int layout, const uint8_t *ar
 
 /* orientation_jump (D2): the angle atan2(|a x b|, a . b) between a path
  * command's start and the current orientation (the last set/end vector that
- * was finite and non-zero). */
-static void cbf__orientation(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+ * was finite and non-zero). atan2 runs only when the angle may exceed the
+ * tolerance: below tan^2 of a thousandth less than it (ori_tan2), it cannot. */
+CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, const uint8_t *args, long rec, size_t args_off,
+                                     long o_start, long o_end)
 {
-    const cbf__layout *L = &cbf__layouts[layout];
-    int kind = cbf__commands[cmd].orient, i;
     double a[3], b[3];
-    if (kind == CBF__ORIENT_NONE)
-        return;
-    if (kind == CBF__ORIENT_PATH && v->ori_ok && cbf__vec(args, layout, L->orient[CBF__O_START], a) > 0
-        && cbf__norm(a) > 0.0) {
-        double cx[3], ang;
+    int i;
+    if (kind == CBF__ORIENT_PATH && v->ori_ok && cbf__vec_at(args, o_start, a) && cbf__norm(a) > 0.0) {
+        double cx[3], dot, c2;
         cx[0] = a[1] * v->ori[2] - a[2] * v->ori[1];
         cx[1] = a[2] * v->ori[0] - a[0] * v->ori[2];
         cx[2] = a[0] * v->ori[1] - a[1] * v->ori[0];
-        ang = atan2(cbf__norm(cx), a[0] * v->ori[0] + a[1] * v->ori[1] + a[2] * v->ori[2]) * (180.0 / CBF__PI);
-        if (ang > cbf__tol_orientation)
-            cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g degrees from the current orientation",
-                      cbf__commands[cmd].name, ang);
+        dot = a[0] * v->ori[0] + a[1] * v->ori[1] + a[2] * v->ori[2];
+        c2 = cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2];
+        if (!(dot > 0.0 && c2 < dot * dot * v->ori_tan2)) {
+            double ang = atan2(cbf__norm(cx), dot) * (180.0 / CBF__PI);
+            if (ang > cbf__tol_orientation)
+                cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g degrees from the current orientation",
+                          cbf__commands[cmd].name, ang);
+        }
     }
-    v->ori_ok = cbf__vec(args, layout, L->orient[CBF__O_END], b) > 0 && cbf__norm(b) > 0.0;
+    v->ori_ok = cbf__vec_at(args, o_end, b) && cbf__norm(b) > 0.0;
     if (v->ori_ok)
         for (i = 0; i < 3; i++)
             v->ori[i] = b[i];
@@ -3587,108 +3649,569 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
     }
 }
 
-/* Checks with targets: positive, nonzero_vector, range, nondecreasing, ordered. */
-static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+/* A check with targets on one float argument f of the record: positive,
+ * nonzero_vector, range, nondecreasing (t: the target, for the previous value).
+ * Nothing is said about a value that is not finite. */
+CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const uint8_t *args,
+                                long rec, size_t args_off)
 {
-    size_t j;
-    for (j = cbf__commands[cmd].first_ct; j < cbf__commands[cmd].first_ct + cbf__commands[cmd].n_ct; j++) {
-        int ci = cbf__ctargets[j].check;
-        const cbf__check *ch = &cbf__checks[ci];
-        size_t t = cbf__ctargets[j].target;
-        {
-            const cbf__target *tg = &cbf__targets[t];
-            size_t a;
-            if (ch->kind == CBF__KIND_ORDERED) {
-                double prev = 0.0;
-                int ok = 1, bad = 0;
-                for (a = 0; a < tg->n; a++) {
-                    const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
-                    double x;
-                    if (!f || f->kind != CBF__K_FLOAT || !cbf__ffirst(args, f, &x)) { ok = 0; break; }
-                    if (a > 0 && x < prev)
-                        bad = 1;
-                    prev = x;
-                }
-                if (ok && bad)
-                    cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order",
-                             cbf__commands[cmd].name);
-                continue;
-            }
-            for (a = 0; a < tg->n; a++) {
-                const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
-                double x = 0.0;
-                unsigned i;
-                int any_le = 0, all_zero = 1, finite = 1;
-                if (!f || f->kind != CBF__K_FLOAT)
-                    continue;
-                for (i = 0; i < f->count; i++) { /* each element read once */
-                    uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
-                    double y = (double)cbf__bits_f4(u);
-                    finite &= cbf__bits_finite(u);
-                    if (i == 0u) x = y;
-                    if (y <= 0.0) any_le = 1;
-                    if (y != 0.0) all_zero = 0;
-                }
-                if (!finite)
-                    continue;
-                switch (ch->kind) {
-                case CBF__KIND_POSITIVE:
-                    if (any_le)
-                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, not > 0",
-                                 cbf__commands[cmd].name, f->name, x);
-                    break;
-                case CBF__KIND_NONZERO_VECTOR:
-                    if (all_zero)
-                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s has zero length",
-                                 cbf__commands[cmd].name, f->name);
-                    break;
-                case CBF__KIND_RANGE:
-                    if ((ch->has_min && x < ch->min) || (ch->has_max && x > ch->max))
-                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, outside %.9g..%.9g",
-                                 cbf__commands[cmd].name, f->name, x, ch->min, ch->max);
-                    break;
-                case CBF__KIND_NONDECREASING:
-                    if (v->nd_ok[t] && x < v->nd_prev[t])
-                        cbf__say(v, ci, rec, args_off + f->offset, "%s %s falls from %.9g to %.9g",
-                                 cbf__commands[cmd].name, f->name, v->nd_prev[t], x);
-                    v->nd_ok[t] = 1;
-                    v->nd_prev[t] = x;
-                    break;
-                default:
-                    break;
-                }
-            }
-        }
+    const cbf__check *ch = &cbf__checks[ci];
+    double x = 0.0;
+    unsigned i;
+    int any_le = 0, all_zero = 1, finite = 1;
+    for (i = 0; i < f->count; i++) { /* each element read once */
+        uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
+        double y = (double)cbf__bits_f4(u);
+        finite &= cbf__bits_finite(u);
+        if (i == 0u) x = y;
+        if (y <= 0.0) any_le = 1;
+        if (y != 0.0) all_zero = 0;
+    }
+    if (!finite)
+        return;
+    switch (ch->kind) {
+    case CBF__KIND_POSITIVE:
+        if (any_le)
+            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, not > 0", cbf__commands[cmd].name, f->name, x);
+        break;
+    case CBF__KIND_NONZERO_VECTOR:
+        if (all_zero)
+            cbf__say(v, ci, rec, args_off + f->offset, "%s %s has zero length", cbf__commands[cmd].name, f->name);
+        break;
+    case CBF__KIND_RANGE:
+        if ((ch->has_min && x < ch->min) || (ch->has_max && x > ch->max))
+            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, outside %.9g..%.9g", cbf__commands[cmd].name,
+                     f->name, x, ch->min, ch->max);
+        break;
+    case CBF__KIND_NONDECREASING:
+        if (v->nd_ok[t] && x < v->nd_prev[t])
+            cbf__say(v, ci, rec, args_off + f->offset, "%s %s falls from %.9g to %.9g", cbf__commands[cmd].name,
+                     f->name, v->nd_prev[t], x);
+        v->nd_ok[t] = 1;
+        v->nd_prev[t] = x;
+        break;
+    default:
+        break;
     }
 }
 
-static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
+/* ordered: the target's arguments, all finite, are in non-decreasing order. */
+static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
+                         size_t args_off)
 {
-    const cbf__layout *L = &cbf__layouts[layout];
-    size_t args_off = off + CBF_RECORD_HEAD_SIZE, i;
-    for (i = 0; i < L->nargs; i++) {
-        const cbf_field_info *f = &cbf__args[L->first_arg + i];
-        if (f->kind == CBF__K_FLOAT && !cbf__ffinite(args, f))
-            cbf__each(v, CBF__KIND_FINITE, rec, args_off + f->offset, "%s %s is not finite",
-                      cbf__commands[cmd].name, f->name);
-        if (f->kind == CBF__K_STRING)
-            cbf__check_string(v, f, args, args_off, rec);
+    const cbf__target *tg = &cbf__targets[t];
+    double prev = 0.0;
+    int bad = 0;
+    size_t a;
+    for (a = 0; a < tg->n; a++) {
+        const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
+        double x;
+        if (!f || f->kind != CBF__K_FLOAT || !cbf__ffirst(args, f, &x))
+            return;
+        if (a > 0 && x < prev)
+            bad = 1;
+        prev = x;
     }
-    cbf__check_targets(v, cmd, layout, args, rec, args_off);
-    if (cbf__commands[cmd].cutter)
-        cbf__cutter(v, layout, args, rec, args_off);
-    cbf__continuity(v, cmd, layout, args, rec, args_off);
-    cbf__orientation(v, cmd, layout, args, rec, args_off);
-    cbf__shape(v, cmd, layout, args, rec, off);
+    if (bad)
+        cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
 }
+
+/* ---- validation: the record checks of each layout, and cbf_validate ---------
+ * The checks of a record whose arguments decode, one function a layout, in a
+ * fixed order: finite floats and strings (argument order), the checks with
+ * targets (check order), the cutter table, continuity, orientation, shapes. */
+/* CHECKPOINT: 32 argument bytes */
+static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 0; /* CHECKPOINT in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[0], a, ao, rec);
+    if (!cbf__finite_at(a + 16, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "recovery_point");
+    if (!cbf__finite_at(a + 28, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s %s is not finite", cbf__commands[cmd].name, "completion");
+    cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_range: CHECKPOINT completion */
+    cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
+}
+
+/* CHECKPOINT_V1: 16 argument bytes */
+static void cbf__layout_checks_checkpoint_v1(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[3], a, ao, rec);
+}
+
+/* CUTTER: 32 argument bytes */
+static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 1; /* CUTTER in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[4], a, ao, rec);
+    if (!cbf__finite_at(a + 16, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+    if (!cbf__finite_at(a + 20, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
+    if (!cbf__finite_at(a + 24, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "head_length");
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__cutter(v, CBF_LAYOUT_CUTTER, a, rec, ao);
+}
+
+/* CUTTER_V1: 32 argument bytes */
+static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 1; /* CUTTER in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[9], a, ao, rec);
+    if (!cbf__finite_at(a + 16, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+    if (!cbf__finite_at(a + 20, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__cutter(v, CBF_LAYOUT_CUTTER_V1, a, rec, ao);
+}
+
+/* ORIENT: 24 argument bytes */
+static void cbf__layout_checks_orient(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 2; /* ORIENT in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "approach");
+    cbf__orientation_at(v, cmd, CBF__ORIENT_SET, a, rec, ao, -1, 0);
+}
+
+/* ORIENT5B: 24 argument bytes */
+static void cbf__layout_checks_orient5b(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 3; /* ORIENT5B in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_approach");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_approach");
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 0, 12);
+}
+
+/* PHASE: 16 argument bytes */
+static void cbf__layout_checks_phase(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[17], a, ao, rec);
+}
+
+/* ENABLE_SKIP: 16 argument bytes */
+static void cbf__layout_checks_enable_skip(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[18], a, ao, rec);
+}
+
+/* STARTSHAPE: 6 argument bytes */
+static void cbf__layout_checks_startshape(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 6; /* STARTSHAPE in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[19], a, ao, rec);
+    cbf__shape(v, cmd, CBF_LAYOUT_STARTSHAPE, a, rec, off);
+}
+
+/* ENDSHAPE: 6 argument bytes */
+static void cbf__layout_checks_endshape(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 7; /* ENDSHAPE in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[21], a, ao, rec);
+    cbf__shape(v, cmd, CBF_LAYOUT_ENDSHAPE, a, rec, off);
+}
+
+/* DECEL_OFF: 0 argument bytes */
+static void cbf__layout_checks_decel_off(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    (void)off;
+    (void)v; (void)a; (void)rec;
+}
+
+/* DECEL_ON: 0 argument bytes */
+static void cbf__layout_checks_decel_on(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    (void)off;
+    (void)v; (void)a; (void)rec;
+}
+
+/* POINT: 12 argument bytes */
+static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 10; /* POINT in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
+    cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, -1, 0, -1, -1, -1, 0u, -1, 0u);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* LINE: 24 argument bytes */
+static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 11; /* LINE in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* LINE5B: 48 argument bytes */
+static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 12; /* LINE5B in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+    if (!cbf__finite_at(a + 36, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 24, 36);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* ARC: 36 argument bytes */
+static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 13; /* ARC in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "middle");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* ARC5B: 60 argument bytes */
+static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 14; /* ARC5B in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "mid_pos");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
+    if (!cbf__finite_at(a + 36, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+    if (!cbf__finite_at(a + 48, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 36, 48);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* CIRCLE: 40 argument bytes */
+static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 15; /* CIRCLE in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+    if (!cbf__finite_at(a + 36, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+    cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], a, rec, ao); /* normal_nonzero: CIRCLE normal */
+    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* CIRCLE5B: 64 argument bytes */
+static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 16; /* CIRCLE5B in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+    if (!cbf__finite_at(a + 36, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+    if (!cbf__finite_at(a + 40, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+    if (!cbf__finite_at(a + 52, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], a, rec, ao); /* normal_nonzero: CIRCLE5B normal */
+    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 40, 52);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* HELIX: 44 argument bytes */
+static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 17; /* HELIX in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+    if (!cbf__finite_at(a + 36, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+    if (!cbf__finite_at(a + 40, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+    cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], a, rec, ao); /* normal_nonzero: HELIX normal */
+    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* HELIX5B: 68 argument bytes */
+static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 18; /* HELIX5B in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+    if (!cbf__finite_at(a + 12, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+    if (!cbf__finite_at(a + 24, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+    if (!cbf__finite_at(a + 36, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+    if (!cbf__finite_at(a + 40, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+    if (!cbf__finite_at(a + 44, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 44u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+    if (!cbf__finite_at(a + 56, 3u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], a, rec, ao); /* normal_nonzero: HELIX5B normal */
+    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 44, 56);
+    v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
+}
+
+/* SPEED: 4 argument bytes */
+static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 19; /* SPEED in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
+    cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], a, rec, ao); /* speed_positive: SPEED speed */
+}
+
+/* ACCEL: 8 argument bytes */
+static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 20; /* ACCEL in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "accel");
+    if (!cbf__finite_at(a + 4, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "decel");
+    cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], a, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], a, rec, ao); /* accel_positive: ACCEL accel decel */
+}
+
+/* CUTTER_ON: 0 argument bytes */
+static void cbf__layout_checks_cutter_on(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    (void)off;
+    (void)v; (void)a; (void)rec;
+}
+
+/* CUTTER_OFF: 0 argument bytes */
+static void cbf__layout_checks_cutter_off(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    (void)off;
+    (void)v; (void)a; (void)rec;
+}
+
+/* GUIDE: 32 argument bytes */
+static void cbf__layout_checks_guide(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[63], a, ao, rec);
+}
+
+/* FCPARMS: 16 argument bytes */
+static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const int cmd = 24; /* FCPARMS in cbf__commands */
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    if (!cbf__finite_at(a + 0, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "nom_speed");
+    if (!cbf__finite_at(a + 4, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "max_speed");
+    if (!cbf__finite_at(a + 8, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 8u, "%s %s is not finite", cbf__commands[cmd].name, "min_speed");
+    if (!cbf__finite_at(a + 12, 1u))
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "max_force");
+    cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
+}
+
+/* VERSION: 32 argument bytes */
+static void cbf__layout_checks_version(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[68], a, ao, rec);
+    cbf__check_string(v, &cbf__args[69], a, ao, rec);
+}
+
+/* VERSION_IMPLIB: 16 argument bytes */
+static void cbf__layout_checks_version_implib(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[71], a, ao, rec);
+    cbf__check_string(v, &cbf__args[72], a, ao, rec);
+}
+
+/* COMMENT: 40 argument bytes */
+static void cbf__layout_checks_comment(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
+{
+    const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    cbf__check_string(v, &cbf__args[73], a, ao, rec);
+}
+
+/* The generated checks of a record's layout. */
+static void cbf__decoded_checks(cbf__vctx *v, int layout, const uint8_t *args, long rec, size_t off)
+{
+    switch (layout) {
+    case CBF_LAYOUT_CHECKPOINT: cbf__layout_checks_checkpoint(v, args, rec, off); break;
+    case CBF_LAYOUT_CHECKPOINT_V1: cbf__layout_checks_checkpoint_v1(v, args, rec, off); break;
+    case CBF_LAYOUT_CUTTER: cbf__layout_checks_cutter(v, args, rec, off); break;
+    case CBF_LAYOUT_CUTTER_V1: cbf__layout_checks_cutter_v1(v, args, rec, off); break;
+    case CBF_LAYOUT_ORIENT: cbf__layout_checks_orient(v, args, rec, off); break;
+    case CBF_LAYOUT_ORIENT5B: cbf__layout_checks_orient5b(v, args, rec, off); break;
+    case CBF_LAYOUT_PHASE: cbf__layout_checks_phase(v, args, rec, off); break;
+    case CBF_LAYOUT_ENABLE_SKIP: cbf__layout_checks_enable_skip(v, args, rec, off); break;
+    case CBF_LAYOUT_STARTSHAPE: cbf__layout_checks_startshape(v, args, rec, off); break;
+    case CBF_LAYOUT_ENDSHAPE: cbf__layout_checks_endshape(v, args, rec, off); break;
+    case CBF_LAYOUT_DECEL_OFF: cbf__layout_checks_decel_off(v, args, rec, off); break;
+    case CBF_LAYOUT_DECEL_ON: cbf__layout_checks_decel_on(v, args, rec, off); break;
+    case CBF_LAYOUT_POINT: cbf__layout_checks_point(v, args, rec, off); break;
+    case CBF_LAYOUT_LINE: cbf__layout_checks_line(v, args, rec, off); break;
+    case CBF_LAYOUT_LINE5B: cbf__layout_checks_line5b(v, args, rec, off); break;
+    case CBF_LAYOUT_ARC: cbf__layout_checks_arc(v, args, rec, off); break;
+    case CBF_LAYOUT_ARC5B: cbf__layout_checks_arc5b(v, args, rec, off); break;
+    case CBF_LAYOUT_CIRCLE: cbf__layout_checks_circle(v, args, rec, off); break;
+    case CBF_LAYOUT_CIRCLE5B: cbf__layout_checks_circle5b(v, args, rec, off); break;
+    case CBF_LAYOUT_HELIX: cbf__layout_checks_helix(v, args, rec, off); break;
+    case CBF_LAYOUT_HELIX5B: cbf__layout_checks_helix5b(v, args, rec, off); break;
+    case CBF_LAYOUT_SPEED: cbf__layout_checks_speed(v, args, rec, off); break;
+    case CBF_LAYOUT_ACCEL: cbf__layout_checks_accel(v, args, rec, off); break;
+    case CBF_LAYOUT_CUTTER_ON: cbf__layout_checks_cutter_on(v, args, rec, off); break;
+    case CBF_LAYOUT_CUTTER_OFF: cbf__layout_checks_cutter_off(v, args, rec, off); break;
+    case CBF_LAYOUT_GUIDE: cbf__layout_checks_guide(v, args, rec, off); break;
+    case CBF_LAYOUT_FCPARMS: cbf__layout_checks_fcparms(v, args, rec, off); break;
+    case CBF_LAYOUT_VERSION: cbf__layout_checks_version(v, args, rec, off); break;
+    case CBF_LAYOUT_VERSION_IMPLIB: cbf__layout_checks_version_implib(v, args, rec, off); break;
+    case CBF_LAYOUT_COMMENT: cbf__layout_checks_comment(v, args, rec, off); break;
+    default: break;
+    }
+}
+
+/* cbf__sum for a short n (at most 1024 bytes: the 16-bit lanes cannot overflow), inlined
+ * where n is a constant: a record's head, a layout's arguments. */
+CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
+{
+    const uint64_t lo = 0x00FF00FF00FF00FFull;
+    uint64_t lanes = 0;
+    uint32_t acc = 0;
+    size_t i = 0;
+    for (; n - i >= 8u; i += 8u) {
+        uint64_t x;
+        memcpy(&x, p + i, sizeof x);
+        lanes += (x & lo) + ((x >> 8) & lo);
+    }
+    lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
+    acc = (uint32_t)(lanes & 0xFFFFFFFFull) + (uint32_t)(lanes >> 32);
+    for (; i < n; i++)
+        acc += p[i];
+    return acc;
+}
+
+/* The byte sum of a record's arguments, with the layout's size as a constant
+ * (nb when the arguments have no layout). */
+static uint32_t cbf__args_sum(int layout, const uint8_t *args, size_t nb)
+{
+    switch (layout) {
+    case CBF_LAYOUT_CHECKPOINT: return cbf__sum_fixed(args, 32u);
+    case CBF_LAYOUT_CHECKPOINT_V1: return cbf__sum_fixed(args, 16u);
+    case CBF_LAYOUT_CUTTER: return cbf__sum_fixed(args, 32u);
+    case CBF_LAYOUT_CUTTER_V1: return cbf__sum_fixed(args, 32u);
+    case CBF_LAYOUT_ORIENT: return cbf__sum_fixed(args, 24u);
+    case CBF_LAYOUT_ORIENT5B: return cbf__sum_fixed(args, 24u);
+    case CBF_LAYOUT_PHASE: return cbf__sum_fixed(args, 16u);
+    case CBF_LAYOUT_ENABLE_SKIP: return cbf__sum_fixed(args, 16u);
+    case CBF_LAYOUT_STARTSHAPE: return cbf__sum_fixed(args, 6u);
+    case CBF_LAYOUT_ENDSHAPE: return cbf__sum_fixed(args, 6u);
+    case CBF_LAYOUT_DECEL_OFF: return cbf__sum_fixed(args, 0u);
+    case CBF_LAYOUT_DECEL_ON: return cbf__sum_fixed(args, 0u);
+    case CBF_LAYOUT_POINT: return cbf__sum_fixed(args, 12u);
+    case CBF_LAYOUT_LINE: return cbf__sum_fixed(args, 24u);
+    case CBF_LAYOUT_LINE5B: return cbf__sum_fixed(args, 48u);
+    case CBF_LAYOUT_ARC: return cbf__sum_fixed(args, 36u);
+    case CBF_LAYOUT_ARC5B: return cbf__sum_fixed(args, 60u);
+    case CBF_LAYOUT_CIRCLE: return cbf__sum_fixed(args, 40u);
+    case CBF_LAYOUT_CIRCLE5B: return cbf__sum_fixed(args, 64u);
+    case CBF_LAYOUT_HELIX: return cbf__sum_fixed(args, 44u);
+    case CBF_LAYOUT_HELIX5B: return cbf__sum_fixed(args, 68u);
+    case CBF_LAYOUT_SPEED: return cbf__sum_fixed(args, 4u);
+    case CBF_LAYOUT_ACCEL: return cbf__sum_fixed(args, 8u);
+    case CBF_LAYOUT_CUTTER_ON: return cbf__sum_fixed(args, 0u);
+    case CBF_LAYOUT_CUTTER_OFF: return cbf__sum_fixed(args, 0u);
+    case CBF_LAYOUT_GUIDE: return cbf__sum_fixed(args, 32u);
+    case CBF_LAYOUT_FCPARMS: return cbf__sum_fixed(args, 16u);
+    case CBF_LAYOUT_VERSION: return cbf__sum_fixed(args, 32u);
+    case CBF_LAYOUT_VERSION_IMPLIB: return cbf__sum_fixed(args, 16u);
+    case CBF_LAYOUT_COMMENT: return cbf__sum_fixed(args, 40u);
+    default: return cbf__sum(args, nb);
+    }
+}
+
+/* Whether the profile's file checksum is the plain sum of every byte from a
+ * start inside the header to the end of the file: the record pass then adds it
+ * up as it goes (each record's head and argument sums), with no second pass. */
+static int cbf__file_sum_folds(int profile, size_t *start)
+{
+    int cov = cbf__profiles[profile].file[0];
+    const cbf__segment *seg;
+    if (cov < 0 || cbf__profiles[profile].file_alg != CBF__ALG_SUM || cbf__coverages[cov].n != 1u)
+        return 0;
+    seg = &cbf__segments[cbf__coverages[cov].first];
+    if (seg->region != CBF__REGION_FILE || seg->start > CBF_HEADER_SIZE)
+        return 0;
+    *start = seg->start;
+    return 1;
+}
+
+/* Per command: the argument size last seen and what it gave (records of one
+ * command almost always share one size). */
+typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
 
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user)
 {
     cbf__vctx v;
     cbf_header h;
-    size_t pos, i;
+    size_t pos, i, fold_start = 0;
     unsigned long nrec = 0;
-    int profile = opt ? opt->profile : CBF_PROFILE_DEFAULT;
+    uint32_t fold = 0u;
+    int profile = opt ? opt->profile : CBF_PROFILE_DEFAULT, folds;
     if ((!buf && len) || profile < 0 || profile >= CBF_PROFILE__COUNT)
         return CBF_ERR_ARGUMENT;
     memset(&v, 0, sizeof v);
@@ -3697,6 +4220,9 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     v.opt = opt;
     v.fn = fn;
     v.user = user;
+    /* below this tan^2 the orientation angle is under its tolerance (with a margin of 1/1000) */
+    v.ori_tan2 = cbf__tol_orientation > 0.0 && cbf__tol_orientation < 45.0
+                 ? pow(tan(cbf__tol_orientation * 0.999 * (CBF__PI / 180.0)), 2.0) : 0.0;
     if (len < CBF_HEADER_SIZE || !buf) {
         cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
                   (unsigned long)len, CBF_HEADER_SIZE);
@@ -3738,93 +4264,82 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
 
     /* records, framed by nb from the header to the end of the file (D1) */
     pos = CBF_HEADER_SIZE;
-    /* the record fields and the argument checksum, looked up once for the loop */
-    const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
-    const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
-    const cbf_field_info *f_copy = cbf__record_field_by_role(CBF_ROLE_CODE_COPY);
-    const cbf_field_info *fs = cbf__record_field_by_role(CBF_ROLE_SEQUENCE);
-    const cbf_field_info *fr = cbf__record_field_by_role(CBF_ROLE_RESERVED);
-    const cbf_field_info *fck = cbf__record_field_by_tag(CBF__CK_ARGS);
     const cbf__ckfield *kck = cbf__ckfield_of(CBF__CK_ARGS);
-    const unsigned long seq_mask = fs && fs->elem < 4u ? ((1ul << (8u * fs->elem)) - 1ul) : 0xFFFFFFFFul;
     /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
-    const int args_sum = kck && fck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
+    const int args_sum = kck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
                          && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
-    const uint32_t args_mask = fck && fck->elem < 4u ? ((1u << (8u * fck->elem)) - 1u) : 0xFFFFFFFFu;
-    /* per command: the argument size last seen, whether it was accepted, its layout */
-    long seen_nb[CBF__NCOMMANDS];
-    int seen_ok[CBF__NCOMMANDS], seen_layout[CBF__NCOMMANDS];
+    folds = args_sum && cbf__file_sum_folds(profile, &fold_start);
+    if (folds)
+        fold = cbf__sum(buf + fold_start, CBF_HEADER_SIZE - fold_start);
+    cbf__seen seen[CBF__NCOMMANDS];
     for (i = 0; i < (size_t)CBF__NCOMMANDS; i++)
-        seen_nb[i] = -1;
+        seen[i].nb = -1;
     while (len - pos >= CBF_RECORD_HEAD_SIZE) {
-        const uint8_t *p = buf + pos;
-        size_t nb = cbf__fld(f_nb, p);
+        const uint8_t *p = buf + pos, *args = p + CBF_RECORD_HEAD_SIZE;
+        size_t nb = cbf__get_u(p + 4u, 1u);
         long rec = (long)nrec;
-        uint32_t code, copy, seq, res;
-        int cmd, layout;
+        uint32_t code, copy, seq, res, asum = 0u;
+        int cmd, layout = CBF_LAYOUT__NONE;
         if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
             break;
-        code = cbf__fld(f_code, p);
-        copy = cbf__fld(f_copy, p);
-        seq = cbf__fld(fs, p);
-        res = cbf__fld(fr, p);
-        {
-            uint32_t want = (uint32_t)(nrec & seq_mask);
-            if (seq != want)
-                cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + (fs ? fs->offset : 0u),
-                          "sequence number %lu, expected %lu", (unsigned long)seq, (unsigned long)want);
-        }
-        if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + (f_copy ? f_copy->offset : 0u), "code 0x%02lx, backup copy 0x%02lx",
-                      (unsigned long)code, (unsigned long)copy);
-        if (fck) {
-            uint32_t want = args_sum ? (cbf__sum(p + CBF_RECORD_HEAD_SIZE, nb) & args_mask)
-                            : kck ? cbf__cover(kck->coverage, kck->alg, fck->elem, NULL, 0, 0, p + CBF_RECORD_HEAD_SIZE, nb)
-                                  : 0u;
-            uint32_t got = cbf__get_u(p + fck->offset, fck->elem);
-            if (got != want)
-                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + fck->offset,
-                          "stored argument checksum %lu, computed %lu", (unsigned long)got,
-                          (unsigned long)want);
-        }
-        if (res != 0u) {
-            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + (fr ? fr->offset : 0u), "reserved byte is 0x%02lx",
-                      (unsigned long)res);
-        }
+        code = cbf__get_u(p + 2u, 1u);
+        copy = cbf__get_u(p + 3u, 1u);
+        seq = cbf__get_u(p + 0u, 2u);
+        res = cbf__get_u(p + 5u, 1u);
         cmd = cbf__cmd_index((int)code);
-        if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + (f_code ? f_code->offset : 0u), "unknown command code 0x%02lx",
-                      (unsigned long)code);
-        } else {
-            int accepted = 0, k, ci;
+        if (cmd >= 0 && seen[cmd].nb != (long)nb) { /* a new size for the command: look its layout up */
+            int k;
+            seen[cmd].nb = (long)nb;
+            seen[cmd].accepted = 0;
+            for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+                int lay = cbf__commands[cmd].candidates[v.eff][k];
+                if (lay < 0)
+                    break;
+                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                    seen[cmd].accepted = 1;
+            }
+            seen[cmd].layout = cbf_args_layout((int)code, v.eff, nb);
             /* availability: the command has no layout for the file's version (fallback included);
              * the finding names the one check that covers this command in this version */
-            ci = cbf__avail_check[cmd][v.eff];
-            if (ci >= 0 && !(cbf__commands[cmd].versions & CBF__VBIT(v.eff)))
-                cbf__say(&v, ci, rec, pos + (f_code ? f_code->offset : 0u), "%s is not available in version %s",
+            seen[cmd].avail = (cbf__commands[cmd].versions & CBF__VBIT(v.eff)) ? -1 : cbf__avail_check[cmd][v.eff];
+        }
+        if (cmd >= 0)
+            layout = seen[cmd].layout;
+        if (args_sum)
+            asum = cbf__args_sum(layout, args, nb);
+        if (folds)
+            fold += cbf__sum_fixed(p, CBF_RECORD_HEAD_SIZE) + asum;
+        if (seq != (uint32_t)(nrec & 0xFFFFu))
+            cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + 0u, "sequence number %lu, expected %lu",
+                      (unsigned long)seq, (unsigned long)(nrec & 0xFFFFu));
+        if (code != copy)
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + 3u, "code 0x%02lx, backup copy 0x%02lx",
+                      (unsigned long)code, (unsigned long)copy);
+        {
+            uint32_t want = args_sum ? (asum & 0xFFFFu)
+                            : kck ? cbf__cover(kck->coverage, kck->alg, 2u, NULL, 0, 0, args, nb)
+                                  : 0u;
+            uint32_t got = cbf__get_u(p + 6u, 2u);
+            if (got != want)
+                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + 6u,
+                          "stored argument checksum %lu, computed %lu", (unsigned long)got, (unsigned long)want);
+        }
+        if (res != 0u)
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + 5u, "reserved byte is 0x%02lx",
+                      (unsigned long)res);
+        if (cmd < 0) {
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + 2u, "unknown command code 0x%02lx",
+                      (unsigned long)code);
+        } else {
+            if (seen[cmd].avail >= 0)
+                cbf__say(&v, seen[cmd].avail, rec, pos + 2u, "%s is not available in version %s",
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
-            if (seen_nb[cmd] == (long)nb) { /* same command and size as last time: same answers */
-                accepted = seen_ok[cmd];
-                layout = seen_layout[cmd];
-            } else {
-                for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
-                    int lay = cbf__commands[cmd].candidates[v.eff][k];
-                    if (lay < 0)
-                        break;
-                    if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
-                        accepted = 1;
-                }
-                layout = cbf_args_layout((int)code, v.eff, nb);
-                seen_nb[cmd] = (long)nb;
-                seen_ok[cmd] = accepted;
-                seen_layout[cmd] = layout;
-            }
-            if (!accepted)
-                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + (f_nb ? f_nb->offset : 0u),
+            if (!seen[cmd].accepted)
+                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + 4u,
                           "%s has %lu argument bytes, no layout of %s has that size",
                           cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
             if (layout != CBF_LAYOUT__NONE)
-                cbf__decoded_checks(&v, cmd, layout, p + CBF_RECORD_HEAD_SIZE, rec, pos);
+                cbf__decoded_checks(&v, layout, args, rec, pos);
         }
         pos += CBF_RECORD_HEAD_SIZE + nb;
         nrec++;
@@ -3857,8 +4372,15 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
             uint32_t got = cbf__get_u(buf + f->offset, f->elem), first = 0u;
             int c, match = 0;
             for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
-                uint32_t want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem,
-                                           buf, len, pos, NULL, 0);
+                uint32_t want;
+                if (c == 0 && folds) { /* the record pass's sum, and the bytes after the last record */
+                    want = fold + cbf__sum(buf + pos, len - pos);
+                    if (f->elem < 4u)
+                        want &= (1u << (8u * f->elem)) - 1u;
+                } else {
+                    want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem,
+                                      buf, len, pos, NULL, 0);
+                }
                 if (c == 0)
                     first = want;
                 if (want == got)

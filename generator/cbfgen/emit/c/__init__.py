@@ -1,12 +1,13 @@
 """C binding emitter: an stb-style single header (generated/c/cbf.h) with the
-command enum (spec 5.2), per-layout argument structs, the spec as C tables and
-a generic table-driven codec and validator; plus the conformance testee, the
+command enum (spec 5.2), per-layout argument structs, the spec as C tables, a
+table-driven codec and a validator whose record checks are straight-line code
+per layout (the offsets as constants); plus the conformance testee, the
 `cbf-c` tool and a libFuzzer harness, all from templates beside this file.
 
 Nothing here names a command, field, offset or check: every identifier and
-number comes from the model. The C engine in templates/cbf.h.j2 knows only
-the model's vocabulary (field kinds and roles, check kinds, motion kinds,
-coverage regions, algorithm kinds).
+number comes from the model. The C engine in templates/cbf.h.j2 (one template
+a section, in templates/cbf/) knows only the model's vocabulary (field kinds
+and roles, check kinds, motion kinds, coverage regions, algorithm kinds).
 """
 
 from __future__ import annotations
@@ -147,6 +148,41 @@ def _field_row(f: Field, struct: str | None, roles: list[str], tags: list[str]) 
 
 def _newest(lay: Layout, order: dict[str, int]) -> int:
     return max(order[v] for v in lay.versions)
+
+
+def _plan_layout(lay: dict[str, Any], cmd: dict[str, Any], checks: list[dict[str, Any]],
+                 targets: list[dict[str, Any]], ctargets: list[dict[str, Any]], tindex: list[list[int]]) -> None:
+    """What a record of this layout checks, as constants: its float and string
+    arguments, the offsets the motion, orientation and shape roles read (-1: none),
+    and its (check, target) pairs with the arguments each names."""
+    args = lay["args"]
+
+    def vec(i: int) -> int:
+        """Offset of a 3-element float argument, -1 when the role has none."""
+        return int(args[i]["offset"]) if i >= 0 and args[i]["kind"] == "FLOAT" and args[i]["count"] == 3 else -1
+
+    def scalar(i: int) -> tuple[int, int]:
+        """(offset, element count) of a float argument, (-1, 0) when the role has none."""
+        return (int(args[i]["offset"]), int(args[i]["count"])) if i >= 0 and args[i]["kind"] == "FLOAT" else (-1, 0)
+
+    m = dict(zip(MOTION_KEYS, lay["motion"], strict=True))
+    o = dict(zip(ORIENT_KEYS, lay["orient"], strict=True))
+    lay["plan"] = {
+        "values": [dict(a, row=lay["first_arg"] + i) for i, a in enumerate(args) if a["kind"] in ("FLOAT", "STRING")],
+        "motion": {"start": vec(m["start"]), "end": vec(m["end"]), "center": vec(m["center"]),
+                   "normal": vec(m["normal"]), "degrees": scalar(m["degrees"]), "length": scalar(m["length"])},
+        "orient": {"start": vec(o["start"]), "end": vec(o["end"])},
+        "targets": [],
+    }
+    for ct in ctargets[cmd["first_ct"]:cmd["first_ct"] + cmd["n_ct"]]:
+        tg = targets[ct["target"]]
+        rows = [tindex[tg["first"] + a][lay["index"]] for a in range(tg["n"])]
+        floats = [lay["first_arg"] + i for i in rows if i >= 0 and args[i]["kind"] == "FLOAT"]
+        kind = checks[ct["check"]]["kind"]
+        # a check finds nothing in a layout without its float arguments (ordered: without all of them)
+        if floats if kind != "KIND_ORDERED" else len(floats) == len(rows):
+            lay["plan"]["targets"].append({"check": ct["check"], "target": ct["target"], "kind": kind,
+                                           "text": ct["text"], "args": floats})
 
 
 def context(spec: Spec) -> dict[str, Any]:
@@ -332,6 +368,11 @@ def context(spec: Spec) -> dict[str, Any]:
                 if targets[ti]["command"] == crow["index"]:
                     ctargets.append({"check": ci, "target": ti, "text": f"{chrow['id']}: {targets[ti]['text']}"})
         crow["n_ct"] = len(ctargets) - crow["first_ct"]
+    # The straight-line validator (templates/cbf/validator.c.j2): per layout, the
+    # constants its checks read, so that each record runs a dozen loads and
+    # compares instead of walking the field tables.
+    for row in layouts:
+        _plan_layout(row, commands[row["command"]], checks, targets, ctargets, tindex)
     max_arg = max([lay["size"] for lay in layouts] + [0])
     groups: dict[str, list[str]] = {
         "command": [str(c["macro"]) for c in commands], "layout": [str(lay["macro"]) for lay in layouts],
@@ -342,8 +383,12 @@ def context(spec: Spec) -> dict[str, Any]:
         dup = sorted({n for n in names if names.count(n) > 1})
         if dup:
             raise ValueError(f"C binding: two {what}s map to the same C name {dup[0]}")
+    head = {f["role"][len("ROLE_"):]: f for f in rec_fields if f["role"] != "ROLE_NONE"}
+    ck_head = next((f for f in rec_fields if f["checksum"] == "CK_ARGS"), None)
     return {
         "spec": spec,
+        "head": head,
+        "head_checksum": ck_head,
         "meta": spec.meta,
         "toolkit_version": TOOLKIT_VERSION,
         "toolkit_license": TOOLKIT_LICENSE,
@@ -376,7 +421,6 @@ def context(spec: Spec) -> dict[str, Any]:
         "checks": checks,
         "targets": targets or [{"command": -1, "first": 0, "n": 0, "text": "none"}],
         "ntargets": len(targets),
-        "ctargets": ctargets or [{"check": -1, "target": 0, "text": "none"}],
         "tnames": tnames or [""],
         "tindex": tindex or [[-1] * len(layouts)],
         "tolerances": [{"macro": macro(k), "value": cfloat(v), "name": k} for k, v in spec.tolerances.items()],
