@@ -174,8 +174,9 @@ enum cbf_header_layout {
 #define CBF_CHECK_CHECKPOINT_FALLING "checkpoint_falling" /**< warning: CHECKPOINT completion does not fall. */
 #define CBF_CHECK_FCPARMS_ORDER "fcparms_order" /**< warning: FCPARMS speeds satisfy min <= nom <= max. */
 #define CBF_CHECK_ORIENTATION_JUMP "orientation_jump" /**< warning: A 5-axis command starts at the current tool orientation. */
+#define CBF_CHECK_MACHINE_LIMITS "machine_limits" /**< warning: Positions lie in the machine's workspace; speeds, accelerations and cutter sizes lie in its ranges. */
 #define CBF_CHECK_SHAPE "shape" /**< error: STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion commands; shapes do not nest. */
-#define CBF_CHECK__COUNT 32
+#define CBF_CHECK__COUNT 33
 
 /* =================================================================== lengths */
 
@@ -912,11 +913,43 @@ typedef struct cbf_cutter {
     double radius;
 } cbf_cutter;
 
+/* ---- machine limits (decision L1, check kind machine_limits; machine.h.j2) ----
+ * A machine bounds every position argument by a box and speeds, accelerations and
+ * cutter sizes by ranges, in the units of the arguments. cbf_options.machine NULL:
+ * the spec's default machine (cbf_machine_default), whose breaches are warnings;
+ * a machine of your own (e.g. read from a machine file): its breaches are errors. */
+#define CBF_MACHINE_MAX_AXES 3
+enum cbf_machine_limit {
+    CBF_MACHINE_WORKSPACE = 0, /**< Every position (a point, a start, end, middle or centre, a recovery point) lies in this box. (mm, axes x y z) */
+    CBF_MACHINE_SPEED = 1, /**< Path speeds (SPEED, and the FCPARMS speeds). (m/s) */
+    CBF_MACHINE_ACCELERATION = 2, /**< Acceleration and deceleration (ACCEL). (m/s^2) */
+    CBF_MACHINE_CUTTER_LENGTH = 3, /**< Cutter length (CUTTER). (mm) */
+    CBF_MACHINE_CUTTER_RADIUS = 4, /**< Cutter radius (CUTTER). (mm) */
+    CBF_MACHINE__COUNT = 5
+};
+/** One limit: min[0]..max[0] for a range; min[i]..max[i] on axis i for a box. */
+typedef struct cbf_machine_range {
+    double min[CBF_MACHINE_MAX_AXES];
+    double max[CBF_MACHINE_MAX_AXES];
+} cbf_machine_range;
+typedef struct cbf_machine {
+    cbf_machine_range limit[CBF_MACHINE__COUNT]; /**< by enum cbf_machine_limit */
+} cbf_machine;
+/** Each limit's name (as in a machine file), unit, and number of axes (0: a range). */
+extern const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT];
+extern const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT];
+extern const int cbf_machine_limit_axes[CBF_MACHINE__COUNT];
+/** The axis names of each box limit (NULL past its axes). */
+extern const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
+/** The spec's default machine (L1): conservative; its breaches are warnings. */
+extern const cbf_machine cbf_machine_default;
+
 typedef struct cbf_options {
     int profile;               /**< enum cbf_profile */
     const char *part_number;   /**< 6.1.1 input, or NULL */
     const cbf_cutter *cutters; /**< 6.1.2 input, or NULL (no table given) */
     size_t ncutters;
+    const cbf_machine *machine; /**< machine_limits input (L1), or NULL: the default machine, warnings */
 } cbf_options;
 
 /* ================================================================ prototypes */
@@ -1101,7 +1134,8 @@ enum {
     CBF__KIND_NONDECREASING,
     CBF__KIND_ORDERED,
     CBF__KIND_ORIENTATION,
-    CBF__KIND_SHAPE
+    CBF__KIND_SHAPE,
+    CBF__KIND_MACHINE_LIMITS
 };
 #define CBF__F_RESERVED CBF_FIELD_RESERVED
 #define CBF__F_TEXT CBF_FIELD_TEXT
@@ -1115,8 +1149,8 @@ enum {
 #define CBF__PAD 0u
 #define CBF__NVERSIONS 4
 #define CBF__NCOMMANDS 27
-#define CBF__NCHECKS 32
-#define CBF__NTARGETS 10
+#define CBF__NCHECKS 33
+#define CBF__NTARGETS 25
 #define CBF__MAX_CANDIDATES 2
 #define CBF__MAX_COVERAGES 1
 #define CBF__PI 3.14159265358979323846
@@ -1350,59 +1384,59 @@ typedef struct cbf__command {
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
     { 0x3C, "CHECKPOINT", 0, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } }, 0, 2 },
+      { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } }, 0, 3 },
     { 0xA3, "CUTTER", 2, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 1,
-      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } }, 2, 1 },
+      { { 3, -1 }, { 2, -1 }, { 2, -1 }, { 2, -1 } }, 3, 3 },
     { 0x58, "ORIENT", 4, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_SET, CBF__SHAPE_NONE, 0,
-      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } }, 3, 0 },
+      { { 4, -1 }, { 4, -1 }, { 4, -1 }, { 4, -1 } }, 6, 0 },
     { 0x59, "ORIENT5B", 5, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } }, 3, 0 },
+      { { 5, -1 }, { 5, -1 }, { 5, -1 }, { 5, -1 } }, 6, 0 },
     { 0x21, "PHASE", 6, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } }, 3, 0 },
+      { { 6, -1 }, { 6, -1 }, { 6, -1 }, { 6, -1 } }, 6, 0 },
     { 0x22, "ENABLE_SKIP", 7, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } }, 3, 0 },
+      { { 7, -1 }, { 7, -1 }, { 7, -1 }, { 7, -1 } }, 6, 0 },
     { 0xC9, "STARTSHAPE", 8, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_START, 0,
-      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } }, 3, 0 },
+      { { 8, -1 }, { 8, -1 }, { 8, -1 }, { 8, -1 } }, 6, 0 },
     { 0x65, "ENDSHAPE", 9, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_END, 0,
-      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } }, 3, 0 },
+      { { 9, -1 }, { 9, -1 }, { 9, -1 }, { 9, -1 } }, 6, 0 },
     { 0x2B, "DECEL_OFF", 10, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } }, 3, 0 },
+      { { 10, -1 }, { 10, -1 }, { 10, -1 }, { 10, -1 } }, 6, 0 },
     { 0x4E, "DECEL_ON", 11, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } }, 3, 0 },
+      { { 11, -1 }, { 11, -1 }, { 11, -1 }, { 11, -1 } }, 6, 0 },
     { 0x33, "POINT", 12, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_POINT, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } }, 3, 0 },
+      { { 12, -1 }, { 12, -1 }, { 12, -1 }, { 12, -1 } }, 6, 1 },
     { 0xB6, "LINE", 13, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } }, 3, 0 },
+      { { 13, -1 }, { 13, -1 }, { 13, -1 }, { 13, -1 } }, 7, 1 },
     { 0xB7, "LINE5B", 14, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } }, 3, 0 },
+      { { 14, -1 }, { 14, -1 }, { 14, -1 }, { 14, -1 } }, 8, 1 },
     { 0x94, "ARC", 15, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } }, 3, 0 },
+      { { 15, -1 }, { 15, -1 }, { 15, -1 }, { 15, -1 } }, 9, 1 },
     { 0x95, "ARC5B", 16, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_LINE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } }, 3, 0 },
+      { { 16, -1 }, { 16, -1 }, { 16, -1 }, { 16, -1 } }, 10, 1 },
     { 0x7A, "CIRCLE", 17, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } }, 3, 1 },
+      { { 17, -1 }, { 17, -1 }, { 17, -1 }, { 17, -1 } }, 11, 2 },
     { 0x7B, "CIRCLE5B", 18, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_CIRCLE, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } }, 4, 1 },
+      { { 18, -1 }, { 18, -1 }, { 18, -1 }, { 18, -1 } }, 13, 2 },
     { 0xE2, "HELIX", 19, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } }, 5, 1 },
+      { { 19, -1 }, { 19, -1 }, { 19, -1 }, { 19, -1 } }, 15, 2 },
     { 0xE3, "HELIX5B", 20, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), CBF__MOTION_HELIX, CBF__ORIENT_PATH, CBF__SHAPE_NONE, 0,
-      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } }, 6, 1 },
+      { { 20, -1 }, { 20, -1 }, { 20, -1 }, { 20, -1 } }, 17, 2 },
     { 0x8B, "SPEED", 21, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } }, 7, 1 },
+      { { 21, -1 }, { 21, -1 }, { 21, -1 }, { 21, -1 } }, 19, 2 },
     { 0x47, "ACCEL", 22, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } }, 8, 1 },
+      { { 22, -1 }, { 22, -1 }, { 22, -1 }, { 22, -1 } }, 21, 2 },
     { 0xBB, "CUTTER_ON", 23, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } }, 9, 0 },
+      { { 23, -1 }, { 23, -1 }, { 23, -1 }, { 23, -1 } }, 23, 0 },
     { 0x66, "CUTTER_OFF", 24, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } }, 9, 0 },
+      { { 24, -1 }, { 24, -1 }, { 24, -1 }, { 24, -1 } }, 23, 0 },
     { 0x11, "GUIDE", 25, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } }, 9, 0 },
+      { { 25, -1 }, { 25, -1 }, { 25, -1 }, { 25, -1 } }, 23, 0 },
     { 0xFC, "FCPARMS", 26, 1, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } }, 9, 1 },
+      { { 26, -1 }, { 26, -1 }, { 26, -1 }, { 26, -1 } }, 23, 2 },
     { 0x55, "VERSION", 27, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } }, 10, 0 },
+      { { 27, 28 }, { 27, 28 }, { 27, 28 }, { 27, 28 } }, 25, 0 },
     { 0x5A, "COMMENT", 29, 1, CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
-      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } }, 10, 0 },
+      { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } }, 25, 0 },
 };
 
 typedef struct cbf__segment {
@@ -1481,7 +1515,7 @@ static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
 };
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
-static const cbf__target cbf__targets[10] = {
+static const cbf__target cbf__targets[25] = {
     { 19, 0, 1 }, /* SPEED speed */
     { 20, 1, 2 }, /* ACCEL accel decel */
     { 1, 3, 2 }, /* CUTTER length radius */
@@ -1492,24 +1526,54 @@ static const cbf__target cbf__targets[10] = {
     { 0, 9, 1 }, /* CHECKPOINT completion */
     { 0, 10, 1 }, /* CHECKPOINT completion */
     { 24, 11, 3 }, /* FCPARMS min_speed nom_speed max_speed */
+    { 0, 14, 1 }, /* CHECKPOINT recovery_point */
+    { 10, 15, 1 }, /* POINT point */
+    { 11, 16, 2 }, /* LINE start end */
+    { 12, 18, 2 }, /* LINE5B start_pos end_pos */
+    { 13, 20, 3 }, /* ARC start middle end */
+    { 14, 23, 3 }, /* ARC5B start_pos mid_pos end_pos */
+    { 15, 26, 2 }, /* CIRCLE start center */
+    { 16, 28, 2 }, /* CIRCLE5B start center */
+    { 17, 30, 2 }, /* HELIX start center */
+    { 18, 32, 2 }, /* HELIX5B start center */
+    { 19, 34, 1 }, /* SPEED speed */
+    { 24, 35, 3 }, /* FCPARMS nom_speed max_speed min_speed */
+    { 20, 38, 2 }, /* ACCEL accel decel */
+    { 1, 40, 1 }, /* CUTTER length */
+    { 1, 41, 1 }, /* CUTTER radius */
 };
 /* The (check, target) pairs of each command, grouped by command in check order. */
 typedef struct cbf__ctarget { int check; size_t target; } cbf__ctarget;
-static const cbf__ctarget cbf__ctargets[10] = {
+static const cbf__ctarget cbf__ctargets[25] = {
     { 27, 7 }, /* checkpoint_range: CHECKPOINT completion */
     { 28, 8 }, /* checkpoint_falling: CHECKPOINT completion */
+    { 31, 10 }, /* machine_limits: CHECKPOINT recovery_point */
     { 25, 2 }, /* cutter_positive: CUTTER length radius */
+    { 31, 23 }, /* machine_limits: CUTTER length */
+    { 31, 24 }, /* machine_limits: CUTTER radius */
+    { 31, 11 }, /* machine_limits: POINT point */
+    { 31, 12 }, /* machine_limits: LINE start end */
+    { 31, 13 }, /* machine_limits: LINE5B start_pos end_pos */
+    { 31, 14 }, /* machine_limits: ARC start middle end */
+    { 31, 15 }, /* machine_limits: ARC5B start_pos mid_pos end_pos */
     { 26, 3 }, /* normal_nonzero: CIRCLE normal */
+    { 31, 16 }, /* machine_limits: CIRCLE start center */
     { 26, 4 }, /* normal_nonzero: CIRCLE5B normal */
+    { 31, 17 }, /* machine_limits: CIRCLE5B start center */
     { 26, 5 }, /* normal_nonzero: HELIX normal */
+    { 31, 18 }, /* machine_limits: HELIX start center */
     { 26, 6 }, /* normal_nonzero: HELIX5B normal */
+    { 31, 19 }, /* machine_limits: HELIX5B start center */
     { 23, 0 }, /* speed_positive: SPEED speed */
+    { 31, 20 }, /* machine_limits: SPEED speed */
     { 24, 1 }, /* accel_positive: ACCEL accel decel */
+    { 31, 22 }, /* machine_limits: ACCEL accel decel */
     { 29, 9 }, /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
+    { 31, 21 }, /* machine_limits: FCPARMS nom_speed max_speed min_speed */
 };
 /* The targets' arguments (cbf__target.first, n index these rows): each one's index in
  * every layout, -1 where the layout has no argument of that name. */
-static const signed char cbf__target_arg_at[14][CBF_LAYOUT__COUNT] = {
+static const signed char cbf__target_arg_at[42][CBF_LAYOUT__COUNT] = {
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1 }, /* speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1 }, /* accel */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1 }, /* decel */
@@ -1524,6 +1588,34 @@ static const signed char cbf__target_arg_at[14][CBF_LAYOUT__COUNT] = {
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1 }, /* min_speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1 }, /* nom_speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1 }, /* max_speed */
+    { 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* recovery_point */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* point */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* middle */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* mid_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1 }, /* speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1 }, /* nom_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1 }, /* max_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1 }, /* min_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1 }, /* accel */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1 }, /* decel */
+    { -1, -1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* length */
+    { -1, -1, 2, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* radius */
 };
 
 typedef struct cbf__check {
@@ -1599,8 +1691,10 @@ static const cbf__check cbf__checks[CBF__NCHECKS] = {
     { CBF_CHECK_FCPARMS_ORDER, CBF__KIND_ORDERED, 0, 0, 9, 1, 0, 0.0, 0, 0.0 },
     /* orientation_jump (X1): The angle between a path command's start orientation and the current orientation exceeds tolerances.orientation_deg. A set command sets the current orientation; a path command moves it to its end. Nothing is compared before the first orientation command, and after a zero-length or non-finite orientation. */
     { CBF_CHECK_ORIENTATION_JUMP, CBF__KIND_ORIENTATION, 0, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    /* machine_limits (L1): A finite target argument lies outside its limit of the machine (the target's limit in machine.limits): below min or above max, a vector in any component (the first such component is named). One finding per argument. A value that a positive check of the same argument fails (<= 0) is left to that check, as a non-finite one is left to the finite check: one fault, one finding. Without a machine file the default machine applies and the findings are warnings; with one, its limits apply and the findings are errors. */
+    { CBF_CHECK_MACHINE_LIMITS, CBF__KIND_MACHINE_LIMITS, 0, 0, 10, 15, 0, 0.0, 0, 0.0 },
     /* shape (X2): A STARTSHAPE inside an open shape, an ENDSHAPE without an open shape, an ENDSHAPE whose name or count differs from its STARTSHAPE, a shape whose number of motion commands differs from its count (at most one finding per ENDSHAPE, reported there), or a shape still open at the end of the file (reported at its STARTSHAPE). A STARTSHAPE inside an open shape opens a new shape. Motion commands are the records of commands with a motion role (POINT included). */
-    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 25, 0, 0, 0.0, 0, 0.0 },
 };
 
 static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
@@ -3662,6 +3756,112 @@ static void cbf__check_targets(cbf__vctx *v, int cmd, int layout, const uint8_t 
     }
 }
 
+/* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
+const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
+const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
+const int cbf_machine_limit_axes[CBF_MACHINE__COUNT] = { 3, 0, 0, 0, 0 };
+const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES] = {
+    { "x", "y", "z" }, /* workspace */
+    { NULL, NULL, NULL }, /* speed */
+    { NULL, NULL, NULL }, /* acceleration */
+    { NULL, NULL, NULL }, /* cutter_length */
+    { NULL, NULL, NULL }, /* cutter_radius */
+};
+const cbf_machine cbf_machine_default = { {
+    { { -1000.0, -1000.0, -1000.0 }, { 1000.0, 1000.0, 1000.0 } }, /* workspace [mm] */
+    { { 1e-05, 0.0, 0.0 }, { 1.0, 0.0, 0.0 } }, /* speed [m/s] */
+    { { 0.0001, 0.0, 0.0 }, { 10.0, 0.0, 0.0 } }, /* acceleration [m/s^2] */
+    { { 1.0, 0.0, 0.0 }, { 300.0, 0.0, 0.0 } }, /* cutter_length [mm] */
+    { { 0.1, 0.0, 0.0 }, { 25.0, 0.0, 0.0 } }, /* cutter_radius [mm] */
+} };
+
+/* Per layout (cbf__mrule_first[layout] .. [layout + 1]): the argument (index in the layout),
+ * the limit that bounds it, the check that reports it, its severity with a machine given, and
+ * whether a positive check targets the argument too (a value <= 0 is then that check's). */
+typedef struct cbf__mrule { int arg; int limit; int check; int given_error; int positive; } cbf__mrule;
+static const cbf__mrule cbf__mrules[30] = {
+    { 1, 0, 31, 1, 0 }, /* CHECKPOINT recovery_point: workspace */
+    { 1, 3, 31, 1, 1 }, /* CUTTER length: cutter_length */
+    { 2, 4, 31, 1, 1 }, /* CUTTER radius: cutter_radius */
+    { 1, 3, 31, 1, 1 }, /* CUTTER_V1 length: cutter_length */
+    { 2, 4, 31, 1, 1 }, /* CUTTER_V1 radius: cutter_radius */
+    { 0, 0, 31, 1, 0 }, /* POINT point: workspace */
+    { 0, 0, 31, 1, 0 }, /* LINE start: workspace */
+    { 1, 0, 31, 1, 0 }, /* LINE end: workspace */
+    { 0, 0, 31, 1, 0 }, /* LINE5B start_pos: workspace */
+    { 1, 0, 31, 1, 0 }, /* LINE5B end_pos: workspace */
+    { 0, 0, 31, 1, 0 }, /* ARC start: workspace */
+    { 1, 0, 31, 1, 0 }, /* ARC middle: workspace */
+    { 2, 0, 31, 1, 0 }, /* ARC end: workspace */
+    { 0, 0, 31, 1, 0 }, /* ARC5B start_pos: workspace */
+    { 1, 0, 31, 1, 0 }, /* ARC5B mid_pos: workspace */
+    { 2, 0, 31, 1, 0 }, /* ARC5B end_pos: workspace */
+    { 0, 0, 31, 1, 0 }, /* CIRCLE start: workspace */
+    { 1, 0, 31, 1, 0 }, /* CIRCLE center: workspace */
+    { 0, 0, 31, 1, 0 }, /* CIRCLE5B start: workspace */
+    { 1, 0, 31, 1, 0 }, /* CIRCLE5B center: workspace */
+    { 0, 0, 31, 1, 0 }, /* HELIX start: workspace */
+    { 1, 0, 31, 1, 0 }, /* HELIX center: workspace */
+    { 0, 0, 31, 1, 0 }, /* HELIX5B start: workspace */
+    { 1, 0, 31, 1, 0 }, /* HELIX5B center: workspace */
+    { 0, 1, 31, 1, 1 }, /* SPEED speed: speed */
+    { 0, 2, 31, 1, 1 }, /* ACCEL accel: acceleration */
+    { 1, 2, 31, 1, 1 }, /* ACCEL decel: acceleration */
+    { 0, 1, 31, 1, 0 }, /* FCPARMS nom_speed: speed */
+    { 1, 1, 31, 1, 0 }, /* FCPARMS max_speed: speed */
+    { 2, 1, 31, 1, 0 }, /* FCPARMS min_speed: speed */
+};
+static const unsigned short cbf__mrule_first[CBF_LAYOUT__COUNT + 1] = { 0, 1, 1, 3, 5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 8, 10, 13, 16, 18, 20, 22, 24, 25, 27, 27, 27, 27, 30, 30, 30, 30 };
+
+/* A finite target argument outside its limit: one finding, naming the first component out. */
+static void cbf__machine_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+{
+    const cbf_machine *m = (v->opt && v->opt->machine) ? v->opt->machine : &cbf_machine_default;
+    unsigned j;
+    for (j = cbf__mrule_first[layout]; j < cbf__mrule_first[layout + 1]; j++) {
+        const cbf__mrule *r = &cbf__mrules[j];
+        const cbf_field_info *f = cbf__layout_arg(layout, r->arg);
+        const cbf_machine_range *lim = &m->limit[r->limit];
+        double x[CBF_MACHINE_MAX_AXES];
+        unsigned i, n;
+        int finite = 1, le_zero = 0;
+        if (!f || f->kind != CBF__K_FLOAT || f->count > CBF_MACHINE_MAX_AXES)
+            continue;
+        n = f->count;
+        for (i = 0; i < n; i++) {
+            uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
+            finite &= cbf__bits_finite(u);
+            x[i] = (double)cbf__bits_f4(u);
+            if (x[i] <= 0.0)
+                le_zero = 1;
+        }
+        if (!finite || (r->positive && le_zero))
+            continue; /* the finite check's, or the positive check's */
+        for (i = 0; i < n; i++) {
+            if (x[i] < lim->min[i] || x[i] > lim->max[i]) {
+                char msg[256];
+                cbf_finding fd;
+                const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][i] : NULL;
+                (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
+                               cbf__commands[cmd].name, f->name, axis ? " " : "", axis ? axis : "", x[i],
+                               cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[i],
+                               lim->max[i], cbf_machine_limit_units[r->limit]);
+                fd.check = cbf__checks[r->check].id;
+                fd.severity = (v->opt && v->opt->machine) ? (r->given_error ? CBF_SEVERITY_ERROR : CBF_SEVERITY_WARNING)
+                                                          : cbf__checks[r->check].severity;
+                fd.record = rec;
+                fd.offset = args_off + f->offset;
+                fd.message = msg;
+                if (fd.severity == CBF_SEVERITY_ERROR)
+                    v->errors++;
+                if (v->fn)
+                    v->fn(v->user, &fd);
+                break;
+            }
+        }
+    }
+}
+
 static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
 {
     const cbf__layout *L = &cbf__layouts[layout];
@@ -3675,6 +3875,7 @@ static void cbf__decoded_checks(cbf__vctx *v, int cmd, int layout, const uint8_t
             cbf__check_string(v, f, args, args_off, rec);
     }
     cbf__check_targets(v, cmd, layout, args, rec, args_off);
+    cbf__machine_checks(v, cmd, layout, args, rec, args_off); /* machine limits (L1, #13 item 16) */
     if (cbf__commands[cmd].cutter)
         cbf__cutter(v, layout, args, rec, args_off);
     cbf__continuity(v, cmd, layout, args, rec, args_off);
