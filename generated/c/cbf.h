@@ -3813,6 +3813,17 @@ static const cbf__mrule cbf__mrules[30] = {
 };
 static const unsigned short cbf__mrule_first[CBF_LAYOUT__COUNT + 1] = { 0, 1, 1, 3, 5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 8, 10, 13, 16, 18, 20, 22, 24, 25, 27, 27, 27, 27, 30, 30, 30, 30 };
 
+/* A bound as the values it limits are stored: rounded to binary32, beyond its range infinite
+ * (a value equal to a bound written in decimal is inside); the same rule in every binding. */
+static double cbf__bound32(double b)
+{
+    if (b > 3.4028234663852886e38)
+        return HUGE_VAL;
+    if (b < -3.4028234663852886e38)
+        return -HUGE_VAL;
+    return (double)(float)b;
+}
+
 /* A finite target argument outside its limit: one finding, naming the first component out. */
 static void cbf__machine_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
 {
@@ -3838,7 +3849,7 @@ static void cbf__machine_checks(cbf__vctx *v, int cmd, int layout, const uint8_t
         if (!finite || (r->positive && le_zero))
             continue; /* the finite check's, or the positive check's */
         for (i = 0; i < n; i++) {
-            if (x[i] < lim->min[i] || x[i] > lim->max[i]) {
+            if (x[i] < cbf__bound32(lim->min[i]) || x[i] > cbf__bound32(lim->max[i])) {
                 char msg[256];
                 cbf_finding fd;
                 const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][i] : NULL;

@@ -28,13 +28,28 @@ from .validation import Finding, finding_order
 SCHEMA: dict[str, Any] = json.loads(Path(__file__).with_name("machine.schema.json").read_text(encoding="utf-8"))
 
 
+_F32 = struct.Struct("<f")
+_F32_MAX = 3.4028234663852886e38
+
+
+def as_binary32(bound: float) -> float:
+    """A bound as the values it limits are stored: rounded to binary32, beyond its range
+    infinite (a value equal to a bound written in decimal is inside)."""
+    if abs(bound) > _F32_MAX:
+        return math.copysign(math.inf, bound)
+    v: float = _F32.unpack(_F32.pack(bound))[0]
+    return v
+
+
 @dataclass(frozen=True, slots=True)
 class Limit:
     name: str
     unit: str
-    lo: tuple[float, ...]
+    lo: tuple[float, ...]  # as given (messages)
     hi: tuple[float, ...]
     axes: tuple[str, ...]  # empty: a scalar range
+    lo32: tuple[float, ...]  # the bounds compared with: each rounded to binary32 (as_binary32)
+    hi32: tuple[float, ...]
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,10 +69,10 @@ class MachineError(CbfError):
 def _limits(doc: Mapping[str, Any]) -> dict[str, Limit]:
     out = {}
     for name, lim in doc["limits"].items():
-        lo, hi = lim["min"], lim["max"]
-        out[name] = Limit(name, lim["unit"], tuple(map(float, lo if isinstance(lo, list) else [lo])),
-                          tuple(map(float, hi if isinstance(hi, list) else [hi])),
-                          tuple(T.SPEC["machine"]["limits"][name].get("axes", [])))
+        lo = tuple(map(float, lim["min"] if isinstance(lim["min"], list) else [lim["min"]]))
+        hi = tuple(map(float, lim["max"] if isinstance(lim["max"], list) else [lim["max"]]))
+        out[name] = Limit(name, lim["unit"], lo, hi, tuple(T.SPEC["machine"]["limits"][name].get("axes", [])),
+                          tuple(map(as_binary32, lo)), tuple(map(as_binary32, hi)))
     return out
 
 
@@ -74,7 +89,11 @@ def _schema_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | No
         if not isinstance(value, dict):
             return f"{path}: expected an object"
         props = schema.get("properties", {})
-        for key, v in value.items():
+        seen: set[Any] = set()
+        for key, v in value.pairs if isinstance(value, _Object) else value.items():
+            if key in seen:
+                return f"{path}: duplicate key '{key}'"
+            seen.add(key)
             if key not in props:
                 if schema.get("additionalProperties") is False:
                     return f"{path}: unknown key '{key}' (known: {', '.join(props)})"
@@ -118,26 +137,16 @@ def _dumps(value: Any) -> str:
 
 
 class _Object(dict[Any, Any]):
-    duplicate: Any = None  # the first key given twice: refused, never "the last one wins"
+    """A JSON or YAML object that keeps its pairs in order, a key given twice included: the
+    duplicate is refused where a reader meets it, never "the last one wins"."""
+
+    pairs: list[tuple[Any, Any]]
 
 
 def _no_duplicates(pairs: list[tuple[Any, Any]]) -> _Object:
-    out = _Object()
-    for k, v in pairs:
-        if k in out and out.duplicate is None:
-            out.duplicate = k
-        out[k] = v
+    out = _Object(pairs)
+    out.pairs = pairs
     return out
-
-
-def _duplicate(doc: Any, path: str = "$") -> str | None:
-    if isinstance(doc, _Object):
-        if doc.duplicate is not None:
-            return f"{path}: duplicate key {doc.duplicate!r}"
-        return next((e for k, v in doc.items() if (e := _duplicate(v, f"{path}.{k}"))), None)
-    if isinstance(doc, list):
-        return next((e for i, v in enumerate(doc) if (e := _duplicate(v, f"{path}[{i}]"))), None)
-    return None
 
 
 def _read(p: Path, text: str) -> Any:
@@ -188,7 +197,7 @@ def load_machine(path: str | Path) -> Machine:
         raise MachineError(f"{p}: offset {exc.start}: not UTF-8 text") from None
     except MachineError as exc:
         raise MachineError(f"{p}: {exc.message}") from None
-    err = _duplicate(doc) or _schema_errors(doc, SCHEMA, "$")
+    err = _schema_errors(doc, SCHEMA, "$")
     if err is None:
         for name in SCHEMA["properties"]["limits"]["properties"]:  # the spec's order
             lo, hi = doc["limits"][name]["min"], doc["limits"][name]["max"]
@@ -231,11 +240,10 @@ def breach(values: tuple[float, ...], lim: Limit, positive: bool) -> str | None:
     if not all(math.isfinite(v) for v in values) or (positive and any(v <= 0.0 for v in values)):
         return None
     for k, v in enumerate(values):
-        lo, hi = lim.lo[k], lim.hi[k]
-        if v < lo or v > hi:
+        if v < lim.lo32[k] or v > lim.hi32[k]:
             axis = f" {lim.axes[k]}" if lim.axes else ""
             return (f"{axis} is {_NUM(v)} {lim.unit}, outside the machine's {lim.name} "
-                    f"{_NUM(lo)}..{_NUM(hi)} {lim.unit}")
+                    f"{_NUM(lim.lo[k])}..{_NUM(lim.hi[k])} {lim.unit}")
     return None
 
 
