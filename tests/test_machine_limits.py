@@ -307,3 +307,31 @@ def test_the_loader_wants_every_position_bounded_and_targets_that_fit(tmp_path: 
     with pytest.raises(SpecError, match=f"machine limit {sca.name}: min exceeds max"):
         load(_variant(tmp_path, min_above_max))
 
+
+
+def test_both_kernels_and_both_engines_agree(tmp_path: Path) -> None:
+    """The reference loop and the numpy kernel of machine.py, and validate's two engines, give the
+    same findings on a file whose targeted values lie inside, outside, at 0 and non-finite."""
+    import random
+
+    from cbf.codec import frame
+    from cbf.machine import machine_findings
+
+    rnd = random.Random(13)
+    pool = [math.nan, math.inf, 0.0, -1e30, 1e30, 1e-30]
+    records = []
+    for _ in range(600):
+        _, command, arg, limit = rnd.choice(CASES)
+        lim = SPEC.machine.limit(limit)
+        value = rnd.choice([*pool, *_inside(lim), *lim.min, *lim.max])
+        _, raw, _ = _record(command, arg, value, rnd.randrange(max(1, len(lim.axes))))
+        records.append(cbf.Record(code=T.BY_NAME[command].code, raw_args=raw))
+    data = seal(cbf.Cbf(cbf.new_header(T.DEFAULT_VERSION), tuple(records)))
+    offsets, _ = frame(data)
+    given = load_machine(_machine_file(tmp_path, machine_data(SPEC)))
+    for machine in (None, given):
+        ref = list(machine_findings(data, offsets, T.DEFAULT_VERSION, machine, "python"))
+        assert ref and len({f.offset for f in ref}) > 10
+        assert ref == list(machine_findings(data, offsets, T.DEFAULT_VERSION, machine, "numpy"))
+        assert cbf.validate(data, engine="python", machine=machine) == cbf.validate(data, engine="numpy",
+                                                                                     machine=machine)

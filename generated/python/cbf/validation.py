@@ -182,7 +182,7 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     from .machine import machine_findings  # machine limits (L1, #13 item 16): one stream, engine-independent
 
     return iter(heapq.merge(sorted(out.findings, key=finding_order), stream,
-                            machine_findings(buf, offsets, version, machine), key=finding_order))
+                            machine_findings(buf, offsets, version, machine, engine), key=finding_order))
 
 
 # Files with at least this many records are checked by the numpy engine
