@@ -335,3 +335,28 @@ def test_both_kernels_and_both_engines_agree(tmp_path: Path) -> None:
         assert ref == list(machine_findings(data, offsets, T.DEFAULT_VERSION, machine, "numpy"))
         assert cbf.validate(data, engine="python", machine=machine) == cbf.validate(data, engine="numpy",
                                                                                      machine=machine)
+
+
+def test_cbfgen_diff_classifies_machine_changes(tmp_path: Path) -> None:
+    """A default bound moves warnings only (not breaking); another unit breaks machine files."""
+    from cbfgen.diff import diff
+
+    sca = next(lim for lim in SPEC.machine.limits if not lim.axes)
+
+    def wider(doc: dict[str, Any]) -> None:
+        doc["machine"]["limits"][sca.name]["max"] = sca.max[0] * 2
+
+    got = [(c.kind, c.breaking) for c in diff(SPEC, load(_variant(tmp_path, wider))).changes]
+    assert got == [("machine_default_changed", False)]
+
+    def other_unit(doc: dict[str, Any]) -> None:
+        other = next(u for u in doc["units"] if u != sca.unit)
+        doc["machine"]["limits"][sca.name]["unit"] = other
+        for ch in doc["checks"]:
+            ch["targets"] = [t for t in ch.get("targets", []) if t.get("limit") != sca.name] or ch.get("targets")
+            if not ch["targets"]:
+                del ch["targets"]
+
+    got = [(c.kind, c.breaking) for c in diff(SPEC, load(_variant(tmp_path, other_unit))).changes
+           if c.kind.startswith("machine_")]
+    assert got == [("machine_limit_changed", True)]
