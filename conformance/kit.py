@@ -30,12 +30,12 @@ def toolkit_version() -> str:
 
 
 def golden_files(golden: Path) -> list[Path]:
-    """Each case's .cbf and expectation, and the option files (cutter tables) they name."""
+    """Each case's .cbf and expectation, and the option files (cutter tables, machine files) they name."""
     out: list[Path] = []
     for exp in sorted(golden.glob("*.expect.yaml")):
         name = exp.name[: -len(".expect.yaml")]
         out += [exp, golden / f"{name}.cbf"]
-        out += sorted(p for p in golden.glob(f"{name}.*") if p.suffix in (".csv", ".yaml") and p not in out)
+        out += sorted(p for p in golden.glob(f"{name}.*") if p.suffix in (".csv", ".yaml", ".json") and p not in out)
     return out
 
 

@@ -94,10 +94,12 @@ SCRIPT = r"""
 import json, sys
 import cbf
 out = []
-for path, profile, part_number, cutters in json.loads(sys.stdin.read()):
+for path, profile, part_number, cutters, machine in json.loads(sys.stdin.read()):
     from cbf.cutters import load_cutter_table
     table = load_cutter_table(cutters) if cutters else None
-    found = cbf.validate(open(path, "rb").read(), profile=profile, part_number=part_number, cutters=table)
+    limits = cbf.load_machine(machine) if machine else None
+    found = cbf.validate(open(path, "rb").read(), profile=profile, part_number=part_number, cutters=table,
+                         machine=limits)
     out.append([[f.check, f.severity, f.record, f.offset] for f in found])
 print(json.dumps(out))
 """
@@ -118,8 +120,9 @@ def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
     testee = tmp_path / "testee"
     subprocess.run([cc, "-std=c99", "-O1", "-o", str(testee), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
                    capture_output=True)
-    req = "".join(json.dumps({"op": "validate", "file": f, "profile": p, "part_number": pn, "cutters": ct}) + "\n"
-                  for f, p, pn, ct in jobs) + '{"op": "quit"}\n'
+    req = "".join(json.dumps({"op": "validate", "file": f, "profile": p, "part_number": pn, "cutters": ct,
+                              "machine": m}) + "\n"
+                  for f, p, pn, ct, m in jobs) + '{"op": "quit"}\n'
     ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)
     out = []
     for line in ans.stdout.splitlines():
@@ -157,10 +160,11 @@ def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Pat
         exp = yaml.safe_load((GOLDEN / f"{name}.expect.yaml").read_text(encoding="utf-8"))
         opts = exp.get("options") or {}
         cutters = str(GOLDEN / opts["cutters"]) if opts.get("cutters") else None
+        machine = str(GOLDEN / opts["machine"]) if opts.get("machine") else None
         for profile, findings in (exp.get("validate") or {}).items():
             if not keeps(name, profile, src.read_text(encoding="utf-8"), doc):
                 continue
-            jobs.append((str(path), profile, opts.get("part_number"), cutters))
+            jobs.append((str(path), profile, opts.get("part_number"), cutters, machine))
             wanted.append((name, profile, findings or []))
     assert changed, "the revision must change the bytes of golden files"
     assert len(wanted) > len(list(GOLDEN.glob("*.hex"))), "most expectations are kept"

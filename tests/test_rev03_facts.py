@@ -176,3 +176,17 @@ def test_checksums_are_plain_byte_sums_c1() -> None:
     assert int.from_bytes(data[128 + 6:128 + 8], "little") == sum(data[136:136 + nb]) % 2**16
 
 
+
+
+def test_issue_13_implausible_values_fall_outside_the_default_machine() -> None:
+    """#13 item 16: rev 03 states no range for these values; the default machine (L1) puts a speed
+    of 1e30 m/s, a POINT at 1e30 mm and a cutter radius of 1e-30 mm outside it, in the units the
+    spec gives (6.1.2 millimetres; N11). conformance/golden/check.machine_limits.default holds
+    those three values and expects one warning each (and tests/test_machine_limits.py the rest)."""
+    ch = SPEC.check("machine_limits")
+    limit_of = {(t.command, a): SPEC.machine.limit(t.limit) for t in ch.targets if t.limit for a in t.args}
+    speed, point, radius = limit_of[("SPEED", "speed")], limit_of[("POINT", "point")], limit_of[("CUTTER", "radius")]
+    assert (speed.unit, point.unit, radius.unit) == ("m/s", "mm", "mm")
+    assert speed.max[0] < 1e30 and all(hi < 1e30 for hi in point.max) and radius.min[0] > 1e-30
+    assert "0.01 millimeters" in _text()  # 6.1.2: cutter sizes in millimetres
+    assert (ch.severity, ch.input_severity) == ("warning", "error")

@@ -203,10 +203,12 @@ def _step(t: Testee, case: Case, step: str, path: str) -> str | None:
             return None
         opts = exp.get("options") or {}
         cutters = opts.get("cutters")
+        machine = opts.get("machine")
         for profile, expected in want_v.items():
             ans = t.ask({"op": "validate", "file": path, "profile": profile,
                          "part_number": opts.get("part_number"),
-                         "cutters": str(case.cbf.parent / cutters) if cutters else None})
+                         "cutters": str(case.cbf.parent / cutters) if cutters else None,
+                         "machine": str(case.cbf.parent / machine) if machine else None})
             if ans.get("skipped"):
                 return "skipped"
             if not ans.get("ok"):

@@ -174,8 +174,9 @@ enum cbf_header_layout {
 #define CBF_CHECK_CHECKPOINT_FALLING "checkpoint_falling" /**< warning: CHECKPOINT completion does not fall. */
 #define CBF_CHECK_FCPARMS_ORDER "fcparms_order" /**< warning: FCPARMS speeds satisfy min <= nom <= max. */
 #define CBF_CHECK_ORIENTATION_JUMP "orientation_jump" /**< warning: A 5-axis command starts at the current tool orientation. */
+#define CBF_CHECK_MACHINE_LIMITS "machine_limits" /**< warning: Positions lie in the machine's workspace; speeds, accelerations and cutter sizes lie in its ranges. */
 #define CBF_CHECK_SHAPE "shape" /**< error: STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion commands; shapes do not nest. */
-#define CBF_CHECK__COUNT 32
+#define CBF_CHECK__COUNT 33
 
 /* =================================================================== lengths */
 
@@ -912,11 +913,43 @@ typedef struct cbf_cutter {
     double radius;
 } cbf_cutter;
 
+/* ---- machine limits (decision L1, check kind machine_limits; machine.h.j2) ----
+ * A machine bounds every position argument by a box and speeds, accelerations and
+ * cutter sizes by ranges, in the units of the arguments. cbf_options.machine NULL:
+ * the spec's default machine (cbf_machine_default), whose breaches are warnings;
+ * a machine of your own (e.g. read from a machine file): its breaches are errors. */
+#define CBF_MACHINE_MAX_AXES 3
+enum cbf_machine_limit {
+    CBF_MACHINE_WORKSPACE = 0, /**< Every position (a point, a start, end, middle or centre, a recovery point) lies in this box. (mm, axes x y z) */
+    CBF_MACHINE_SPEED = 1, /**< Path speeds (SPEED, and the FCPARMS speeds). (m/s) */
+    CBF_MACHINE_ACCELERATION = 2, /**< Acceleration and deceleration (ACCEL). (m/s^2) */
+    CBF_MACHINE_CUTTER_LENGTH = 3, /**< Cutter length (CUTTER). (mm) */
+    CBF_MACHINE_CUTTER_RADIUS = 4, /**< Cutter radius (CUTTER). (mm) */
+    CBF_MACHINE__COUNT = 5
+};
+/** One limit: min[0]..max[0] for a range; min[i]..max[i] on axis i for a box. */
+typedef struct cbf_machine_range {
+    double min[CBF_MACHINE_MAX_AXES];
+    double max[CBF_MACHINE_MAX_AXES];
+} cbf_machine_range;
+typedef struct cbf_machine {
+    cbf_machine_range limit[CBF_MACHINE__COUNT]; /**< by enum cbf_machine_limit */
+} cbf_machine;
+/** Each limit's name (as in a machine file), unit, and number of axes (0: a range). */
+extern const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT];
+extern const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT];
+extern const int cbf_machine_limit_axes[CBF_MACHINE__COUNT];
+/** The axis names of each box limit (NULL past its axes). */
+extern const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
+/** The spec's default machine (L1): conservative; its breaches are warnings. */
+extern const cbf_machine cbf_machine_default;
+
 typedef struct cbf_options {
     int profile;               /**< enum cbf_profile */
     const char *part_number;   /**< 6.1.1 input, or NULL */
     const cbf_cutter *cutters; /**< 6.1.2 input, or NULL (no table given) */
     size_t ncutters;
+    const cbf_machine *machine; /**< machine_limits input (L1), or NULL: the default machine, warnings */
 } cbf_options;
 
 /* ================================================================ prototypes */
@@ -1103,7 +1136,8 @@ enum {
     CBF__KIND_NONDECREASING,
     CBF__KIND_ORDERED,
     CBF__KIND_ORIENTATION,
-    CBF__KIND_SHAPE
+    CBF__KIND_SHAPE,
+    CBF__KIND_MACHINE_LIMITS
 };
 #define CBF__F_RESERVED CBF_FIELD_RESERVED
 #define CBF__F_TEXT CBF_FIELD_TEXT
@@ -1117,8 +1151,8 @@ enum {
 #define CBF__PAD 0u
 #define CBF__NVERSIONS 4
 #define CBF__NCOMMANDS 27
-#define CBF__NCHECKS 32
-#define CBF__NTARGETS 10
+#define CBF__NCHECKS 33
+#define CBF__NTARGETS 25
 #define CBF__MAX_CANDIDATES 2
 #define CBF__MAX_COVERAGES 1
 #define CBF__PI 3.14159265358979323846
@@ -1482,7 +1516,7 @@ static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
 };
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
-static const cbf__target cbf__targets[10] = {
+static const cbf__target cbf__targets[25] = {
     { 19, 0, 1 }, /* SPEED speed */
     { 20, 1, 2 }, /* ACCEL accel decel */
     { 1, 3, 2 }, /* CUTTER length radius */
@@ -1493,10 +1527,25 @@ static const cbf__target cbf__targets[10] = {
     { 0, 9, 1 }, /* CHECKPOINT completion */
     { 0, 10, 1 }, /* CHECKPOINT completion */
     { 24, 11, 3 }, /* FCPARMS min_speed nom_speed max_speed */
+    { 0, 14, 1 }, /* CHECKPOINT recovery_point */
+    { 10, 15, 1 }, /* POINT point */
+    { 11, 16, 2 }, /* LINE start end */
+    { 12, 18, 2 }, /* LINE5B start_pos end_pos */
+    { 13, 20, 3 }, /* ARC start middle end */
+    { 14, 23, 3 }, /* ARC5B start_pos mid_pos end_pos */
+    { 15, 26, 2 }, /* CIRCLE start center */
+    { 16, 28, 2 }, /* CIRCLE5B start center */
+    { 17, 30, 2 }, /* HELIX start center */
+    { 18, 32, 2 }, /* HELIX5B start center */
+    { 19, 34, 1 }, /* SPEED speed */
+    { 24, 35, 3 }, /* FCPARMS nom_speed max_speed min_speed */
+    { 20, 38, 2 }, /* ACCEL accel decel */
+    { 1, 40, 1 }, /* CUTTER length */
+    { 1, 41, 1 }, /* CUTTER radius */
 };
 /* The targets' arguments (cbf__target.first, n index these rows): each one's index in
  * every layout, -1 where the layout has no argument of that name. */
-static const signed char cbf__target_arg_at[14][CBF_LAYOUT__COUNT] = {
+static const signed char cbf__target_arg_at[42][CBF_LAYOUT__COUNT] = {
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1 }, /* speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1 }, /* accel */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1 }, /* decel */
@@ -1511,6 +1560,34 @@ static const signed char cbf__target_arg_at[14][CBF_LAYOUT__COUNT] = {
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1 }, /* min_speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1 }, /* nom_speed */
     { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1 }, /* max_speed */
+    { 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* recovery_point */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* point */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* middle */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* mid_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* end_pos */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* start */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* center */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1, -1 }, /* speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1 }, /* nom_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1 }, /* max_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 2, -1, -1, -1 }, /* min_speed */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, -1, -1, -1, -1 }, /* accel */
+    { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1 }, /* decel */
+    { -1, -1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* length */
+    { -1, -1, 2, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* radius */
 };
 
 typedef struct cbf__check {
@@ -1586,8 +1663,10 @@ static const cbf__check cbf__checks[CBF__NCHECKS] = {
     { CBF_CHECK_FCPARMS_ORDER, CBF__KIND_ORDERED, 0, 0, 9, 1, 0, 0.0, 0, 0.0 },
     /* orientation_jump (X1): The angle between a path command's start orientation and the current orientation exceeds tolerances.orientation_deg. A set command sets the current orientation; a path command moves it to its end. Nothing is compared before the first orientation command, and after a zero-length or non-finite orientation. */
     { CBF_CHECK_ORIENTATION_JUMP, CBF__KIND_ORIENTATION, 0, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    /* machine_limits (L1): A finite target argument lies outside its limit of the machine (the target's limit in machine.limits): below min or above max, a vector in any component (the first such component is named). One finding per argument. A value that a positive check of the same argument fails (<= 0) is left to that check, as a non-finite one is left to the finite check: one fault, one finding. Without a machine file the default machine applies and the findings are warnings; with one, its limits apply and the findings are errors. */
+    { CBF_CHECK_MACHINE_LIMITS, CBF__KIND_MACHINE_LIMITS, 0, 0, 10, 15, 0, 0.0, 0, 0.0 },
     /* shape (X2): A STARTSHAPE inside an open shape, an ENDSHAPE without an open shape, an ENDSHAPE whose name or count differs from its STARTSHAPE, a shape whose number of motion commands differs from its count (at most one finding per ENDSHAPE, reported there), or a shape still open at the end of the file (reported at its STARTSHAPE). A STARTSHAPE inside an open shape opens a new shape. Motion commands are the records of commands with a motion role (POINT included). */
-    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 25, 0, 0, 0.0, 0, 0.0 },
 };
 
 static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
@@ -3716,6 +3795,122 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
         cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
 }
 
+/* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
+const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
+const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
+const int cbf_machine_limit_axes[CBF_MACHINE__COUNT] = { 3, 0, 0, 0, 0 };
+const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES] = {
+    { "x", "y", "z" }, /* workspace */
+    { NULL, NULL, NULL }, /* speed */
+    { NULL, NULL, NULL }, /* acceleration */
+    { NULL, NULL, NULL }, /* cutter_length */
+    { NULL, NULL, NULL }, /* cutter_radius */
+};
+const cbf_machine cbf_machine_default = { {
+    { { -1000.0, -1000.0, -1000.0 }, { 1000.0, 1000.0, 1000.0 } }, /* workspace [mm] */
+    { { 1e-05, 0.0, 0.0 }, { 1.0, 0.0, 0.0 } }, /* speed [m/s] */
+    { { 0.0001, 0.0, 0.0 }, { 10.0, 0.0, 0.0 } }, /* acceleration [m/s^2] */
+    { { 1.0, 0.0, 0.0 }, { 300.0, 0.0, 0.0 } }, /* cutter_length [mm] */
+    { { 0.1, 0.0, 0.0 }, { 25.0, 0.0, 0.0 } }, /* cutter_radius [mm] */
+} };
+
+/* Per layout (cbf__mrule_first[layout] .. [layout + 1]): the argument (index in the layout),
+ * the limit that bounds it, the check that reports it, its severity with a machine given, and
+ * whether a positive check targets the argument too (a value <= 0 is then that check's). */
+typedef struct cbf__mrule { int arg; int limit; int check; int given_error; int positive; } cbf__mrule;
+static const cbf__mrule cbf__mrules[30] = {
+    { 1, 0, 31, 1, 0 }, /* CHECKPOINT recovery_point: workspace */
+    { 1, 3, 31, 1, 1 }, /* CUTTER length: cutter_length */
+    { 2, 4, 31, 1, 1 }, /* CUTTER radius: cutter_radius */
+    { 1, 3, 31, 1, 1 }, /* CUTTER_V1 length: cutter_length */
+    { 2, 4, 31, 1, 1 }, /* CUTTER_V1 radius: cutter_radius */
+    { 0, 0, 31, 1, 0 }, /* POINT point: workspace */
+    { 0, 0, 31, 1, 0 }, /* LINE start: workspace */
+    { 1, 0, 31, 1, 0 }, /* LINE end: workspace */
+    { 0, 0, 31, 1, 0 }, /* LINE5B start_pos: workspace */
+    { 1, 0, 31, 1, 0 }, /* LINE5B end_pos: workspace */
+    { 0, 0, 31, 1, 0 }, /* ARC start: workspace */
+    { 1, 0, 31, 1, 0 }, /* ARC middle: workspace */
+    { 2, 0, 31, 1, 0 }, /* ARC end: workspace */
+    { 0, 0, 31, 1, 0 }, /* ARC5B start_pos: workspace */
+    { 1, 0, 31, 1, 0 }, /* ARC5B mid_pos: workspace */
+    { 2, 0, 31, 1, 0 }, /* ARC5B end_pos: workspace */
+    { 0, 0, 31, 1, 0 }, /* CIRCLE start: workspace */
+    { 1, 0, 31, 1, 0 }, /* CIRCLE center: workspace */
+    { 0, 0, 31, 1, 0 }, /* CIRCLE5B start: workspace */
+    { 1, 0, 31, 1, 0 }, /* CIRCLE5B center: workspace */
+    { 0, 0, 31, 1, 0 }, /* HELIX start: workspace */
+    { 1, 0, 31, 1, 0 }, /* HELIX center: workspace */
+    { 0, 0, 31, 1, 0 }, /* HELIX5B start: workspace */
+    { 1, 0, 31, 1, 0 }, /* HELIX5B center: workspace */
+    { 0, 1, 31, 1, 1 }, /* SPEED speed: speed */
+    { 0, 2, 31, 1, 1 }, /* ACCEL accel: acceleration */
+    { 1, 2, 31, 1, 1 }, /* ACCEL decel: acceleration */
+    { 0, 1, 31, 1, 0 }, /* FCPARMS nom_speed: speed */
+    { 1, 1, 31, 1, 0 }, /* FCPARMS max_speed: speed */
+    { 2, 1, 31, 1, 0 }, /* FCPARMS min_speed: speed */
+};
+static const unsigned short cbf__mrule_first[CBF_LAYOUT__COUNT + 1] = { 0, 1, 1, 3, 5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 8, 10, 13, 16, 18, 20, 22, 24, 25, 27, 27, 27, 27, 30, 30, 30, 30 };
+
+/* A bound as the values it limits are stored: rounded to binary32, beyond its range infinite
+ * (a value equal to a bound written in decimal is inside); the same rule in every binding. */
+static double cbf__bound32(double b)
+{
+    if (b > 3.4028234663852886e38)
+        return HUGE_VAL;
+    if (b < -3.4028234663852886e38)
+        return -HUGE_VAL;
+    return (double)(float)b;
+}
+
+/* A finite target argument outside its limit: one finding, naming the first component out. */
+static void cbf__machine_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+{
+    const cbf_machine *m = (v->opt && v->opt->machine) ? v->opt->machine : &cbf_machine_default;
+    unsigned j;
+    for (j = cbf__mrule_first[layout]; j < cbf__mrule_first[layout + 1]; j++) {
+        const cbf__mrule *r = &cbf__mrules[j];
+        const cbf_field_info *f = cbf__layout_arg(layout, r->arg);
+        const cbf_machine_range *lim = &m->limit[r->limit];
+        double x[CBF_MACHINE_MAX_AXES];
+        unsigned i, n;
+        int finite = 1, le_zero = 0;
+        if (!f || f->kind != CBF__K_FLOAT || f->count > CBF_MACHINE_MAX_AXES)
+            continue;
+        n = f->count;
+        for (i = 0; i < n; i++) {
+            uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
+            finite &= cbf__bits_finite(u);
+            x[i] = (double)cbf__bits_f4(u);
+            if (x[i] <= 0.0)
+                le_zero = 1;
+        }
+        if (!finite || (r->positive && le_zero))
+            continue; /* the finite check's, or the positive check's */
+        for (i = 0; i < n; i++) {
+            if (x[i] < cbf__bound32(lim->min[i]) || x[i] > cbf__bound32(lim->max[i])) {
+                char msg[256];
+                cbf_finding fd;
+                const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][i] : NULL;
+                (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
+                               cbf__commands[cmd].name, f->name, axis ? " " : "", axis ? axis : "", x[i],
+                               cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[i],
+                               lim->max[i], cbf_machine_limit_units[r->limit]);
+                fd.check = cbf__checks[r->check].id;
+                fd.severity = (v->opt && v->opt->machine) ? (r->given_error ? CBF_SEVERITY_ERROR : CBF_SEVERITY_WARNING)
+                                                          : cbf__checks[r->check].severity;
+                fd.record = rec;
+                fd.offset = args_off + f->offset;
+                fd.message = msg;
+                if (fd.severity == CBF_SEVERITY_ERROR)
+                    v->errors++;
+                if (v->fn)
+                    v->fn(v->user, &fd);
+                break;
+            }
+        }
+    }
+}
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -3732,6 +3927,7 @@ static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long r
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s %s is not finite", cbf__commands[cmd].name, "completion");
     cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_range: CHECKPOINT completion */
     cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_CHECKPOINT, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
 }
 
 /* CHECKPOINT_V1: 16 argument bytes */
@@ -3755,6 +3951,7 @@ static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, long rec, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "head_length");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], a, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_CUTTER, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__cutter(v, CBF_LAYOUT_CUTTER, a, rec, ao);
 }
 
@@ -3770,6 +3967,7 @@ static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a, long re
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], a, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], a, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_CUTTER_V1, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__cutter(v, CBF_LAYOUT_CUTTER_V1, a, rec, ao);
 }
 
@@ -3848,6 +4046,7 @@ static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, long rec, s
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     if (!cbf__finite_at(a + 0, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_POINT, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, -1, 0, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -3861,6 +4060,7 @@ static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, long rec, si
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!cbf__finite_at(a + 12, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_LINE, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -3878,6 +4078,7 @@ static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, long rec, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!cbf__finite_at(a + 36, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_LINE5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 24, 36);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -3894,6 +4095,7 @@ static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long rec, siz
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "middle");
     if (!cbf__finite_at(a + 24, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_ARC, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -3913,6 +4115,7 @@ static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, long rec, s
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!cbf__finite_at(a + 48, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_ARC5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 36, 48);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -3932,6 +4135,7 @@ static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, long rec, 
     if (!cbf__finite_at(a + 36, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
     cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], a, rec, ao); /* normal_nonzero: CIRCLE normal */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_CIRCLE, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -3954,6 +4158,7 @@ static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a, long rec
     if (!cbf__finite_at(a + 52, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], a, rec, ao); /* normal_nonzero: CIRCLE5B normal */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_CIRCLE5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 40, 52);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -3975,6 +4180,7 @@ static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, long rec, s
     if (!cbf__finite_at(a + 40, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
     cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], a, rec, ao); /* normal_nonzero: HELIX normal */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_HELIX, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -3999,6 +4205,7 @@ static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, long rec,
     if (!cbf__finite_at(a + 56, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], a, rec, ao); /* normal_nonzero: HELIX5B normal */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_HELIX5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 44, 56);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4012,6 +4219,7 @@ static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, long rec, s
     if (!cbf__finite_at(a + 0, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
     cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], a, rec, ao); /* speed_positive: SPEED speed */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_SPEED, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
 }
 
 /* ACCEL: 8 argument bytes */
@@ -4025,6 +4233,7 @@ static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, long rec, s
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "decel");
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], a, rec, ao); /* accel_positive: ACCEL accel decel */
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], a, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_ACCEL, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
 }
 
 /* CUTTER_ON: 0 argument bytes */
@@ -4062,6 +4271,7 @@ static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, long rec,
     if (!cbf__finite_at(a + 12, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "max_force");
     cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
+    cbf__machine_checks(v, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
 }
 
 /* VERSION: 32 argument bytes */

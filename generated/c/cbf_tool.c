@@ -4,7 +4,7 @@
  *
  * GENERATED from spec/cbf.yaml by cbfgen (generator/cbfgen/emit/c). Do not edit.
  *
- *   cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] FILE...
+ *   cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] FILE...
  *   cbf-c dump FILE
  *   cbf-c --version
  *
@@ -238,6 +238,469 @@ static int load_cutters(const char *path)
     return cutters_csv((char *)cutter_text);
 }
 
+/* ---- machine files (decision L1, check machine_limits; machine_file.inc.j2) ----
+ * The JSON form of `machine:` in spec/cbf.yaml (schema generated/python/cbf/machine.schema.json):
+ *   {"name": "...", "limits": {"<limit>": {"unit": "<the spec's unit>", "min": N | [N, ...],
+ *    "max": N | [N, ...], "axes": [...], "doc": "..."}, ...}}
+ * every limit of cbf_machine_limit_names with unit, min and max; one number per axis for a box;
+ * min <= max. cbf (Python) reads the same file, and YAML too; cbf-c reads JSON only. A bad
+ * file gives one line naming the file and the JSON path (or line and column), as cbf says it. */
+#include <float.h>
+#include <stdarg.h>
+
+static cbf_machine machine_file;
+static char machine_why[8192];
+static char machine_text[1u << 16];
+
+typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
+
+static const char *const machine_file_keys[] = { "name", "doc", "decision", "limits", NULL };
+static const char *const machine_limit_keys[] = { "unit", "min", "max", "doc", "axes", NULL };
+
+static int mj_fail(mjson *j, const char *path, const char *fmt, ...) CBF__PRINTF(3, 4);
+static int mj_fail(mjson *j, const char *path, const char *fmt, ...)
+{
+    va_list ap;
+    size_t k;
+    (void)snprintf(machine_why, sizeof machine_why, "%s: %s: ", j->file, path);
+    k = strlen(machine_why);
+    va_start(ap, fmt);
+    (void)vsnprintf(machine_why + k, sizeof machine_why - k, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+static int mj_syntax(mjson *j, const char *what)
+{
+    unsigned long line = 1, col = 1;
+    size_t k;
+    for (k = 0; k < j->i && k < j->n; k++) {
+        if (j->s[k] == '\n') {
+            line++;
+            col = 1;
+        } else {
+            col++;
+        }
+    }
+    (void)snprintf(machine_why, sizeof machine_why, "%s: line %lu, column %lu: not JSON (%s)", j->file, line, col,
+                   what);
+    return 0;
+}
+
+static void mj_ws(mjson *j)
+{
+    while (j->i < j->n && (j->s[j->i] == ' ' || j->s[j->i] == '\t' || j->s[j->i] == '\n' || j->s[j->i] == '\r'))
+        j->i++;
+}
+
+static int mj_peek(mjson *j)
+{
+    mj_ws(j);
+    return j->i < j->n ? (unsigned char)j->s[j->i] : -1;
+}
+
+static int mj_hex4(const char *p, unsigned *out)
+{
+    unsigned k, v = 0;
+    for (k = 0; k < 4; k++) {
+        char c = p[k];
+        v <<= 4;
+        if (c >= '0' && c <= '9') v |= (unsigned)(c - '0');
+        else if (c >= 'a' && c <= 'f') v |= (unsigned)(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F') v |= (unsigned)(c - 'A' + 10);
+        else return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+/* A JSON string into out (UTF-8 as given; \u escapes above ASCII become '?': no key or unit has them). */
+static int mj_string(mjson *j, char *out, size_t cap)
+{
+    size_t k = 0;
+    if (mj_peek(j) != '"')
+        return mj_syntax(j, "expected a string");
+    j->i++;
+    for (;;) {
+        char c;
+        if (j->i >= j->n)
+            return mj_syntax(j, "unterminated string");
+        c = j->s[j->i++];
+        if (c == '"')
+            break;
+        if ((unsigned char)c < 0x20)
+            return mj_syntax(j, "control character in a string");
+        if (c == '\\') {
+            unsigned u;
+            if (j->i >= j->n)
+                return mj_syntax(j, "unterminated string");
+            c = j->s[j->i++];
+            switch (c) {
+            case '"': case '\\': case '/': break;
+            case 'b': c = '\b'; break;
+            case 'f': c = '\f'; break;
+            case 'n': c = '\n'; break;
+            case 'r': c = '\r'; break;
+            case 't': c = '\t'; break;
+            case 'u':
+                if (j->n - j->i < 4 || !mj_hex4(j->s + j->i, &u))
+                    return mj_syntax(j, "bad \\u escape");
+                j->i += 4;
+                c = u < 0x80u ? (char)u : '?';
+                break;
+            default:
+                return mj_syntax(j, "bad escape");
+            }
+        }
+        if (k + 1 >= cap)
+            return mj_syntax(j, "string too long");
+        out[k++] = c;
+    }
+    out[k] = 0;
+    return 1;
+}
+
+/* A JSON number (RFC 8259 grammar); *finite says whether it fits a double. */
+static int mj_number(mjson *j, double *out, int *finite)
+{
+    size_t start = j->i, len;
+    char buf[128];
+    if (j->i < j->n && j->s[j->i] == '-')
+        j->i++;
+    if (j->i < j->n && j->s[j->i] == '0') {
+        j->i++;
+    } else if (j->i < j->n && j->s[j->i] >= '1' && j->s[j->i] <= '9') {
+        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
+            j->i++;
+    } else {
+        return mj_syntax(j, "expected a value");
+    }
+    if (j->i < j->n && j->s[j->i] == '.') {
+        j->i++;
+        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
+            return mj_syntax(j, "expected a digit");
+        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
+            j->i++;
+    }
+    if (j->i < j->n && (j->s[j->i] == 'e' || j->s[j->i] == 'E')) {
+        j->i++;
+        if (j->i < j->n && (j->s[j->i] == '+' || j->s[j->i] == '-'))
+            j->i++;
+        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
+            return mj_syntax(j, "expected a digit");
+        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
+            j->i++;
+    }
+    len = j->i - start;
+    if (len >= sizeof buf)
+        return mj_syntax(j, "number too long");
+    memcpy(buf, j->s + start, len);
+    buf[len] = 0;
+    *out = strtod(buf, NULL);
+    *finite = *out <= DBL_MAX && *out >= -DBL_MAX; /* false for an overflow (HUGE_VAL) and for NaN */
+    return 1;
+}
+
+/* The kind of the next value, for "expected ..." (0 when it does not start a value). */
+static int mj_kind(mjson *j)
+{
+    int c = mj_peek(j);
+    if (c == '{' || c == '[' || c == '"') return c;
+    if (c == '-' || (c >= '0' && c <= '9')) return 'n';
+    if (c == 't' || c == 'f' || c == 'n') return 'l';
+    return 0;
+}
+
+static int mj_expect_number(mjson *j, const char *path, double *out)
+{
+    int finite = 0;
+    if (mj_kind(j) != 'n') {
+        if (!mj_kind(j))
+            return mj_syntax(j, "expected a value");
+        return mj_fail(j, path, "expected a number");
+    }
+    if (!mj_number(j, out, &finite))
+        return 0;
+    if (!finite)
+        return mj_fail(j, path, "not a finite number");
+    return 1;
+}
+
+/* "{" key ":" value ("," key ":" value)* "}": calls on_key for each key, with the duplicate check. */
+typedef int (*mj_key_fn)(mjson *j, const char *path, const char *key, void *ctx);
+
+static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
+{
+    char keys[16][64];
+    size_t nkeys = 0, k;
+    if (mj_kind(j) != '{')
+        return mj_kind(j) ? mj_fail(j, path, "expected an object") : mj_syntax(j, "expected a value");
+    j->i++;
+    if (mj_peek(j) == '}') {
+        j->i++;
+        return 1;
+    }
+    for (;;) {
+        char key[64];
+        if (!mj_string(j, key, sizeof key))
+            return 0;
+        if (mj_peek(j) != ':')
+            return mj_syntax(j, "expected ':'");
+        j->i++;
+        for (k = 0; k < nkeys; k++)
+            if (strcmp(keys[k], key) == 0)
+                return mj_fail(j, path, "duplicate key '%s'", key);
+        if (nkeys < 16)
+            (void)snprintf(keys[nkeys++], sizeof keys[0], "%s", key);
+        if (!on_key(j, path, key, ctx))
+            return 0;
+        if (mj_peek(j) == ',') {
+            j->i++;
+            continue;
+        }
+        if (mj_peek(j) == '}') {
+            j->i++;
+            return 1;
+        }
+        return mj_syntax(j, "expected ',' or '}'");
+    }
+}
+
+static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known)
+{
+    char list[512];
+    size_t k, at = 0;
+    list[0] = 0;
+    for (k = 0; known[k]; k++)
+        at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
+    return mj_fail(j, path, "unknown key '%s' (known: %s)", key, list);
+}
+
+/* A string the reader keeps nowhere (name, doc, decision). */
+static int mj_any_string(mjson *j, const char *path)
+{
+    char skip[4096];
+    if (mj_kind(j) != '"')
+        return mj_kind(j) ? mj_fail(j, path, "expected a string") : mj_syntax(j, "expected a value");
+    return mj_string(j, skip, sizeof skip);
+}
+
+typedef struct mj_limit { int index; unsigned seen; } mj_limit;
+
+/* min or max: a number, or for a box a list of one number per axis. */
+static int mj_bound(mjson *j, const char *path, int li, double *out)
+{
+    int naxes = cbf_machine_limit_axes[li], n = 0;
+    char ipath[320];
+    if (!naxes)
+        return mj_expect_number(j, path, out);
+    if (mj_kind(j) != '[')
+        return mj_kind(j) ? mj_fail(j, path, "expected a list") : mj_syntax(j, "expected a value");
+    j->i++;
+    if (mj_peek(j) != ']') {
+        for (;;) {
+            double x;
+            (void)snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
+            if (!mj_expect_number(j, ipath, &x))
+                return 0;
+            if (n < naxes)
+                out[n] = x;
+            n++;
+            if (mj_peek(j) == ',') {
+                j->i++;
+                continue;
+            }
+            break;
+        }
+    }
+    if (mj_peek(j) != ']')
+        return mj_syntax(j, "expected ',' or ']'");
+    j->i++;
+    if (n != naxes)
+        return mj_fail(j, path, "expected %d items, got %d", naxes, n);
+    return 1;
+}
+
+/* axes: a list of strings equal to the spec's axes (optional). */
+static int mj_axes(mjson *j, const char *path, int li)
+{
+    char got[512], item[64], ipath[320];
+    size_t at = 0;
+    int n = 0, same = 1, naxes = cbf_machine_limit_axes[li];
+    if (mj_kind(j) != '[')
+        return mj_kind(j) ? mj_fail(j, path, "expected a list") : mj_syntax(j, "expected a value");
+    j->i++;
+    at += (size_t)snprintf(got, sizeof got, "[");
+    if (mj_peek(j) != ']') {
+        for (;;) {
+            (void)snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
+            if (mj_kind(j) != '"')
+                return mj_kind(j) ? mj_fail(j, ipath, "expected a string") : mj_syntax(j, "expected a value");
+            if (!mj_string(j, item, sizeof item))
+                return 0;
+            if (n >= naxes || strcmp(item, cbf_machine_limit_axis_names[li][n]) != 0)
+                same = 0;
+            if (at < sizeof got)
+                at += (size_t)snprintf(got + at, sizeof got - at, "%s\"%s\"", n ? ", " : "", item);
+            n++;
+            if (mj_peek(j) == ',') {
+                j->i++;
+                continue;
+            }
+            break;
+        }
+    }
+    if (mj_peek(j) != ']')
+        return mj_syntax(j, "expected ',' or ']'");
+    j->i++;
+    if (at < sizeof got)
+        (void)snprintf(got + at, sizeof got - at, "]");
+    if (!same || n != naxes) {
+        char want[256];
+        int k;
+        size_t w = (size_t)snprintf(want, sizeof want, "[");
+        for (k = 0; k < naxes; k++)
+            w += (size_t)snprintf(want + w, sizeof want - w, "%s\"%s\"", k ? ", " : "", cbf_machine_limit_axis_names[li][k]);
+        (void)snprintf(want + w, sizeof want - w, "]");
+        return mj_fail(j, path, "must be %s, got %s", want, got);
+    }
+    return 1;
+}
+
+static int mj_limit_key(mjson *j, const char *path, const char *key, void *ctx)
+{
+    mj_limit *L = (mj_limit *)ctx;
+    cbf_machine_range *r = &machine_file.limit[L->index];
+    char kpath[256];
+    unsigned k;
+    for (k = 0; machine_limit_keys[k]; k++)
+        if (strcmp(machine_limit_keys[k], key) == 0)
+            break;
+    if (!machine_limit_keys[k] || (strcmp(key, "axes") == 0 && !cbf_machine_limit_axes[L->index])) {
+        const char *known[8];
+        unsigned n = 0, q;
+        for (q = 0; machine_limit_keys[q] && n < 7; q++)
+            if (strcmp(machine_limit_keys[q], "axes") != 0 || cbf_machine_limit_axes[L->index])
+                known[n++] = machine_limit_keys[q];
+        known[n] = NULL;
+        return mj_unknown(j, path, key, known);
+    }
+    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
+    L->seen |= 1u << k;
+    if (strcmp(key, "unit") == 0) {
+        char unit[64];
+        if (mj_kind(j) != '"')
+            return mj_kind(j) ? mj_fail(j, kpath, "expected a string") : mj_syntax(j, "expected a value");
+        if (!mj_string(j, unit, sizeof unit))
+            return 0;
+        if (strcmp(unit, cbf_machine_limit_units[L->index]) != 0)
+            return mj_fail(j, kpath, "must be \"%s\", got \"%s\"", cbf_machine_limit_units[L->index], unit);
+        return 1;
+    }
+    if (strcmp(key, "min") == 0)
+        return mj_bound(j, kpath, L->index, r->min);
+    if (strcmp(key, "max") == 0)
+        return mj_bound(j, kpath, L->index, r->max);
+    if (strcmp(key, "axes") == 0)
+        return mj_axes(j, kpath, L->index);
+    return mj_any_string(j, kpath);
+}
+
+static int mj_limits_key(mjson *j, const char *path, const char *key, void *ctx)
+{
+    unsigned *seen = (unsigned *)ctx;
+    char kpath[256];
+    mj_limit L;
+    int li;
+    for (li = 0; li < CBF_MACHINE__COUNT; li++)
+        if (strcmp(cbf_machine_limit_names[li], key) == 0)
+            break;
+    if (li == CBF_MACHINE__COUNT)
+        return mj_unknown(j, path, key, cbf_machine_limit_names);
+    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
+    *seen |= 1u << li;
+    L.index = li;
+    L.seen = 0;
+    if (!mj_object(j, kpath, mj_limit_key, &L))
+        return 0;
+    {
+        static const char *const required[] = { "unit", "min", "max" };
+        unsigned q, k;
+        for (q = 0; q < 3; q++) {
+            for (k = 0; machine_limit_keys[k]; k++)
+                if (strcmp(machine_limit_keys[k], required[q]) == 0)
+                    break;
+            if (!(L.seen & (1u << k)))
+                return mj_fail(j, kpath, "missing '%s'", required[q]);
+        }
+    }
+    return 1;
+}
+
+static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
+{
+    unsigned *seen = (unsigned *)ctx;
+    char kpath[256];
+    unsigned k;
+    for (k = 0; machine_file_keys[k]; k++)
+        if (strcmp(machine_file_keys[k], key) == 0)
+            break;
+    if (!machine_file_keys[k])
+        return mj_unknown(j, path, key, machine_file_keys);
+    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
+    if (strcmp(key, "limits") == 0) {
+        unsigned lseen = 0;
+        int li;
+        seen[0] = 1;
+        if (!mj_object(j, kpath, mj_limits_key, &lseen))
+            return 0;
+        for (li = 0; li < CBF_MACHINE__COUNT; li++)
+            if (!(lseen & (1u << li)))
+                return mj_fail(j, kpath, "missing '%s'", cbf_machine_limit_names[li]);
+        return 1;
+    }
+    return mj_any_string(j, kpath);
+}
+
+/* Read a machine file into machine_file; 0 with the one line in machine_why. */
+static int load_machine(const char *path)
+{
+    const char *why;
+    long n = read_file(path, (uint8_t *)machine_text, sizeof machine_text - 1, &why);
+    mjson j;
+    unsigned has_limits = 0;
+    int li, a;
+    if (n < 0) {
+        (void)snprintf(machine_why, sizeof machine_why, "%s: cannot read machine file (%s)", path, why);
+        return 0;
+    }
+    machine_text[n] = 0;
+    memset(&machine_file, 0, sizeof machine_file);
+    j.s = machine_text;
+    j.n = (size_t)n;
+    j.i = 0;
+    j.file = path;
+    if (!mj_object(&j, "$", mj_top_key, &has_limits))
+        return 0;
+    if (mj_peek(&j) != -1)
+        return mj_syntax(&j, "extra data");
+    if (!has_limits)
+        return mj_fail(&j, "$", "missing 'limits'");
+    for (li = 0; li < CBF_MACHINE__COUNT; li++) {
+        int naxes = cbf_machine_limit_axes[li];
+        for (a = 0; a < (naxes ? naxes : 1); a++) {
+            if (machine_file.limit[li].min[a] > machine_file.limit[li].max[a]) {
+                char lpath[128];
+                (void)snprintf(lpath, sizeof lpath, "$.limits.%s", cbf_machine_limit_names[li]);
+                if (naxes)
+                    return mj_fail(&j, lpath, "min exceeds max on axis %s", cbf_machine_limit_axis_names[li][a]);
+                return mj_fail(&j, lpath, "min exceeds max");
+            }
+        }
+    }
+    return 1;
+}
+
 static const char *current_file;
 static long current_warnings;
 static const char *const profile_names[] = { "default", "implib" };
@@ -308,7 +771,7 @@ static int read_cbf(const char *path, size_t *size)
 
 static void usage(void)
 {
-    fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] FILE...\n"
+    fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] FILE...\n"
           "       cbf-c dump FILE\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
@@ -342,6 +805,12 @@ static int cmd_validate(int argc, char **argv)
             }
             opt.cutters = cutters;
             opt.ncutters = ncutters;
+        } else if (strcmp(argv[i], "--machine") == 0 && i + 1 < argc) { /* machine limits (L1): errors */
+            if (!load_machine(argv[++i])) {
+                fprintf(stderr, "cbf-c: %s\n", machine_why);
+                return EXIT_USAGE;
+            }
+            opt.machine = &machine_file;
         } else if (argv[i][0] == '-' && argv[i][1]) {
             usage();
             return EXIT_USAGE;
@@ -351,7 +820,7 @@ static int cmd_validate(int argc, char **argv)
         size_t n;
         long errors;
         if (strcmp(argv[i], "--profile") == 0 || strcmp(argv[i], "--part-number") == 0
-            || strcmp(argv[i], "--cutters") == 0) {
+            || strcmp(argv[i], "--cutters") == 0 || strcmp(argv[i], "--machine") == 0) {
             i++;
             continue;
         }

@@ -30,8 +30,9 @@ doc: 'The CBF file provides the toolpath information for cutting implant cavitie
   (Acceleration and deceleration are greater than 0.); cutter_positive (Cutter length and radius are greater than 0.); normal_nonzero
   (A circle or helix normal has non-zero length.); checkpoint_range (CHECKPOINT completion lies in 0..100.); checkpoint_falling
   (CHECKPOINT completion does not fall.); fcparms_order (FCPARMS speeds satisfy min <= nom <= max.); orientation_jump (A 5-axis
-  command starts at the current tool orientation.); shape (STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion
-  commands; shapes do not nest.).'
+  command starts at the current tool orientation.); machine_limits (Positions lie in the machine''s workspace; speeds, accelerations
+  and cutter sizes lie in its ranges.); shape (STARTSHAPE name,n ... ENDSHAPE name,n enclose exactly n motion commands; shapes
+  do not nest.).'
 doc-ref: Specification, Implant Support Software, TCAT, part number 300071, revision 03
 seq:
 - id: header

@@ -405,9 +405,33 @@ def diff(old: Spec, new: Spec, old_name: str = "OLD", new_name: str = "NEW") -> 
         a, b = old.tolerances.get(name), new.tolerances.get(name)
         if a != b:
             out.append(Change("tolerance_changed", None, None, f"{name}: {a} -> {b}", False))
+    out += _machine(old, new)
     if old.revision != new.revision:
         out.append(Change("revision_changed", None, None, f"{old.revision} -> {new.revision}", False))
     return Diff(old_name, new_name, tuple(out))
+
+
+def _machine(old: Spec, new: Spec) -> list[Change]:
+    """The machine limits (L1). The default machine's bounds only move warnings: not breaking. A
+    limit added or removed, or another unit or axes, is: a machine file written for OLD is refused
+    (or would be read in other units) under NEW, and its findings are errors."""
+    out: list[Change] = []
+    olim = {lim.name: lim for lim in old.machine.limits}
+    nlim = {lim.name: lim for lim in new.machine.limits}
+    for name in olim.keys() - nlim.keys():
+        out.append(Change("machine_limit_removed", None, None, f"{name} ({olim[name].unit})", True))
+    for name in nlim.keys() - olim.keys():
+        out.append(Change("machine_limit_added", None, None, f"{name} ({nlim[name].unit})", True))
+    for name in sorted(olim.keys() & nlim.keys()):
+        a, b = olim[name], nlim[name]
+        if (a.unit, a.axes) != (b.unit, b.axes):
+            out.append(Change("machine_limit_changed", None, None,
+                              f"{name}: unit {a.unit} -> {b.unit}, axes {list(a.axes)} -> {list(b.axes)}", True))
+        if (a.min, a.max) != (b.min, b.max):
+            out.append(Change("machine_default_changed", None, None,
+                              f"{name}: {_short(list(a.min))}..{_short(list(a.max))} -> "
+                              f"{_short(list(b.min))}..{_short(list(b.max))}", False))
+    return out
 
 
 def version_steps(spec: Spec) -> list[tuple[str, str, list[Change]]]:

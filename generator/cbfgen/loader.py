@@ -26,6 +26,8 @@ from .model import (
     Field,
     HeaderLayout,
     Layout,
+    Machine,
+    MachineLimit,
     Note,
     PrimitiveType,
     Profile,
@@ -391,6 +393,8 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
     if profiles[0].id != "default":
         raise ctx.fail(raw["profiles"], "the first profile must be 'default'")
 
+    machine = _machine(ctx, raw["machine"], raw["units"])
+
     # -- checks --------------------------------------------------------------
     checks: list[Check] = []
     cmd_by_name = {c.name: c for c in commands}
@@ -404,11 +408,17 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
                 raise ctx.fail(t, f"check {ch['id']}: unknown command {t['command']}", "command")
             for argname in t["args"]:
                 _require_arg(ctx, t, tcmd, argname, f"check {ch['id']}")
-            targets.append(Target(t["command"], tuple(t["args"])))
+            if ("limit" in t) != (ch["kind"] == "machine_limits"):
+                raise ctx.fail(t, f"check {ch['id']}: a target names a limit exactly when its kind is "
+                                  f"machine_limits", "limit" if "limit" in t else "command")
+            if "limit" in t:
+                _machine_target(ctx, t, tcmd, machine, ch["id"])
+            targets.append(Target(t["command"], tuple(t["args"]), t.get("limit")))
         for v in ch.get("versions", []):
             if v not in vids:
                 raise ctx.fail(ch, f"check {ch['id']}: unknown version {v!r}", "versions")
-        if ch["kind"] in ("positive", "nonzero_vector", "range", "nondecreasing", "ordered") and not targets:
+        if ch["kind"] in ("positive", "nonzero_vector", "range", "nondecreasing", "ordered",
+                          "machine_limits") and not targets:
             raise ctx.fail(ch, f"check {ch['id']}: kind {ch['kind']} needs targets", "kind")
         if ch["kind"] == "availability" and not ch.get("versions"):
             raise ctx.fail(ch, f"check {ch['id']}: availability needs versions", "kind")
@@ -418,11 +428,13 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
         checks.append(
             Check(id=str(ch["id"]), kind=ch["kind"], severity=ch["severity"], text=str(ch["text"]).strip(),
                   fails=" ".join(str(ch["fails"]).split()), line=ch.line, clause=ch.get("clause"),
-                  decision=ch.get("decision"), input=ch.get("input"), versions=tuple(ch.get("versions", [])),
+                  decision=ch.get("decision"), input=ch.get("input"), input_severity=ch.get("input_severity"),
+                  versions=tuple(ch.get("versions", [])),
                   commands=tuple(ch.get("commands", [])), targets=tuple(targets), min=ch.get("min"),
                   max=ch.get("max"))
         )
     _check_availability(ctx, raw["checks"], checks, commands, vids)
+    _check_machine_coverage(ctx, raw["checks"], checks, commands, machine)
 
     for c in commands:
         if not any(c.available_in(v.id) for v in versions):
@@ -434,6 +446,8 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
     for ch in checks:
         if ch.decision and ch.decision not in known_notes:
             raise SpecError(ctx.path, ch.line, f"check {ch.id}: unknown decision {ch.decision!r}")
+    if machine.decision not in known_notes:
+        raise ctx.fail(raw["machine"], f"machine: unknown decision {machine.decision!r}", "decision")
     errata = tuple(Note(e["id"], e["clause"], str(e["text"]), clause=e["clause"]) for e in raw["errata"])
     history = tuple(Note(h["version"], h["version"], str(h["text"]), clause=h["clause"], date=str(h["date"]))
                     for h in raw["history"])
@@ -452,6 +466,7 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
         profiles=tuple(profiles),
         tolerances={k: float(v) for k, v in raw["tolerances"].items()},
         limits={k: int(v) for k, v in raw["limits"].items()},
+        machine=machine,
         checks=tuple(checks),
         cut=_plain(raw["cut"]),
         decisions=decisions,
@@ -488,6 +503,69 @@ def _check_availability(ctx: _Ctx, raws: _Seq, checks: list[Check], commands: li
             if not cmd.available_in(v) and (v, cmd.name) not in covered:
                 raise SpecError(ctx.path, cmd.line, f"{cmd.name} has no layout in version {v} and no availability "
                                                     f"check covers it (name it in a check's commands)")
+
+
+def _machine(ctx: _Ctx, m: _Map, units: _Map) -> Machine:
+    """The default machine (L1): each limit's unit is a unit of the spec, min <= max, a box has
+    one bound per axis."""
+    limits: list[MachineLimit] = []
+    for name, lim in m["limits"].items():
+        node = m["limits"][name]
+        if lim["unit"] not in units:
+            raise ctx.fail(node, f"machine limit {name}: unknown unit {lim['unit']!r}", "unit")
+        axes = tuple(str(a) for a in lim.get("axes", []))
+        lo, hi = lim["min"], lim["max"]
+        want = len(axes) if axes else None
+        for key, v in (("min", lo), ("max", hi)):
+            if (want is None) != (not isinstance(v, list)) or (want is not None and len(v) != want):
+                raise ctx.fail(node, f"machine limit {name}: {key} must be "
+                                     + (f"a list of {want} numbers (one per axis)" if want else "a number"), key)
+        los = tuple(float(x) for x in (lo if isinstance(lo, list) else [lo]))
+        his = tuple(float(x) for x in (hi if isinstance(hi, list) else [hi]))
+        if any(a > b for a, b in zip(los, his, strict=True)):
+            raise ctx.fail(node, f"machine limit {name}: min exceeds max", "min")
+        limits.append(MachineLimit(str(name), str(lim["unit"]), los, his, axes, str(lim["doc"]).strip()))
+    return Machine(str(m["decision"]), str(m["doc"]).strip(), tuple(limits))
+
+
+def _machine_target(ctx: _Ctx, t: _Map, cmd: Command, machine: Machine, cid: str) -> None:
+    """A machine_limits target: its limit exists, and every layout's argument of that name has the
+    limit's unit and shape (a box bounds float vectors of as many components as it has axes)."""
+    try:
+        lim = machine.limit(str(t["limit"]))
+    except KeyError:
+        raise ctx.fail(t, f"check {cid}: unknown machine limit {t['limit']!r}", "limit") from None
+    for lay in cmd.layouts:
+        for name in t["args"]:
+            a = lay.arg(name)
+            if a is None:
+                continue
+            shape_ok = a.kind == "float" and a.count == (len(lim.axes) if lim.axes else 1)
+            if a.unit != lim.unit or not shape_ok:
+                raise ctx.fail(t, f"check {cid}: {cmd.name}.{name} ({a.type} x{a.count}, unit {a.unit}) does not "
+                                  f"fit machine limit {lim.name} (unit {lim.unit}"
+                                  + (f", {len(lim.axes)} axes)" if lim.axes else ", a scalar)"), "args")
+
+
+def _check_machine_coverage(ctx: _Ctx, raws: _Seq, checks: list[Check], commands: list[Command],
+                            machine: Machine) -> None:
+    """Which arguments are positions comes from the model: every float vector argument whose unit is a
+    box limit's unit (mm: points, starts, ends, centres) is targeted by that limit."""
+    covered = {(t.command, a) for ch in checks if ch.kind == "machine_limits" for t in ch.targets
+               if t.limit and machine.limit(t.limit).is_vector for a in t.args}
+    if not any(ch.kind == "machine_limits" for ch in checks):
+        return
+    for lim in machine.limits:
+        if not lim.is_vector:
+            continue
+        for cmd in commands:
+            for lay in cmd.layouts:
+                for a in lay.args:
+                    if a.kind == "float" and a.count == len(lim.axes) and a.unit == lim.unit \
+                            and (cmd.name, a.name) not in covered:
+                        raise SpecError(ctx.path, lay.line, f"{cmd.name}.{a.name} is a position ({a.count} x "
+                                                            f"{a.unit}) that no machine_limits target bounds by "
+                                                            f"limit {lim.name}")
 
 
 def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str) -> None:

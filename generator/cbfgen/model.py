@@ -270,6 +270,44 @@ class Profile:
 class Target:
     command: str
     args: tuple[str, ...]
+    limit: str | None = None  # machine_limits: the key of machine.limits that bounds the args
+
+
+@dataclass(frozen=True)
+class MachineLimit:
+    """One limit of a machine (decision L1): a range, or with ``axes`` a box (per component)."""
+
+    name: str
+    unit: str
+    min: tuple[float, ...]
+    max: tuple[float, ...]
+    axes: tuple[str, ...]  # empty for a scalar range
+    doc: str
+
+    @property
+    def is_vector(self) -> bool:
+        return bool(self.axes)
+
+
+# The keys of a machine file (cbf validate --machine FILE), in the order their messages list them:
+# the file's own, then a limit's. Both emitters (the Python schema, the C reader) read these.
+MACHINE_FILE_KEYS = ("name", "doc", "decision", "limits")
+MACHINE_LIMIT_KEYS = ("unit", "min", "max", "doc", "axes")
+
+
+@dataclass(frozen=True)
+class Machine:
+    """The default machine of check kind machine_limits; a machine file has the same limits."""
+
+    decision: str
+    doc: str
+    limits: tuple[MachineLimit, ...]
+
+    def limit(self, name: str) -> MachineLimit:
+        for lim in self.limits:
+            if lim.name == name:
+                return lim
+        raise KeyError(name)
 
 
 @dataclass(frozen=True)
@@ -283,6 +321,7 @@ class Check:
     clause: str | None = None
     decision: str | None = None
     input: str | None = None
+    input_severity: str | None = None  # the severity when the input is given (machine_limits: a machine file)
     versions: tuple[str, ...] = ()
     commands: tuple[str, ...] = ()  # availability: the commands it covers in its versions
     targets: tuple[Target, ...] = ()
@@ -322,6 +361,7 @@ class Spec:
     profiles: tuple[Profile, ...]
     tolerances: dict[str, float]
     limits: dict[str, int]
+    machine: Machine
     checks: tuple[Check, ...]
     cut: dict[str, Any]
     decisions: tuple[Note, ...]

@@ -24,8 +24,12 @@ def handle(req: dict[str, Any]) -> dict[str, Any]:
     if op == "validate":
         data = open(req["file"], "rb").read()
         cutters = cbf.load_cutter_table(req["cutters"]) if req.get("cutters") else None
+        try:
+            machine = cbf.load_machine(req["machine"]) if req.get("machine") else None
+        except cbf.CbfError as exc:
+            return {"ok": False, "error": {"kind": exc.kind, "offset": None, "message": str(exc)}}
         found = cbf.validate(data, profile=req.get("profile", "default"), part_number=req.get("part_number"),
-                             cutters=cutters)
+                             cutters=cutters, machine=machine)
         return {"ok": True, "findings": [f.as_dict() for f in found]}
     if op == "encode":
         try:

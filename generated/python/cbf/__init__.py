@@ -24,6 +24,7 @@ if TYPE_CHECKING:
     from .cutters import load_cutter_table
     from .errors import CbfError, CutSyntaxError, EncodeError, JsonShapeError, TruncatedError
     from .layouts import CommandCode
+    from .machine import load_machine
     from .model import Cbf, Record, new_header
     from .validation import Finding, validate
 
@@ -37,12 +38,14 @@ _EXPORTS = {
     "CbfError": "errors", "TruncatedError": "errors", "EncodeError": "errors", "JsonShapeError": "errors",
     "CutSyntaxError": "errors",
     "load_cutter_table": "cutters",
+    "load_machine": "machine",
 }
 
 __all__ = [
     "SPEC_REVISION", "__version__",
     "Cbf", "CbfError", "CommandCode", "CutSyntaxError", "EncodeError", "Finding", "JsonShapeError", "Record",
-    "TruncatedError", "decode", "encode", "from_canonical", "from_cut", "load_cutter_table", "new_header",
+    "TruncatedError", "decode", "encode", "from_canonical", "from_cut", "load_cutter_table", "load_machine",
+    "new_header",
     "to_canonical", "to_cut", "validate",
 ]
 

@@ -21,6 +21,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import ALGORITHM_KINDS, Field, Layout, Spec
 from ...render import environment
+from .machine import machine_context
 
 HERE = Path(__file__).parent
 OUT = "c"
@@ -51,6 +52,7 @@ CHECK_KINDS = (
     "header_checksum", "magic", "sequence", "code_copy", "arg_size", "arg_checksum", "continuity", "availability",
     "version", "unknown_code", "trailing", "reserved_byte", "string_tail", "string_ascii", "finite", "positive",
     "nonzero_vector", "range", "nondecreasing", "ordered", "orientation", "shape",
+    "machine_limits",  # machine.h.j2
 )
 
 
@@ -179,6 +181,8 @@ def _plan_layout(lay: dict[str, Any], cmd: dict[str, Any], checks: list[dict[str
         rows = [tindex[tg["first"] + a][lay["index"]] for a in range(tg["n"])]
         floats = [lay["first_arg"] + i for i in rows if i >= 0 and args[i]["kind"] == "FLOAT"]
         kind = checks[ct["check"]]["kind"]
+        if kind == "KIND_MACHINE_LIMITS":
+            continue  # cbf__machine_checks (cbf/machine.h.j2) with its own rules, machine.py
         # a check finds nothing in a layout without its float arguments (ordered: without all of them)
         if floats if kind != "KIND_ORDERED" else len(floats) == len(rows):
             lay["plan"]["targets"].append({"check": ct["check"], "target": ct["target"], "kind": kind,
@@ -450,6 +454,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["macro"] = macro
     env.filters["wrap"] = lambda s, width=76, indent="" : ("\n" + indent).join(textwrap.wrap(s, width))
     ctx = context(spec)
+    ctx.update(machine_context(spec, ctx["layouts"], cfloat, macro))  # machine.h.j2 (L1)
     out: dict[str, bytes] = {}
     for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         out[f"{OUT}/{name}"] = env.get_template(name + ".j2").render(**ctx).encode()

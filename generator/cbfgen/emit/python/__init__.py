@@ -12,6 +12,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...render import environment
+from .machine import machine_data, machine_schema
 
 HERE = Path(__file__).parent
 PKG = "python/cbf"
@@ -83,11 +84,12 @@ def spec_data(spec: Spec) -> dict[str, Any]:
                      for p in spec.profiles},
         "tolerances": spec.tolerances,
         "limits": spec.limits,
+        "machine": machine_data(spec),
         "checks": [
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
              "commands": list(c.commands),
-             "targets": [{"command": t.command, "args": list(t.args)} for t in c.targets],
-             "min": c.min, "max": c.max, "input": c.input}
+             "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
+             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity}
             for c in spec.checks
         ],
         "cut": spec.cut,
@@ -158,6 +160,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     ).encode()
     out[f"{PKG}/layouts.py"] = env.get_template("layouts.py.j2").render(spec=spec).encode()
     out[f"{PKG}/canonical.schema.json"] = (json.dumps(canonical_schema(spec), indent=1) + "\n").encode()
+    out[f"{PKG}/machine.schema.json"] = (json.dumps(machine_schema(spec), indent=1) + "\n").encode()
     out[f"{PKG}/py.typed"] = b""
     for src in sorted((HERE / "runtime").glob("*.py")):
         out[f"{PKG}/{src.name}"] = src.read_bytes()

@@ -409,8 +409,16 @@ def cmd_validate(a: argparse.Namespace) -> int:
             cutters = load_cutter_table(a.cutters)
         except CbfError as exc:
             raise _Fail(exc.message) from None  # names the table and its line already
+    machine = None
+    if a.machine:
+        from .machine import MachineError, load_machine
+
+        try:
+            machine = load_machine(a.machine)
+        except MachineError as exc:
+            raise _Fail(exc.message) from None  # names the file and the JSON path already
     # Findings are printed as they are made, never all held: a file can give millions.
-    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters)
+    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters, machine=machine)
     errors = total = 0
     if a.json:
         head = json.dumps({"file": a.file, "profile": a.profile}, indent=1)
@@ -684,6 +692,9 @@ def parser() -> argparse.ArgumentParser:
     v.add_argument("--profile", choices=profiles, default=profiles[0])
     v.add_argument("--part-number", help="implant part number to compare (check 6.1.1)")
     v.add_argument("--cutters", help="cutter table, CSV or YAML: name, length, radius (check 6.1.2)")
+    v.add_argument("--machine", metavar="FILE",
+                   help="machine limits, JSON or YAML (schema cbf/machine.schema.json): breaches become errors; "
+                        "without it the spec's default machine gives warnings (check machine_limits)")
     v.add_argument("--json", action="store_true", help="print findings as JSON (always all of them)")
     v.add_argument("--max-findings", type=_count, default=50, metavar="N",
                    help="print at most N findings, then how many more there are; 0 prints all (default 50)")

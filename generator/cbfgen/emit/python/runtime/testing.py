@@ -29,7 +29,9 @@ count, sequence numbers, code copies, checksums, magic numbers, versions,
 command availability, argument sizes (layouts the profile accepts), finite
 floats (no NaN, infinity or subnormal, within ``bound``), ASCII strings
 without tails, zero reserved bytes, the ``positive``, ``nonzero_vector``,
-``range``, ``nondecreasing`` and ``ordered`` checks of the spec, motion
+``range``, ``nondecreasing`` and ``ordered`` checks of the spec, the
+``machine_limits`` checks against the spec's default machine (positions stay
+inside its workspace: ``bound`` is narrowed to fit), motion
 continuity (each motion starts where the last one ended, circles and helices
 included), orientation continuity, and balanced shapes whose declared count
 matches the motions they enclose. With ``part_number`` the implant descriptor
@@ -127,7 +129,27 @@ def _rules() -> _Rules:
                         lim.hi = ch["max"] if lim.hi is None else min(lim.hi, ch["max"])
                 elif kind == "nondecreasing":
                     lim.monotone.append(f"{ch['id']}:{cmd}.{n}")
+                elif kind == "machine_limits":  # the default machine (L1): its tightest bound on any axis
+                    m = T.SPEC["machine"]["limits"][t["limit"]]
+                    lo, hi = max(_as_list(m["min"])), min(_as_list(m["max"]))
+                    lim.lo = lo if lim.lo is None else max(lim.lo, lo)
+                    lim.hi = hi if lim.hi is None else min(lim.hi, hi)
     return _Rules(limits, ordered)
+
+
+def _as_list(v: float | list[float]) -> list[float]:
+    return list(v) if isinstance(v, list) else [v]
+
+
+def _machine_bound(bound: float) -> float:
+    """``bound`` narrowed so that positions, which may wander to twice the bound plus a circle's
+    radius, stay inside every box of the default machine (the box holds the origin)."""
+    for m in T.SPEC["machine"]["limits"].values():
+        if "axes" in m:
+            half = min(min(-x for x in m["min"]), min(m["max"]))
+            if half > _RADIUS:
+                bound = min(bound, (half - _RADIUS) / 2.0)
+    return bound
 
 
 @dataclass
@@ -389,6 +411,7 @@ def models(*, versions: Sequence[str] | None = None, profile: str = "default", m
     records carry code and arguments only. ``seal(model, profile)`` gives the bytes."""
     chosen = _check_args(profile, min_records, max_records, bound, versions, part_number)
     rules = _rules()
+    bound = _machine_bound(bound)
 
     @st.composite
     def build(draw: st.DrawFn) -> Cbf:

@@ -11,11 +11,14 @@ import heapq
 import math
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import tables as T
 from .codec import Buffer, field_checksum, file_algorithm, frame, header_info
 from .model import Cbf
+
+if TYPE_CHECKING:
+    from .machine import Machine
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,16 +83,20 @@ def _string_checks(out: _Out, raw: bytes, record: int | None, offset: int, name:
 
 
 def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str | None = None,
-             cutters: Cutters | None = None, engine: str = "auto") -> list[Finding]:
+             cutters: Cutters | None = None, engine: str = "auto", machine: Machine | None = None) -> list[Finding]:
     """Findings for a file (bytes) or a model (encoded with its stored values first).
 
     ``engine``: "auto" (numpy for big files), "python" or "numpy"; all give the same findings.
+    ``machine``: a machine file's limits (cbf.machine.load_machine; breaches are errors), or None:
+    the spec's default machine (breaches are warnings).
     """
-    return list(iter_findings(data, profile=profile, part_number=part_number, cutters=cutters, engine=engine))
+    return list(iter_findings(data, profile=profile, part_number=part_number, cutters=cutters, engine=engine,
+                              machine=machine))
 
 
 def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: str | None = None,
-                  cutters: Cutters | None = None, engine: str = "auto") -> Iterator[Finding]:
+                  cutters: Cutters | None = None, engine: str = "auto",
+                  machine: Machine | None = None) -> Iterator[Finding]:
     """validate's findings, in its order, made one at a time as they are read: memory stays
     bounded however many findings a file gives (the checks run now; bad arguments raise now)."""
     framing: tuple[Sequence[int], int] | None = None
@@ -172,7 +179,10 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     if part_number is not None:
         _part_number(out, info, header, part_number)
     _descriptor_word(out, info, header)
-    return iter(heapq.merge(sorted(out.findings, key=finding_order), stream, key=finding_order))
+    from .machine import machine_findings  # machine limits (L1, #13 item 16): one stream, engine-independent
+
+    return iter(heapq.merge(sorted(out.findings, key=finding_order), stream,
+                            machine_findings(buf, offsets, version, machine, engine), key=finding_order))
 
 
 # Files with at least this many records are checked by the numpy engine

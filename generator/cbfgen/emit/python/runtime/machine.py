@@ -1,0 +1,351 @@
+"""Machine limits (decision L1): check kind ``machine_limits`` and machine files.
+
+A machine bounds every position argument by a box and speeds, accelerations and
+cutter sizes by ranges, in the units of the arguments (N11). The spec ships a
+conservative default machine (``SPEC["machine"]``), whose breaches are warnings;
+a machine file (``cbf validate --machine FILE``: JSON, or YAML for .yaml/.yml,
+the shape of the default, schema ``machine.schema.json`` beside this module)
+replaces it, and its breaches are errors (the check's ``input_severity``).
+
+Which arguments a limit bounds is data: the check's targets (command, arguments,
+limit); the spec loader requires a box to target every float vector of its unit.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+import struct
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from . import tables as T
+from .errors import CbfError
+from .validation import Finding, finding_order
+
+SCHEMA: dict[str, Any] = json.loads(Path(__file__).with_name("machine.schema.json").read_text(encoding="utf-8"))
+
+
+_F32 = struct.Struct("<f")
+_F32_MAX = 3.4028234663852886e38
+
+
+def as_binary32(bound: float) -> float:
+    """A bound as the values it limits are stored: rounded to binary32, beyond its range
+    infinite (a value equal to a bound written in decimal is inside)."""
+    if abs(bound) > _F32_MAX:
+        return math.copysign(math.inf, bound)
+    v: float = _F32.unpack(_F32.pack(bound))[0]
+    return v
+
+
+@dataclass(frozen=True, slots=True)
+class Limit:
+    name: str
+    unit: str
+    lo: tuple[float, ...]  # as given (messages)
+    hi: tuple[float, ...]
+    axes: tuple[str, ...]  # empty: a scalar range
+    lo32: tuple[float, ...]  # the bounds compared with: each rounded to binary32 (as_binary32)
+    hi32: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Machine:
+    """The limits a file is checked against; ``given``: a machine file (findings are errors)."""
+
+    limits: Mapping[str, Limit]
+    given: bool
+
+
+class MachineError(CbfError):
+    """A machine file that cannot be used; the message names the file and the JSON path."""
+
+    kind = "machine"
+
+
+def _limits(doc: Mapping[str, Any]) -> dict[str, Limit]:
+    out = {}
+    for name, lim in doc["limits"].items():
+        lo = tuple(map(float, lim["min"] if isinstance(lim["min"], list) else [lim["min"]]))
+        hi = tuple(map(float, lim["max"] if isinstance(lim["max"], list) else [lim["max"]]))
+        out[name] = Limit(name, lim["unit"], lo, hi, tuple(T.SPEC["machine"]["limits"][name].get("axes", [])),
+                          tuple(map(as_binary32, lo)), tuple(map(as_binary32, hi)))
+    return out
+
+
+DEFAULT = Machine(_limits(T.SPEC["machine"]), given=False)
+
+
+# -- machine files ----------------------------------------------------------------------
+def _schema_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | None:
+    """The first breach of ``schema`` (the subset machine.schema.json uses), as "PATH: what", in
+    the order a reader meets it: each key or item in turn, then what is missing (cbf-c's reader
+    reads the file the same way and says the same)."""
+    want = schema.get("type")
+    if want == "object":
+        if not isinstance(value, dict):
+            return f"{path}: expected an object"
+        props = schema.get("properties", {})
+        seen: set[Any] = set()
+        for key, v in value.pairs if isinstance(value, _Object) else value.items():
+            if key in seen:
+                return f"{path}: duplicate key '{key}'"
+            seen.add(key)
+            if key not in props:
+                if schema.get("additionalProperties") is False:
+                    return f"{path}: unknown key '{key}' (known: {', '.join(props)})"
+                continue
+            err = _schema_errors(v, props[key], f"{path}.{key}")
+            if err:
+                return err
+        for key in schema.get("required", []):
+            if key not in value:
+                return f"{path}: missing '{key}'"
+        return None
+    if want == "array":
+        if not isinstance(value, list):
+            return f"{path}: expected a list"
+        for i, v in enumerate(value):
+            err = _schema_errors(v, schema.get("items", {}), f"{path}[{i}]")
+            if err:
+                return err
+        if "minItems" in schema and len(value) != schema["minItems"]:
+            return f"{path}: expected {schema['minItems']} items, got {len(value)}"
+    if want == "number" and (isinstance(value, bool) or not isinstance(value, (int, float))):
+        return f"{path}: expected a number"
+    if want == "number" and not _finite(value):
+        return f"{path}: not a finite number"
+    if want == "string" and not isinstance(value, str):
+        return f"{path}: expected a string"
+    if "const" in schema and value != schema["const"]:
+        return f"{path}: must be {_dumps(schema['const'])}, got {_dumps(value)}"
+    return None
+
+
+def _finite(value: float) -> bool:
+    try:
+        return math.isfinite(float(value))
+    except OverflowError:  # an integer beyond any double
+        return False
+
+
+def _dumps(value: Any) -> str:
+    return json.dumps(value, ensure_ascii=False)
+
+
+class _Object(dict[Any, Any]):
+    """A JSON or YAML object that keeps its pairs in order, a key given twice included: the
+    duplicate is refused where a reader meets it, never "the last one wins"."""
+
+    pairs: list[tuple[Any, Any]]
+
+
+def _no_duplicates(pairs: list[tuple[Any, Any]]) -> _Object:
+    out = _Object(pairs)
+    out.pairs = pairs
+    return out
+
+
+def _read(p: Path, text: str) -> Any:
+    if p.suffix.lower() in (".yaml", ".yml"):
+        import yaml
+
+        class _Loader(yaml.SafeLoader):
+            pass
+
+        def mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _Object:
+            loader.flatten_mapping(node)
+            pairs = [(loader.construct_object(k, deep=True), loader.construct_object(v, deep=True))  # type: ignore[no-untyped-call]
+                     for k, v in node.value]
+            return _no_duplicates(pairs)
+
+        _Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, mapping)
+        try:
+            return yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
+        except yaml.YAMLError as exc:
+            mark = getattr(exc, "problem_mark", None)
+            where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
+            raise MachineError(f"{where}not YAML ({getattr(exc, 'problem', None) or exc})") from None
+
+    def constant(name: str) -> Any:
+        raise MachineError(f"{name} is not a number")
+
+    try:
+        return json.loads(text, object_pairs_hook=_no_duplicates, parse_constant=constant, parse_int=float)
+    except json.JSONDecodeError as exc:
+        raise MachineError(f"line {exc.lineno}, column {exc.colno}: not JSON ({exc.msg})") from None
+
+
+def load_machine(path: str | Path) -> Machine:
+    """The machine of a file; raises MachineError with one line naming the file and the JSON path."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+        doc = _read(p, text)
+    except FileNotFoundError:
+        raise MachineError(f"{p}: cannot read machine file (no such file)") from None
+    except PermissionError:
+        raise MachineError(f"{p}: cannot read machine file (permission denied)") from None
+    except IsADirectoryError:
+        raise MachineError(f"{p}: cannot read machine file (is a directory)") from None
+    except OSError:
+        raise MachineError(f"{p}: cannot read machine file (read error)") from None
+    except UnicodeDecodeError as exc:
+        raise MachineError(f"{p}: offset {exc.start}: not UTF-8 text") from None
+    except MachineError as exc:
+        raise MachineError(f"{p}: {exc.message}") from None
+    err = _schema_errors(doc, SCHEMA, "$")
+    if err is None:
+        for name in SCHEMA["properties"]["limits"]["properties"]:  # the spec's order
+            lo, hi = doc["limits"][name]["min"], doc["limits"][name]["max"]
+            axes = T.SPEC["machine"]["limits"][name].get("axes", [])
+            bad = [k for k, (a, b) in enumerate(zip(lo, hi, strict=True) if axes else [(lo, hi)]) if a > b]
+            if bad:
+                err = f"$.limits.{name}: min exceeds max" + (f" on axis {axes[bad[0]]}" if axes else "")
+                break
+    if err is not None:
+        raise MachineError(f"{p}: {err}")
+    return Machine(_limits(doc), given=True)
+
+
+# -- the check ----------------------------------------------------------------------------
+# Per layout: (check, argument, limit name, whether a positive check targets the argument too).
+_Rule = tuple[dict[str, Any], T.FieldInfo, str, bool]
+
+
+def _rules() -> dict[tuple[str, str], list[_Rule]]:
+    positive = {(t["command"], a) for ch in T.checks_of("positive") for t in ch["targets"] for a in t["args"]}
+    out: dict[tuple[str, str], list[_Rule]] = {}
+    for ch in T.checks_of("machine_limits"):
+        for t in ch["targets"]:
+            cmd = T.BY_NAME[t["command"]]
+            for lay in cmd.layouts:
+                for f in lay.args:
+                    if f.name in t["args"]:
+                        out.setdefault((cmd.name, lay.variant), []).append(
+                            (ch, f, t["limit"], (cmd.name, f.name) in positive))
+    return out
+
+
+_RULES = _rules()
+_NUM = "{:.9g}".format
+
+
+def breach(values: tuple[float, ...], lim: Limit, positive: bool) -> str | None:
+    """How a value breaks a limit, or None. Non-finite values are the finite check's, and with
+    ``positive`` values <= 0 are the positive check's (one fault, one finding)."""
+    if not all(math.isfinite(v) for v in values) or (positive and any(v <= 0.0 for v in values)):
+        return None
+    for k, v in enumerate(values):
+        if v < lim.lo32[k] or v > lim.hi32[k]:
+            axis = f" {lim.axes[k]}" if lim.axes else ""
+            return (f"{axis} is {_NUM(v)} {lim.unit}, outside the machine's {lim.name} "
+                    f"{_NUM(lim.lo[k])}..{_NUM(lim.hi[k])} {lim.unit}")
+    return None
+
+
+# Files with at least this many records are checked by the numpy kernel (the same findings).
+VECTOR_MIN_RECORDS = 2000
+
+
+def machine_findings(buf: bytes, offsets: Sequence[int], version: str, machine: Machine | None,
+                     engine: str = "auto") -> Iterator[Finding]:
+    """The findings of the machine_limits checks, in validate's order (by record, check, offset).
+    A record is checked when its arguments decode (a known code and a layout of its size), as
+    every argument check is; the offset is the argument's. ``engine``: "auto" (numpy for big
+    files), "python" or "numpy"; both give the same findings."""
+    if not _RULES:
+        return iter(())
+    m = machine if machine is not None else DEFAULT
+    if engine == "numpy" or (engine == "auto" and len(offsets) >= VECTOR_MIN_RECORDS):
+        return _vectorized(buf, offsets, version, m)
+    return _loop(buf, offsets, version, m)
+
+
+def _loop(buf: bytes, offsets: Sequence[int], version: str, m: Machine) -> Iterator[Finding]:
+    """The reference kernel: one record at a time."""
+    code_at = T.RECORD_FIELDS[T.I_CODE].offset
+    size_at = T.ARG_SIZE_OFFSET
+    hs = T.HEAD_SIZE
+    plan: dict[tuple[int, int], list[_Step]] = {}
+    for i, off in enumerate(offsets):
+        key = (buf[off + code_at], buf[off + size_at])
+        rules = plan.get(key)
+        if rules is None:
+            rules = plan[key] = _plan(key, version, m)
+        if not rules:
+            continue
+        found = []
+        aoff = off + hs
+        for ch, f, lim, positive, st in rules:
+            text = breach(st.unpack_from(buf, aoff + f.offset), lim, positive)
+            if text is not None:
+                sev = ch["input_severity"] if m.given and ch["input_severity"] else ch["severity"]
+                found.append(Finding(ch["id"], sev, i, aoff + f.offset, f"{T.BY_CODE[key[0]].name}.{f.name}{text}"))
+        if found:
+            yield from sorted(found, key=finding_order)
+
+
+def _vectorized(buf: bytes, offsets: Sequence[int], version: str, m: Machine) -> Iterator[Finding]:
+    """The numpy kernel: per (code, size) pair and rule, every record's values at once."""
+    import numpy as np
+
+    a = np.frombuffer(buf, dtype=np.uint8)
+    off = np.asarray(offsets, dtype=np.int64)
+    if off.size == 0:
+        return iter(())
+    key = a[off + T.RECORD_FIELDS[T.I_CODE].offset].astype(np.int64) * 256 + a[off + T.ARG_SIZE_OFFSET]
+    f4 = np.dtype(T.BO + "f4")
+    found: list[Finding] = []
+    for k in np.unique(key).tolist():
+        steps = _plan((k >> 8, k & 0xFF), version, m)
+        if not steps:
+            continue
+        rows = np.nonzero(key == k)[0]
+        aoff = off[rows] + T.HEAD_SIZE
+        name = T.BY_CODE[k >> 8].name
+        for ch, f, lim, positive, _ in steps:
+            cols = []
+            for i in range(f.count):
+                at = aoff + (f.offset + 4 * i)
+                raw = np.stack([a[at + j] for j in range(4)], axis=1)
+                cols.append(np.ascontiguousarray(raw).view(f4)[:, 0].astype(np.float64))
+            v = np.stack(cols, axis=1)
+            skip = ~np.isfinite(v).all(axis=1)
+            if positive:
+                skip |= (v <= 0.0).any(axis=1)
+            with np.errstate(invalid="ignore"):
+                out = (v < np.asarray(lim.lo32)) | (v > np.asarray(lim.hi32))
+            bad = np.nonzero(out.any(axis=1) & ~skip)[0]
+            if bad.size == 0:
+                continue
+            sev = ch["input_severity"] if m.given and ch["input_severity"] else ch["severity"]
+            for r in bad.tolist():
+                text = breach(tuple(v[r].tolist()), lim, positive)
+                assert text is not None
+                found.append(Finding(ch["id"], sev, int(rows[r]), int(aoff[r]) + f.offset, f"{name}.{f.name}{text}"))
+    found.sort(key=finding_order)
+    return iter(found)
+
+
+_Step = tuple[dict[str, Any], T.FieldInfo, Limit, bool, struct.Struct]
+
+
+def _plan(key: tuple[int, int], version: str, m: Machine) -> list[_Step]:
+    return [(ch, f, m.limits[name], positive, st) for ch, f, name, positive, st in _layout_rules(key, version)]
+
+
+@functools.lru_cache(maxsize=4096)
+def _layout_rules(key: tuple[int, int], version: str) -> tuple[tuple[dict[str, Any], T.FieldInfo, str, bool,
+                                                                     struct.Struct], ...]:
+    """The rules of the layout a (code, size) decodes with in a version (none: not decoded)."""
+    cmd = T.BY_CODE.get(key[0])
+    lay = cmd.layout_for_size(version, key[1]) if cmd is not None else None
+    if cmd is None or lay is None:
+        return ()
+    return tuple((ch, f, name, positive, struct.Struct(T.BO + f"{f.count}f"))
+                 for ch, f, name, positive in _RULES.get((cmd.name, lay.variant), ()))
