@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import re
 from array import array
+from bisect import bisect_right
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
@@ -429,7 +430,8 @@ def _version_line(text: str, vkw: str, requested: str | None) -> str | None:
 # match, goes to the careful parser; a number the batch cannot read sends its line there too,
 # which raises the careful parser's error. tests/test_cut_fast.py checks that both paths read
 # the same language into the same bytes.
-_BATCH = 8192  # fast lines read between two batch conversions (bounds the texts held)
+_BATCH = 1 << 16  # numbers read between two batch conversions (bounds the texts held)
+_CHUNK = 1 << 18  # characters of text split into lines at a time
 
 
 @dataclass(frozen=True)
@@ -470,79 +472,90 @@ def _fast_table(version: str, profile: str) -> dict[str, _Fast]:
 
 
 class _Records:
-    """The records read so far, as columns; fast lines wait for a batch conversion."""
+    """The records read so far: a Record of each careful line, the _Fast entry of each fast
+    line, whose numbers wait as text for a batch conversion (``flush``)."""
 
     def __init__(self) -> None:
-        self.codes: list[int] = []
-        self.raws: list[bytes] = []
-        self.copies: list[int] = []
-        self.reserved: list[int] = []
-        self.texts: list[str] = []
-        self.waiting_rows: list[tuple[int, int, str, _Fast, int]] = []  # row, line no, line, entry, first text
+        self.items: list[_Fast | Record] = []
+        self.raws: list[bytes] = []  # the arguments of items[:len(raws)]
+        self.texts: list[str] = []  # the numbers of the waiting fast lines
+        self.lines: list[int] = []  # their line numbers
 
-    def __len__(self) -> int:
-        return len(self.codes)
-
-    @property
-    def waiting(self) -> int:
-        return len(self.waiting_rows)
-
-    def add(self, rec: Record) -> None:
-        self.codes.append(rec.code)
-        self.raws.append(rec.raw_args)
-        self.copies.append(-1 if rec.code_copy is None else rec.code_copy)
-        self.reserved.append(rec.reserved)
-
-    def add_fast(self, n: int, line: str, entry: _Fast, values: tuple[str | Any, ...]) -> None:
-        self.waiting_rows.append((len(self.codes), n, line, entry, len(self.texts)))
-        self.texts.extend(values)
-        self.codes.append(entry.code)
-        self.raws.append(b"")
-        self.copies.append(-1)
-        self.reserved.append(0)
-
-    def flush(self, careful: Callable[[int, str], Record | None]) -> None:
+    def flush(self, careful: Callable[[int, str], Record | None], text: str) -> None:
         """Convert the waiting lines; the first whose number cannot be read is read again by
         the careful parser, which raises its error."""
-        if not self.waiting_rows:
-            return
         import numpy as np
 
         from .floats import parse_floats
 
-        rows, self.waiting_rows = self.waiting_rows, []
-        texts, self.texts = self.texts, []
-        bits, bad = parse_floats(texts)
-        if bad:
-            first = bad[0]
-            row = max(r for r in rows if r[4] <= first)
-            careful(row[1], row[2])  # raises
-            raise AssertionError(f"line {row[1]}: the careful parser took a number the fast path refused")
-        by_entry: dict[int, list[tuple[int, int, str, _Fast, int]]] = {}
-        for r in rows:
-            by_entry.setdefault(id(r[3]), []).append(r)
-        for group in by_entry.values():
-            entry = group[0][3]
-            lay = entry.layout
-            starts = np.array([r[4] for r in group], dtype=np.int64)
-            vals = bits[starts[:, None] + np.arange(entry.count)]
-            raw = np.zeros((len(group), lay.size), dtype=np.uint8)
-            j = 0
-            for f in lay.args:
-                if f.kind == "float":
-                    cols = np.ascontiguousarray(vals[:, j:j + f.count]).astype(f"{T.BO}u4")
-                    raw[:, f.offset:f.end] = cols.view(np.uint8).reshape(len(group), f.size)
-                    j += f.count
-            blob = raw.tobytes()
-            size = lay.size
-            for k, r in enumerate(group):
-                self.raws[r[0]] = blob[k * size:(k + 1) * size]
+        done = len(self.raws)
+        seg = self.items[done:]
+        if not seg:
+            return
+        texts, lines, self.texts, self.lines = self.texts, self.lines, [], []
+        raws: list[bytes] = [x.raw_args if isinstance(x, Record) else b"" for x in seg]
+        fast = [j for j, x in enumerate(seg) if isinstance(x, _Fast)]
+        if fast:
+            bits, bad = parse_floats(texts)
+            starts = list(accumulate((x.count for x in seg if isinstance(x, _Fast)), initial=0))
+            if bad:
+                k = bisect_right(starts, bad[0]) - 1
+                n = lines[k]
+                careful(n, _nth_line(text, n))  # raises
+                raise AssertionError(f"line {n}: the careful parser took a number the fast path refused")
+            groups: dict[int, list[int]] = {}
+            for k, j in enumerate(fast):
+                groups.setdefault(seg[j].code, []).append(k)
+            for ks in groups.values():
+                entry = seg[fast[ks[0]]]
+                assert isinstance(entry, _Fast)
+                lay, size = entry.layout, entry.layout.size
+                first = np.array([starts[k] for k in ks], dtype=np.int64)
+                vals = bits[first[:, None] + np.arange(entry.count)]
+                raw = np.zeros((len(ks), size), dtype=np.uint8)
+                col = 0
+                for f in lay.args:
+                    if f.kind == "float":
+                        cols = np.ascontiguousarray(vals[:, col:col + f.count]).astype(f"{T.BO}u4")
+                        raw[:, f.offset:f.end] = cols.view(np.uint8).reshape(len(ks), f.size)
+                        col += f.count
+                blob = raw.tobytes()
+                for m, k in enumerate(ks):
+                    raws[fast[k]] = blob[m * size:(m + 1) * size]
+        self.raws.extend(raws)
 
     def records(self) -> PackedRecords:
         bounds = array("q", [0])
         bounds.extend(accumulate(map(len, self.raws)))
-        return PackedRecords(array("B", self.codes), b"".join(self.raws), bounds, array("h", self.copies),
-                             array("B", self.reserved))
+        items = self.items
+        return PackedRecords(array("B", [x.code for x in items]), b"".join(self.raws), bounds,
+                             array("h", [-1 if isinstance(x, _Fast) or x.code_copy is None else x.code_copy
+                                         for x in items]),
+                             array("B", [0 if isinstance(x, _Fast) else x.reserved for x in items]))
+
+
+def _nth_line(text: str, n: int) -> str:
+    for k, line in _lines(text, checked=True):
+        if k == n:
+            return line
+    raise IndexError(n)
+
+
+def _line_chunks(text: str) -> Iterator[tuple[int, list[str]]]:
+    """The lines of ``text`` as _lines numbers them, a list of about _CHUNK characters at a time."""
+    n, start, size = 1, 0, len(text)
+    while start < size:
+        cut = text.find("\n", min(start + _CHUNK, size) - 1)
+        cut = size if cut < 0 else cut + 1
+        piece = text[start:cut]
+        lines = piece.split("\n")
+        if piece.endswith("\n"):
+            lines.pop()
+        if "\r" in piece:
+            lines = [line[:-1] if line.endswith("\r") else line for line in lines]
+        yield n, lines
+        n += len(lines)
+        start = cut
 
 
 def from_cut(text: str, *, version: str | None = None, profile: str = "default", fast: bool = True) -> Cbf:
@@ -630,26 +643,32 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
         return None
 
     out = _Records()
+    items, texts, lines = out.items, out.texts, out.lines
     table = _fast_table(vid, profile) if fast else {}
-    for n, line in _lines(text, checked=True):
-        sp = line.find(" ")
-        entry = table.get(line if sp < 0 else line[:sp])
-        m = entry.pattern.match(line, len(line) if sp < 0 else sp) if entry is not None else None
-        if m is not None and entry is not None:
-            out.add_fast(n, line, entry, m.groups())
-        else:
-            try:
-                rec = careful(n, line)
-            except CutSyntaxError:
-                out.flush(careful)  # a line before this one may hold the first error
-                raise
-            if rec is None:
-                continue
-            out.add(rec)
-        if len(out) > limit:
-            out.flush(careful)
-            raise CutSyntaxError(f"{len(out)} commands, at most {limit}", line=n)
-        if out.waiting >= _BATCH:
-            out.flush(careful)
-    out.flush(careful)
+    get = table.get
+    for first, chunk in _line_chunks(text):
+        for n, line in enumerate(chunk, first):
+            sp = line.find(" ")
+            entry = get(line if sp < 0 else line[:sp])
+            m = entry.pattern.match(line, len(line) if sp < 0 else sp) if entry is not None else None
+            if m is not None and entry is not None:
+                items.append(entry)
+                texts.extend(m.groups())
+                lines.append(n)
+            else:
+                try:
+                    rec = careful(n, line)
+                except CutSyntaxError:
+                    out.flush(careful, text)  # a line before this one may hold the first error
+                    raise
+                if rec is None:
+                    continue
+                items.append(rec)
+            if len(items) > limit:
+                out.flush(careful, text)
+                raise CutSyntaxError(f"{len(items)} commands, at most {limit}", line=n)
+        if len(texts) >= _BATCH:
+            out.flush(careful, text)
+            texts, lines = out.texts, out.lines
+    out.flush(careful, text)
     return Cbf(new_header(f"{major}.{minor}", **fields), out.records())
