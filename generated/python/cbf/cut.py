@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import re
 from array import array
-from bisect import bisect_right
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
-from itertools import accumulate
+from itertools import compress, repeat
+from operator import attrgetter
 from typing import Any
 
 from . import tables as T
@@ -477,7 +477,9 @@ class _Records:
 
     def __init__(self) -> None:
         self.items: list[_Fast | Record] = []
-        self.raws: list[bytes] = []  # the arguments of items[:len(raws)]
+        self.blobs: list[bytes] = []  # the arguments of the records converted so far, one after another
+        self.sizes: list[Any] = []  # and their sizes (numpy arrays)
+        self.done = 0
         self.texts: list[str] = []  # the numbers of the waiting fast lines
         self.lines: list[int] = []  # their line numbers
 
@@ -488,50 +490,68 @@ class _Records:
 
         from .floats import parse_floats
 
-        done = len(self.raws)
-        seg = self.items[done:]
+        seg = self.items[self.done:]
         if not seg:
             return
         texts, lines, self.texts, self.lines = self.texts, self.lines, [], []
-        raws: list[bytes] = [x.raw_args if isinstance(x, Record) else b"" for x in seg]
-        fast = [j for j, x in enumerate(seg) if isinstance(x, _Fast)]
-        if fast:
+        is_fast = np.fromiter(map(isinstance, seg, repeat(_Fast)), dtype=bool, count=len(seg))
+        fast = np.flatnonzero(is_fast)
+        entries: list[_Fast] = list(compress(seg, is_fast.tolist()))  # type: ignore[arg-type]
+        sizes = np.zeros(len(seg), dtype=np.int64)
+        slow = np.flatnonzero(~is_fast).tolist()
+        for j in slow:
+            rec = seg[j]
+            assert isinstance(rec, Record)
+            sizes[j] = len(rec.raw_args)
+        bits: Any = None
+        if entries:
             bits, bad = parse_floats(texts)
-            starts = list(accumulate((x.count for x in seg if isinstance(x, _Fast)), initial=0))
+            counts = np.fromiter(map(attrgetter("count"), entries), dtype=np.int64, count=len(entries))
+            starts = np.concatenate(([0], np.cumsum(counts)))
             if bad:
-                k = bisect_right(starts, bad[0]) - 1
-                n = lines[k]
+                n = lines[int(np.searchsorted(starts, bad[0], side="right")) - 1]
                 careful(n, _nth_line(text, n))  # raises
                 raise AssertionError(f"line {n}: the careful parser took a number the fast path refused")
-            groups: dict[int, list[int]] = {}
-            for k, j in enumerate(fast):
-                groups.setdefault(seg[j].code, []).append(k)
-            for ks in groups.values():
-                entry = seg[fast[ks[0]]]
-                assert isinstance(entry, _Fast)
-                lay, size = entry.layout, entry.layout.size
-                first = np.array([starts[k] for k in ks], dtype=np.int64)
-                vals = bits[first[:, None] + np.arange(entry.count)]
-                raw = np.zeros((len(ks), size), dtype=np.uint8)
+            codes = np.fromiter(map(attrgetter("code"), entries), dtype=np.int64, count=len(entries))
+            sizes[fast] = np.fromiter((e.layout.size for e in entries), dtype=np.int64, count=len(entries))
+        pos = np.concatenate(([0], np.cumsum(sizes)))
+        out = np.zeros(int(pos[-1]), dtype=np.uint8)
+        if entries:
+            for code in np.unique(codes).tolist():
+                ks = np.flatnonzero(codes == code)
+                entry = entries[int(ks[0])]
+                vals = bits[starts[ks][:, None] + np.arange(entry.count)]
                 col = 0
-                for f in lay.args:
+                for f in entry.layout.args:
                     if f.kind == "float":
                         cols = np.ascontiguousarray(vals[:, col:col + f.count]).astype(f"{T.BO}u4")
-                        raw[:, f.offset:f.end] = cols.view(np.uint8).reshape(len(ks), f.size)
+                        at = pos[fast[ks]][:, None] + (f.offset + np.arange(f.size))
+                        out[at] = cols.view(np.uint8).reshape(len(ks), f.size)
                         col += f.count
-                blob = raw.tobytes()
-                for m, k in enumerate(ks):
-                    raws[fast[k]] = blob[m * size:(m + 1) * size]
-        self.raws.extend(raws)
+        for j in slow:
+            rec = seg[j]
+            assert isinstance(rec, Record)
+            out[pos[j]:pos[j + 1]] = np.frombuffer(rec.raw_args, dtype=np.uint8)
+        self.blobs.append(out.tobytes())
+        self.sizes.append(sizes)
+        self.done = len(self.items)
 
     def records(self) -> PackedRecords:
-        bounds = array("q", [0])
-        bounds.extend(accumulate(map(len, self.raws)))
+        import numpy as np
+
         items = self.items
-        return PackedRecords(array("B", [x.code for x in items]), b"".join(self.raws), bounds,
-                             array("h", [-1 if isinstance(x, _Fast) or x.code_copy is None else x.code_copy
-                                         for x in items]),
-                             array("B", [0 if isinstance(x, _Fast) else x.reserved for x in items]))
+        sizes = np.concatenate(self.sizes) if self.sizes else np.zeros(0, dtype=np.int64)
+        bounds = array("q", np.concatenate(([0], np.cumsum(sizes))).astype(np.int64).tobytes())
+        codes = array("B", np.fromiter(map(attrgetter("code"), items), dtype=np.uint8, count=len(items)).tobytes())
+        copies = array("h", [-1]) * len(items)
+        reserved = array("B", [0]) * len(items)
+        for j in np.flatnonzero(~np.fromiter(map(isinstance, items, repeat(_Fast)), dtype=bool,
+                                             count=len(items))).tolist():
+            rec = items[j]
+            assert isinstance(rec, Record)
+            copies[j] = -1 if rec.code_copy is None else rec.code_copy
+            reserved[j] = rec.reserved
+        return PackedRecords(codes, b"".join(self.blobs), bounds, copies, reserved)
 
 
 def _nth_line(text: str, n: int) -> str:
