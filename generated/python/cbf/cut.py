@@ -40,6 +40,7 @@ _SEP: str = C["arg_separator"]
 _DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
 # What a CUT line cannot hold: anything but printable ASCII, and a CR that does not end the line.
 _NOT_CUT = re.compile(r"[^\x20-\x7e\n\r]|\r(?!\n)")
+_CUT_BYTES = bytes(range(0x20, 0x7F)) + b"\n\r"
 _VERSION = re.compile(r"([0-9]{1,3})\.([0-9]{1,3})", re.ASCII)
 _SHOW = 40  # characters of a bad token quoted in a message
 
@@ -370,8 +371,18 @@ def _hex(cur: _Cursor, name: str) -> bytes:
         raise cur.fail(f"{name}: {_show(w)} is not hex") from None
 
 
+def _plain_chars(text: str) -> bool:
+    """Whether every character is one a CUT line holds (a quick test; _NOT_CUT finds which is not)."""
+    if not text.isascii() or ("\r" in text and "\r" in text.replace("\r\n", "")):
+        return False
+    step = 1 << 20  # a piece at a time: the copy as bytes stays small
+    return not any(text[k:k + step].encode("ascii").translate(None, _CUT_BYTES) for k in range(0, len(text), step))
+
+
 def _check_chars(text: str) -> None:
     """Refuse a character a CUT line cannot hold, with its line and column."""
+    if _plain_chars(text):
+        return
     bad = _NOT_CUT.search(text)
     if bad:
         at = bad.start()
