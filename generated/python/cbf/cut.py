@@ -20,13 +20,18 @@ beyond the binary32 range is refused.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from array import array
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from functools import lru_cache
+from itertools import compress, repeat
+from operator import attrgetter
 from typing import Any
 
 from . import tables as T
 from .errors import CutSyntaxError
 from .floats import OutOfRange, finite, format_float, parse_float
-from .model import Cbf, Record
+from .model import Cbf, PackedRecords, Record
 
 C = T.CUT
 EXT = C["extensions"]
@@ -35,6 +40,7 @@ _SEP: str = C["arg_separator"]
 _DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
 # What a CUT line cannot hold: anything but printable ASCII, and a CR that does not end the line.
 _NOT_CUT = re.compile(r"[^\x20-\x7e\n\r]|\r(?!\n)")
+_CUT_BYTES = bytes(range(0x20, 0x7F)) + b"\n\r"
 _VERSION = re.compile(r"([0-9]{1,3})\.([0-9]{1,3})", re.ASCII)
 _SHOW = 40  # characters of a bad token quoted in a message
 
@@ -132,6 +138,107 @@ def _record_line(r: Record, version: str, profile: str) -> str:
     return line + (f" {bytes(r.raw_args).hex()}" if r.raw_args else "")
 
 
+def _template(cmd: T.CommandInfo, lay: T.LayoutInfo) -> str | None:
+    """The line of a layout as a str.format template, one {} a number; None when a field
+    is a string (those lines are written one by one, by _record_line)."""
+    parts = [keyword(cmd).replace("{", "{{").replace("}", "}}")]
+    vec = (C["vector_open"], C["vector_separator"] + " ", C["vector_close"])
+    opn, sep, cls = (x.replace("{", "{{").replace("}", "}}") for x in vec)
+    for f in lay.args:
+        if f.kind == "float":
+            parts.append(f"{opn} {sep.join(['{}'] * f.count)} {cls}" if f.count > 1 else "{}")
+        elif f.kind == "uint":
+            parts.append("{}")
+        elif f.kind != "bytes":
+            return None
+    return _SEP.join(parts)
+
+
+def _column(u8: Any, at: Any, offset: int, size: int, count: int = 1) -> Any:
+    """Unsigned values of ``count`` fields of ``size`` bytes at ``at + offset`` (shape (n, count))."""
+    import numpy as np
+
+    idx = at[:, None] + (offset + np.arange(size * count))
+    return np.ascontiguousarray(u8[idx]).view(f"{T.BO}u{size}").astype(np.uint64)
+
+
+def _record_lines(records: Any, version: str, profile: str) -> list[str]:
+    """The lines of the records, in order. The records of a decoded file are read as numpy
+    columns, a layout at a time, and their floats formatted once per distinct value
+    (floats.format_floats); a record a template cannot write (a string, a reserved byte or
+    a float that is not finite, another size, a code copy) goes to _record_line."""
+    source = getattr(records, "source", None)
+    if source is None or len(records) < 64:
+        return _lines_one_by_one(records, range(len(records)), version, profile)
+    import numpy as np
+
+    from .floats import format_floats
+
+    buf, offsets = source
+    u8 = np.frombuffer(buf, dtype=np.uint8)
+    at = np.asarray(offsets, dtype=np.int64)
+    head = {role: _column(u8, at, f.offset, f.size)[:, 0] for role, f in T.RECORD_BY_ROLE.items()
+            if role in ("code", "code_copy", "reserved", "arg_size")}
+    n = len(at)
+    lines = np.empty(n, dtype=object)
+    done = np.zeros(n, dtype=bool)
+    plain = (head["reserved"] == 0) & (head["code_copy"] == head["code"])
+    key = head["code"] * 65536 + head["arg_size"]
+    groups: list[tuple[Any, str, list[tuple[str, Any]]]] = []
+    for k in np.unique(key[plain]).tolist():
+        cmd = T.BY_CODE.get(k >> 16)
+        lay = _plain_layout(cmd, version, profile) if cmd else None
+        tmpl = _template(cmd, lay) if cmd and lay and lay.size == k & 0xFFFF else None
+        if lay is None or tmpl is None:
+            continue
+        rows = np.flatnonzero(plain & (key == k))
+        base = at[rows] + T.HEAD_SIZE
+        good = np.ones(len(rows), dtype=bool)
+        cols: list[tuple[str, Any]] = []
+        for f in lay.args:
+            if f.kind == "float":
+                vals = _column(u8, base, f.offset, f.elem_size, f.count)
+                good &= ((vals & 0x7F800000) != 0x7F800000).all(axis=1)
+                cols.extend(("float", vals[:, j]) for j in range(f.count))
+            elif f.kind == "uint":
+                cols.append(("uint", _column(u8, base, f.offset, f.elem_size)[:, 0]))
+            else:
+                good &= (np.ascontiguousarray(u8[base[:, None] + (f.offset + np.arange(f.size))]) == 0).all(axis=1)
+        rows = rows[good]
+        groups.append((rows, tmpl, [(kind, c[good]) for kind, c in cols]))
+        done[rows] = True
+    floats = [c for _, _, cols in groups for kind, c in cols if kind == "float"]
+    if floats:
+        uniq, inverse = np.unique(np.concatenate(floats), return_inverse=True)
+        texts = np.array(format_floats(uniq.astype(np.uint32)), dtype=object)[inverse]
+        pos = 0
+        for rows, tmpl, cols in groups:
+            args = []
+            for kind, c in cols:
+                if kind == "float":
+                    args.append(texts[pos:pos + len(c)].tolist())
+                    pos += len(c)
+                else:
+                    args.append(c.tolist())
+            lines[rows] = list(map(tmpl.format, *args)) if args else [tmpl] * len(rows)
+    else:
+        for rows, tmpl, _ in groups:
+            lines[rows] = [tmpl] * len(rows)
+    rest = np.flatnonzero(~done).tolist()
+    lines[rest] = _lines_one_by_one(records, rest, version, profile) if rest else []
+    return list(lines.tolist())
+
+
+def _lines_one_by_one(records: Any, which: Any, version: str, profile: str) -> list[str]:
+    out = []
+    for i in which:
+        try:
+            out.append(_record_line(records[i], version, profile))
+        except ValueError as exc:
+            raise ValueError(f"record {i}: {exc}") from None
+    return out
+
+
 def to_cut(model: Cbf, *, profile: str = "default") -> str:
     """The CUT text of a model (records keep their order; checksums are not written)."""
     from .codec import pack_fields
@@ -164,11 +271,7 @@ def to_cut(model: Cbf, *, profile: str = "default") -> str:
     if head_line:
         lines.append(head)
     lines.extend(extra)
-    for i, r in enumerate(model.records):
-        try:
-            lines.append(_record_line(r, vid, profile))
-        except ValueError as exc:
-            raise ValueError(f"record {i}: {exc}") from None
+    lines.extend(_record_lines(model.records, vid, profile))
     if model.trailing:
         raise ValueError("trailing bytes have no CUT form")
     return "\n".join(lines) + "\n"
@@ -268,8 +371,18 @@ def _hex(cur: _Cursor, name: str) -> bytes:
         raise cur.fail(f"{name}: {_show(w)} is not hex") from None
 
 
-def _lines(text: str) -> Iterator[tuple[int, str]]:
-    """Numbered lines, split at LF only (a CR before it is dropped), without a list of them all."""
+def _plain_chars(text: str) -> bool:
+    """Whether every character is one a CUT line holds (a quick test; _NOT_CUT finds which is not)."""
+    if not text.isascii() or ("\r" in text and "\r" in text.replace("\r\n", "")):
+        return False
+    step = 1 << 20  # a piece at a time: the copy as bytes stays small
+    return not any(text[k:k + step].encode("ascii").translate(None, _CUT_BYTES) for k in range(0, len(text), step))
+
+
+def _check_chars(text: str) -> None:
+    """Refuse a character a CUT line cannot hold, with its line and column."""
+    if _plain_chars(text):
+        return
     bad = _NOT_CUT.search(text)
     if bad:
         at = bad.start()
@@ -279,6 +392,12 @@ def _lines(text: str) -> Iterator[tuple[int, str]]:
         raise CutSyntaxError(f"{what} is not allowed: CUT text is printable ASCII, "
                              f"and only LF or CR LF ends a line", line=text.count("\n", 0, at) + 1,
                              column=at - line_start + 1)
+
+
+def _lines(text: str, checked: bool = False) -> Iterator[tuple[int, str]]:
+    """Numbered lines, split at LF only (a CR before it is dropped), without a list of them all."""
+    if not checked:
+        _check_chars(text)
     n, start, size = 1, 0, len(text)
     while start < size:
         end = text.find("\n", start)
@@ -292,6 +411,9 @@ def _lines(text: str) -> Iterator[tuple[int, str]]:
 def _version_line(text: str, vkw: str, requested: str | None) -> str | None:
     """The version the text's one version line names (bounded: each part is a byte)."""
     found: tuple[int, str] | None = None
+    if vkw not in text:  # no line can start with it
+        _check_chars(text)
+        return None
     for n, line in _lines(text):
         kw, _, rest = line.strip(" ").partition(" ")
         if kw != vkw:
@@ -309,8 +431,169 @@ def _version_line(text: str, vkw: str, requested: str | None) -> str | None:
     return found[1] if found else None
 
 
-def from_cut(text: str, *, version: str | None = None, profile: str = "default") -> Cbf:
-    """A model from CUT text. ``version`` applies when the text has no version line."""
+# -- the fast path ---------------------------------------------------------------------
+# Most lines of a big file are a command keyword and its numbers, as to_cut writes them. A
+# line of a layout whose fields are all floats (and reserved bytes) is matched by one regular
+# expression, built from the model to follow the careful parser step by step (spaces skipped
+# before each token; each number the longest float_pattern match there, atomic, as
+# _Cursor.number takes it; nothing but spaces after the last), and its numbers are read in
+# batches by floats.parse_floats. Every other line, and every line the expression does not
+# match, goes to the careful parser; a number the batch cannot read sends its line there too,
+# which raises the careful parser's error. tests/test_cut_fast.py checks that both paths read
+# the same language into the same bytes.
+_BATCH = 1 << 16  # numbers read between two batch conversions (bounds the texts held)
+_CHUNK = 1 << 18  # characters of text split into lines at a time
+
+
+@dataclass(frozen=True)
+class _Fast:
+    pattern: re.Pattern[str]
+    code: int
+    layout: T.LayoutInfo
+    count: int  # floats on the line
+
+
+def _fast_pattern(lay: T.LayoutInfo) -> str | None:
+    number = f"((?>{C['float_pattern']}))"
+    opn, sep, cls = (re.escape(C[k]) for k in ("vector_open", "vector_separator", "vector_close"))
+    parts = []
+    for f in lay.args:
+        if f.kind == "float":
+            parts.append(f" *{opn} *" + f" *{sep} *".join([number] * f.count) + f" *{cls}" if f.count > 1
+                         else f" *{number}")
+        elif f.kind != "bytes":
+            return None
+    return "".join(parts) + r" *\Z"
+
+
+@lru_cache(maxsize=16)
+def _fast_table(version: str, profile: str) -> dict[str, _Fast]:
+    """Keyword -> how its lines are read on the fast path, for the layouts of this version."""
+    taken = {C["header_keyword"], C["header_ext_keyword"], C["checksum_keyword"], *EXT.values()}
+    table: dict[str, _Fast] = {}
+    for cmd in T.COMMANDS:
+        kw = keyword(cmd)
+        lay = _plain_layout(cmd, version, profile)
+        pattern = _fast_pattern(lay) if lay is not None else None
+        if lay is None or pattern is None or kw in taken or kw.lower() in taken or " " in kw:
+            continue
+        count = sum(f.count for f in lay.args if f.kind == "float")
+        table[kw] = _Fast(re.compile(pattern, re.ASCII), cmd.code, lay, count)
+    return table
+
+
+class _Records:
+    """The records read so far: a Record of each careful line, the _Fast entry of each fast
+    line, whose numbers wait as text for a batch conversion (``flush``)."""
+
+    def __init__(self) -> None:
+        self.items: list[_Fast | Record] = []
+        self.blobs: list[bytes] = []  # the arguments of the records converted so far, one after another
+        self.sizes: list[Any] = []  # and their sizes (numpy arrays)
+        self.done = 0
+        self.texts: list[str] = []  # the numbers of the waiting fast lines
+        self.lines: list[int] = []  # their line numbers
+
+    def flush(self, careful: Callable[[int, str], Record | None], text: str) -> None:
+        """Convert the waiting lines; the first whose number cannot be read is read again by
+        the careful parser, which raises its error."""
+        import numpy as np
+
+        from .floats import parse_floats
+
+        seg = self.items[self.done:]
+        if not seg:
+            return
+        texts, lines, self.texts, self.lines = self.texts, self.lines, [], []
+        is_fast = np.fromiter(map(isinstance, seg, repeat(_Fast)), dtype=bool, count=len(seg))
+        fast = np.flatnonzero(is_fast)
+        entries: list[_Fast] = list(compress(seg, is_fast.tolist()))  # type: ignore[arg-type]
+        sizes = np.zeros(len(seg), dtype=np.int64)
+        slow = np.flatnonzero(~is_fast).tolist()
+        for j in slow:
+            rec = seg[j]
+            assert isinstance(rec, Record)
+            sizes[j] = len(rec.raw_args)
+        bits: Any = None
+        if entries:
+            bits, bad = parse_floats(texts)
+            counts = np.fromiter(map(attrgetter("count"), entries), dtype=np.int64, count=len(entries))
+            starts = np.concatenate(([0], np.cumsum(counts)))
+            if bad:
+                n = lines[int(np.searchsorted(starts, bad[0], side="right")) - 1]
+                careful(n, _nth_line(text, n))  # raises
+                raise AssertionError(f"line {n}: the careful parser took a number the fast path refused")
+            codes = np.fromiter(map(attrgetter("code"), entries), dtype=np.int64, count=len(entries))
+            sizes[fast] = np.fromiter((e.layout.size for e in entries), dtype=np.int64, count=len(entries))
+        pos = np.concatenate(([0], np.cumsum(sizes)))
+        out = np.zeros(int(pos[-1]), dtype=np.uint8)
+        if entries:
+            for code in np.unique(codes).tolist():
+                ks = np.flatnonzero(codes == code)
+                entry = entries[int(ks[0])]
+                vals = bits[starts[ks][:, None] + np.arange(entry.count)]
+                col = 0
+                for f in entry.layout.args:
+                    if f.kind == "float":
+                        cols = np.ascontiguousarray(vals[:, col:col + f.count]).astype(f"{T.BO}u4")
+                        at = pos[fast[ks]][:, None] + (f.offset + np.arange(f.size))
+                        out[at] = cols.view(np.uint8).reshape(len(ks), f.size)
+                        col += f.count
+        for j in slow:
+            rec = seg[j]
+            assert isinstance(rec, Record)
+            out[pos[j]:pos[j + 1]] = np.frombuffer(rec.raw_args, dtype=np.uint8)
+        self.blobs.append(out.tobytes())
+        self.sizes.append(sizes)
+        self.done = len(self.items)
+
+    def records(self) -> PackedRecords:
+        import numpy as np
+
+        items = self.items
+        sizes = np.concatenate(self.sizes) if self.sizes else np.zeros(0, dtype=np.int64)
+        bounds = array("q", np.concatenate(([0], np.cumsum(sizes))).astype(np.int64).tobytes())
+        codes = array("B", np.fromiter(map(attrgetter("code"), items), dtype=np.uint8, count=len(items)).tobytes())
+        copies = array("h", [-1]) * len(items)
+        reserved = array("B", [0]) * len(items)
+        for j in np.flatnonzero(~np.fromiter(map(isinstance, items, repeat(_Fast)), dtype=bool,
+                                             count=len(items))).tolist():
+            rec = items[j]
+            assert isinstance(rec, Record)
+            copies[j] = -1 if rec.code_copy is None else rec.code_copy
+            reserved[j] = rec.reserved
+        return PackedRecords(codes, b"".join(self.blobs), bounds, copies, reserved)
+
+
+def _nth_line(text: str, n: int) -> str:
+    for k, line in _lines(text, checked=True):
+        if k == n:
+            return line
+    raise IndexError(n)
+
+
+def _line_chunks(text: str) -> Iterator[tuple[int, list[str]]]:
+    """The lines of ``text`` as _lines numbers them, a list of about _CHUNK characters at a time."""
+    n, start, size = 1, 0, len(text)
+    while start < size:
+        cut = text.find("\n", min(start + _CHUNK, size) - 1)
+        cut = size if cut < 0 else cut + 1
+        piece = text[start:cut]
+        lines = piece.split("\n")
+        if piece.endswith("\n"):
+            lines.pop()
+        if "\r" in piece:
+            lines = [line[:-1] if line.endswith("\r") else line for line in lines]
+        yield n, lines
+        n += len(lines)
+        start = cut
+
+
+def from_cut(text: str, *, version: str | None = None, profile: str = "default", fast: bool = True) -> Cbf:
+    """A model from CUT text. ``version`` applies when the text has no version line.
+
+    ``fast=False`` reads every line with the careful parser: the same result, slower (the
+    reference tests/test_cut_fast.py holds the fast path to)."""
     from .model import new_header
 
     vkw, fkw, rkw = EXT["version_keyword"], EXT["field_keyword"], EXT["record_keyword"]
@@ -322,7 +605,6 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default")
     info = T.HEADERS[T.VERSION_BY_ID[vid].header]
     fields: dict[str, Any] = {}
     set_on: dict[str, int] = {}  # header field (or check_sum) -> the line that set it
-    records: list[Record] = []
     limit = T.LIMITS["max_commands"]
 
     def once(cur: _Cursor, name: str) -> None:
@@ -330,15 +612,16 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default")
             raise cur.fail(f"{name} is already set on line {set_on[name]}; a header line is given once")
         set_on[name] = cur.line
 
-    for n, line in _lines(text):
+    def careful(n: int, line: str) -> Record | None:
+        """One line, read by the careful parser (issue 13): a record, or None for a header line."""
         stripped = line.strip(" ")
         if not stripped:
-            continue
+            return None
         kw, _, rest = stripped.partition(" ")
         key = kw.lower() if C["keyword_case"] == "lower" else kw
         cur = _Cursor(rest, n, kw)
         if kw == vkw:
-            continue
+            return None
         if key in (C["header_keyword"], C["header_ext_keyword"]):
             role = "implant_descriptor" if key == C["header_keyword"] else "configuration_descriptor"
             f = info.by_role(role)
@@ -379,7 +662,7 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default")
             if len(raw) > T.LIMITS["max_arg_size"]:
                 raise cur.fail(f"{len(raw)} argument bytes, at most {T.LIMITS['max_arg_size']}")
             cur.end()
-            records.append(Record(code=code[0], raw_args=raw, code_copy=copy[0], reserved=res[0]))
+            return Record(code=code[0], raw_args=raw, code_copy=copy[0], reserved=res[0])
         else:
             cmd = _BY_KEYWORD.get(key)
             if cmd is None:
@@ -387,7 +670,36 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default")
             lay = _plain_layout(cmd, vid, profile)
             if lay is None:
                 raise cur.fail(f"not available in version {vid}")
-            records.append(Record(code=cmd.code, raw_args=_parse_args(cur, lay)))
-        if len(records) > limit:
-            raise CutSyntaxError(f"{len(records)} commands, at most {limit}", line=n)
-    return Cbf(new_header(f"{major}.{minor}", **fields), tuple(records))
+            return Record(code=cmd.code, raw_args=_parse_args(cur, lay))
+        return None
+
+    out = _Records()
+    items, texts, lines = out.items, out.texts, out.lines
+    table = _fast_table(vid, profile) if fast else {}
+    get = table.get
+    for first, chunk in _line_chunks(text):
+        for n, line in enumerate(chunk, first):
+            sp = line.find(" ")
+            entry = get(line if sp < 0 else line[:sp])
+            m = entry.pattern.match(line, len(line) if sp < 0 else sp) if entry is not None else None
+            if m is not None and entry is not None:
+                items.append(entry)
+                texts.extend(m.groups())
+                lines.append(n)
+            else:
+                try:
+                    rec = careful(n, line)
+                except CutSyntaxError:
+                    out.flush(careful, text)  # a line before this one may hold the first error
+                    raise
+                if rec is None:
+                    continue
+                items.append(rec)
+            if len(items) > limit:
+                out.flush(careful, text)
+                raise CutSyntaxError(f"{len(items)} commands, at most {limit}", line=n)
+        if len(texts) >= _BATCH:
+            out.flush(careful, text)
+            texts, lines = out.texts, out.lines
+    out.flush(careful, text)
+    return Cbf(new_header(f"{major}.{minor}", **fields), out.records())

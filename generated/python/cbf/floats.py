@@ -15,6 +15,8 @@ import math
 import struct
 from decimal import Decimal
 from functools import lru_cache
+from itertools import repeat
+from typing import Any
 
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
@@ -111,3 +113,110 @@ def format_float(bits: int) -> str:
     if "e" in text:
         text = format(Decimal(text), "f")
     return text
+
+
+# -- many at once ------------------------------------------------------------------------
+# format_floats computes format_float's function for a whole array, with numpy doing the
+# reading back. It is the same function, not an approximation of it:
+#
+# - A pattern whose mantissa bits are zero (a power of two, zero, the smallest normal) has an
+#   interval of binary32 rounding that is narrower below than above; for those the plain loop
+#   of format_float runs.
+# - Every other finite pattern has a symmetric interval (both ends in or both out, ties to
+#   even). The p-digit numbers are among the (p+1)-digit ones, so "%.{p+1}g" lies no farther
+#   from the value than "%.{p}g"; in a symmetric interval, once "%.{p}g" reads back, every
+#   longer one does. So the fewest p that reads back is the one p that reads back while p - 1
+#   does not (or p = 1), and a search from any first guess that stops there finds it.
+# - Reading back is parse_float's test, vectorised: float() rounds the text to the nearest
+#   double, numpy rounds that to binary32 (ties to even, as struct does); where the double
+#   lies exactly halfway between two binary32 values, or is beyond the range, parse_float
+#   itself decides, as it does for the loop.
+_SPECS = tuple(f".{p}g" for p in range(10))
+_GUESS = ".7g"  # %g drops trailing zeros after the point: its significant digits are a close guess
+
+
+def _reads_back_many(texts: list[str], bits: Any) -> Any:
+    """Whether each text reads back as its pattern (parse_float's test)."""
+    got, bad = parse_floats(texts)
+    ok = got == bits
+    ok[bad] = False
+    return ok
+
+
+def format_floats(bits: Any) -> list[str]:
+    """``[format_float(b) for b in bits]`` for a numpy array of finite binary32 patterns (uint32)."""
+    import numpy as np
+    import numpy.strings as ns
+
+    bits = np.ascontiguousarray(bits, dtype=np.uint32)
+    out: list[str] = [""] * len(bits)
+    for k in np.flatnonzero((bits & 0x7FFFFF) == 0).tolist():
+        out[k] = format_float(int(bits[k]))
+    idx = np.flatnonzero((bits & 0x7FFFFF) != 0)
+    if not len(idx):
+        return out
+    b = bits[idx]
+    v = b.view(np.float32).astype(np.float64)
+    specs = np.array(_SPECS, dtype=object)
+    # The guess: "%.7g" has p <= 7 significant digits once its trailing zeros go; when p < 7 it
+    # is the value rounded to p digits (the value lies within half a 7th digit of it), so it
+    # is "%.{p}g" as a number (and the same text once written positionally).
+    texts = list(map(format, v.tolist(), repeat(_GUESS)))
+    mant = ns.replace(ns.replace(ns.partition(np.array(texts), "e")[0], "-", ""), ".", "")
+    p = np.maximum(ns.str_len(ns.strip(mant, "0")), 1).astype(np.int64)
+    ok = _reads_back_many(texts, b)
+    # When the guess reads back, p - 1 digits can only read back too for p >= 7 or a subnormal:
+    # the guess ends in a non-zero digit, so "%.{p-1}g" lies at least one p-th digit unit U
+    # from it, and at least U/2 from the value; for p <= 6 and a normal value U/2 is above
+    # 0.47e-6 of the value, the interval's half-width below 0.6e-7 of it.
+    down = ok & (p > 1) & ((p >= 7) | ((b & 0x7F800000) == 0))
+    # Up: until a p reads back (at most 9: make floats-exhaustive proves it).
+    todo = np.flatnonzero(~ok)
+    while len(todo):
+        p[todo] += 1
+        if np.any(p[todo] > 9):
+            k = int(todo[p[todo] > 9][0])
+            raise AssertionError(f"0x{int(b[k]):08x}: no text of at most 9 digits reads back")
+        t = list(map(format, v[todo].tolist(), specs[p[todo]].tolist()))
+        good = _reads_back_many(t, b[todo])
+        for k, s in zip(todo[good].tolist(), [s for s, g in zip(t, good.tolist(), strict=True) if g], strict=True):
+            texts[k] = s
+        todo = todo[~good]
+    # Down: while p - 1 reads back too.
+    todo = np.flatnonzero(down)
+    while len(todo):
+        t = list(map(format, v[todo].tolist(), specs[p[todo] - 1].tolist()))
+        good = _reads_back_many(t, b[todo])
+        for k, s in zip(todo[good].tolist(), [s for s, g in zip(t, good.tolist(), strict=True) if g], strict=True):
+            texts[k] = s
+        todo = todo[good]
+        p[todo] -= 1
+        todo = todo[p[todo] > 1]
+    for k, s in zip(idx.tolist(), texts, strict=True):
+        out[k] = format(Decimal(s), "f") if "e" in s else s
+    return out
+
+
+def parse_floats(texts: list[str]) -> tuple[Any, list[int]]:
+    """``parse_float`` of each decimal numeral (syntax checked by the caller), vectorised: the
+    bits as a numpy uint32 array, and the indices of the texts parse_float refuses (OutOfRange;
+    their bits are 0). The double nearest each text is rounded to binary32 by numpy (ties to
+    even, as struct does); where it lies exactly halfway, or beyond the range, parse_float decides."""
+    import numpy as np
+
+    d = np.fromiter(map(float, texts), dtype=np.float64, count=len(texts))
+    with np.errstate(over="ignore", invalid="ignore"):
+        f = d.astype(np.float32)
+        fd = f.astype(np.float64)
+        toward = np.where(d > fd, np.float32(np.inf), np.float32(-np.inf))
+        g = np.nextafter(f, toward).astype(np.float64)
+        unsure = ~np.isfinite(f) | ((fd != d) & (d + d == fd + g))
+    bits = f.view(np.uint32).copy()
+    bad: list[int] = []
+    for k in np.flatnonzero(unsure).tolist():
+        try:
+            bits[k] = parse_float(texts[k])
+        except OutOfRange:
+            bits[k] = 0
+            bad.append(k)
+    return bits, bad

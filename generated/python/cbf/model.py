@@ -123,6 +123,53 @@ class RecordList(Sequence[Record]):
         return f"RecordList({len(self)} records)"
 
 
+class PackedRecords(Sequence[Record]):
+    """Records as compact columns, as CUT text gives them (cut.from_cut): the codes, every
+    record's arguments one after another (record i's are ``args[bounds[i]:bounds[i + 1]]``),
+    and the code copy (negative: none given) and reserved byte of each. A Record is made when
+    asked, the same Record the text describes; encode reads the columns as they are."""
+
+    __slots__ = ("args", "bounds", "codes", "copies", "reserved")
+
+    def __init__(self, codes: Sequence[int], args: bytes, bounds: Sequence[int], copies: Sequence[int],
+                 reserved: Sequence[int]) -> None:
+        if not (len(codes) + 1 == len(bounds) and len(codes) == len(copies) == len(reserved)):
+            raise ValueError("PackedRecords: columns of different lengths")
+        self.codes, self.args, self.bounds, self.copies, self.reserved = codes, args, bounds, copies, reserved
+
+    def __len__(self) -> int:
+        return len(self.codes)
+
+    def _make(self, i: int) -> Record:
+        copy = self.copies[i]
+        return Record(self.codes[i], self.args[self.bounds[i]:self.bounds[i + 1]], 0, None if copy < 0 else copy,
+                      self.reserved[i])
+
+    @overload
+    def __getitem__(self, index: int) -> Record: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Record]: ...
+
+    def __getitem__(self, index: int | slice) -> Record | Sequence[Record]:
+        if isinstance(index, slice):
+            return tuple(self._make(i) for i in range(*index.indices(len(self))))
+        return self._make(range(len(self))[index])
+
+    def __iter__(self) -> Iterator[Record]:
+        return map(self._make, range(len(self)))
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Sequence):
+            return NotImplemented
+        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"PackedRecords({len(self)} records)"
+
+
 @dataclass(frozen=True)
 class Cbf:
     """A CBF file. ``header`` is a dataclass of cbf.layouts (Header<layout>);

@@ -10,7 +10,7 @@ from typing import Any
 from . import tables as T
 from .checksums import compute
 from .errors import EncodeError, TruncatedError
-from .model import Cbf, RecordList
+from .model import Cbf, PackedRecords, RecordList
 
 Buffer = bytes | bytearray | memoryview
 
@@ -226,9 +226,16 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
     out = bytearray(pack_fields(info.fields, info.struct, model.header, "header"))
     if not keep_stored:
         _check_strings(info.fields, bytes(out), 0, "header")
+    offsets: list[int] = []
+    if not keep_stored and isinstance(records, PackedRecords):  # CUT text's records: a layout at a time
+        from .packing import pack_records
+
+        packed = pack_records(records, vid or "", profile, bytes(out))
+        if packed is not None:
+            out, offsets = packed[0], packed[1].tolist()
+            records = ()  # written: the loop has nothing left to do
     pack_head = T.HEAD_STRUCT.pack
     head_vals: list[Any] = [0] * len(T.RECORD_FIELDS)
-    offsets: list[int] = []
     for i, r in enumerate(records):
         raw = r.raw_args
         if len(raw) > T.LIMITS["max_arg_size"]:
@@ -238,7 +245,7 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
             if chk is None:
                 chk = arg_checksum(raw)
         else:
-            seq, copy, chk = i & T.SEQ_MASK, r.code, arg_checksum(raw)
+            seq, copy = i & T.SEQ_MASK, r.code  # the checksum of what is written, below
             cmd = T.BY_CODE.get(r.code)
             if cmd is None:
                 raise EncodeError(f"record {i}: unknown command code 0x{r.code:02X}")
@@ -260,7 +267,7 @@ def encode(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -
         out += raw
     out += model.trailing
     if not keep_stored:
-        _fill_header(out, offsets, len(records), profile)
+        _fill_header(out, offsets, len(model.records), profile)
         from .validation import validate
 
         # A writer makes files that validate: no error, and strings in ASCII (N4).
