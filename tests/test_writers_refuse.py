@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from cbf import tables as T
-from cbf.codec import encode
+from cbf.writer import encode
 from cbf.errors import EncodeError
 from cbf.model import Cbf, Record, new_header
 

@@ -134,7 +134,7 @@ def _record_line(r: Record, version: str, profile: str) -> str:
 
 def to_cut(model: Cbf, *, profile: str = "default") -> str:
     """The CUT text of a model (records keep their order; checksums are not written)."""
-    from .codec import pack_fields
+    from .fields import pack_fields
 
     vid = model.version_id
     info = T.HEADERS[T.VERSION_BY_ID[vid].header]
