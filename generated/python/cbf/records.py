@@ -114,11 +114,10 @@ def _uint(cols: NDArray[np.uint8], f: T.FieldInfo) -> NDArray[Any]:
 
 
 def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDArray[np.uint8]:
-    """Bytes a[s:s+width] for each start, one column at a time (no n x width index matrix)."""
-    out = np.empty((starts.shape[0], width), dtype=np.uint8)
-    for k in range(width):
-        np.take(a, starts + k, out=out[:, k])
-    return out
+    """Bytes a[s:s+width] for each start: rows of a sliding-window view (no index matrix)."""
+    if width == 0 or starts.shape[0] == 0:
+        return np.empty((starts.shape[0], width), dtype=np.uint8)
+    return np.lib.stride_tricks.sliding_window_view(a, width)[starts]
 
 
 def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
@@ -211,16 +210,20 @@ def _arg_checksum(r: Records, check: Check) -> None:
     spec = T.CHECKSUMS["fields"]["args"]
     if T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]] == [
             {"region": "args", "start": None, "end": None, "exclude": []}]:
-        # The k-th argument byte of every record that has one, added column by
-        # column: memory stays a few vectors of n (a cumulative sum or reduceat
-        # over the file would hold 8 bytes per file byte).
+        # The records of one argument size at a time, their arguments gathered as rows and
+        # summed: memory stays the arguments of one size (a cumulative sum or reduceat over
+        # the file would hold 8 bytes per file byte).
         sums = np.zeros(len(off), dtype=np.int64)
-        starts = off + hs
-        last = a.shape[0] - 1
-        for k in range(int(nb.max())):
-            sums += np.where(nb > k, a[np.minimum(starts + k, last)], 0)
+        order = np.argsort(nb, kind="stable")
+        sizes, first = np.unique(nb[order], return_index=True)
+        bounds = [*first.tolist(), len(order)]
+        for j, size in enumerate(sizes.tolist()):
+            if size:
+                rows = order[bounds[j]:bounds[j + 1]]
+                sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
+        del order
         want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
-        del sums, starts
+        del sums
     else:
         buf = r.buf
         want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
@@ -241,8 +244,10 @@ def _unknown_code(r: Records, check: Check) -> None:
 def _availability(r: Records, check: Check) -> None:
     code, version = r.head["code"], r.version
     known, avail = _tables(version, r.profile)[:2]
+    bad = np.flatnonzero((known & ~avail)[code])
+    if bad.size == 0:
+        return
     covering = availability_checks()  # (version, command) -> the one check that covers it
-    bad = np.nonzero(known[code] & ~avail[code])[0]
     for c in np.unique(code[bad]):
         name = T.BY_CODE[int(c)].name
         if (covering.get((version, name)) or {}).get("id") != check["id"]:
@@ -267,10 +272,26 @@ def _arg_size(r: Records, check: Check) -> None:
 
 # -- argument kernels (one layout at a time) -------------------------------------------
 def _finite(r: Records, check: Check, b: Batch) -> None:
-    for f in b.lay.args:
-        if f.kind == "float":
-            bad = np.nonzero(~_finite_rows(b.cols[f.name]))[0]
-            r.add(check, b.rows[bad], b.aoff[bad] + f.offset, bad, _const(f"{b.cmd.name}.{f.name} is not finite"))
+    floats = [f for f in b.lay.args if f.kind == "float"]
+    if not floats:
+        return
+    # float32 values summed as float64 cannot overflow, and a NaN or an infinity makes the
+    # sum not finite: rows whose sum is finite hold only finite floats.
+    total = np.zeros(b.rows.size)
+    with np.errstate(invalid="ignore"):
+        for f in floats:
+            col = b.cols[f.name]
+            if col.ndim == 1:
+                total += col
+            else:
+                for j in range(col.shape[1]):
+                    total += col[:, j]
+    suspect = np.flatnonzero(~np.isfinite(total))
+    if suspect.size == 0:
+        return
+    for f in floats:
+        bad = suspect[~_finite_rows(b.cols[f.name][suspect])]
+        r.add(check, b.rows[bad], b.aoff[bad] + f.offset, bad, _const(f"{b.cmd.name}.{f.name} is not finite"))
 
 
 def _string_tail(r: Records, check: Check, b: Batch) -> None:
@@ -438,31 +459,42 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
     r.state.setdefault(check["id"], []).append((b.rows, start, _ends(m, b.cols, n), at, b.cmd.name))
 
 
+def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
+    """The rows of every part (one per layout) in file order, and each field of the parts
+    concatenated in that order (field j of a part is part[j + 1])."""
+    if len(parts) == 1:
+        return parts[0][0], list(parts[0][1:])
+    rows = np.concatenate([p[0] for p in parts])
+    order = np.argsort(rows, kind="stable")
+    return rows[order], [np.concatenate([p[j] for p in parts])[order] for j in range(1, len(parts[0]))]
+
+
+def _same_rows(x: Any, y: Any) -> Any:
+    """Per row: the vectors are equal, component by component (False where either is NaN)."""
+    eq = x[:, 0] == y[:, 0]
+    for j in range(1, x.shape[1]):
+        eq &= x[:, j] == y[:, j]
+    return eq
+
+
 def _continuity_end(r: Records, check: Check) -> None:
     parts = r.state.pop(check["id"], [])
     if not parts:
         return
-    rows = np.concatenate([p[0] for p in parts])
-    order = np.argsort(rows, kind="stable")
-    start = np.concatenate([p[1] for p in parts])[order]
-    end = np.concatenate([p[2] for p in parts])[order]
-    rows = rows[order]
-    dvec = start.copy()  # start - previous end, in place (memory: one n x 3 array)
-    dvec[0] = np.nan
-    dvec[1:] -= end[:-1]
-    del end
+    labels = [p[4] for p in parts]
+    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
+    rows, (start, end, starts, names) = _in_file_order(parts)
+    # A motion that starts exactly where the last one ended is 0 mm away: only the others are
+    # measured (a valid file's motions all start so).
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
+    dvec = start[todo] - end[todo - 1]
     with np.errstate(invalid="ignore", over="ignore"):
-        np.multiply(dvec, dvec, out=dvec)
-        d = np.sqrt(dvec.sum(axis=1))
-    del dvec
-    with np.errstate(invalid="ignore"):
-        bad = np.nonzero(np.isfinite(start).all(axis=1) & (d > T.TOL["position_mm"]))[0]
-    if bad.size == 0:
-        return
-    names = np.concatenate([np.full(len(p[0]), p[4], dtype=object) for p in parts])[order]
-    starts = np.concatenate([p[3] for p in parts])[order]
-    r.add(check, rows[bad], starts[bad], bad,
-          lambda k: f"{names[k]} starts {float(d[k]):.6g} mm from the current position")
+        d = np.sqrt((dvec * dvec).sum(axis=1))
+        keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
+    bad = todo[keep]
+    dist, label = d[keep], names[bad]
+    r.add(check, rows[bad], starts[bad], np.arange(bad.size),
+          lambda k: f"{labels[label[k]]} starts {float(dist[k]):.6g} mm from the current position")
 
 
 def _orientation(r: Records, check: Check, b: Batch) -> None:
@@ -477,23 +509,24 @@ def _orientation_end(r: Records, check: Check) -> None:
     parts = r.state.pop(check["id"], [])
     if not parts:
         return
-    rows = np.concatenate([p[0] for p in parts])
-    order = np.argsort(rows, kind="stable")
-    start = np.concatenate([p[1] for p in parts])[order]
-    end = np.concatenate([p[2] for p in parts])[order]
-    aoff = np.concatenate([p[3] for p in parts])[order]
-    cnames = np.concatenate([np.full(len(p[0]), p[4], dtype=object) for p in parts])[order]
-    rows = rows[order]
+    labels = [p[4] for p in parts]
+    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
+    rows, (start, end, aoff, cnames) = _in_file_order(parts)
+    tol = T.TOL["orientation_deg"]
+    # A path that starts exactly on the orientation in force turns 0 degrees: only the others
+    # are measured (a valid file's paths all start so).
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
+    s, prev = start[todo], end[todo - 1]
     with np.errstate(invalid="ignore", over="ignore"):
-        valid_end = np.isfinite(end).all(axis=1) & (np.sqrt((end * end).sum(axis=1)) > 0.0)
-        end = np.where(valid_end[:, None], end, np.nan)
-        prev = np.vstack((np.full((1, 3), np.nan), end[:-1]))
-        s_ok = np.isfinite(start).all(axis=1) & (np.sqrt((start * start).sum(axis=1)) > 0.0)
-        cx = np.cross(start, prev)
-        ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (start * prev).sum(axis=1)))
-        bad = np.nonzero(s_ok & np.isfinite(prev).all(axis=1) & (ang > T.TOL["orientation_deg"]))[0]
-    r.add(check, rows[bad], aoff[bad], bad,
-          lambda k: f"{cnames[k]} starts {float(ang[k]):.6g} deg from the current orientation")
+        prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
+        s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
+        cx = np.cross(s, prev)
+        ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
+        keep = s_ok & prev_ok & (ang > tol)
+    bad = todo[keep]
+    angle, label = ang[keep], cnames[bad]
+    r.add(check, rows[bad], aoff[bad], np.arange(bad.size),
+          lambda k: f"{labels[label[k]]} starts {float(angle[k]):.6g} deg from the current orientation")
 
 
 def _shape(r: Records, check: Check, b: Batch) -> None:

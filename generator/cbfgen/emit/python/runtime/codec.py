@@ -26,6 +26,8 @@ def frame(buf: Buffer) -> tuple[Sequence[int], int]:
     head, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
     last = n - head  # a record head must start at or before this offset
     offsets = array("q")
+    if n >= FAST_FRAME_BYTES:
+        pos = _frame_ahead(buf, offsets)
     append = offsets.append
     while pos <= last:
         nxt = pos + head + buf[pos + at]
@@ -34,6 +36,77 @@ def frame(buf: Buffer) -> tuple[Sequence[int], int]:
         append(pos)
         pos = nxt
     return offsets, pos
+
+
+# Files of at least this many bytes are framed ahead with numpy (_frame_ahead) before the
+# loop above finishes what is left: the loop alone costs about 0.2 us a record.
+FAST_FRAME_BYTES = 1 << 18
+_BLOCK = 1 << 18
+
+
+def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
+    """Frame as far as the record heads look like record heads, vectorised; returns where the
+    loop of ``frame`` goes on (its result is the same: this only follows the links it would).
+
+    Candidates are the offsets whose head has a known code, its copy equal and the reserved
+    byte zero (each record of a valid file; seldom anything else). Each candidate links to the
+    offset its size field gives when that is a candidate too; the records are the chain of links
+    from the first record, found by pointer doubling (about log2(records) passes over the
+    candidates). Where the chain leaves the candidates, the loop of ``frame`` goes on."""
+    import numpy as np
+
+    n, start = len(buf), T.HEADER_SIZE
+    head, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
+    last = n - head
+    a = np.frombuffer(buf, dtype=np.uint8)
+    known = np.zeros(256, dtype=bool)
+    known[[c.code for c in T.COMMANDS if c.code < 256]] = True
+    f_code, f_copy, f_res = (T.RECORD_FIELDS[i] for i in (T.I_CODE, T.I_COPY, T.I_RES))
+    parts = []
+    for s in range(start, last + 1, _BLOCK):
+        e = min(s + _BLOCK, last + 1)
+        ok = np.ones(e - s, dtype=bool)
+        if f_code.size == 1 and f_copy.size == 1:
+            code = a[s + f_code.offset:e + f_code.offset]
+            ok &= code == a[s + f_copy.offset:e + f_copy.offset]
+            if not known[0]:  # runs of zero bytes (zero floats) look like heads otherwise
+                ok &= code != 0
+        if f_res.size == 1:
+            ok &= a[s + f_res.offset:e + f_res.offset] == 0
+        found = np.flatnonzero(ok) + s
+        if f_code.size == 1:  # a table look-up costs more than a comparison: on the few left only
+            found = found[known[a[found + f_code.offset]]]
+        parts.append(found)
+    cand = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
+    m = cand.shape[0]
+    if m == 0 or cand[0] != start:
+        return start
+    nxt = cand + head + a[cand + at]
+    succ = np.searchsorted(cand, nxt)
+    linked = succ < m
+    linked[linked] = cand[succ[linked]] == nxt[linked]
+    jump = np.full(m + 1, m, dtype=np.int64)  # m: the sentinel, linked to itself
+    jump[:m][linked] = succ[linked]
+    del succ, linked
+    reached = [np.zeros(1, dtype=np.int64)]  # the first 2**k records of the chain, as candidate indices
+    have = reached[0]
+    while True:
+        more = jump[have]
+        more = more[more != m]
+        if more.size == 0:
+            break
+        reached.append(more)
+        have = np.concatenate((have, more))
+        jump = jump[jump]
+    chain = have  # in file order already: each pass appends the records after those it has
+    pos = int(cand[chain[-1]])
+    if int(nxt[chain[-1]]) <= n:  # the last record fits: the loop goes on after it
+        chain_offsets = cand[chain]
+        pos = int(nxt[chain[-1]])
+    else:
+        chain_offsets = cand[chain[:-1]]
+    offsets.frombytes(chain_offsets.astype(np.int64).tobytes())
+    return pos
 
 
 def header_info(buf: Buffer) -> tuple[str | None, T.HeaderInfo]:
