@@ -60,7 +60,12 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
     last = n - head
     a = np.frombuffer(buf, dtype=np.uint8)
     known = np.zeros(256, dtype=bool)
-    known[[c.code for c in T.COMMANDS if c.code < 256]] = True
+    sized = np.zeros((256, 256), dtype=bool)  # (code, argument size) of some layout
+    for c in T.COMMANDS:
+        if c.code < 256:
+            known[c.code] = True
+            for lay in c.layouts:
+                sized[c.code, lay.size] = lay.size < 256
     f_code, f_copy, f_res = (T.RECORD_FIELDS[i] for i in (T.I_CODE, T.I_COPY, T.I_RES))
     parts = []
     for s in range(start, last + 1, _BLOCK):
@@ -68,20 +73,23 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
         ok = np.ones(e - s, dtype=bool)
         if f_code.size == 1 and f_copy.size == 1:
             code = a[s + f_code.offset:e + f_code.offset]
-            ok &= code == a[s + f_copy.offset:e + f_copy.offset]
+            np.equal(code, a[s + f_copy.offset:e + f_copy.offset], out=ok)
             if not known[0]:  # runs of zero bytes (zero floats) look like heads otherwise
                 ok &= code != 0
         if f_res.size == 1:
             ok &= a[s + f_res.offset:e + f_res.offset] == 0
         found = np.flatnonzero(ok) + s
         if f_code.size == 1:  # a table look-up costs more than a comparison: on the few left only
-            found = found[known[a[found + f_code.offset]]]
+            found = found[sized[a[found + f_code.offset], a[found + at]]]
         parts.append(found)
     cand = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
     m = cand.shape[0]
     if m == 0 or cand[0] != start:
         return start
     nxt = cand + head + a[cand + at]
+    if np.array_equal(cand[1:], nxt[:-1]):  # each candidate is the last one's successor: all records
+        chain = np.arange(m)
+        return _chain_end(cand, nxt, chain, n, offsets)
     succ = np.searchsorted(cand, nxt)
     linked = succ < m
     linked[linked] = cand[succ[linked]] == nxt[linked]
@@ -98,14 +106,18 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
         reached.append(more)
         have = np.concatenate((have, more))
         jump = jump[jump]
-    chain = have  # in file order already: each pass appends the records after those it has
+    return _chain_end(cand, nxt, have, n, offsets)  # in file order: each pass appends what follows
+
+
+def _chain_end(cand: Any, nxt: Any, chain: Any, n: int, offsets: array[int]) -> int:
+    """Append the chain's offsets (its last one only if that record fits); where the loop goes on."""
     pos = int(cand[chain[-1]])
     if int(nxt[chain[-1]]) <= n:  # the last record fits: the loop goes on after it
         chain_offsets = cand[chain]
         pos = int(nxt[chain[-1]])
     else:
         chain_offsets = cand[chain[:-1]]
-    offsets.frombytes(chain_offsets.astype(np.int64).tobytes())
+    offsets.frombytes(chain_offsets.astype("int64", copy=False).tobytes())
     return pos
 
 
