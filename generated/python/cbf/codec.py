@@ -83,13 +83,15 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
             found = found[sized[a[found + f_code.offset], a[found + at]]]
         parts.append(found)
     cand = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
+    del parts
     m = cand.shape[0]
     if m == 0 or cand[0] != start:
         return start
-    nxt = cand + head + a[cand + at]
+    nxt = a[cand + at].astype(np.int64)  # (memory: a few vectors of the records, in place)
+    nxt += cand
+    nxt += head
     if np.array_equal(cand[1:], nxt[:-1]):  # each candidate is the last one's successor: all records
-        chain = np.arange(m)
-        return _chain_end(cand, nxt, chain, n, offsets)
+        return _chain_end(cand, nxt, None, n, offsets)
     succ = np.searchsorted(cand, nxt)
     linked = succ < m
     linked[linked] = cand[succ[linked]] == nxt[linked]
@@ -110,14 +112,16 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
 
 
 def _chain_end(cand: Any, nxt: Any, chain: Any, n: int, offsets: array[int]) -> int:
-    """Append the chain's offsets (its last one only if that record fits); where the loop goes on."""
-    pos = int(cand[chain[-1]])
-    if int(nxt[chain[-1]]) <= n:  # the last record fits: the loop goes on after it
-        chain_offsets = cand[chain]
-        pos = int(nxt[chain[-1]])
+    """Append the chain's offsets (candidate indices; None: every candidate), its last one only
+    if that record fits; returns where the loop goes on."""
+    last = len(cand) - 1 if chain is None else int(chain[-1])
+    fits = int(nxt[last]) <= n  # the last record fits: the loop goes on after it
+    pos = int(nxt[last]) if fits else int(cand[last])
+    if chain is None:
+        chain_offsets = cand if fits else cand[:-1]
     else:
-        chain_offsets = cand[chain[:-1]]
-    offsets.frombytes(chain_offsets.astype("int64", copy=False).tobytes())
+        chain_offsets = cand[chain] if fits else cand[chain[:-1]]
+    offsets.frombytes(memoryview(chain_offsets.astype("int64", copy=False)).cast("B"))
     return pos
 
 

@@ -52,6 +52,7 @@ class Batch:
     rows: Any
     aoff: Any
     cols: dict[str, Any]
+    raw: dict[str, Any]  # the float arguments as stored (binary32): exact, half the memory
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -165,14 +166,16 @@ def _batches(r: Records) -> Iterator[Batch]:
         aoff = r.off[rows] + T.HEAD_SIZE
         arr = _gather(r.a, aoff, lay.size).view(_dtype(lay))[:, 0] if lay.size else None
         cols: dict[str, Any] = {}
+        raw: dict[str, Any] = {}
         for f in lay.args:
             assert arr is not None
             col = arr[f.name]
             if f.kind == "float":
+                raw[f.name] = col
                 with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
                     col = col.astype(np.float64)
             cols[f.name] = col
-        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, cols)
+        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, cols, raw)
 
 
 def _finite_rows(v: Any) -> Any:
@@ -211,17 +214,14 @@ def _arg_checksum(r: Records, check: Check) -> None:
     if T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]] == [
             {"region": "args", "start": None, "end": None, "exclude": []}]:
         # The records of one argument size at a time, their arguments gathered as rows and
-        # summed: memory stays the arguments of one size (a cumulative sum or reduceat over
-        # the file would hold 8 bytes per file byte).
+        # summed: memory stays the arguments of one size (a cumulative sum over the file would
+        # hold 8 bytes per file byte; reduceat costs more per record).
         sums = np.zeros(len(off), dtype=np.int64)
-        order = np.argsort(nb, kind="stable")
-        sizes, first = np.unique(nb[order], return_index=True)
-        bounds = [*first.tolist(), len(order)]
-        for j, size in enumerate(sizes.tolist()):
+        sizes = np.flatnonzero(np.bincount(nb, minlength=1)).tolist()
+        for size in sizes:
             if size:
-                rows = order[bounds[j]:bounds[j + 1]]
+                rows = np.flatnonzero(nb == size)
                 sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
-        del order
         want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
         del sums
     else:
@@ -427,7 +427,7 @@ def _ends(m: dict[str, str], cols: dict[str, Any], k: int) -> Any:
     kind = m["kind"]
     if kind in ("point", "line"):
         end = cols[m["end"]].copy()
-        end[~np.isfinite(end).all(axis=1)] = np.nan
+        end[~_finite_rows(end)] = np.nan
         return end
     start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]
     deg = cols[m["degrees"]]
@@ -454,9 +454,14 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
     if m is None:
         return
     n = b.rows.size
-    start = np.full((n, 3), np.nan) if m["kind"] == "point" else b.cols[m["start"]]
+    # points and lines: their vectors as stored (binary32; widening to float64 is exact, and
+    # the distance is measured in float64), half the memory of float64 copies
+    plain = m["kind"] in ("point", "line")
+    cols = b.raw if plain else b.cols
+    start = np.full((n, 3), np.nan, dtype=np.float32 if plain else np.float64) if m["kind"] == "point" \
+        else cols[m["start"]]
     at = b.aoff + next((f.offset for f in b.lay.args if f.name == m.get("start")), 0)
-    r.state.setdefault(check["id"], []).append((b.rows, start, _ends(m, b.cols, n), at, b.cmd.name))
+    r.state.setdefault(check["id"], []).append((b.rows, start, _ends(m, cols, n), at, b.cmd.name))
 
 
 def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
@@ -487,7 +492,8 @@ def _continuity_end(r: Records, check: Check) -> None:
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
     # measured (a valid file's motions all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
-    dvec = start[todo] - end[todo - 1]
+    dvec = start[todo].astype(np.float64)
+    dvec -= end[todo - 1]
     with np.errstate(invalid="ignore", over="ignore"):
         d = np.sqrt((dvec * dvec).sum(axis=1))
         keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
