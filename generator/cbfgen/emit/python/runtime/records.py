@@ -53,6 +53,7 @@ class Batch:
     aoff: Any
     cols: dict[str, Any]
     raw: dict[str, Any]  # the float arguments as stored (binary32): exact, half the memory
+    nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -297,32 +298,45 @@ def _finite(r: Records, check: Check, b: Batch) -> None:
 def _string_tail(r: Records, check: Check, b: Batch) -> None:
     for f in b.lay.args:
         if f.kind == "string":
-            string_tail(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}")
+            string_tail(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}",
+                        _first_nul(b, f.name))
 
 
 def _string_ascii(r: Records, check: Check, b: Batch) -> None:
     for f in b.lay.args:
         if f.kind == "string":
-            string_ascii(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}")
+            string_ascii(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}",
+                         _first_nul(b, f.name))
+
+
+def _first_nul(b: Batch, name: str) -> Any:
+    """Per row, where the first NUL of string argument ``name`` is (its size when none); made once
+    for both string kernels."""
+    if name not in b.nul:
+        b.nul[name] = first_nul(b.cols[name])
+    return b.nul[name]
+
+
+def first_nul(col: NDArray[np.uint8]) -> Any:
+    is_nul = col == 0
+    return np.where(is_nul.any(axis=1), is_nul.argmax(axis=1), col.shape[1])
 
 
 Add = Callable[[Check | None, Any, Any, Any, Message], None]
 
 
-def string_tail(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str) -> None:
+def string_tail(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str,
+                first: Any) -> None:
     """string_tail: bytes other than NUL after the first NUL of a string field (rows x size)."""
-    is_nul = col == 0
-    first = np.where(is_nul.any(axis=1), is_nul.argmax(axis=1), col.shape[1])
     after = np.arange(col.shape[1])[None, :] > first[:, None]
     bad = np.nonzero((after & (col != 0)).any(axis=1))[0]
     add(check, rows[bad], offs[bad], bad,
         lambda k: f"{name}: bytes after the first NUL: {bytes(col[k, first[k] + 1:]).rstrip(bytes(1)).hex()}")
 
 
-def string_ascii(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str) -> None:
+def string_ascii(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str,
+                 first: Any) -> None:
     """string_ascii: a byte outside printable ASCII before the first NUL of a string field."""
-    is_nul = col == 0
-    first = np.where(is_nul.any(axis=1), is_nul.argmax(axis=1), col.shape[1])
     before = np.arange(col.shape[1])[None, :] < first[:, None]
     nonascii = before & ((col < 0x20) | (col > 0x7E))
     bad = np.nonzero(nonascii.any(axis=1))[0]
@@ -381,22 +395,26 @@ def _ordered_msg(cname: str, cols: dict[str, Any], names: tuple[str, ...]) -> Me
 
 
 def _nondecreasing(r: Records, check: Check, b: Batch) -> None:
-    held = r.state.setdefault(check["id"], [])  # (record, key, value, offset)
+    held = r.state.setdefault(check["id"], {})  # command.argument -> [(rows, values, offsets)]
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
-            v, at, key = b.cols[nm], b.at(nm), f"{b.cmd.name}.{nm}"
-            for k in np.nonzero(np.isfinite(v))[0]:
-                held.append((int(b.rows[k]), key, float(v[k]), int(at[k])))
+            v = b.cols[nm]
+            fin = np.flatnonzero(np.isfinite(v))
+            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[fin], v[fin], b.at(nm)[fin]))
 
 
 def _nondecreasing_end(r: Records, check: Check) -> None:
-    held = r.state.pop(check["id"], [])
-    held.sort(key=lambda t: t[0])
-    prev: dict[str, float] = {}
-    for row, key, v, at in held:
-        if key in prev and v < prev[key]:
-            r.found(check, row, at, f"{key} falls from {prev[key]:g} to {v:g}")
-        prev[key] = v
+    """Each finite value against the last finite value of the same command argument."""
+    for key, parts in r.state.pop(check["id"], {}).items():
+        rows, (values, offs) = _in_file_order(parts)
+        bad = np.flatnonzero(values[1:] < values[:-1]) + 1
+        prev = values[bad - 1]
+        r.add(check, rows[bad], offs[bad], np.arange(bad.size),
+              _falls(key, prev, values[bad]))
+
+
+def _falls(key: str, before: Any, after: Any) -> Message:
+    return lambda k: f"{key} falls from {float(before[k]):g} to {float(after[k]):g}"
 
 
 def _cutter_table(r: Records, check: Check, b: Batch) -> None:
@@ -536,26 +554,28 @@ def _orientation_end(r: Records, check: Check) -> None:
 
 
 def _shape(r: Records, check: Check, b: Batch) -> None:
-    held = r.state.setdefault(check["id"], {"rows": [], "motion": []})
+    held = r.state.setdefault(check["id"], {"parts": [], "motion": []})
     if b.cmd.motion is not None:
         held["motion"].append(b.rows)
     sh = b.cmd.shape
     if sh is not None:
         kind = 0 if sh["kind"] == "start" else 1
-        names, counts = b.cols[sh["name"]], b.cols[sh["count"]]
-        for k, row in enumerate(b.rows.tolist()):
-            held["rows"].append((row, kind, bytes(names[k]), int(counts[k]), b.cmd.name))
+        held["parts"].append((b.rows, kind, b.cols[sh["name"]], b.cols[sh["count"]].astype(np.int64), b.cmd.name))
 
 
 def _shape_end(r: Records, check: Check) -> None:
     held = r.state.pop(check["id"], None)
-    if held is None or not held["rows"]:
+    if held is None or not held["parts"]:
         return
     motion = np.zeros(len(r.off), dtype=np.int64)
     for rows in held["motion"]:
         motion[rows] = 1
     cm = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(motion)))
-    shape_rows = sorted(held["rows"])
+    parts = held["parts"]
+    if _shapes_balanced(parts, cm):
+        return
+    shape_rows = sorted((row, kind, bytes(names[k]), int(counts[k]), cname)
+                        for rows, kind, names, counts, cname in parts for k, row in enumerate(rows.tolist()))
     off = r.off
     open_: tuple[int, bytes, int] | None = None
     for row, kind, name, cnt, cname in shape_rows:
@@ -578,6 +598,22 @@ def _shape_end(r: Records, check: Check) -> None:
             open_ = None
     if open_ is not None:
         r.found(check, open_[0], int(off[open_[0]]), f"shape {string_value(open_[1])} is never closed")
+
+
+def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
+    """True when the loop of _shape_end would find nothing: starts and ends alternate, from a
+    start to an end, each end repeats its start's name and count, and the count is the number
+    of motions between them (cm: motions before each record). Only a quick yes: on False the
+    loop decides."""
+    if len({p[2].shape[1] for p in parts}) != 1:
+        return False
+    rows, (kinds, names, counts) = _in_file_order(
+        [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
+    if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
+        return False
+    opened, closed = rows[0::2], rows[1::2]
+    return bool((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()
+                and (cm[closed] - cm[opened + 1] == counts[0::2]).all())
 
 
 @dataclass(frozen=True)
@@ -666,6 +702,8 @@ def header_string_findings(raw: bytes, offset: int, name: str) -> list[Finding]:
             out.extend(finding(check, None, int(offs[k]), msg(keys[k])) for k in range(len(rows)))
 
     col = np.frombuffer(raw, dtype=np.uint8).reshape(1, -1)
+    first = first_nul(col)
     for kind, kernel in (("string_tail", string_tail), ("string_ascii", string_ascii)):
-        kernel(add, check_of(kind), col, np.zeros(1, dtype=np.int64), np.full(1, offset, dtype=np.int64), name)
+        kernel(add, check_of(kind), col, np.zeros(1, dtype=np.int64), np.full(1, offset, dtype=np.int64), name,
+               first)
     return out
