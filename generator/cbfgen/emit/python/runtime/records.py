@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import heapq
 import math
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
@@ -51,8 +51,8 @@ class Batch:
     cmd: T.CommandInfo
     rows: Any
     aoff: Any
-    cols: dict[str, Any]
-    raw: dict[str, Any]  # the float arguments as stored (binary32): exact, half the memory
+    cols: Mapping[str, Any]  # floats as float64
+    raw: dict[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
 
     def at(self, name: str) -> Any:
@@ -166,17 +166,38 @@ def _batches(r: Records) -> Iterator[Batch]:
             continue
         aoff = r.off[rows] + T.HEAD_SIZE
         arr = _gather(r.a, aoff, lay.size).view(_dtype(lay))[:, 0] if lay.size else None
-        cols: dict[str, Any] = {}
-        raw: dict[str, Any] = {}
-        for f in lay.args:
-            assert arr is not None
-            col = arr[f.name]
-            if f.kind == "float":
-                raw[f.name] = col
+        raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw)
+
+
+class _Columns(Mapping[str, Any]):
+    """A layout's argument columns, floats widened to float64 when a kernel first reads them
+    (many kernels read the stored binary32 columns, ``Batch.raw``, and need no copy)."""
+
+    __slots__ = ("_done", "_raw")
+
+    def __init__(self, raw: dict[str, Any]) -> None:
+        self._raw = raw
+        self._done: dict[str, Any] = {}
+
+    def __getitem__(self, name: str) -> Any:
+        col = self._done.get(name)
+        if col is None:
+            col = self._raw[name]
+            if col.dtype.kind == "f":
                 with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
                     col = col.astype(np.float64)
-            cols[f.name] = col
-        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, cols, raw)
+            self._done[name] = col
+        return col
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._raw
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._raw)
+
+    def __len__(self) -> int:
+        return len(self._raw)
 
 
 def _finite_rows(v: Any) -> Any:
@@ -276,12 +297,12 @@ def _finite(r: Records, check: Check, b: Batch) -> None:
     floats = [f for f in b.lay.args if f.kind == "float"]
     if not floats:
         return
-    # float32 values summed as float64 cannot overflow, and a NaN or an infinity makes the
-    # sum not finite: rows whose sum is finite hold only finite floats.
-    total = np.zeros(b.rows.size)
-    with np.errstate(invalid="ignore"):
+    # A NaN or an infinity makes the sum not finite, so rows whose sum is finite hold only
+    # finite floats; the others (an overflow too) are looked at field by field.
+    total = np.zeros(b.rows.size, dtype=np.float32)
+    with np.errstate(invalid="ignore", over="ignore"):
         for f in floats:
-            col = b.cols[f.name]
+            col = b.raw[f.name]
             if col.ndim == 1:
                 total += col
             else:
@@ -291,7 +312,7 @@ def _finite(r: Records, check: Check, b: Batch) -> None:
     if suspect.size == 0:
         return
     for f in floats:
-        bad = suspect[~_finite_rows(b.cols[f.name][suspect])]
+        bad = suspect[~_finite_rows(b.raw[f.name][suspect])]
         r.add(check, b.rows[bad], b.aoff[bad] + f.offset, bad, _const(f"{b.cmd.name}.{f.name} is not finite"))
 
 
@@ -390,7 +411,7 @@ def _ordered(r: Records, check: Check, b: Batch) -> None:
         r.add(check, b.rows[bad], b.aoff[bad], bad, _ordered_msg(cname, cols, names))
 
 
-def _ordered_msg(cname: str, cols: dict[str, Any], names: tuple[str, ...]) -> Message:
+def _ordered_msg(cname: str, cols: Mapping[str, Any], names: tuple[str, ...]) -> Message:
     return lambda k: f"{cname}: {' <= '.join(f'{nm}={float(cols[nm][k]):g}' for nm in names)} does not hold"
 
 
@@ -440,7 +461,7 @@ def _cutter_table(r: Records, check: Check, b: Batch) -> None:
 
 
 # -- sequential kernels (the records in file order) ------------------------------------
-def _ends(m: dict[str, str], cols: dict[str, Any], k: int) -> Any:
+def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     """Where each motion leaves the tool (NaN when not finite); as geometry.motion_end."""
     kind = m["kind"]
     if kind in ("point", "line"):
@@ -525,8 +546,9 @@ def _orientation(r: Records, check: Check, b: Batch) -> None:
     o = b.cmd.orientation
     if o is None:
         return
-    s = np.full((b.rows.size, 3), np.nan) if o["kind"] == "set" else b.cols[o["start"]]
-    r.state.setdefault(check["id"], []).append((b.rows, s, b.cols[o["end"]], b.aoff, b.cmd.name))
+    # the vectors as stored (binary32), widened exactly where an angle is measured
+    s = np.full((b.rows.size, 3), np.nan, dtype=np.float32) if o["kind"] == "set" else b.raw[o["start"]]
+    r.state.setdefault(check["id"], []).append((b.rows, s, b.raw[o["end"]], b.aoff, b.cmd.name))
 
 
 def _orientation_end(r: Records, check: Check) -> None:
@@ -540,7 +562,7 @@ def _orientation_end(r: Records, check: Check) -> None:
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
-    s, prev = start[todo], end[todo - 1]
+    s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
     with np.errstate(invalid="ignore", over="ignore"):
         prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
         s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
