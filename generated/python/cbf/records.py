@@ -54,6 +54,7 @@ class Batch:
     cols: Mapping[str, Any]  # floats as float64
     raw: dict[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
+    bytes_: Any = None  # the argument bytes, rows x layout size
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -165,9 +166,10 @@ def _batches(r: Records) -> Iterator[Batch]:
         if rows.size == 0:
             continue
         aoff = r.off[rows] + T.HEAD_SIZE
-        arr = _gather(r.a, aoff, lay.size).view(_dtype(lay))[:, 0] if lay.size else None
+        data = _gather(r.a, aoff, lay.size)
+        arr = data.view(_dtype(lay))[:, 0] if lay.size else None
         raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
-        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw)
+        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw, bytes_=data)
 
 
 class _Columns(Mapping[str, Any]):
@@ -230,22 +232,43 @@ def _code_copy(r: Records, check: Check) -> None:
           lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
 
 
+def _plain_arg_sum() -> bool:
+    """The argument checksum is a plain byte sum of the arguments alone."""
+    spec = T.CHECKSUMS["fields"]["args"]
+    return bool(T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]]
+                == [{"region": "args", "start": None, "end": None, "exclude": []}])
+
+
+def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
+    """The sums of the records of a layout, from the argument bytes the batch gathered."""
+    if not _plain_arg_sum():
+        return
+    held = r.state.get(check["id"])
+    if held is None:
+        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=np.int64), np.zeros(len(r.off), dtype=bool))
+    sums, done = held
+    if b.lay.size:
+        sums[b.rows] = b.bytes_.sum(axis=1, dtype=np.int64)
+    done[b.rows] = True
+
+
 def _arg_checksum(r: Records, check: Check) -> None:
     nb, chk, off, a, hs = r.head["arg_size"], r.head["checksum"], r.off, r.a, T.HEAD_SIZE
-    spec = T.CHECKSUMS["fields"]["args"]
-    if T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]] == [
-            {"region": "args", "start": None, "end": None, "exclude": []}]:
-        # The records of one argument size at a time, their arguments gathered as rows and
-        # summed: memory stays the arguments of one size (a cumulative sum over the file would
-        # hold 8 bytes per file byte; reduceat costs more per record).
-        sums = np.zeros(len(off), dtype=np.int64)
-        sizes = np.flatnonzero(np.bincount(nb, minlength=1)).tolist()
-        for size in sizes:
-            if size:
-                rows = np.flatnonzero(nb == size)
-                sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
+    if _plain_arg_sum():
+        # The batches summed the records of each layout; the others (no layout fits) are
+        # summed here, one argument size at a time, their arguments gathered as rows
+        # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
+        held = r.state.pop(check["id"], None)
+        sums, done = held if held is not None else (np.zeros(len(off), dtype=np.int64), np.zeros(len(off), dtype=bool))
+        left = np.flatnonzero(~done)
+        if left.size:
+            nbl = nb[left]
+            for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
+                if size:
+                    rows = left[nbl == size]
+                    sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
         want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
-        del sums
+        del sums, done
     else:
         buf = r.buf
         want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
@@ -654,7 +677,7 @@ KERNELS: dict[str, Kernel] = {
     "sequence": Kernel(every=_sequence),
     "reserved_byte": Kernel(every=_reserved),
     "code_copy": Kernel(every=_code_copy),
-    "arg_checksum": Kernel(every=_arg_checksum),
+    "arg_checksum": Kernel(batch=_arg_checksum_batch, end=_arg_checksum),
     "unknown_code": Kernel(every=_unknown_code),
     "availability": Kernel(every=_availability),
     "arg_size": Kernel(every=_arg_size),
