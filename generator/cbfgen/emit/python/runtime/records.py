@@ -159,12 +159,16 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
 def _batches(r: Records) -> Iterator[Batch]:
     """The records of each layout the file uses, one layout at a time (one layout's columns
     held at once)."""
-    known, _, _, lay_of, lays = _tables(r.version, r.profile)
+    lay_of, lays = _tables(r.version, r.profile)[3:]
     which = lay_of[r.head["code"], r.head["arg_size"]]
-    for li, lay in enumerate(lays):
-        rows = np.nonzero(which == li)[0]
-        if rows.size == 0:
-            continue
+    # the rows of every layout at once: one stable sort, not one pass over the file per layout
+    order = np.argsort(which, kind="stable")
+    used, first = np.unique(which[order], return_index=True)
+    bounds = [*first.tolist(), len(order)]
+    for j, li in enumerate(used.tolist()):
+        if li < 0:
+            continue  # no layout fits
+        lay, rows = lays[li], order[bounds[j]:bounds[j + 1]]
         aoff = r.off[rows] + T.HEAD_SIZE
         data = _gather(r.a, aoff, lay.size)
         arr = data.view(_dtype(lay))[:, 0] if lay.size else None
