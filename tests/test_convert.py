@@ -294,7 +294,7 @@ def test_upgrade_refuses_a_missing_argument_unless_filled() -> None:
     version, cmd, old, new = _old_only()
     values = {f.name: ("CP" if f.kind == "string" else bytes(f.size) if f.kind == "bytes" else 0) for f in old.args}
     major = T.VERSION_BY_ID[version].major
-    record = Record(code=cmd.code, raw_args=cbf.codec.pack_args(old, old.cls(**values)))
+    record = Record(code=cmd.code, raw_args=cbf.fields.pack_args(old, old.cls(**values)))
     model = Cbf(new_header(f"{major}.0", implant_descriptor="PN-1 CONVERT TEST"), [record])
     model = cbf.decode(seal(model))
     missing = [f for f in new.args if not f.reserved and f.name not in {g.name for g in old.args}]

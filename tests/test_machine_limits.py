@@ -119,10 +119,9 @@ def test_outside_the_default_machine_warns_and_a_machine_file_makes_it_an_error(
     for k in range(max(1, len(lim.axes))):
         for value in _outside(lim, k, (command, arg) in POSITIVE):
             data, at = _file(command, arg, value, k)
-            for engine in ("python", "numpy"):
-                assert _machine_of(cbf.validate(data, engine=engine)) == [(check, ch.severity, 0, at)], (value, k)
-                assert _machine_of(cbf.validate(data, engine=engine, machine=given)) == [
-                    (check, ch.input_severity or ch.severity, 0, at)]
+            assert _machine_of(cbf.validate(data)) == [(check, ch.severity, 0, at)], (value, k)
+            assert _machine_of(cbf.validate(data, machine=given)) == [
+                (check, ch.input_severity or ch.severity, 0, at)]
             tried += 1
     assert tried, "a limit with no value outside it cannot be tested"
     assert ch.severity == "warning" and ch.input_severity == "error"  # L1: the default warns, a file refuses
@@ -309,13 +308,14 @@ def test_the_loader_wants_every_position_bounded_and_targets_that_fit(tmp_path: 
 
 
 
-def test_both_kernels_and_both_engines_agree(tmp_path: Path) -> None:
-    """The reference loop and the numpy kernel of machine.py, and validate's two engines, give the
-    same findings on a file whose targeted values lie inside, outside, at 0 and non-finite."""
+def test_the_kernel_agrees_with_a_record_by_record_reading(tmp_path: Path) -> None:
+    """validate's numpy kernel (records._machine_limits) gives what machine.breach says of each
+    record's decoded values, one record at a time, on a file whose targeted values lie inside,
+    outside, at the limits, at 0 and non-finite; with the default machine and with a file."""
     import random
 
     from cbf.codec import frame
-    from cbf.machine import machine_findings
+    from cbf.machine import DEFAULT, breach, machine_rules
 
     rnd = random.Random(13)
     pool = [math.nan, math.inf, 0.0, -1e30, 1e30, 1e-30]
@@ -330,11 +330,22 @@ def test_both_kernels_and_both_engines_agree(tmp_path: Path) -> None:
     offsets, _ = frame(data)
     given = load_machine(_machine_file(tmp_path, machine_data(SPEC)))
     for machine in (None, given):
-        ref = list(machine_findings(data, offsets, T.DEFAULT_VERSION, machine, "python"))
-        assert ref and len({f.offset for f in ref}) > 10
-        assert ref == list(machine_findings(data, offsets, T.DEFAULT_VERSION, machine, "numpy"))
-        assert cbf.validate(data, engine="python", machine=machine) == cbf.validate(data, engine="numpy",
-                                                                                     machine=machine)
+        m = machine or DEFAULT
+        expected = []
+        for i, rec in enumerate(cbf.decode(data).records):
+            cmd = T.BY_CODE[rec.code]
+            lay = cmd.layout_for_size(T.DEFAULT_VERSION, len(rec.raw_args))
+            assert lay is not None
+            values = rec.decode_args(T.DEFAULT_VERSION)
+            for ch in T.checks_of("machine_limits"):
+                for f, limit, positive in machine_rules(ch, cmd.name, lay.variant):
+                    v = getattr(values, f.name)
+                    text = breach(tuple(v) if isinstance(v, tuple) else (v,), m.limits[limit], positive)
+                    if text is not None:
+                        sev = ch["input_severity"] if machine is not None else ch["severity"]
+                        expected.append((ch["id"], sev, i, offsets[i] + T.HEAD_SIZE + f.offset))
+        assert len(expected) > 10
+        assert _machine_of(cbf.validate(data, machine=machine)) == expected
 
 
 def test_cbfgen_diff_classifies_machine_changes(tmp_path: Path) -> None:

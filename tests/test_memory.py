@@ -27,7 +27,7 @@ ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 # Runs the cbf command line in-process, then prints its peak RSS (kB) as the last stderr line.
 # Both the measured run and the baseline import the same modules first.
 _WRAPPER = """
-import sys, numpy, cbf.cli, cbf.codec, cbf.cut, cbf.validation, cbf.vectorized
+import sys, numpy, cbf.cli, cbf.codec, cbf.cut, cbf.validation, cbf.records, cbf.writer
 try:
     code = cbf.cli.main(sys.argv[1:])
 finally:

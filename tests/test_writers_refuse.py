@@ -16,9 +16,9 @@ from pathlib import Path
 import pytest
 
 from cbf import tables as T
-from cbf.codec import encode
 from cbf.errors import EncodeError
 from cbf.model import Cbf, Record, new_header
+from cbf.writer import encode
 
 ROOT = Path(__file__).resolve().parents[1]
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion", "-Wdouble-promotion",

@@ -334,8 +334,8 @@ def cmd_decode(a: argparse.Namespace) -> int:
 
 
 def cmd_encode(a: argparse.Namespace) -> int:
-    from .codec import encode
     from .errors import CbfError
+    from .writer import encode
 
     _check_output(a.output)
     text = _read_text(a.file, 64 * _max_file_size())
@@ -552,9 +552,9 @@ def _mm(text: str) -> float:
 
 
 def cmd_convert(a: argparse.Namespace) -> int:
-    from .codec import encode
     from .convert import convert
     from .errors import CbfError
+    from .writer import encode
 
     _check_output(a.output)
     fill: dict[str, str] = {}

@@ -35,8 +35,8 @@ from typing import Any
 
 from . import geometry as G
 from . import tables as T
-from .codec import pack_args, unpack_args
 from .errors import CbfError
+from .fields import pack_args, unpack_args
 from .model import Cbf, Record, new_header
 
 _F32 = struct.Struct("<f")

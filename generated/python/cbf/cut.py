@@ -241,7 +241,7 @@ def _lines_one_by_one(records: Any, which: Any, version: str, profile: str) -> l
 
 def to_cut(model: Cbf, *, profile: str = "default") -> str:
     """The CUT text of a model (records keep their order; checksums are not written)."""
-    from .codec import pack_fields
+    from .fields import pack_fields
 
     vid = model.version_id
     info = T.HEADERS[T.VERSION_BY_ID[vid].header]

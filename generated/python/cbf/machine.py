@@ -13,18 +13,16 @@ limit); the spec loader requires a box to target every float vector of its unit.
 
 from __future__ import annotations
 
-import functools
 import json
 import math
 import struct
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from . import tables as T
 from .errors import CbfError
-from .validation import Finding, finding_order
 
 SCHEMA: dict[str, Any] = json.loads(Path(__file__).with_name("machine.schema.json").read_text(encoding="utf-8"))
 
@@ -212,9 +210,10 @@ def load_machine(path: str | Path) -> Machine:
     return Machine(_limits(doc), given=True)
 
 
-# -- the check ----------------------------------------------------------------------------
-# Per layout: (check, argument, limit name, whether a positive check targets the argument too).
-_Rule = tuple[dict[str, Any], T.FieldInfo, str, bool]
+# -- the check (its kernel is records.py's _machine_limits) -------------------------------------
+# Per (command, layout variant): (check id, argument, limit name, whether a positive check targets
+# the argument too).
+_Rule = tuple[str, T.FieldInfo, str, bool]
 
 
 def _rules() -> dict[tuple[str, str], list[_Rule]]:
@@ -227,12 +226,17 @@ def _rules() -> dict[tuple[str, str], list[_Rule]]:
                 for f in lay.args:
                     if f.name in t["args"]:
                         out.setdefault((cmd.name, lay.variant), []).append(
-                            (ch, f, t["limit"], (cmd.name, f.name) in positive))
+                            (ch["id"], f, t["limit"], (cmd.name, f.name) in positive))
     return out
 
 
 _RULES = _rules()
 _NUM = "{:.9g}".format
+
+
+def machine_rules(check: Mapping[str, Any], command: str, variant: str) -> list[tuple[T.FieldInfo, str, bool]]:
+    """The arguments ``check`` bounds in a layout: (argument, limit name, positive-checked)."""
+    return [(f, lim, pos) for cid, f, lim, pos in _RULES.get((command, variant), ()) if cid == check["id"]]
 
 
 def breach(values: tuple[float, ...], lim: Limit, positive: bool) -> str | None:
@@ -246,106 +250,3 @@ def breach(values: tuple[float, ...], lim: Limit, positive: bool) -> str | None:
             return (f"{axis} is {_NUM(v)} {lim.unit}, outside the machine's {lim.name} "
                     f"{_NUM(lim.lo[k])}..{_NUM(lim.hi[k])} {lim.unit}")
     return None
-
-
-# Files with at least this many records are checked by the numpy kernel (the same findings).
-VECTOR_MIN_RECORDS = 2000
-
-
-def machine_findings(buf: bytes, offsets: Sequence[int], version: str, machine: Machine | None,
-                     engine: str = "auto") -> Iterator[Finding]:
-    """The findings of the machine_limits checks, in validate's order (by record, check, offset).
-    A record is checked when its arguments decode (a known code and a layout of its size), as
-    every argument check is; the offset is the argument's. ``engine``: "auto" (numpy for big
-    files), "python" or "numpy"; both give the same findings."""
-    if not _RULES:
-        return iter(())
-    m = machine if machine is not None else DEFAULT
-    if engine == "numpy" or (engine == "auto" and len(offsets) >= VECTOR_MIN_RECORDS):
-        return _vectorized(buf, offsets, version, m)
-    return _loop(buf, offsets, version, m)
-
-
-def _loop(buf: bytes, offsets: Sequence[int], version: str, m: Machine) -> Iterator[Finding]:
-    """The reference kernel: one record at a time."""
-    code_at = T.RECORD_FIELDS[T.I_CODE].offset
-    size_at = T.ARG_SIZE_OFFSET
-    hs = T.HEAD_SIZE
-    plan: dict[tuple[int, int], list[_Step]] = {}
-    for i, off in enumerate(offsets):
-        key = (buf[off + code_at], buf[off + size_at])
-        rules = plan.get(key)
-        if rules is None:
-            rules = plan[key] = _plan(key, version, m)
-        if not rules:
-            continue
-        found = []
-        aoff = off + hs
-        for ch, f, lim, positive, st in rules:
-            text = breach(st.unpack_from(buf, aoff + f.offset), lim, positive)
-            if text is not None:
-                sev = ch["input_severity"] if m.given and ch["input_severity"] else ch["severity"]
-                found.append(Finding(ch["id"], sev, i, aoff + f.offset, f"{T.BY_CODE[key[0]].name}.{f.name}{text}"))
-        if found:
-            yield from sorted(found, key=finding_order)
-
-
-def _vectorized(buf: bytes, offsets: Sequence[int], version: str, m: Machine) -> Iterator[Finding]:
-    """The numpy kernel: per (code, size) pair and rule, every record's values at once."""
-    import numpy as np
-
-    a = np.frombuffer(buf, dtype=np.uint8)
-    off = np.asarray(offsets, dtype=np.int64)
-    if off.size == 0:
-        return iter(())
-    key = a[off + T.RECORD_FIELDS[T.I_CODE].offset].astype(np.int64) * 256 + a[off + T.ARG_SIZE_OFFSET]
-    f4 = np.dtype(T.BO + "f4")
-    found: list[Finding] = []
-    for k in np.unique(key).tolist():
-        steps = _plan((k >> 8, k & 0xFF), version, m)
-        if not steps:
-            continue
-        rows = np.nonzero(key == k)[0]
-        aoff = off[rows] + T.HEAD_SIZE
-        name = T.BY_CODE[k >> 8].name
-        for ch, f, lim, positive, _ in steps:
-            cols = []
-            for i in range(f.count):
-                at = aoff + (f.offset + 4 * i)
-                raw = np.stack([a[at + j] for j in range(4)], axis=1)
-                cols.append(np.ascontiguousarray(raw).view(f4)[:, 0].astype(np.float64))
-            v = np.stack(cols, axis=1)
-            skip = ~np.isfinite(v).all(axis=1)
-            if positive:
-                skip |= (v <= 0.0).any(axis=1)
-            with np.errstate(invalid="ignore"):
-                out = (v < np.asarray(lim.lo32)) | (v > np.asarray(lim.hi32))
-            bad = np.nonzero(out.any(axis=1) & ~skip)[0]
-            if bad.size == 0:
-                continue
-            sev = ch["input_severity"] if m.given and ch["input_severity"] else ch["severity"]
-            for r in bad.tolist():
-                text = breach(tuple(v[r].tolist()), lim, positive)
-                assert text is not None
-                found.append(Finding(ch["id"], sev, int(rows[r]), int(aoff[r]) + f.offset, f"{name}.{f.name}{text}"))
-    found.sort(key=finding_order)
-    return iter(found)
-
-
-_Step = tuple[dict[str, Any], T.FieldInfo, Limit, bool, struct.Struct]
-
-
-def _plan(key: tuple[int, int], version: str, m: Machine) -> list[_Step]:
-    return [(ch, f, m.limits[name], positive, st) for ch, f, name, positive, st in _layout_rules(key, version)]
-
-
-@functools.lru_cache(maxsize=4096)
-def _layout_rules(key: tuple[int, int], version: str) -> tuple[tuple[dict[str, Any], T.FieldInfo, str, bool,
-                                                                     struct.Struct], ...]:
-    """The rules of the layout a (code, size) decodes with in a version (none: not decoded)."""
-    cmd = T.BY_CODE.get(key[0])
-    lay = cmd.layout_for_size(version, key[1]) if cmd is not None else None
-    if cmd is None or lay is None:
-        return ()
-    return tuple((ch, f, name, positive, struct.Struct(T.BO + f"{f.count}f"))
-                 for ch, f, name, positive in _RULES.get((cmd.name, lay.variant), ()))

@@ -19,7 +19,7 @@ from .version import SPEC_REVISION, __version__
 
 if TYPE_CHECKING:
     from .canonical import from_canonical, to_canonical
-    from .codec import decode, encode
+    from .codec import decode
     from .cut import from_cut, to_cut
     from .cutters import load_cutter_table
     from .errors import CbfError, CutSyntaxError, EncodeError, JsonShapeError, TruncatedError
@@ -27,9 +27,10 @@ if TYPE_CHECKING:
     from .machine import load_machine
     from .model import Cbf, Record, new_header
     from .validation import Finding, validate
+    from .writer import encode
 
 _EXPORTS = {
-    "decode": "codec", "encode": "codec",
+    "decode": "codec", "encode": "writer",
     "validate": "validation", "Finding": "validation",
     "to_canonical": "canonical", "from_canonical": "canonical",
     "to_cut": "cut", "from_cut": "cut",

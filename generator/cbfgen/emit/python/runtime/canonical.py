@@ -133,7 +133,7 @@ def _fields_json(fields: tuple[T.FieldInfo, ...], vals: tuple[Any, ...]) -> dict
 
 
 def to_canonical(model: Cbf) -> dict[str, Any]:
-    from .codec import pack_fields
+    from .fields import pack_fields
 
     vid = model.version_id
     info = T.HEADERS[T.VERSION_BY_ID[vid].header]

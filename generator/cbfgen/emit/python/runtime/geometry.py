@@ -62,6 +62,30 @@ def finite(*vs: Any) -> bool:
     return True
 
 
+def motion_end(m: dict[str, str] | Any, a: dict[str, Any] | Any) -> tuple[float, ...] | None:
+    """Where a motion record leaves the tool (the arguments ``a`` by name, its motion role
+    ``m``), computed as the validator's continuity check does; None when not finite."""
+    kind = m["kind"]
+    if kind in ("point", "line"):
+        end = a[m["end"]]
+        return tuple(end) if finite(end) else None
+    start, center, normal, deg = a[m["start"]], a[m["center"]], a[m["normal"]], a[m["degrees"]]
+    length = a[m["length"]] if kind == "helix" else 0.0
+    if not finite(start, center, normal, deg, length):
+        return None
+    nn = math.sqrt(sum(x * x for x in normal))
+    if nn == 0.0:
+        return None
+    k = tuple(x / nn for x in normal)
+    v = tuple(x - y for x, y in zip(start, center, strict=True))
+    th = math.radians(deg)
+    c, s = math.cos(th), math.sin(th)
+    kxv = (k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0])
+    kdv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2]
+    rot = tuple(v[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c) for i in range(3))
+    return tuple(center[i] + rot[i] + length * k[i] for i in range(3))
+
+
 def point_segment_distance(p: Vec, a: Vec, b: Vec) -> float:
     ab = sub(b, a)
     den = dot(ab, ab)

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any, overload
 
 from . import tables as T
+from .fields import pack_args, unpack_args
 
 
 @dataclass(frozen=True, slots=True)
@@ -45,8 +46,6 @@ class Record:
 
     def decode_args(self, version: str = T.DEFAULT_VERSION) -> Any | None:
         """The typed arguments (a dataclass of cbf.layouts), or None when no layout fits."""
-        from .codec import unpack_args
-
         lay = self.layout(version)
         return unpack_args(lay, self.raw_args) if lay else None
 
@@ -57,8 +56,6 @@ class Record:
     @classmethod
     def of(cls, args: Any, **head: Any) -> Record:
         """A record for a typed argument object, e.g. ``Record.of(Line(start=..., end=...))``."""
-        from .codec import pack_args
-
         lay = layout_of(args)
         return cls(code=lay.code, raw_args=pack_args(lay, args), **head)
 

@@ -59,9 +59,9 @@ except ImportError as exc:  # pragma: no cover - depends on the environment
     raise ImportError("cbf.testing needs hypothesis: pip install hypothesis") from exc
 
 from . import tables as T
-from .codec import _fill_header, encode, field_checksum, file_algorithm, frame
+from .codec import field_checksum, file_algorithm, fill_header, frame, pack_file
+from .geometry import motion_end
 from .model import Cbf, Record, new_header
-from .validation import _motion_end
 
 __all__ = ["cutfiles", "models", "mutations", "reseal_checksums", "seal"]
 
@@ -324,13 +324,13 @@ class _Draw:
                     a[m["normal"]] = _vector(self.draw, len(start), -1.0, 1.0, True)
                 if "length" in m:
                     a[m["length"]] = self.draw(_floats(-_RADIUS, _RADIUS))
-                end = _motion_end(m, a)
+                end = motion_end(m, a)
                 if end is not None and max(abs(x) for x in end) > 2 * self.bound:
                     # keep chains near the box: a full stop on the spot
                     a[m["degrees"]] = 0.0
                     if "length" in m:
                         a[m["length"]] = 0.0
-            st_.pos = _motion_end(m, a)
+            st_.pos = motion_end(m, a)
         o = cmd.orientation
         if o is not None:
             if o["kind"] == "path" and self.continuous and st_.orient is not None:
@@ -374,9 +374,9 @@ def seal(model: Cbf, profile: str = "default") -> bytes:
     also the versions ``encode`` does not write -- and without validating."""
     records = tuple(replace(r, sequence=i & T.SEQ_MASK, code_copy=r.code, arg_checksum=None)
                     for i, r in enumerate(model.records))
-    out = bytearray(encode(Cbf(model.header, records, model.trailing), keep_stored=True))
+    out = bytearray(pack_file(Cbf(model.header, records, model.trailing), keep_stored=True))
     offsets, _ = frame(out)
-    _fill_header(out, list(offsets), len(records), profile)
+    fill_header(out, list(offsets), len(records), profile)
     return bytes(out)
 
 

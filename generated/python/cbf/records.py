@@ -1,0 +1,789 @@
+"""The record checks: one engine, vectorised with numpy, one kernel per check kind.
+
+``KERNELS`` maps each record check kind of the spec to the one function that implements it.
+A kernel reads the file's records as columns (``Records``: the head fields of every record,
+and ``Batch``es: the records of one layout, their arguments as columns) and reports the rows
+it flags. A new check kind is one kernel and one entry in ``KERNELS``. The file-level checks
+(header, framing, file checksum) are in validation.py, which calls ``record_findings``.
+
+Findings come out in validate's order (findings.finding_order), one at a time: each check
+keeps only the rows it flagged (a few bytes each) and makes a finding's message when it is
+read, so memory stays a small multiple of the file however many findings it gives.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import tables as T
+from .codec import field_checksum
+from .findings import (
+    Check,
+    Cutters,
+    Finding,
+    availability_checks,
+    check_of,
+    finding,
+    finding_order,
+    range_text,
+    string_value,
+)
+from .machine import DEFAULT as DEFAULT_MACHINE
+from .machine import Limit, Machine, breach, machine_rules
+
+if TYPE_CHECKING:
+    from numpy.typing import NDArray
+
+Message = Callable[[Any], str]
+
+
+@dataclass(slots=True)
+class Batch:
+    """The records of one layout: their row numbers, argument offsets and argument columns
+    (floats as float64, a vector as an n x count array; uints as they are; strings n x size)."""
+
+    lay: T.LayoutInfo
+    cmd: T.CommandInfo
+    rows: Any
+    aoff: Any
+    cols: Mapping[str, Any]  # floats as float64
+    raw: dict[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
+    nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
+    bytes_: Any = None  # the argument bytes, rows x layout size
+
+    def at(self, name: str) -> Any:
+        """The file offset of argument ``name`` in every row."""
+        return self.aoff + next(f.offset for f in self.lay.args if f.name == name)
+
+
+@dataclass(slots=True)
+class Records:
+    """What the kernels read, and where they report."""
+
+    buf: bytes
+    a: Any  # the file as uint8
+    off: Any  # record offsets (int64)
+    version: str
+    profile: str
+    cutters: Cutters | None
+    machine: Machine  # the limits of check kind machine_limits (machine.DEFAULT when none is given)
+    head: dict[str, Any] = field(default_factory=dict)  # head field role -> column
+    groups: list[Iterator[Finding]] = field(default_factory=list)  # each in validate's order
+    pending: list[Finding] = field(default_factory=list)  # findings made one at a time
+    state: dict[str, Any] = field(default_factory=dict)  # what a kernel keeps between batches
+
+    def add(self, check: Check | None, rows: Any, offs: Any, keys: Any, msg: Message) -> None:
+        """The findings of ``check`` at ``rows`` (ascending), the k-th message msg(keys[k])."""
+        if check is None or not len(rows):
+            return
+        narrow = np.int32 if len(self.buf) < 1 << 31 else np.int64  # 4 bytes a row and offset
+        held = np.asarray(rows).astype(narrow)
+        self.groups.append(_lazy(check, held, np.asarray(offs).astype(narrow), held if keys is rows else keys, msg))
+
+    def found(self, check: Check, record: int, offset: int, message: str) -> None:
+        self.pending.append(finding(check, record, offset, message))
+
+
+def _lazy(check: Check, rows: Any, offs: Any, keys: Any, msg: Message) -> Iterator[Finding]:
+    cid, sev = check["id"], check["severity"]
+    for k in range(len(rows)):
+        yield Finding(cid, sev, int(rows[k]), int(offs[k]), msg(keys[k]))
+
+
+def _const(message: str) -> Message:
+    return lambda _: message
+
+
+def _valued(before: str, values: Any, after: str) -> Message:
+    """before + the k-th value (as %g) + after, bound now (the caller's loop moves on)."""
+    return lambda k: f"{before}{float(values[k]):g}{after}"
+
+
+# -- columns ------------------------------------------------------------------------
+def _uint(cols: NDArray[np.uint8], f: T.FieldInfo) -> NDArray[Any]:
+    """An unsigned field of every row, in its own width (memory stays a few bytes a record)."""
+    if f.size in (1, 2, 4, 8):
+        part = np.ascontiguousarray(cols[:, f.offset:f.offset + f.size])
+        return part.view(np.dtype(f"{T.BO}u{f.size}"))[:, 0]
+    v = np.zeros(cols.shape[0], dtype=np.int64)
+    for k in range(f.size):
+        shift = 8 * (k if T.BO == "<" else f.size - 1 - k)
+        v |= cols[:, f.offset + k].astype(np.int64) << shift
+    return v
+
+
+def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDArray[np.uint8]:
+    """Bytes a[s:s+width] for each start: rows of a sliding-window view (no index matrix)."""
+    if width == 0 or starts.shape[0] == 0:
+        return np.empty((starts.shape[0], width), dtype=np.uint8)
+    return np.lib.stride_tricks.sliding_window_view(a, width)[starts]
+
+
+def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
+    fields: list[Any] = []
+    for f in lay.args:
+        if f.kind == "float":
+            fields.append((f.name, np.dtype(T.BO + "f4"), (f.count,)) if f.count > 1 else (f.name, T.BO + "f4"))
+        elif f.kind == "uint":
+            fields.append((f.name, T.BO + {1: "u1", 2: "u2", 4: "u4"}[f.elem_size]))
+        else:
+            fields.append((f.name, np.uint8, (f.size,)))
+    return np.dtype(fields)
+
+
+@lru_cache(maxsize=16)
+def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.LayoutInfo]]:
+    """Per (code) and (code, nb) look-up tables for one version and profile."""
+    known = np.zeros(256, dtype=bool)
+    avail = np.zeros(256, dtype=bool)
+    size_ok = np.zeros((256, 256), dtype=bool)
+    lay_of = np.full((256, 256), -1, dtype=np.int16)
+    lays: list[T.LayoutInfo] = []
+    for cmd in T.COMMANDS:
+        known[cmd.code] = True
+        avail[cmd.code] = bool(cmd.layouts_for(version))
+        for lay in cmd.candidates(version):
+            if lay.accepted_under(profile):
+                size_ok[cmd.code, lay.size] = True
+        for lay in reversed(cmd.candidates(version)):  # the first candidate of a size wins
+            if lay not in lays:
+                lays.append(lay)
+            lay_of[cmd.code, lay.size] = lays.index(lay)
+    return known, avail, size_ok, lay_of, lays
+
+
+def _batches(r: Records) -> Iterator[Batch]:
+    """The records of each layout the file uses, one layout at a time (one layout's columns
+    held at once)."""
+    lay_of, lays = _tables(r.version, r.profile)[3:]
+    which = lay_of[r.head["code"], r.head["arg_size"]]
+    # the rows of every layout at once: one stable sort, not one pass over the file per layout
+    order = np.argsort(which, kind="stable")
+    used, first = np.unique(which[order], return_index=True)
+    bounds = [*first.tolist(), len(order)]
+    for j, li in enumerate(used.tolist()):
+        if li < 0:
+            continue  # no layout fits
+        lay, rows = lays[li], order[bounds[j]:bounds[j + 1]]
+        aoff = r.off[rows] + T.HEAD_SIZE
+        data = _gather(r.a, aoff, lay.size)
+        arr = data.view(_dtype(lay))[:, 0] if lay.size else None
+        raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw, bytes_=data)
+
+
+class _Columns(Mapping[str, Any]):
+    """A layout's argument columns, floats widened to float64 when a kernel first reads them
+    (many kernels read the stored binary32 columns, ``Batch.raw``, and need no copy)."""
+
+    __slots__ = ("_done", "_raw")
+
+    def __init__(self, raw: dict[str, Any]) -> None:
+        self._raw = raw
+        self._done: dict[str, Any] = {}
+
+    def __getitem__(self, name: str) -> Any:
+        col = self._done.get(name)
+        if col is None:
+            col = self._raw[name]
+            if col.dtype.kind == "f":
+                with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
+                    col = col.astype(np.float64)
+            self._done[name] = col
+        return col
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._raw
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._raw)
+
+    def __len__(self) -> int:
+        return len(self._raw)
+
+
+def _finite_rows(v: Any) -> Any:
+    """Per row: every component finite."""
+    fin = np.isfinite(v)
+    return fin if fin.ndim == 1 else fin.all(axis=1)
+
+
+# -- head kernels (every record) -------------------------------------------------------
+def _sequence(r: Records, check: Check) -> None:
+    seq, wrap = r.head["sequence"], T.SEQ_MASK
+    expected = np.arange(len(r.off), dtype=np.int64)
+    expected &= wrap  # in place: the peak of a file of empty records is here
+    bad = np.nonzero(seq != expected)[0]
+    del expected
+    at = r.off[bad] + T.RECORD_FIELDS[T.I_SEQ].offset
+    r.add(check, bad, at, bad, lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
+
+
+def _reserved(r: Records, check: Check) -> None:
+    res = r.head["reserved"]
+    bad = np.nonzero(res != 0)[0]
+    r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_RES].offset, bad, lambda i: f"reserved byte is 0x{res[i]:02X}")
+
+
+def _code_copy(r: Records, check: Check) -> None:
+    copy, code = r.head["code_copy"], r.head["code"]
+    bad = np.nonzero(copy != code)[0]
+    r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_COPY].offset, bad,
+          lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
+
+
+def _plain_arg_sum() -> bool:
+    """The argument checksum is a plain byte sum of the arguments alone."""
+    spec = T.CHECKSUMS["fields"]["args"]
+    return bool(T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]]
+                == [{"region": "args", "start": None, "end": None, "exclude": []}])
+
+
+def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
+    """The sums of the records of a layout, from the argument bytes the batch gathered."""
+    if not _plain_arg_sum():
+        return
+    held = r.state.get(check["id"])
+    if held is None:
+        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=np.int64), np.zeros(len(r.off), dtype=bool))
+    sums, done = held
+    if b.lay.size:
+        sums[b.rows] = b.bytes_.sum(axis=1, dtype=np.int64)
+    done[b.rows] = True
+
+
+def _arg_checksum(r: Records, check: Check) -> None:
+    nb, chk, off, a, hs = r.head["arg_size"], r.head["checksum"], r.off, r.a, T.HEAD_SIZE
+    if _plain_arg_sum():
+        # The batches summed the records of each layout; the others (no layout fits) are
+        # summed here, one argument size at a time, their arguments gathered as rows
+        # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
+        held = r.state.pop(check["id"], None)
+        sums, done = held if held is not None else (np.zeros(len(off), dtype=np.int64), np.zeros(len(off), dtype=bool))
+        left = np.flatnonzero(~done)
+        if left.size:
+            nbl = nb[left]
+            for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
+                if size:
+                    rows = left[nbl == size]
+                    sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
+        want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
+        del sums, done
+    else:
+        buf = r.buf
+        want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
+                         for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
+    bad = np.nonzero(chk != want)[0]
+    r.add(check, bad, off[bad] + T.ARG_CHECKSUM.offset, bad,
+          lambda i: f"stored argument checksum {chk[i]}, computed {want[i]}")
+
+
+def _unknown_code(r: Records, check: Check) -> None:
+    code = r.head["code"]
+    known = _tables(r.version, r.profile)[0]
+    bad = np.nonzero(~known[code])[0]
+    r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_CODE].offset, bad,
+          lambda i: f"unknown command code 0x{code[i]:02X}")
+
+
+def _availability(r: Records, check: Check) -> None:
+    code, version = r.head["code"], r.version
+    known, avail = _tables(version, r.profile)[:2]
+    bad = np.flatnonzero((known & ~avail)[code])
+    if bad.size == 0:
+        return
+    covering = availability_checks()  # (version, command) -> the one check that covers it
+    for c in np.unique(code[bad]):
+        name = T.BY_CODE[int(c)].name
+        if (covering.get((version, name)) or {}).get("id") != check["id"]:
+            continue
+        rows = bad[code[bad] == c]
+        r.add(check, rows, r.off[rows] + T.RECORD_FIELDS[T.I_CODE].offset, rows,
+              _const(f"{name} is not available in version {version}"))
+
+
+def _arg_size(r: Records, check: Check) -> None:
+    code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
+    known, _, size_ok = _tables(version, profile)[:3]
+    bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
+
+    def sizes_msg(i: Any) -> str:
+        cmd = T.BY_CODE[int(code[i])]
+        sizes = sorted({lay.size for lay in cmd.candidates(version) if lay.accepted_under(profile)})
+        return f"{cmd.name} with {nb[i]} argument bytes; expected {' or '.join(map(str, sizes))}"
+
+    r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_SIZE].offset, bad, sizes_msg)
+
+
+# -- argument kernels (one layout at a time) -------------------------------------------
+def _finite(r: Records, check: Check, b: Batch) -> None:
+    floats = [f for f in b.lay.args if f.kind == "float"]
+    if not floats:
+        return
+    # A NaN or an infinity makes the sum not finite, so rows whose sum is finite hold only
+    # finite floats; the others (an overflow too) are looked at field by field.
+    total = np.zeros(b.rows.size, dtype=np.float32)
+    with np.errstate(invalid="ignore", over="ignore"):
+        for f in floats:
+            col = b.raw[f.name]
+            if col.ndim == 1:
+                total += col
+            else:
+                for j in range(col.shape[1]):
+                    total += col[:, j]
+    suspect = np.flatnonzero(~np.isfinite(total))
+    if suspect.size == 0:
+        return
+    for f in floats:
+        bad = suspect[~_finite_rows(b.raw[f.name][suspect])]
+        r.add(check, b.rows[bad], b.aoff[bad] + f.offset, bad, _const(f"{b.cmd.name}.{f.name} is not finite"))
+
+
+def _string_tail(r: Records, check: Check, b: Batch) -> None:
+    for f in b.lay.args:
+        if f.kind == "string":
+            string_tail(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}",
+                        _first_nul(b, f.name))
+
+
+def _string_ascii(r: Records, check: Check, b: Batch) -> None:
+    for f in b.lay.args:
+        if f.kind == "string":
+            string_ascii(r.add, check, b.cols[f.name], b.rows, b.aoff + f.offset, f"{b.cmd.name}.{f.name}",
+                         _first_nul(b, f.name))
+
+
+def _first_nul(b: Batch, name: str) -> Any:
+    """Per row, where the first NUL of string argument ``name`` is (its size when none); made once
+    for both string kernels."""
+    if name not in b.nul:
+        b.nul[name] = first_nul(b.cols[name])
+    return b.nul[name]
+
+
+def first_nul(col: NDArray[np.uint8]) -> Any:
+    is_nul = col == 0
+    return np.where(is_nul.any(axis=1), is_nul.argmax(axis=1), col.shape[1])
+
+
+Add = Callable[[Check | None, Any, Any, Any, Message], None]
+
+
+def string_tail(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str,
+                first: Any) -> None:
+    """string_tail: bytes other than NUL after the first NUL of a string field (rows x size)."""
+    after = np.arange(col.shape[1])[None, :] > first[:, None]
+    bad = np.nonzero((after & (col != 0)).any(axis=1))[0]
+    add(check, rows[bad], offs[bad], bad,
+        lambda k: f"{name}: bytes after the first NUL: {bytes(col[k, first[k] + 1:]).rstrip(bytes(1)).hex()}")
+
+
+def string_ascii(add: Add, check: Check | None, col: NDArray[np.uint8], rows: Any, offs: Any, name: str,
+                 first: Any) -> None:
+    """string_ascii: a byte outside printable ASCII before the first NUL of a string field."""
+    before = np.arange(col.shape[1])[None, :] < first[:, None]
+    nonascii = before & ((col < 0x20) | (col > 0x7E))
+    bad = np.nonzero(nonascii.any(axis=1))[0]
+    add(check, rows[bad], offs[bad], bad, lambda k: f"{name}: non-ASCII byte 0x{int(col[k][nonascii[k]][0]):02X}")
+
+
+def _targets(check: Check, b: Batch) -> Iterator[tuple[str, ...]]:
+    """The argument-name tuples ``check`` names for this batch's command."""
+    for t in check["targets"]:
+        if t["command"] == b.cmd.name:
+            yield tuple(t["args"])
+
+
+def _positive(r: Records, check: Check, b: Batch) -> None:
+    for names in _targets(check, b):
+        for nm in (n for n in names if n in b.cols):
+            v = b.cols[nm]
+            with np.errstate(invalid="ignore"):
+                bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
+            r.add(check, b.rows[bad], b.at(nm)[bad], bad, _valued(f"{b.cmd.name}.{nm} is ", v, ", must be > 0"))
+
+
+def _nonzero_vector(r: Records, check: Check, b: Batch) -> None:
+    for names in _targets(check, b):
+        for nm in (n for n in names if n in b.cols):
+            v = b.cols[nm]
+            bad = np.nonzero(np.isfinite(v).all(axis=1) & (v == 0.0).all(axis=1))[0]
+            r.add(check, b.rows[bad], b.at(nm)[bad], bad, _const(f"{b.cmd.name}.{nm} has zero length"))
+
+
+def _range(r: Records, check: Check, b: Batch) -> None:
+    lo = -np.inf if check["min"] is None else check["min"]
+    hi = np.inf if check["max"] is None else check["max"]
+    for names in _targets(check, b):
+        for nm in (n for n in names if n in b.cols):
+            v = b.cols[nm]
+            with np.errstate(invalid="ignore"):
+                bad = np.nonzero(np.isfinite(v) & ((v < lo) | (v > hi)))[0]
+            r.add(check, b.rows[bad], b.at(nm)[bad], bad,
+                  _valued(f"{b.cmd.name}.{nm} is ", v, f", {range_text(check)}"))
+
+
+def _ordered(r: Records, check: Check, b: Batch) -> None:
+    cname, cols = b.cmd.name, b.cols
+    for names in _targets(check, b):
+        if not all(nm in cols for nm in names):
+            continue
+        vals = np.stack([cols[nm] for nm in names], axis=1)
+        fin = np.isfinite(vals).all(axis=1)
+        bad = np.nonzero(fin & (vals[:, :-1] > vals[:, 1:]).any(axis=1))[0]
+        r.add(check, b.rows[bad], b.aoff[bad], bad, _ordered_msg(cname, cols, names))
+
+
+def _ordered_msg(cname: str, cols: Mapping[str, Any], names: tuple[str, ...]) -> Message:
+    return lambda k: f"{cname}: {' <= '.join(f'{nm}={float(cols[nm][k]):g}' for nm in names)} does not hold"
+
+
+def _nondecreasing(r: Records, check: Check, b: Batch) -> None:
+    held = r.state.setdefault(check["id"], {})  # command.argument -> [(rows, values, offsets)]
+    for names in _targets(check, b):
+        for nm in (n for n in names if n in b.cols):
+            v = b.cols[nm]
+            fin = np.flatnonzero(np.isfinite(v))
+            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[fin], v[fin], b.at(nm)[fin]))
+
+
+def _nondecreasing_end(r: Records, check: Check) -> None:
+    """Each finite value against the last finite value of the same command argument."""
+    for key, parts in r.state.pop(check["id"], {}).items():
+        rows, (values, offs) = _in_file_order(parts)
+        bad = np.flatnonzero(values[1:] < values[:-1]) + 1
+        prev = values[bad - 1]
+        r.add(check, rows[bad], offs[bad], np.arange(bad.size),
+              _falls(key, prev, values[bad]))
+
+
+def _falls(key: str, before: Any, after: Any) -> Message:
+    return lambda k: f"{key} falls from {float(before[k]):g} to {float(after[k]):g}"
+
+
+def _cutter_table(r: Records, check: Check, b: Batch) -> None:
+    role, cutters = b.cmd.cutter, r.cutters
+    if not role or cutters is None:
+        return
+    tol = T.TOL["cutter_mm"]
+    names = b.cols[role["name"]]
+    for k, row in enumerate(b.rows.tolist()):
+        at = int(b.aoff[k])
+        name = string_value(bytes(names[k]))
+        if name not in cutters:
+            r.found(check, row, at, f"cutter {name!r} is not in the cutter table")
+            continue
+        length, radius = cutters[name]
+        for key, ref in (("length", length), ("radius", radius)):
+            col = b.cols.get(role[key])
+            if col is None or col.ndim != 1 or col.dtype.kind != "f":
+                continue
+            v = float(col[k])
+            if math.isfinite(v) and abs(v - ref) > tol:
+                r.found(check, row, at, f"cutter {name!r} {key} {v:g} mm, the table says {ref:g} mm")
+
+
+# -- sequential kernels (the records in file order) ------------------------------------
+def _machine_limits(r: Records, check: Check, b: Batch) -> None:
+    """A finite target argument outside its machine limit: one finding per argument, naming
+    the first component out (values <= 0 of an argument a positive check targets are that
+    check's). With a machine file given the check reports at its input severity."""
+    m = r.machine
+    if m.given and check.get("input_severity"):
+        check = dict(check, severity=check["input_severity"])
+    for f, limit, positive in machine_rules(check, b.cmd.name, b.lay.variant):
+        if f.name not in b.cols:
+            continue
+        lim = m.limits[limit]
+        v = np.asarray(b.cols[f.name], dtype=np.float64).reshape(len(b.rows), -1)
+        skip = ~np.isfinite(v).all(axis=1)
+        if positive:
+            skip |= (v <= 0.0).any(axis=1)
+        with np.errstate(invalid="ignore"):
+            out = ((v < np.asarray(lim.lo32)) | (v > np.asarray(lim.hi32))).any(axis=1)
+        bad = np.nonzero(out & ~skip)[0]
+        r.add(check, b.rows[bad], b.at(f.name)[bad], bad, _breach(f"{b.cmd.name}.{f.name}", v, lim, positive))
+
+
+def _breach(before: str, v: Any, lim: Limit, positive: bool) -> Message:
+    def msg(k: int) -> str:
+        return before + (breach(tuple(v[k].tolist()), lim, positive) or "")
+    return msg
+
+
+def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
+    """Where each motion leaves the tool (NaN when not finite); as geometry.motion_end."""
+    kind = m["kind"]
+    if kind in ("point", "line"):
+        end = cols[m["end"]].copy()
+        end[~_finite_rows(end)] = np.nan
+        return end
+    start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]
+    deg = cols[m["degrees"]]
+    length = cols[m["length"]] if kind == "helix" else np.zeros(k)
+    ok = (np.isfinite(start).all(axis=1) & np.isfinite(center).all(axis=1) & np.isfinite(normal).all(axis=1)
+          & np.isfinite(deg) & np.isfinite(length))
+    nn = np.sqrt((normal * normal).sum(axis=1))
+    ok &= nn != 0.0
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        kk = normal / nn[:, None]
+        v = start - center
+        th = deg * (math.pi / 180.0)
+        c, s = np.cos(th), np.sin(th)
+        kxv = np.cross(kk, v)
+        kdv = (kk * v).sum(axis=1)
+        rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
+        end = center + rot + length[:, None] * kk
+    end[~ok] = np.nan
+    return end
+
+
+def _continuity(r: Records, check: Check, b: Batch) -> None:
+    m = b.cmd.motion
+    if m is None:
+        return
+    n = b.rows.size
+    # points and lines: their vectors as stored (binary32; widening to float64 is exact, and
+    # the distance is measured in float64), half the memory of float64 copies
+    plain = m["kind"] in ("point", "line")
+    cols = b.raw if plain else b.cols
+    start = np.full((n, 3), np.nan, dtype=np.float32 if plain else np.float64) if m["kind"] == "point" \
+        else cols[m["start"]]
+    at = b.aoff + next((f.offset for f in b.lay.args if f.name == m.get("start")), 0)
+    r.state.setdefault(check["id"], []).append((b.rows, start, _ends(m, cols, n), at, b.cmd.name))
+
+
+def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
+    """The rows of every part (one per layout) in file order, and each field of the parts
+    concatenated in that order (field j of a part is part[j + 1])."""
+    if len(parts) == 1:
+        return parts[0][0], list(parts[0][1:])
+    rows = np.concatenate([p[0] for p in parts])
+    order = np.argsort(rows, kind="stable")
+    return rows[order], [np.concatenate([p[j] for p in parts])[order] for j in range(1, len(parts[0]))]
+
+
+def _same_rows(x: Any, y: Any) -> Any:
+    """Per row: the vectors are equal, component by component (False where either is NaN)."""
+    eq = x[:, 0] == y[:, 0]
+    for j in range(1, x.shape[1]):
+        eq &= x[:, j] == y[:, j]
+    return eq
+
+
+def _continuity_end(r: Records, check: Check) -> None:
+    parts = r.state.pop(check["id"], [])
+    if not parts:
+        return
+    labels = [p[4] for p in parts]
+    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
+    rows, (start, end, starts, names) = _in_file_order(parts)
+    # A motion that starts exactly where the last one ended is 0 mm away: only the others are
+    # measured (a valid file's motions all start so).
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
+    dvec = start[todo].astype(np.float64)
+    dvec -= end[todo - 1]
+    with np.errstate(invalid="ignore", over="ignore"):
+        d = np.sqrt((dvec * dvec).sum(axis=1))
+        keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
+    bad = todo[keep]
+    dist, label = d[keep], names[bad]
+    r.add(check, rows[bad], starts[bad], np.arange(bad.size),
+          lambda k: f"{labels[label[k]]} starts {float(dist[k]):.6g} mm from the current position")
+
+
+def _orientation(r: Records, check: Check, b: Batch) -> None:
+    o = b.cmd.orientation
+    if o is None:
+        return
+    # the vectors as stored (binary32), widened exactly where an angle is measured
+    s = np.full((b.rows.size, 3), np.nan, dtype=np.float32) if o["kind"] == "set" else b.raw[o["start"]]
+    r.state.setdefault(check["id"], []).append((b.rows, s, b.raw[o["end"]], b.aoff, b.cmd.name))
+
+
+def _orientation_end(r: Records, check: Check) -> None:
+    parts = r.state.pop(check["id"], [])
+    if not parts:
+        return
+    labels = [p[4] for p in parts]
+    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
+    rows, (start, end, aoff, cnames) = _in_file_order(parts)
+    tol = T.TOL["orientation_deg"]
+    # A path that starts exactly on the orientation in force turns 0 degrees: only the others
+    # are measured (a valid file's paths all start so).
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
+    s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
+    with np.errstate(invalid="ignore", over="ignore"):
+        prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
+        s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
+        cx = np.cross(s, prev)
+        ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
+        keep = s_ok & prev_ok & (ang > tol)
+    bad = todo[keep]
+    angle, label = ang[keep], cnames[bad]
+    r.add(check, rows[bad], aoff[bad], np.arange(bad.size),
+          lambda k: f"{labels[label[k]]} starts {float(angle[k]):.6g} deg from the current orientation")
+
+
+def _shape(r: Records, check: Check, b: Batch) -> None:
+    held = r.state.setdefault(check["id"], {"parts": [], "motion": []})
+    if b.cmd.motion is not None:
+        held["motion"].append(b.rows)
+    sh = b.cmd.shape
+    if sh is not None:
+        kind = 0 if sh["kind"] == "start" else 1
+        held["parts"].append((b.rows, kind, b.cols[sh["name"]], b.cols[sh["count"]].astype(np.int64), b.cmd.name))
+
+
+def _shape_end(r: Records, check: Check) -> None:
+    held = r.state.pop(check["id"], None)
+    if held is None or not held["parts"]:
+        return
+    motion = np.zeros(len(r.off), dtype=np.int64)
+    for rows in held["motion"]:
+        motion[rows] = 1
+    cm = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(motion)))
+    parts = held["parts"]
+    if _shapes_balanced(parts, cm):
+        return
+    shape_rows = sorted((row, kind, bytes(names[k]), int(counts[k]), cname)
+                        for rows, kind, names, counts, cname in parts for k, row in enumerate(rows.tolist()))
+    off = r.off
+    open_: tuple[int, bytes, int] | None = None
+    for row, kind, name, cnt, cname in shape_rows:
+        at = int(off[row])
+        if kind == 0:
+            if open_ is not None:
+                r.found(check, row, at, f"{cname} inside the open shape of record {open_[0]}")
+            open_ = (row, name, cnt)
+        elif open_ is None:
+            r.found(check, row, at, f"{cname} without an open shape")
+        else:
+            si, sname, scnt = open_
+            moves = int(cm[row] - cm[si + 1])
+            if name != sname or cnt != scnt:
+                r.found(check, row, at, f"{cname} {string_value(name)},{cnt} does not repeat record {si}'s "
+                                        f"{string_value(sname)},{scnt}")
+            elif moves != scnt:
+                r.found(check, row, at,
+                        f"shape {string_value(sname)} encloses {moves} motion commands, declares {scnt}")
+            open_ = None
+    if open_ is not None:
+        r.found(check, open_[0], int(off[open_[0]]), f"shape {string_value(open_[1])} is never closed")
+
+
+def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
+    """True when the loop of _shape_end would find nothing: starts and ends alternate, from a
+    start to an end, each end repeats its start's name and count, and the count is the number
+    of motions between them (cm: motions before each record). Only a quick yes: on False the
+    loop decides."""
+    if len({p[2].shape[1] for p in parts}) != 1:
+        return False
+    rows, (kinds, names, counts) = _in_file_order(
+        [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
+    if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
+        return False
+    opened, closed = rows[0::2], rows[1::2]
+    return bool((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()
+                and (cm[closed] - cm[opened + 1] == counts[0::2]).all())
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """How one check kind runs: ``every`` once over the head columns of every record,
+    ``batch`` once per layout batch, then ``end`` once (for what needs file order)."""
+
+    every: Callable[[Records, Check], None] | None = None
+    batch: Callable[[Records, Check, Batch], None] | None = None
+    end: Callable[[Records, Check], None] | None = None
+
+
+# check kind -> its kernel. The file-level kinds (header, framing, file checksum) are
+# validation.py's; every other kind of the spec must be here (tests/test_engine_structure.py).
+KERNELS: dict[str, Kernel] = {
+    "sequence": Kernel(every=_sequence),
+    "reserved_byte": Kernel(every=_reserved),
+    "code_copy": Kernel(every=_code_copy),
+    "arg_checksum": Kernel(batch=_arg_checksum_batch, end=_arg_checksum),
+    "unknown_code": Kernel(every=_unknown_code),
+    "availability": Kernel(every=_availability),
+    "arg_size": Kernel(every=_arg_size),
+    "finite": Kernel(batch=_finite),
+    "string_tail": Kernel(batch=_string_tail),
+    "string_ascii": Kernel(batch=_string_ascii),
+    "positive": Kernel(batch=_positive),
+    "nonzero_vector": Kernel(batch=_nonzero_vector),
+    "range": Kernel(batch=_range),
+    "ordered": Kernel(batch=_ordered),
+    "nondecreasing": Kernel(batch=_nondecreasing, end=_nondecreasing_end),
+    "cutter_table": Kernel(batch=_cutter_table),
+    "continuity": Kernel(batch=_continuity, end=_continuity_end),
+    "orientation": Kernel(batch=_orientation, end=_orientation_end),
+    "shape": Kernel(batch=_shape, end=_shape_end),
+    "machine_limits": Kernel(batch=_machine_limits),
+}
+
+# the kinds a kernel checks only once (the first check of the kind); the others run every check of their kind
+_FIRST_ONLY = {"sequence", "reserved_byte", "code_copy", "arg_checksum", "unknown_code", "arg_size", "finite",
+               "string_tail", "string_ascii", "cutter_table", "continuity", "orientation", "shape"}
+
+
+def _active(cutters: Cutters | None) -> list[tuple[Check, Kernel]]:
+    out: list[tuple[Check, Kernel]] = []
+    for kind, kernel in KERNELS.items():
+        if kind == "cutter_table" and cutters is None:
+            continue
+        checks: Sequence[Check] = T.checks_of(kind)
+        if kind in _FIRST_ONLY:
+            checks = checks[:1]
+        out.extend((c, kernel) for c in checks)
+    return out
+
+
+def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: str, cutters: Cutters | None,
+                    machine: Machine | None = None) -> Iterator[Finding]:
+    """The record findings in validate's order, one at a time."""
+    if len(offsets) == 0:
+        return iter(())
+    r = Records(buf, np.frombuffer(buf, dtype=np.uint8), np.asarray(offsets, dtype=np.int64), version, profile,
+                cutters, machine if machine is not None else DEFAULT_MACHINE)
+    head = _gather(r.a, r.off, T.HEAD_SIZE)
+    for f in T.RECORD_FIELDS:
+        r.head[f.role or f.name] = _uint(head, f)
+    del head  # each field is its own small array now (memory stays a few bytes a record)
+    active = _active(cutters)
+    for check, kernel in active:
+        if kernel.every is not None:
+            kernel.every(r, check)
+    batched = [(c, k.batch) for c, k in active if k.batch is not None]
+    for b in _batches(r):
+        for check, fn in batched:
+            fn(r, check, b)
+    for check, kernel in active:
+        if kernel.end is not None:
+            kernel.end(r, check)
+    r.pending.sort(key=finding_order)
+    return iter(heapq.merge(iter(r.pending), *r.groups, key=finding_order))
+
+
+def header_string_findings(raw: bytes, offset: int, name: str) -> list[Finding]:
+    """The string checks of one header string field: the same kernels, one row, no record."""
+    out: list[Finding] = []
+
+    def add(check: Check | None, rows: Any, offs: Any, keys: Any, msg: Message) -> None:
+        if check is not None:
+            out.extend(finding(check, None, int(offs[k]), msg(keys[k])) for k in range(len(rows)))
+
+    col = np.frombuffer(raw, dtype=np.uint8).reshape(1, -1)
+    first = first_nul(col)
+    for kind, kernel in (("string_tail", string_tail), ("string_ascii", string_ascii)):
+        kernel(add, check_of(kind), col, np.zeros(1, dtype=np.int64), np.full(1, offset, dtype=np.int64), name,
+               first)
+    return out
