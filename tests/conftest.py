@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -72,3 +73,35 @@ def generate(spec: Path, out: Path, *only: str) -> None:
 @pytest.fixture
 def repo() -> Path:
     return REPO
+
+
+# -- bad-input files, shared by the CLI tests (test_exit_codes.py, test_cli_bad_input.py) -------
+# Root reads any file whatever its mode: without these two capabilities it is held to the mode
+# bits like any user (CI runs as root).
+AS_UNPRIVILEGED_ROOT = ["setpriv", "--bounding-set", "-dac_override,-dac_read_search"]
+
+
+def file_maker(name: str, data: bytes) -> Callable[[Path], Path]:
+    """A maker of the file ``name`` holding ``data`` in a given folder."""
+    def make(tmp: Path) -> Path:
+        p = tmp / name
+        p.write_bytes(data)
+        return p
+    return make
+
+
+def locked_file(tmp: Path, data: bytes) -> Path:
+    """A file nobody but root may read (mode 0); see unprivileged_prefix()."""
+    p = tmp / "locked.cbf"
+    p.write_bytes(data)
+    p.chmod(0)
+    return p
+
+
+def unprivileged_prefix() -> list[str]:
+    """What runs a command held to the mode bits: nothing, or setpriv as root; skips when it cannot."""
+    if os.geteuid() != 0:
+        return []
+    if shutil.which(AS_UNPRIVILEGED_ROOT[0]) is None:
+        pytest.skip("running as root, which reads any file whatever its mode, and setpriv is missing")
+    return AS_UNPRIVILEGED_ROOT
