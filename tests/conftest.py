@@ -105,3 +105,19 @@ def unprivileged_prefix() -> list[str]:
     if shutil.which(AS_UNPRIVILEGED_ROOT[0]) is None:
         pytest.skip("running as root, which reads any file whatever its mode, and setpriv is missing")
     return AS_UNPRIVILEGED_ROOT
+
+
+# -- consumer venvs (issue 14: the packages used from outside this checkout) ---------------------
+def clean_venv(where: Path, *wheels: Path) -> Path:
+    """A consumer's fresh venv holding only ``wheels`` and what they depend on; returns its bin/.
+
+    This checkout's pinned pip installs into it (``pip --python``), so the venv gets no pip of its
+    own (ensurepip costs about 8 CPU seconds a venv), and no bytecode is compiled (about 3 more):
+    what the consumer tests check (which modules import, which commands run) is the same."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(where)], check=True, capture_output=True,
+                   env=env)
+    subprocess.run([sys.executable, "-m", "pip", "--python", str(where / "bin" / "python"), "install", "-q",
+                    "--no-compile", "--disable-pip-version-check", *map(str, wheels)], check=True,
+                   capture_output=True, env=env)
+    return where / "bin"
