@@ -11,9 +11,7 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 export PYTHONPATH := $(CURDIR)/generator:$(CURDIR)/generated/python:$(CURDIR)
-# Bytecode of this checkout's modules goes to build/pycache, never beside the sources: every one of the
-# thousands of Python processes `make test` starts then loads it instead of compiling cbf again.
-export PYTHONPYCACHEPREFIX := $(CURDIR)/build/pycache
+export PYTHONDONTWRITEBYTECODE := 1
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
 # Stamps of steps that run only when their inputs changed (a no-op `make` stays fast).
