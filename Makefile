@@ -20,6 +20,7 @@ STAMPS := build/stamps
 # Hooks the fragments in mk/*.mk append to (before the rules that use them).
 GENERATE_POST :=
 TEST_DEPS :=
+TEST_BUILD :=
 CONFORMANCE_BUILD :=
 -include mk/*.mk
 .PHONY: all venv generate generate-py check-generated check-spec lint typecheck test test-py clean help
@@ -78,9 +79,15 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 test-py: venv
 	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile
 
-test: generate check-generated lint $(TEST_DEPS)  ## the full test suite (what CI runs)
-	@$(MAKE) test-py
-	@$(MAKE) conformance
+# `make test`: generated/ is checked first; then what the checks run is built, once (the testees,
+# cbf-c, Chromium: TEST_BUILD); then the checks run TEST_JOBS at a time (one per core), each one's
+# output printed whole (--output-sync). They only read the tree and write their own build/ folders
+# and temporary folders. The longest (pytest, the revision drill) start first.
+TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+test: generate check-generated  ## the full test suite (what CI runs)
+	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse $(CONFORMANCE_BUILD) $(TEST_BUILD)
+	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse test-py $(filter revision-drill-quick,$(TEST_DEPS)) \
+	  $(filter-out revision-drill-quick,$(TEST_DEPS)) conformance lint
 	@$(MAKE) check-report
 
 # -- distributions (what users install) ------------------------------------------

@@ -37,3 +37,4 @@ docs-check: docs docs-chromium  ## links stay in the site; Chromium: no overflow
 # Installing chromium (about 15 s on Debian 12 with a warm apt mirror), the browser
 # check (about 40 s) and the PDF (about 45 s) fit in CI's budget: `make test` runs them.
 TEST_DEPS += docs-check
+TEST_BUILD += docs-chromium

@@ -18,7 +18,9 @@
 # the quick drill takes 205-267 s for the four fixtures (150-160 s of CPU): per fixture,
 # copy 1-2 s, generate 6-9 s, golden 3-5 s, C testee 9-10 s, conformance 14-20 s, tests
 # 24-45 s. The full drill takes 3-7 minutes a fixture (every binding's build and the whole
-# suite four more times), too much for the ten minutes `make test` may take.
+# suite four more times), too much for the five minutes `make test` may take. The quick drill does not
+# re-assemble the goldens `make golden` just wrote, and builds its ASan/UBSan testee at -O0
+# (tests/revisions/drill.py: QUICK_DESELECT, QUICK_C_SAN): about 42 CPU s a fixture.
 BASE ?= HEAD
 # Fixtures drilled at once in the quick drill (one per core of the 2-core CI machine).
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)

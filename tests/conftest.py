@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -72,3 +73,51 @@ def generate(spec: Path, out: Path, *only: str) -> None:
 @pytest.fixture
 def repo() -> Path:
     return REPO
+
+
+# -- bad-input files, shared by the CLI tests (test_exit_codes.py, test_cli_bad_input.py) -------
+# Root reads any file whatever its mode: without these two capabilities it is held to the mode
+# bits like any user (CI runs as root).
+AS_UNPRIVILEGED_ROOT = ["setpriv", "--bounding-set", "-dac_override,-dac_read_search"]
+
+
+def file_maker(name: str, data: bytes) -> Callable[[Path], Path]:
+    """A maker of the file ``name`` holding ``data`` in a given folder."""
+    def make(tmp: Path) -> Path:
+        p = tmp / name
+        p.write_bytes(data)
+        return p
+    return make
+
+
+def locked_file(tmp: Path, data: bytes) -> Path:
+    """A file nobody but root may read (mode 0); see unprivileged_prefix()."""
+    p = tmp / "locked.cbf"
+    p.write_bytes(data)
+    p.chmod(0)
+    return p
+
+
+def unprivileged_prefix() -> list[str]:
+    """What runs a command held to the mode bits: nothing, or setpriv as root; skips when it cannot."""
+    if os.geteuid() != 0:
+        return []
+    if shutil.which(AS_UNPRIVILEGED_ROOT[0]) is None:
+        pytest.skip("running as root, which reads any file whatever its mode, and setpriv is missing")
+    return AS_UNPRIVILEGED_ROOT
+
+
+# -- consumer venvs (issue 14: the packages used from outside this checkout) ---------------------
+def clean_venv(where: Path, *wheels: Path) -> Path:
+    """A consumer's fresh venv holding only ``wheels`` and what they depend on; returns its bin/.
+
+    This checkout's pinned pip installs into it (``pip --python``), so the venv gets no pip of its
+    own (ensurepip costs about 8 CPU seconds a venv), and no bytecode is compiled (about 3 more):
+    what the consumer tests check (which modules import, which commands run) is the same."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(where)], check=True, capture_output=True,
+                   env=env)
+    subprocess.run([sys.executable, "-m", "pip", "--python", str(where / "bin" / "python"), "install", "-q",
+                    "--no-compile", "--disable-pip-version-check", *map(str, wheels)], check=True,
+                   capture_output=True, env=env)
+    return where / "bin"

@@ -8,7 +8,6 @@ import argparse
 import json
 import os
 import random
-import shutil
 import signal
 import subprocess
 import sys
@@ -17,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from conftest import file_maker, locked_file, unprivileged_prefix
 
 from cbf import tables as T
 from cbf.cli import EXIT_FINDINGS, EXIT_USAGE, parser
@@ -78,14 +78,6 @@ class Case:
     text: bool = False  # the input is text: EITHER_INPUT commands answer as text_reader
 
 
-def _file(name: str, data: bytes) -> Callable[[Path], Path]:
-    def make(tmp: Path) -> Path:
-        p = tmp / name
-        p.write_bytes(data)
-        return p
-    return make
-
-
 def _random_100mb(tmp: Path) -> Path:
     p = tmp / "random.cbf"
     rnd = random.Random(7)
@@ -96,17 +88,14 @@ def _random_100mb(tmp: Path) -> Path:
 
 
 def _no_permission(tmp: Path) -> Path:
-    p = tmp / "locked.cbf"
-    p.write_bytes(VALID.read_bytes())
-    p.chmod(0)
-    return p
+    return locked_file(tmp, VALID.read_bytes())
 
 
 TRUNCATED_AT = 300  # inside record 5 of valid.v3.small.cbf, which starts at offset 276
 LIMIT = T.HEADER_SIZE + (T.LIMITS["max_commands"] + 1) * (T.HEAD_SIZE + T.LIMITS["max_arg_size"])
 WRONG_SHAPE = {"header": {"version_major": 3, "version_minor": 0}, "records": [{"code": 999}]}
 CASES = [
-    Case("empty", _file("empty.cbf", b""),
+    Case("empty", file_maker("empty.cbf", b""),
          (EXIT_USAGE, ("offset 0", "0 bytes")), (EXIT_USAGE, ("empty",))),
     Case("directory", lambda tmp: tmp,
          (EXIT_USAGE, ("is a directory",)), (EXIT_USAGE, ("is a directory",))),
@@ -116,20 +105,15 @@ CASES = [
          (EXIT_USAGE, ("permission denied",)), (EXIT_USAGE, ("permission denied",))),
     Case("random_100mb", _random_100mb,
          (EXIT_USAGE, (f"larger than {LIMIT} bytes",)), (EXIT_USAGE, ("line 1", "offset", "not UTF-8 text"))),
-    Case("truncated", _file("truncated.cbf", VALID.read_bytes()[:TRUNCATED_AT]),
+    Case("truncated", file_maker("truncated.cbf", VALID.read_bytes()[:TRUNCATED_AT]),
          (EXIT_USAGE, ("offset 276", "record 5")), (EXIT_USAGE, ("line 1", "offset 0", "not UTF-8 text")),
          (EXIT_FINDINGS, ("4.3", ":276:"))),
-    Case("cut_syntax_line_57", _file("bad.cut", _cut_with_error_on_line_57().encode()),
+    Case("cut_syntax_line_57", file_maker("bad.cut", _cut_with_error_on_line_57().encode()),
          (EXIT_USAGE, ("offset 0", "not a CBF file", "it is text")), (EXIT_USAGE, ("line 57", "speed", "'fast'")),
          text=True),
-    Case("json_wrong_shape", _file("shape.json", (json.dumps(WRONG_SHAPE, indent=1) + " " * 200).encode()),
+    Case("json_wrong_shape", file_maker("shape.json", (json.dumps(WRONG_SHAPE, indent=1) + " " * 200).encode()),
          (EXIT_USAGE, ("offset 0", "not a CBF file")), (EXIT_USAGE, ("$.records[0].code",)), text=True),
 ]
-
-
-# Root reads any file whatever its mode: without these two capabilities it is held to the mode bits
-# like any user (CI runs as root).
-AS_UNPRIVILEGED_ROOT = ["setpriv", "--bounding-set", "-dac_override,-dac_read_search"]
 
 
 def _run(tmp: Path, *args: str, prefix: Sequence[str] = ()) -> tuple[subprocess.CompletedProcess[str], int]:
@@ -174,11 +158,7 @@ def test_the_table_covers_the_cli() -> None:
 
 @pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
 def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
-    prefix: list[str] = []
-    if case.name == "no_permission" and os.geteuid() == 0:
-        if shutil.which(AS_UNPRIVILEGED_ROOT[0]) is None:
-            pytest.skip("running as root, which reads any file whatever its mode, and setpriv is missing")
-        prefix = AS_UNPRIVILEGED_ROOT
+    prefix = unprivileged_prefix() if case.name == "no_permission" else []
     src = tmp_path / "in"
     src.mkdir()
     path = case.make(src)

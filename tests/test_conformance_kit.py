@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import clean_venv
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
@@ -45,10 +46,7 @@ def kit(tmp_path_factory: pytest.TempPathFactory) -> Path:
     _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
     _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
          cwd=work)
-    _run(sys.executable, "-m", "venv", work / "venv", cwd=work)
-    _run(work / "venv" / "bin" / "python", "-m", "pip", "install", "-q", "--disable-pip-version-check",
-         next((work / "dist").glob("cbf_conformance-*.whl")), cwd=work)
-    return work / "venv" / "bin" / "cbf-conformance"
+    return clean_venv(work / "venv", next((work / "dist").glob("cbf_conformance-*.whl"))) / "cbf-conformance"
 
 
 def _expected_validate_failures() -> set[str]:

@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -105,25 +106,22 @@ print(json.dumps(out))
 """
 
 
-def _python(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
-    env = dict(os.environ, PYTHONPATH=str(gen / "python"))
+def _python(rev: Revised, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    env = dict(os.environ, PYTHONPATH=str(rev.gen / "python"))
     run = subprocess.run([sys.executable, "-c", SCRIPT], input=json.dumps(jobs), env=env, cwd=tmp_path,
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr[-2000:]
     return list(json.loads(run.stdout))
 
 
-def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
-    cc = shutil.which("gcc")
-    if cc is None:
+def _c(rev: Revised, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
+    testee = rev.testee["c"]
+    if not testee:
         pytest.skip("gcc not installed")
-    testee = tmp_path / "testee"
-    subprocess.run([cc, "-std=c99", "-O1", "-o", str(testee), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
-                   capture_output=True)
     req = "".join(json.dumps({"op": "validate", "file": f, "profile": p, "part_number": pn, "cutters": ct,
                               "machine": m}) + "\n"
                   for f, p, pn, ct, m in jobs) + '{"op": "quit"}\n'
-    ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)
+    ans = subprocess.run(testee, input=req, capture_output=True, text=True, check=True)
     out = []
     for line in ans.stdout.splitlines():
         a = json.loads(line)
@@ -135,25 +133,53 @@ def _c(gen: Path, jobs: list[Any], tmp_path: Path) -> list[list[Any]]:
 BINDINGS = {"python": _python, "c": _c}
 
 
+@dataclass(frozen=True)
+class Revised:
+    """A revision of the spec, generated (Python and C) and every golden .hex assembled with it: made
+    once per revision and shared by the tests of both bindings (they only read it)."""
+    doc: Doc
+    spec: Path
+    gen: Path
+    golden: dict[str, bytes]  # case name -> bytes assembled with the revised spec
+    testee: dict[str, list[str]]  # binding -> its testee command (the C one compiled once)
+
+
+@pytest.fixture(scope="module")
+def revised(tmp_path_factory: pytest.TempPathFactory) -> Callable[[tuple[Callable[[Doc], None], ...]], Revised]:
+    made: dict[tuple[str, ...], Revised] = {}
+
+    def make(edits: tuple[Callable[[Doc], None], ...]) -> Revised:
+        key = tuple(e.__name__ for e in edits)
+        if key not in made:
+            work = tmp_path_factory.mktemp("-".join(key))
+            doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+            for edit in edits:
+                edit(doc)
+            spec = work / "cbf.yaml"
+            spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+            gen = work / "gen"
+            subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", "python",
+                            "--only", "c"], check=True, cwd=ROOT, capture_output=True)
+            golden = {src.name[: -len(".hex")]: assemble(src, spec) for src in sorted(GOLDEN.glob("*.hex"))}
+            made[key] = Revised(doc, spec, gen, golden, {"python": _testee("python", gen, work),
+                                                         "c": _testee("c", gen, work)})
+        return made[key]
+    return make
+
+
 @pytest.mark.parametrize("binding", sorted(BINDINGS))
 @pytest.mark.parametrize("revision", sorted(REVISIONS))
-def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Path, revision: str,
-                                                                   binding: str) -> None:
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Path, revision: str, binding: str,
+                                                                   revised: Callable[..., Revised]) -> None:
     edit, keeps = REVISIONS[revision]
-    edit(doc)
-    spec = tmp_path / "cbf.yaml"
-    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
-    gen = tmp_path / "gen"
-    for only in ("python", binding):
-        subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", only],
-                       check=True, cwd=ROOT, capture_output=True)
-    jobs: list[tuple[str, str, str | None, str | None]] = []
+    rev = revised((edit,))
+    doc = rev.doc
+    jobs: list[tuple[str, str, str | None, str | None, str | None]] = []
     wanted: list[tuple[str, str, list[Any]]] = []
     changed = 0
     for src in sorted(GOLDEN.glob("*.hex")):
         name = src.name[: -len(".hex")]
-        data = assemble(src, spec)
+        data = rev.golden[name]
         changed += data != (GOLDEN / f"{name}.cbf").read_bytes()
         path = tmp_path / f"{name}.cbf"
         path.write_bytes(data)
@@ -168,7 +194,7 @@ def test_goldens_meet_their_expectations_under_a_checksum_revision(tmp_path: Pat
             wanted.append((name, profile, findings or []))
     assert changed, "the revision must change the bytes of golden files"
     assert len(wanted) > len(list(GOLDEN.glob("*.hex"))), "most expectations are kept"
-    got = BINDINGS[binding](gen, jobs, tmp_path)
+    got = BINDINGS[binding](rev, jobs, tmp_path)
     assert len(got) == len(wanted)
     diffs = [f"{name} [{profile}] {d}" for (name, profile, exp), act in zip(wanted, got, strict=True)
              if (d := findings_difference(exp, [dict(zip(("check", "severity", "record", "offset"), a, strict=True))
@@ -224,11 +250,13 @@ def test_assembler_reads_the_checksum_rules_from_the_spec() -> None:
 
 
 def _testee(binding: str, gen: Path, tmp_path: Path) -> list[str]:
+    """The testee command of a binding generated into gen (the Python one runs with PYTHONPATH=gen/python);
+    [] when the C compiler is missing."""
     if binding == "python":
         return [sys.executable, str(ROOT / "conformance" / "testees" / "python" / "testee.py")]
     cc = shutil.which("gcc")
     if cc is None:
-        pytest.skip("gcc not installed")
+        return []
     exe = tmp_path / "testee"
     subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
                    capture_output=True)
@@ -236,20 +264,13 @@ def _testee(binding: str, gen: Path, tmp_path: Path) -> list[str]:
 
 
 @pytest.mark.parametrize("binding", sorted(BINDINGS))
-def test_writers_fill_the_profile_algorithm(tmp_path: Path, binding: str) -> None:
+def test_writers_fill_the_profile_algorithm(tmp_path: Path, binding: str, revised: Callable[..., Revised]) -> None:
     """Under a revision where a profile has its own file algorithm, every writer fills each valid
     golden (written as that profile writes) to the bytes the assembler made from the spec."""
     import base64
 
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
-    every_field_another_algorithm(doc)
-    last_profile_another_algorithm(doc)
-    spec = tmp_path / "cbf.yaml"
-    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
-    gen = tmp_path / "gen"
-    for only in ("python", binding):
-        subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(gen), "--only", only],
-                       check=True, cwd=ROOT, capture_output=True)
+    rev = revised((every_field_another_algorithm, last_profile_another_algorithm))
+    doc, gen = rev.doc, rev.gen
     cases: list[tuple[str, str, bytes]] = []
     for src in sorted(GOLDEN.glob("*.hex")):
         name = src.name[: -len(".hex")]
@@ -258,14 +279,16 @@ def test_writers_fill_the_profile_algorithm(tmp_path: Path, binding: str) -> Non
             continue
         for profile, findings in (exp.get("validate") or {}).items():
             if not findings and _unchanged_profiles(name, profile, src.read_text(encoding="utf-8"), doc):
-                cases.append((name, profile, assemble(src, spec)))
+                cases.append((name, profile, rev.golden[name]))
     assert {p for _, p, _ in cases} == {p["id"] for p in doc["profiles"]}, "every profile writes some case"
     reqs = []
     for name, _, data in cases:
         (tmp_path / f"{name}.cbf").write_bytes(data)
         reqs.append({"op": "decode", "file": str(tmp_path / f"{name}.cbf")})
     env = dict(os.environ, PYTHONPATH=str(gen / "python"))
-    cmd = _testee(binding, gen, tmp_path)
+    cmd = rev.testee[binding]
+    if not cmd:
+        pytest.skip("gcc not installed")
     run = subprocess.run(cmd, input="".join(json.dumps(r) + "\n" for r in reqs) + '{"op": "quit"}\n', env=env,
                          capture_output=True, text=True, check=True)
     decoded = [json.loads(line) for line in run.stdout.splitlines()]

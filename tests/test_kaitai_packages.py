@@ -15,6 +15,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from conftest import clean_venv
 
 import cbf
 from cbf import tables
@@ -40,9 +41,7 @@ def test_python_parser_wheel_in_a_clean_venv(tmp_path: Path) -> None:
     shutil.copytree(KAITAI / "python", src, ignore=shutil.ignore_patterns("__pycache__", "testee.py"))
     _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", tmp_path / "dist", src, cwd=tmp_path)
     wheel = next((tmp_path / "dist").glob("cbf_kaitai-*.whl"))
-    _run(sys.executable, "-m", "venv", tmp_path / "venv", cwd=tmp_path)
-    py = tmp_path / "venv" / "bin" / "python"
-    _run(py, "-m", "pip", "install", "-q", "--disable-pip-version-check", wheel, cwd=tmp_path)
+    py = clean_venv(tmp_path / "venv", wheel) / "python"
     out = _run(py, "-c", "import json, sys; from cbf_kaitai import Cbf, SPEC_REVISION; "
                "print(json.dumps([SPEC_REVISION, [r.code for r in Cbf.from_file(sys.argv[1]).records]]))",
                GOLDEN, cwd=tmp_path)

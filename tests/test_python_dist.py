@@ -13,6 +13,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from conftest import clean_venv
 
 import cbf
 import cbfgen
@@ -38,10 +39,7 @@ def _build(src: Path, work: Path) -> Path:
 
 
 def _venv(where: Path, *wheels: Path) -> Path:
-    _run(sys.executable, "-m", "venv", where, cwd=where.parent)
-    _run(where / "bin" / "python", "-m", "pip", "install", "-q", "--disable-pip-version-check", *wheels,
-         cwd=where.parent)
-    return where / "bin"
+    return clean_venv(where, *wheels)
 
 
 @pytest.fixture(scope="module")

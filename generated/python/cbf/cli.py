@@ -502,10 +502,10 @@ def _load_any(path: str) -> Any:
         raise _Fail(f"{path}: offset 0: empty input (0 bytes of CBF, no CUT or JSON text)")
     try:
         if text.lstrip().startswith("{"):
-            from .canonical import from_canonical
+            from .canonical import from_canonical, loads
 
-            try:
-                return from_canonical(json.loads(text))
+            try:  # as encode reads it: exact numbers, a key given twice refused with its path
+                return from_canonical(loads(text))
             except json.JSONDecodeError as exc:
                 raise _Fail(f"{path}: line {exc.lineno}: not JSON ({exc.msg})") from None
             except (RecursionError, ValueError) as exc:

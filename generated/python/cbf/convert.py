@@ -360,7 +360,10 @@ def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill
                 raise ConvertError(f"{where}: {cmd.name} is not in version {to_version}, and no line command "
                                    f"of it can carry its motion", offset=r.offset)
             motion = cmd.motion or {}
-            pts, dev = linearise(curve, tol, "end" in motion)  # an arc ends exactly where it says
+            try:
+                pts, dev = linearise(curve, tol, "end" in motion)  # an arc ends exactly where it says
+            except ConvertError as exc:  # name the record, as every other refusal does
+                raise ConvertError(f"{where}: {cmd.name} {exc}; raise --chord-tol", offset=r.offset) from None
             worst = max(worst, dev)
             curves += 1
             segments += len(pts) - 1
