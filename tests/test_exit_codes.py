@@ -291,6 +291,24 @@ def _too_large(tmp: Path) -> list[Input]:
     return [Input(p, (f"larger than {LIMIT} bytes",))]
 
 
+def _bad_machine_files(tmp: Path) -> list[Input]:
+    """Machine files (check machine_limits) that cannot be used: a limit in another unit, a key
+    given twice, and text that is not JSON; built from the spec's default machine."""
+    from cbfgen.emit.python.machine import machine_data
+    from cbfgen.loader import load
+
+    doc = machine_data(load(REPO / "spec" / "cbf.yaml"))
+    name = next(iter(doc["limits"]))
+    unit = json.loads(json.dumps(doc))
+    unit["limits"][name]["unit"] = "furlong"
+    text = json.dumps(doc)
+    key = next(iter(doc))
+    twice = text.replace("{", "{" + json.dumps(key) + ": " + json.dumps(doc[key]) + ", ", 1)  # the same key, twice
+    return [Input(file_maker("unit.json", json.dumps(unit).encode())(tmp), (f"$.limits.{name}.unit",)),
+            Input(file_maker("twice.json", twice.encode())(tmp), ("duplicate",)),
+            Input(file_maker("broken.json", b"{")(tmp), ("line 1",))]
+
+
 def _one(name: str, data: bytes, *needles: str) -> Callable[[Path], list[Input]]:
     return lambda tmp: [Input(file_maker(name, data)(tmp), needles)]
 
@@ -317,6 +335,8 @@ INPUTS: dict[str, Callable[[Path], list[Input]]] = {
     "larger than a CBF file can be (`cbf` refuses it unread)": _too_large,
     "bad usage: an unknown option": _one("valid.cbf", VALID.read_bytes()),
     "bad usage: no file": lambda tmp: [Input(tmp / "unused")],
+    "a machine file (`--machine`) that is not the spec's `machine:` shape: another unit, an unknown or "
+    "duplicate key, not JSON": _bad_machine_files,
     "the version": lambda tmp: [Input(tmp / "unused", (f"{cbf.__version__} (spec {cbf.SPEC_REVISION})",))],
     "CUT text with a control character (VT, FF, NUL, TAB, DEL, U+0085, U+2028, a CR without LF...) or any "
     "non-ASCII character: only LF and CR LF end a line": _control_character,
