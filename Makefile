@@ -49,8 +49,19 @@ venv: setup $(VENV)/.stamp  ## create .venv with the pinned dependencies
 check-spec: venv  ## load and check spec/cbf.yaml only
 	$(PY) -m cbfgen --check-spec
 
-generate-py: venv  ## run every Python emitter (no ksc)
+# cbfgen runs when what it reads changed: the spec, the generator, conformance/ (golden cases, the
+# reports the docs show) or a file of generated/ itself (a hand edit is overwritten, as always).
+# A deleted file of generated/ makes it run too.
+GENERATED_TRACKED := $(shell git ls-files generated 2>/dev/null)
+GENERATE_INPUTS = $(shell find spec generator conformance -type f -not -path '*/__pycache__/*' \
+  -not -name '*.tmp' 2>/dev/null) $(wildcard $(GENERATED_TRACKED))
+GENERATE_FORCE = $(if $(filter-out $(wildcard $(GENERATED_TRACKED)),$(GENERATED_TRACKED)),FORCE)
+.PHONY: FORCE
+FORCE:
+generate-py: venv $(STAMPS)/generate-py  ## run every Python emitter (no ksc)
+$(STAMPS)/generate-py: $(GENERATE_INPUTS) $(VENV)/.stamp $(GENERATE_FORCE)
 	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated
+	@mkdir -p $(@D) && touch $@
 
 # One make process runs the Python emitters once, then the later steps (ksc, ...).
 generate: generate-py $(GENERATE_POST)  ## regenerate generated/ from the spec
@@ -77,7 +88,7 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 # One worker per core; a test file stays on one worker (--dist loadfile), so module-scoped
 # fixtures (built wheels, venvs) are made once.
 test-py: venv
-	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile
+	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile --junitxml=build/test-results/pytest.xml
 
 # `make test`: generated/ is checked first; then what the checks run is built, once (the testees,
 # cbf-c, Chromium: TEST_BUILD); then the checks run TEST_JOBS at a time (one per core), each one's

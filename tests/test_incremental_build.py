@@ -44,5 +44,15 @@ def test_ksc_rewrites_only_changed_files(tmp_path: Path) -> None:
 def test_make_steps_are_stamped() -> None:
     """The expensive steps of `make` have stamps whose prerequisites are their inputs."""
     text = "\n".join(p.read_text(encoding="utf-8") for p in [REPO / "Makefile", *sorted((REPO / "mk").glob("*.mk"))])
-    for stamp in ("lint", "ksc", "golden-check", "conformance"):
+    for stamp in ("generate-py", "lint", "ksc", "golden-check", "conformance"):
         assert f"$(STAMPS)/{stamp}:" in text, stamp
+
+
+@pytest.mark.parametrize("changed", ["spec/cbf.yaml", "generator/cbfgen/loader.py", "conformance/report.json",
+                                     "generated/c/cbf.h"])
+def test_generate_runs_when_what_it_reads_changed(changed: str) -> None:
+    """`make -n -W FILE` (as if FILE had just changed) plans the cbfgen run: the generator's
+    stamp lists what it reads among its prerequisites."""
+    res = subprocess.run(["make", "-n", "-W", changed, "build/stamps/generate-py"], cwd=REPO, capture_output=True,
+                         text=True, check=True)
+    assert "-m cbfgen --spec spec/cbf.yaml --out generated" in res.stdout, res.stdout
