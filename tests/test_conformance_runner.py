@@ -118,11 +118,11 @@ def test_a_finding_at_the_record_start_turns_the_run_red(tmp_path: Path) -> None
     """A codec that names the record start instead of the code copy field fails the golden case."""
     codec = tmp_path / "python"
     shutil.copytree(REPO / "generated" / "python", codec)
-    validation = codec / "cbf" / "validation.py"
-    text = validation.read_text(encoding="utf-8")
-    field = "out.add(c_copy, i, off + T.RECORD_FIELDS[i_copy].offset,"
+    records = codec / "cbf" / "records.py"  # the kernel of check kind code_copy
+    text = records.read_text(encoding="utf-8")
+    field = "r.off[bad] + T.RECORD_FIELDS[T.I_COPY].offset"
     assert text.count(field) == 1
-    validation.write_text(text.replace(field, "out.add(c_copy, i, off,"), encoding="utf-8")
+    records.write_text(text.replace(field, "r.off[bad]"), encoding="utf-8")
     res = _run(tmp_path, codec, "check.6.4.2")
     assert res.returncode == 1, res.stdout
     assert "python: check.6.4.2.code_copy: FAIL validate: [default] missing" in res.stdout

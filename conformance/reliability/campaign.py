@@ -158,12 +158,19 @@ def sampled(bases: list[Base], framing: Framing, seed: int) -> dict[str, list[in
     return {b.name: sample_offsets(b.data, framing, rng, SAMPLE_COUNT) for b in bases if len(b.data) > SAMPLE_ABOVE}
 
 
-def detection(pool: Pool, bases: list[Base], scratch: Scratch, samples: dict[str, list[int]]) -> dict[str, Any]:
+def detection(pool: Pool, bases: list[Base], scratch: Scratch, samples: dict[str, list[int]],
+              share: float = 1.0, seed: int = 0) -> dict[str, Any]:
+    """Every corruption of every base, each answered by the binding; ``share`` < 1 keeps that
+    share of the mutants, drawn with a seeded generator (the same ones every run)."""
     result: dict[str, Any] = {}
+    rng = random.Random(seed)
     for cls, gen in CORRUPTIONS:
         row = result.setdefault(cls, {"trials": 0, "detected": 0, "misses": []})
         for base in bases:
-            for batch in batched(gen(base.data, samples.get(base.name))):
+            mutants = gen(base.data, samples.get(base.name))
+            if share < 1.0:
+                mutants = (m for m in mutants if rng.random() < share)
+            for batch in batched(mutants):
                 paths = scratch.write([m.data for m in batch])
                 answers = pool.many([{"op": "validate", "file": p, "profile": base.profile} for p in paths])
                 for m, a in zip(batch, answers, strict=True):

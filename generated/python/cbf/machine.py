@@ -13,6 +13,7 @@ limit); the spec loader requires a box to target every float vector of its unit.
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import struct
@@ -234,9 +235,14 @@ _RULES = _rules()
 _NUM = "{:.9g}".format
 
 
-def machine_rules(check: Mapping[str, Any], command: str, variant: str) -> list[tuple[T.FieldInfo, str, bool]]:
+def machine_rules(check: Mapping[str, Any], command: str, variant: str) -> tuple[tuple[T.FieldInfo, str, bool], ...]:
     """The arguments ``check`` bounds in a layout: (argument, limit name, positive-checked)."""
-    return [(f, lim, pos) for cid, f, lim, pos in _RULES.get((command, variant), ()) if cid == check["id"]]
+    return _rules_of(check["id"], command, variant)
+
+
+@functools.lru_cache(maxsize=1024)
+def _rules_of(check: str, command: str, variant: str) -> tuple[tuple[T.FieldInfo, str, bool], ...]:
+    return tuple((f, lim, pos) for cid, f, lim, pos in _RULES.get((command, variant), ()) if cid == check)
 
 
 def breach(values: tuple[float, ...], lim: Limit, positive: bool) -> str | None:

@@ -123,10 +123,26 @@ def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDAr
     """Bytes a[s:s+width] for each start: rows of a sliding-window view (no index matrix)."""
     if width == 0 or starts.shape[0] == 0:
         return np.empty((starts.shape[0], width), dtype=np.uint8)
+    if starts.shape[0] * width <= _SMALL_GATHER:  # a small index matrix costs less than making the view
+        return a[starts[:, None] + np.arange(width)]
     return np.lib.stride_tricks.sliding_window_view(a, width)[starts]
 
 
+_SMALL_GATHER = 1 << 16  # bytes gathered with an index matrix (8 bytes an index: 512 KiB at most)
+
+
+_DTYPES: dict[int, np.dtype[Any]] = {}
+
+
 def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
+    """The structured dtype of a layout's arguments (made once a layout: layouts are constants)."""
+    got = _DTYPES.get(id(lay))
+    if got is None:
+        got = _DTYPES[id(lay)] = _make_dtype(lay)
+    return got
+
+
+def _make_dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
     fields: list[Any] = []
     for f in lay.args:
         if f.kind == "float":
@@ -495,21 +511,35 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
     """A finite target argument outside its machine limit: one finding per argument, naming
     the first component out (values <= 0 of an argument a positive check targets are that
     check's). With a machine file given the check reports at its input severity."""
+    rules = machine_rules(check, b.cmd.name, b.lay.variant)
+    if not rules:
+        return
     m = r.machine
     if m.given and check.get("input_severity"):
         check = dict(check, severity=check["input_severity"])
-    for f, limit, positive in machine_rules(check, b.cmd.name, b.lay.variant):
-        if f.name not in b.cols:
+    for f, limit, positive in rules:
+        if f.name not in b.raw:
             continue
         lim = m.limits[limit]
+        lo, hi = _bounds(lim)
+        stored = b.raw[f.name]  # binary32 as stored: compared exactly with the binary32 bounds
+        out = (stored < lo) | (stored > hi)  # NaN compares false: the finite check's
+        if out.ndim > 1:
+            out = out.any(axis=1)
+        if not out.any():
+            continue
         v = np.asarray(b.cols[f.name], dtype=np.float64).reshape(len(b.rows), -1)
-        skip = ~np.isfinite(v).all(axis=1)
+        keep = out & np.isfinite(v).all(axis=1)
         if positive:
-            skip |= (v <= 0.0).any(axis=1)
-        with np.errstate(invalid="ignore"):
-            out = ((v < np.asarray(lim.lo32)) | (v > np.asarray(lim.hi32))).any(axis=1)
-        bad = np.nonzero(out & ~skip)[0]
+            keep &= ~(v <= 0.0).any(axis=1)
+        bad = np.nonzero(keep)[0]
         r.add(check, b.rows[bad], b.at(f.name)[bad], bad, _breach(f"{b.cmd.name}.{f.name}", v, lim, positive))
+
+
+@lru_cache(maxsize=64)
+def _bounds(lim: Limit) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A limit's bounds as arrays (one per axis), rounded to binary32 as machine.Limit keeps them."""
+    return np.asarray(lim.lo32, dtype=np.float64), np.asarray(lim.hi32, dtype=np.float64)
 
 
 def _breach(before: str, v: Any, lim: Limit, positive: bool) -> Message:
