@@ -35,7 +35,7 @@ def _files() -> dict[str, Path]:
 
     WORK.mkdir(parents=True, exist_ok=True)
     files = {"65535 records": REPO / "conformance" / "golden" / "big.v3.65535.cbf"}
-    five = WORK / "five_axis.cbf"
+    five = WORK / "five_axis.v2.cbf"  # v2: within the default machine (check machine_limits)
     if not five.exists():
         recs: list[Record] = [Record.of(Speed(speed=0.02)), Record.of(Orient(approach=(0.0, 0.0, 1.0))),
                               Record.of(Point(point=(0.0, 0.0, 0.0)))]
@@ -44,10 +44,11 @@ def _files() -> dict[str, Path]:
         while len(recs) < 20_000:
             n = 50
             recs.append(Record.of(Startshape(name=f"S{shape % 1000}", moves=n)))
+            step = 0.25 if shape % 2 == 0 else -0.25  # back and forth: within any machine's workspace
             for _ in range(n):
-                recs.append(Record.of(Line5b(start_pos=(x, 0.0, 0.0), end_pos=(x + 0.25, 0.0, 0.0),
+                recs.append(Record.of(Line5b(start_pos=(x, 0.0, 0.0), end_pos=(x + step, 0.0, 0.0),
                                              start_orient=(0.0, 0.0, 1.0), end_orient=(0.0, 0.0, 1.0))))
-                x += 0.25
+                x += step
             recs.append(Record.of(Endshape(name=f"S{shape % 1000}", moves=n)))
             shape += 1
             if shape % 20 == 0:

@@ -53,7 +53,7 @@ def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.Mo
     import cbf
 
     for name, data in first.items():
-        assert not [f for f in cbf.validate(data) if f.severity == "error"], name
+        assert cbf.validate(data) == [], name  # the rows time valid files: no finding to format
     assert len(cbf.decode(first["5-axis ~20k"]).records) >= 20_000
     assert len(cbf.decode(first["small (30)"]).records) == 30
     json.dumps(B._stats([0.1, 0.2, 0.3]))

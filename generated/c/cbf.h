@@ -3379,6 +3379,9 @@ typedef struct cbf__vctx {
     unsigned long shape_moves;
     int nd_ok[CBF__NTARGETS > 0 ? CBF__NTARGETS : 1];
     double nd_prev[CBF__NTARGETS > 0 ? CBF__NTARGETS : 1];
+    const cbf_machine *machine; /* the machine limits apply (opt->machine, or the default) */
+    float mlo[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES]; /* its bounds rounded to binary32 (cbf__bound32) */
+    float mhi[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
 } cbf__vctx;
 
 static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap) CBF__PRINTF(5, 0);
@@ -3863,52 +3866,63 @@ static double cbf__bound32(double b)
     return (double)(float)b;
 }
 
-/* A finite target argument outside its limit: one finding, naming the first component out. */
-static void cbf__machine_checks(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t args_off)
+/* The limits a validation applies, each bound rounded to binary32 once. */
+static void cbf__machine_start(cbf__vctx *v)
 {
-    const cbf_machine *m = (v->opt && v->opt->machine) ? v->opt->machine : &cbf_machine_default;
-    unsigned j;
-    for (j = cbf__mrule_first[layout]; j < cbf__mrule_first[layout + 1]; j++) {
-        const cbf__mrule *r = &cbf__mrules[j];
+    unsigned k, i;
+    v->machine = (v->opt && v->opt->machine) ? v->opt->machine : &cbf_machine_default;
+    for (k = 0; k < CBF_MACHINE__COUNT; k++) {
+        for (i = 0; i < CBF_MACHINE_MAX_AXES; i++) {
+            v->mlo[k][i] = (float)cbf__bound32(v->machine->limit[k].min[i]); /* exact: binary32 or infinite */
+            v->mhi[k][i] = (float)cbf__bound32(v->machine->limit[k].max[i]);
+        }
+    }
+}
+
+/* Rule j of cbf__mrules on its argument at p (n floats): a finite value outside its limit is
+ * one finding, naming the first component out; the generated validator calls it with the
+ * rule's offset and count as constants. */
+static inline void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, const uint8_t *p, unsigned n,
+                                   long rec, size_t off)
+{
+    const cbf__mrule *r = &cbf__mrules[j];
+    const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
+    float x[CBF_MACHINE_MAX_AXES];
+    unsigned i, out = n;
+    int finite = 1, le_zero = 0;
+    for (i = 0; i < n; i++) {
+        uint32_t u = cbf__get_u(p + 4u * i, 4);
+        finite &= cbf__bits_finite(u);
+        x[i] = cbf__bits_f4(u);
+        if (out == n && (x[i] < lo[i] || x[i] > hi[i]))
+            out = i;
+    }
+    if (out == n)
+        return; /* inside (a NaN compares false: the finite check's) */
+    for (i = 0; i < n; i++)
+        le_zero |= x[i] <= 0.0f;
+    if (!finite || (r->positive && le_zero))
+        return; /* the finite check's, or the positive check's */
+    {
         const cbf_field_info *f = cbf__layout_arg(layout, r->arg);
-        const cbf_machine_range *lim = &m->limit[r->limit];
-        double x[CBF_MACHINE_MAX_AXES];
-        unsigned i, n;
-        int finite = 1, le_zero = 0;
-        if (!f || f->kind != CBF__K_FLOAT || f->count > CBF_MACHINE_MAX_AXES)
-            continue;
-        n = f->count;
-        for (i = 0; i < n; i++) {
-            uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
-            finite &= cbf__bits_finite(u);
-            x[i] = (double)cbf__bits_f4(u);
-            if (x[i] <= 0.0)
-                le_zero = 1;
-        }
-        if (!finite || (r->positive && le_zero))
-            continue; /* the finite check's, or the positive check's */
-        for (i = 0; i < n; i++) {
-            if (x[i] < cbf__bound32(lim->min[i]) || x[i] > cbf__bound32(lim->max[i])) {
-                char msg[256];
-                cbf_finding fd;
-                const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][i] : NULL;
-                (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
-                               cbf__commands[cmd].name, f->name, axis ? " " : "", axis ? axis : "", x[i],
-                               cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[i],
-                               lim->max[i], cbf_machine_limit_units[r->limit]);
-                fd.check = cbf__checks[r->check].id;
-                fd.severity = (v->opt && v->opt->machine) ? (r->given_error ? CBF_SEVERITY_ERROR : CBF_SEVERITY_WARNING)
-                                                          : cbf__checks[r->check].severity;
-                fd.record = rec;
-                fd.offset = args_off + f->offset;
-                fd.message = msg;
-                if (fd.severity == CBF_SEVERITY_ERROR)
-                    v->errors++;
-                if (v->fn)
-                    v->fn(v->user, &fd);
-                break;
-            }
-        }
+        const cbf_machine_range *lim = &v->machine->limit[r->limit];
+        const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][out] : NULL;
+        char msg[256];
+        cbf_finding fd;
+        (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
+                       cbf__commands[cmd].name, f ? f->name : "?", axis ? " " : "", axis ? axis : "", (double)x[out],
+                       cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[out],
+                       lim->max[out], cbf_machine_limit_units[r->limit]);
+        fd.check = cbf__checks[r->check].id;
+        fd.severity = (v->opt && v->opt->machine) ? (r->given_error ? CBF_SEVERITY_ERROR : CBF_SEVERITY_WARNING)
+                                                  : cbf__checks[r->check].severity;
+        fd.record = rec;
+        fd.offset = off;
+        fd.message = msg;
+        if (fd.severity == CBF_SEVERITY_ERROR)
+            v->errors++;
+        if (v->fn)
+            v->fn(v->user, &fd);
     }
 }
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
@@ -3927,7 +3941,7 @@ static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long r
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s %s is not finite", cbf__commands[cmd].name, "completion");
     cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_range: CHECKPOINT completion */
     cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_CHECKPOINT, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CHECKPOINT, 0u, a + 16, 3u, rec, ao + 16u); /* CHECKPOINT recovery_point: workspace */
 }
 
 /* CHECKPOINT_V1: 16 argument bytes */
@@ -3951,7 +3965,8 @@ static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, long rec, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "head_length");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], a, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_CUTTER, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 1u, a + 16, 1u, rec, ao + 16u); /* CUTTER length: cutter_length */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 2u, a + 20, 1u, rec, ao + 20u); /* CUTTER radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER, a, rec, ao);
 }
 
@@ -3967,7 +3982,8 @@ static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a, long re
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], a, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_CUTTER_V1, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 3u, a + 16, 1u, rec, ao + 16u); /* CUTTER_V1 length: cutter_length */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 4u, a + 20, 1u, rec, ao + 20u); /* CUTTER_V1 radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER_V1, a, rec, ao);
 }
 
@@ -4046,7 +4062,7 @@ static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, long rec, s
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     if (!cbf__finite_at(a + 0, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_POINT, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_POINT, 5u, a + 0, 3u, rec, ao + 0u); /* POINT point: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, -1, 0, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -4060,7 +4076,8 @@ static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, long rec, si
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!cbf__finite_at(a + 12, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end");
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_LINE, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 6u, a + 0, 3u, rec, ao + 0u); /* LINE start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 7u, a + 12, 3u, rec, ao + 12u); /* LINE end: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -4078,7 +4095,8 @@ static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, long rec, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!cbf__finite_at(a + 36, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_LINE5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 8u, a + 0, 3u, rec, ao + 0u); /* LINE5B start_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 9u, a + 12, 3u, rec, ao + 12u); /* LINE5B end_pos: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 24, 36);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4095,7 +4113,9 @@ static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long rec, siz
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "middle");
     if (!cbf__finite_at(a + 24, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end");
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_ARC, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 10u, a + 0, 3u, rec, ao + 0u); /* ARC start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 11u, a + 12, 3u, rec, ao + 12u); /* ARC middle: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 12u, a + 24, 3u, rec, ao + 24u); /* ARC end: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -4115,7 +4135,9 @@ static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, long rec, s
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!cbf__finite_at(a + 48, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_ARC5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 13u, a + 0, 3u, rec, ao + 0u); /* ARC5B start_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 14u, a + 12, 3u, rec, ao + 12u); /* ARC5B mid_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 15u, a + 24, 3u, rec, ao + 24u); /* ARC5B end_pos: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 36, 48);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4135,7 +4157,8 @@ static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, long rec, 
     if (!cbf__finite_at(a + 36, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
     cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], a, rec, ao); /* normal_nonzero: CIRCLE normal */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_CIRCLE, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 16u, a + 0, 3u, rec, ao + 0u); /* CIRCLE start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 17u, a + 12, 3u, rec, ao + 12u); /* CIRCLE center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -4158,7 +4181,8 @@ static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a, long rec
     if (!cbf__finite_at(a + 52, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], a, rec, ao); /* normal_nonzero: CIRCLE5B normal */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_CIRCLE5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 18u, a + 0, 3u, rec, ao + 0u); /* CIRCLE5B start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 19u, a + 12, 3u, rec, ao + 12u); /* CIRCLE5B center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 40, 52);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4180,7 +4204,8 @@ static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, long rec, s
     if (!cbf__finite_at(a + 40, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
     cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], a, rec, ao); /* normal_nonzero: HELIX normal */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_HELIX, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 20u, a + 0, 3u, rec, ao + 0u); /* HELIX start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 21u, a + 12, 3u, rec, ao + 12u); /* HELIX center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
@@ -4205,7 +4230,8 @@ static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, long rec,
     if (!cbf__finite_at(a + 56, 3u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], a, rec, ao); /* normal_nonzero: HELIX5B normal */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_HELIX5B, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 22u, a + 0, 3u, rec, ao + 0u); /* HELIX5B start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 23u, a + 12, 3u, rec, ao + 12u); /* HELIX5B center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 44, 56);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4219,7 +4245,7 @@ static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, long rec, s
     if (!cbf__finite_at(a + 0, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
     cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], a, rec, ao); /* speed_positive: SPEED speed */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_SPEED, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_SPEED, 24u, a + 0, 1u, rec, ao + 0u); /* SPEED speed: speed */
 }
 
 /* ACCEL: 8 argument bytes */
@@ -4233,7 +4259,8 @@ static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, long rec, s
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "decel");
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], a, rec, ao); /* accel_positive: ACCEL accel decel */
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], a, rec, ao); /* accel_positive: ACCEL accel decel */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_ACCEL, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 25u, a + 0, 1u, rec, ao + 0u); /* ACCEL accel: acceleration */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 26u, a + 4, 1u, rec, ao + 4u); /* ACCEL decel: acceleration */
 }
 
 /* CUTTER_ON: 0 argument bytes */
@@ -4271,7 +4298,9 @@ static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, long rec,
     if (!cbf__finite_at(a + 12, 1u))
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "max_force");
     cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
-    cbf__machine_checks(v, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* machine limits (L1, cbf/machine.h.j2) */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 27u, a + 0, 1u, rec, ao + 0u); /* FCPARMS nom_speed: speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 28u, a + 4, 1u, rec, ao + 4u); /* FCPARMS max_speed: speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 29u, a + 8, 1u, rec, ao + 8u); /* FCPARMS min_speed: speed */
 }
 
 /* VERSION: 32 argument bytes */
@@ -4433,6 +4462,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     /* below this tan^2 the orientation angle is under its tolerance (with a margin of 1/1000) */
     v.ori_tan2 = cbf__tol_orientation > 0.0 && cbf__tol_orientation < 45.0
                  ? pow(tan(cbf__tol_orientation * 0.999 * (CBF__PI / 180.0)), 2.0) : 0.0;
+    cbf__machine_start(&v);
     if (len < CBF_HEADER_SIZE || !buf) {
         cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
                   (unsigned long)len, CBF_HEADER_SIZE);

@@ -38,15 +38,19 @@ def machine_context(spec: Spec, layouts: list[dict[str, Any]], cfloat: Any, macr
                 for name in t.args:
                     idx = next((i for i, a in enumerate(lay["args"]) if a["name"] == name), -1)
                     if idx >= 0:
+                        arg = lay["args"][idx]
+                        assert arg["kind"] == "FLOAT", f"{lay['macro']} {name}: a machine limit bounds floats only"
                         rules.append({
+                            "offset": arg["offset"], "count": arg["count"],
                             "arg": idx, "limit": names.index(t.limit), "check": check_index[ch.id],
                             "given_error": int((ch.input_severity or ch.severity) == "error"),
                             "positive": int((t.command, name) in positive),
                             "text": f"{lay['macro']} {name}: {t.limit}",
                         })
     first.append(len(rules))
+    assert all(r["count"] <= axes for r in rules), "a machine-limited argument has more components than a limit's axes"
     return {"machine_axes": axes, "machine_limits": limits,
-            "machine_rules": rules or [{"arg": -1, "limit": 0, "check": 0, "given_error": 0, "positive": 0,
-                                        "text": "none"}],
+            "machine_rules": rules or [{"offset": 0, "count": 0, "arg": -1, "limit": 0, "check": 0, "given_error": 0,
+                                        "positive": 0, "text": "none"}],
             "machine_first": first, "machine_decision": spec.machine.decision,
             "machine_file_keys": list(MACHINE_FILE_KEYS), "machine_limit_keys": list(MACHINE_LIMIT_KEYS)}
