@@ -68,7 +68,23 @@ def layout_of(args: Any) -> T.LayoutInfo:
     raise TypeError(f"{type(args).__name__} is not a command layout of cbf.layouts")
 
 
-class RecordList(Sequence[Record]):
+class _Records(Sequence[Record]):
+    """What the lazy record sequences share: equal to any sequence of equal records."""
+
+    __slots__ = ()
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Sequence):
+            return NotImplemented
+        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({len(self)} records)"
+
+
+class RecordList(_Records):
     """The records of a decoded file: a view on its bytes that makes each
     Record when asked, so decoding a big file costs one framing pass."""
 
@@ -109,18 +125,8 @@ class RecordList(Sequence[Record]):
         for off in self._offsets:
             yield make(off)
 
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Sequence):
-            return NotImplemented
-        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
 
-    __hash__ = None  # type: ignore[assignment]
-
-    def __repr__(self) -> str:
-        return f"RecordList({len(self)} records)"
-
-
-class PackedRecords(Sequence[Record]):
+class PackedRecords(_Records):
     """Records as compact columns, as CUT text gives them (cut.from_cut): the codes, every
     record's arguments one after another (record i's are ``args[bounds[i]:bounds[i + 1]]``),
     and the code copy (negative: none given) and reserved byte of each. A Record is made when
@@ -155,16 +161,6 @@ class PackedRecords(Sequence[Record]):
 
     def __iter__(self) -> Iterator[Record]:
         return map(self._make, range(len(self)))
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Sequence):
-            return NotImplemented
-        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __repr__(self) -> str:
-        return f"PackedRecords({len(self)} records)"
 
 
 @dataclass(frozen=True)
