@@ -3505,17 +3505,23 @@ static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[
  * layout has no such argument. */
 #if defined(__GNUC__) || defined(__clang__)
 #define CBF__INLINE static inline __attribute__((always_inline))
+#define CBF__COLD __attribute__((cold, noinline)) /* a finding's path: out of the record loop's way */
 #else
 #define CBF__INLINE static inline
+#define CBF__COLD
 #endif
 
-/* Whether the n binary32 elements at p are all finite. */
-CBF__INLINE int cbf__finite_at(const uint8_t *p, unsigned n)
+/* The n binary32 elements at p, decoded once a record into x (the generated
+ * layout function shares them between the checks): 1 when all are finite. */
+CBF__INLINE int cbf__floats_at(const uint8_t *p, unsigned n, float *x)
 {
     unsigned i;
     int finite = 1;
-    for (i = 0; i < n; i++)
-        finite &= cbf__bits_finite(cbf__get_u(p + 4u * i, 4));
+    for (i = 0; i < n; i++) {
+        uint32_t u = cbf__get_u(p + 4u * i, 4);
+        finite &= cbf__bits_finite(u);
+        x[i] = cbf__bits_f4(u);
+    }
     return finite;
 }
 
@@ -3588,27 +3594,33 @@ static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_cent
 /* 6.4.5: continuity of motion commands (M1). A point motion sets the current
  * position; every other motion command is compared with it when its start is
  * finite, then moves it to its end (none when a value is not finite or the
- * normal is zero). */
+ * normal is zero). xs, xe: the start and end as the layout function decoded
+ * them (ok_s, ok_e: finite; NULL: the layout has none). */
 CBF__INLINE void cbf__continuity_at(cbf__vctx *v, int cmd, int kind, const uint8_t *args, long rec, size_t args_off,
-                                    long o_start, long o_end, long o_center, long o_normal, long o_deg,
-                                    unsigned n_deg, long o_len, unsigned n_len)
+                                    const float *xs, int ok_s, const float *xe, int ok_e, long o_start,
+                                    long o_center, long o_normal, long o_deg, unsigned n_deg, long o_len,
+                                    unsigned n_len)
 {
-    double start[3], end[3];
+    double end[3];
     int i;
-    if (kind != CBF__MOTION_POINT && v->pos_ok && cbf__vec_at(args, o_start, start)) {
+    if (kind != CBF__MOTION_POINT && v->pos_ok && xs && ok_s) {
         double d[3], dist;
         for (i = 0; i < 3; i++)
-            d[i] = start[i] - v->pos[i];
+            d[i] = (double)xs[i] - v->pos[i];
         dist = cbf__norm(d);
         if (dist > cbf__tol_position)
             cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + (size_t)o_start,
                       "%s starts %.6g mm from the current position (%.9g, %.9g, %.9g)",
                       cbf__commands[cmd].name, dist, v->pos[0], v->pos[1], v->pos[2]);
     }
-    if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE)
-        v->pos_ok = cbf__vec_at(args, o_end, end);
-    else
+    if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE) {
+        v->pos_ok = xe && ok_e;
+        if (v->pos_ok)
+            for (i = 0; i < 3; i++)
+                end[i] = (double)xe[i];
+    } else {
         v->pos_ok = cbf__arc_end(kind, args, o_start, o_center, o_normal, o_deg, n_deg, o_len, n_len, end);
+    }
     if (v->pos_ok)
         for (i = 0; i < 3; i++)
             v->pos[i] = end[i];
@@ -3617,13 +3629,18 @@ CBF__INLINE void cbf__continuity_at(cbf__vctx *v, int cmd, int kind, const uint8
 /* orientation_jump (D2): the angle atan2(|a x b|, a . b) between a path
  * command's start and the current orientation (the last set/end vector that
  * was finite and non-zero). atan2 runs only when the angle may exceed the
- * tolerance: below tan^2 of a thousandth less than it (ori_tan2), it cannot. */
-CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, const uint8_t *args, long rec, size_t args_off,
-                                     long o_start, long o_end)
+ * tolerance: below tan^2 of a thousandth less than it (ori_tan2), it cannot.
+ * xs, xe: the start and end vectors as decoded by the layout function (as in
+ * cbf__continuity_at). */
+CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, long rec, size_t args_off, const float *xs,
+                                     int ok_s, const float *xe, int ok_e)
 {
     double a[3], b[3];
     int i;
-    if (kind == CBF__ORIENT_PATH && v->ori_ok && cbf__vec_at(args, o_start, a) && cbf__norm(a) > 0.0) {
+    if (xs)
+        for (i = 0; i < 3; i++)
+            a[i] = (double)xs[i];
+    if (kind == CBF__ORIENT_PATH && v->ori_ok && xs && ok_s && cbf__norm(a) > 0.0) {
         double cx[3], dot, c2;
         cx[0] = a[1] * v->ori[2] - a[2] * v->ori[1];
         cx[1] = a[2] * v->ori[0] - a[0] * v->ori[2];
@@ -3637,7 +3654,13 @@ CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, const uint
                           cbf__commands[cmd].name, ang);
         }
     }
-    v->ori_ok = cbf__vec_at(args, o_end, b) && cbf__norm(b) > 0.0;
+    if (!xe || !ok_e) {
+        v->ori_ok = 0;
+        return;
+    }
+    for (i = 0; i < 3; i++)
+        b[i] = (double)xe[i];
+    v->ori_ok = cbf__norm(b) > 0.0;
     if (v->ori_ok)
         for (i = 0; i < 3; i++)
             v->ori[i] = b[i];
@@ -3733,24 +3756,21 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
 
 /* A check with targets on one float argument f of the record: positive,
  * nonzero_vector, range, nondecreasing (t: the target, for the previous value).
- * Nothing is said about a value that is not finite. */
-CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const uint8_t *args,
-                                long rec, size_t args_off)
+ * xf: its f->count elements as the layout function decoded them, finite: whether
+ * all are. Nothing is said about a value that is not finite. */
+CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                                int finite, long rec, size_t args_off)
 {
     const cbf__check *ch = &cbf__checks[ci];
-    double x = 0.0;
+    double x = (double)xf[0];
     unsigned i;
-    int any_le = 0, all_zero = 1, finite = 1;
-    for (i = 0; i < f->count; i++) { /* each element read once */
-        uint32_t u = cbf__get_u(args + f->offset + 4u * i, 4);
-        double y = (double)cbf__bits_f4(u);
-        finite &= cbf__bits_finite(u);
-        if (i == 0u) x = y;
-        if (y <= 0.0) any_le = 1;
-        if (y != 0.0) all_zero = 0;
-    }
+    int any_le = 0, all_zero = 1;
     if (!finite)
         return;
+    for (i = 0; i < f->count; i++) {
+        if (xf[i] <= 0.0f) any_le = 1;
+        if (xf[i] != 0.0f) all_zero = 0;
+    }
     switch (ch->kind) {
     case CBF__KIND_POSITIVE:
         if (any_le)
@@ -3879,24 +3899,19 @@ static void cbf__machine_start(cbf__vctx *v)
     }
 }
 
-/* Rule j of cbf__mrules on its argument at p (n floats): a finite value outside its limit is
- * one finding, naming the first component out; the generated validator calls it with the
- * rule's offset and count as constants. */
-static inline void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, const uint8_t *p, unsigned n,
-                                   long rec, size_t off)
+/* Rule j of cbf__mrules on an argument found outside its limit: one finding, naming the first
+ * component out, unless a value is not finite (the finite check's) or the positive check
+ * targets the argument and a value is <= 0 (that check's). Off the fast path: cold. */
+CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
+                                          int finite, long rec, size_t off)
 {
     const cbf__mrule *r = &cbf__mrules[j];
     const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
-    float x[CBF_MACHINE_MAX_AXES];
     unsigned i, out = n;
-    int finite = 1, le_zero = 0;
-    for (i = 0; i < n; i++) {
-        uint32_t u = cbf__get_u(p + 4u * i, 4);
-        finite &= cbf__bits_finite(u);
-        x[i] = cbf__bits_f4(u);
-        if (out == n && (x[i] < lo[i] || x[i] > hi[i]))
+    int le_zero = 0;
+    for (i = 0; i < n && out == n; i++)
+        if (x[i] < lo[i] || x[i] > hi[i])
             out = i;
-    }
     if (out == n)
         return; /* inside (a NaN compares false: the finite check's) */
     for (i = 0; i < n; i++)
@@ -3925,23 +3940,44 @@ static inline void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j
             v->fn(v->user, &fd);
     }
 }
+
+/* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
+ * function, finite: whether all are), called with j and n as constants: one branch-free
+ * test of the box or range, the exact finding only when a value is out. */
+CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n, int finite,
+                                 long rec, size_t off)
+{
+    const float *lo = v->mlo[cbf__mrules[j].limit], *hi = v->mhi[cbf__mrules[j].limit];
+    unsigned i;
+    int out = 0;
+    for (i = 0; i < n; i++)
+        out |= (x[i] < lo[i]) | (x[i] > hi[i]);
+    if (out)
+        cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
+}
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
- * targets (check order), the cutter table, continuity, orientation, shapes. */
+ * targets (check order), the cutter table, continuity, orientation, shapes.
+ * Each float argument is read once, into x<arg> (ok<arg>: all its elements are
+ * finite), and the checks share it. */
 /* CHECKPOINT: 32 argument bytes */
 static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const int cmd = 0; /* CHECKPOINT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 16, 3u, x1); /* recovery_point */
+    float x2[1];
+    const int ok2 = cbf__floats_at(a + 28, 1u, x2); /* completion */
     cbf__check_string(v, &cbf__args[0], a, ao, rec);
-    if (!cbf__finite_at(a + 16, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "recovery_point");
-    if (!cbf__finite_at(a + 28, 1u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s %s is not finite", cbf__commands[cmd].name, "completion");
-    cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_range: CHECKPOINT completion */
-    cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], a, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CHECKPOINT, 0u, a + 16, 3u, rec, ao + 16u); /* CHECKPOINT recovery_point: workspace */
+    cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_range: CHECKPOINT completion */
+    cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CHECKPOINT, 0u, x1, 3u, ok1, rec, ao + 16u); /* CHECKPOINT recovery_point: workspace */
 }
 
 /* CHECKPOINT_V1: 16 argument bytes */
@@ -3956,17 +3992,23 @@ static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, long rec, 
 {
     const int cmd = 1; /* CUTTER in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    float x1[1];
+    const int ok1 = cbf__floats_at(a + 16, 1u, x1); /* length */
+    float x2[1];
+    const int ok2 = cbf__floats_at(a + 20, 1u, x2); /* radius */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 24, 1u, x3); /* head_length */
     cbf__check_string(v, &cbf__args[4], a, ao, rec);
-    if (!cbf__finite_at(a + 16, 1u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
-    if (!cbf__finite_at(a + 20, 1u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
-    if (!cbf__finite_at(a + 24, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "head_length");
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 1u, a + 16, 1u, rec, ao + 16u); /* CUTTER length: cutter_length */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 2u, a + 20, 1u, rec, ao + 20u); /* CUTTER radius: cutter_radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 1u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER length: cutter_length */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 2u, x2, 1u, ok2, rec, ao + 20u); /* CUTTER radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER, a, rec, ao);
 }
 
@@ -3975,15 +4017,19 @@ static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a, long re
 {
     const int cmd = 1; /* CUTTER in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
+    float x1[1];
+    const int ok1 = cbf__floats_at(a + 16, 1u, x1); /* length */
+    float x2[1];
+    const int ok2 = cbf__floats_at(a + 20, 1u, x2); /* radius */
     cbf__check_string(v, &cbf__args[9], a, ao, rec);
-    if (!cbf__finite_at(a + 16, 1u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
-    if (!cbf__finite_at(a + 20, 1u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], a, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 3u, a + 16, 1u, rec, ao + 16u); /* CUTTER_V1 length: cutter_length */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 4u, a + 20, 1u, rec, ao + 20u); /* CUTTER_V1 radius: cutter_radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 3u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER_V1 length: cutter_length */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 4u, x2, 1u, ok2, rec, ao + 20u); /* CUTTER_V1 radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER_V1, a, rec, ao);
 }
 
@@ -3992,9 +4038,11 @@ static void cbf__layout_checks_orient(cbf__vctx *v, const uint8_t *a, long rec, 
 {
     const int cmd = 2; /* ORIENT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* approach */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "approach");
-    cbf__orientation_at(v, cmd, CBF__ORIENT_SET, a, rec, ao, -1, 0);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_SET, rec, ao, NULL, 0, x0, ok0);
 }
 
 /* ORIENT5B: 24 argument bytes */
@@ -4002,11 +4050,15 @@ static void cbf__layout_checks_orient5b(cbf__vctx *v, const uint8_t *a, long rec
 {
     const int cmd = 3; /* ORIENT5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_approach */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end_approach */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_approach");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_approach");
-    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 0, 12);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x0, ok0, x1, ok1);
 }
 
 /* PHASE: 16 argument bytes */
@@ -4060,10 +4112,12 @@ static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, long rec, s
 {
     const int cmd = 10; /* POINT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* point */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
-    cbf__machine_at(v, cmd, CBF_LAYOUT_POINT, 5u, a + 0, 3u, rec, ao + 0u); /* POINT point: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, -1, 0, -1, -1, -1, 0u, -1, 0u);
+    cbf__machine_at(v, cmd, CBF_LAYOUT_POINT, 5u, x0, 3u, ok0, rec, ao + 0u); /* POINT point: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, NULL, 0, x0, ok0, -1, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4072,13 +4126,17 @@ static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, long rec, si
 {
     const int cmd = 11; /* LINE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end");
-    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 6u, a + 0, 3u, rec, ao + 0u); /* LINE start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 7u, a + 12, 3u, rec, ao + 12u); /* LINE end: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 6u, x0, 3u, ok0, rec, ao + 0u); /* LINE start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 7u, x1, 3u, ok1, rec, ao + 12u); /* LINE end: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x1, ok1, 0, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4087,18 +4145,26 @@ static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, long rec, 
 {
     const int cmd = 12; /* LINE5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_pos */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end_pos */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* start_orient */
+    float x3[3];
+    const int ok3 = cbf__floats_at(a + 36, 3u, x3); /* end_orient */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
-    if (!cbf__finite_at(a + 36, 3u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 8u, a + 0, 3u, rec, ao + 0u); /* LINE5B start_pos: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 9u, a + 12, 3u, rec, ao + 12u); /* LINE5B end_pos: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 12, -1, -1, -1, 0u, -1, 0u);
-    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 24, 36);
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 8u, x0, 3u, ok0, rec, ao + 0u); /* LINE5B start_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 9u, x1, 3u, ok1, rec, ao + 12u); /* LINE5B end_pos: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x1, ok1, 0, -1, -1, -1, 0u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x2, ok2, x3, ok3);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4107,16 +4173,22 @@ static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long rec, siz
 {
     const int cmd = 13; /* ARC in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* middle */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* end */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "middle");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end");
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 10u, a + 0, 3u, rec, ao + 0u); /* ARC start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 11u, a + 12, 3u, rec, ao + 12u); /* ARC middle: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 12u, a + 24, 3u, rec, ao + 24u); /* ARC end: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 10u, x0, 3u, ok0, rec, ao + 0u); /* ARC start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 11u, x1, 3u, ok1, rec, ao + 12u); /* ARC middle: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 12u, x2, 3u, ok2, rec, ao + 24u); /* ARC end: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x2, ok2, 0, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4125,21 +4197,31 @@ static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, long rec, s
 {
     const int cmd = 14; /* ARC5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_pos */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* mid_pos */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* end_pos */
+    float x3[3];
+    const int ok3 = cbf__floats_at(a + 36, 3u, x3); /* start_orient */
+    float x4[3];
+    const int ok4 = cbf__floats_at(a + 48, 3u, x4); /* end_orient */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "mid_pos");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
-    if (!cbf__finite_at(a + 36, 3u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
-    if (!cbf__finite_at(a + 48, 3u))
+    if (!ok4)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 13u, a + 0, 3u, rec, ao + 0u); /* ARC5B start_pos: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 14u, a + 12, 3u, rec, ao + 12u); /* ARC5B mid_pos: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 15u, a + 24, 3u, rec, ao + 24u); /* ARC5B end_pos: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, 0, 24, -1, -1, -1, 0u, -1, 0u);
-    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 36, 48);
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 13u, x0, 3u, ok0, rec, ao + 0u); /* ARC5B start_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 14u, x1, 3u, ok1, rec, ao + 12u); /* ARC5B mid_pos: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 15u, x2, 3u, ok2, rec, ao + 24u); /* ARC5B end_pos: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x2, ok2, 0, -1, -1, -1, 0u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x3, ok3, x4, ok4);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4148,18 +4230,26 @@ static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, long rec, 
 {
     const int cmd = 15; /* CIRCLE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
-    if (!cbf__finite_at(a + 36, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
-    cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], a, rec, ao); /* normal_nonzero: CIRCLE normal */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 16u, a + 0, 3u, rec, ao + 0u); /* CIRCLE start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 17u, a + 12, 3u, rec, ao + 12u); /* CIRCLE center: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
+    cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE normal */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 16u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 17u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE center: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4168,23 +4258,35 @@ static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a, long rec
 {
     const int cmd = 16; /* CIRCLE5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    float x4[3];
+    const int ok4 = cbf__floats_at(a + 40, 3u, x4); /* start_orient */
+    float x5[3];
+    const int ok5 = cbf__floats_at(a + 52, 3u, x5); /* end_orient */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
-    if (!cbf__finite_at(a + 36, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
-    if (!cbf__finite_at(a + 40, 3u))
+    if (!ok4)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
-    if (!cbf__finite_at(a + 52, 3u))
+    if (!ok5)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], a, rec, ao); /* normal_nonzero: CIRCLE5B normal */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 18u, a + 0, 3u, rec, ao + 0u); /* CIRCLE5B start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 19u, a + 12, 3u, rec, ao + 12u); /* CIRCLE5B center: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, 0, -1, 12, 24, 36, 1u, -1, 0u);
-    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 40, 52);
+    cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE5B normal */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 18u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE5B start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 19u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE5B center: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, -1, 0u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x4, ok4, x5, ok5);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4193,20 +4295,30 @@ static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, long rec, s
 {
     const int cmd = 17; /* HELIX in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    float x4[1];
+    const int ok4 = cbf__floats_at(a + 40, 1u, x4); /* length */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
-    if (!cbf__finite_at(a + 36, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
-    if (!cbf__finite_at(a + 40, 1u))
+    if (!ok4)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
-    cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], a, rec, ao); /* normal_nonzero: HELIX normal */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 20u, a + 0, 3u, rec, ao + 0u); /* HELIX start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 21u, a + 12, 3u, rec, ao + 12u); /* HELIX center: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
+    cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], x2, ok2, rec, ao); /* normal_nonzero: HELIX normal */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 20u, x0, 3u, ok0, rec, ao + 0u); /* HELIX start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 21u, x1, 3u, ok1, rec, ao + 12u); /* HELIX center: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, 40, 1u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4215,25 +4327,39 @@ static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, long rec,
 {
     const int cmd = 18; /* HELIX5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 3u))
+    float x0[3];
+    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    float x1[3];
+    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    float x2[3];
+    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    float x4[1];
+    const int ok4 = cbf__floats_at(a + 40, 1u, x4); /* length */
+    float x5[3];
+    const int ok5 = cbf__floats_at(a + 44, 3u, x5); /* start_orient */
+    float x6[3];
+    const int ok6 = cbf__floats_at(a + 56, 3u, x6); /* end_orient */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
-    if (!cbf__finite_at(a + 12, 3u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
-    if (!cbf__finite_at(a + 24, 3u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
-    if (!cbf__finite_at(a + 36, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
-    if (!cbf__finite_at(a + 40, 1u))
+    if (!ok4)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
-    if (!cbf__finite_at(a + 44, 3u))
+    if (!ok5)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 44u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
-    if (!cbf__finite_at(a + 56, 3u))
+    if (!ok6)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], a, rec, ao); /* normal_nonzero: HELIX5B normal */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 22u, a + 0, 3u, rec, ao + 0u); /* HELIX5B start: workspace */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 23u, a + 12, 3u, rec, ao + 12u); /* HELIX5B center: workspace */
-    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, 0, -1, 12, 24, 36, 1u, 40, 1u);
-    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, a, rec, ao, 44, 56);
+    cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], x2, ok2, rec, ao); /* normal_nonzero: HELIX5B normal */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 22u, x0, 3u, ok0, rec, ao + 0u); /* HELIX5B start: workspace */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 23u, x1, 3u, ok1, rec, ao + 12u); /* HELIX5B center: workspace */
+    cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, 40, 1u);
+    cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x5, ok5, x6, ok6);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
 }
 
@@ -4242,10 +4368,12 @@ static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, long rec, s
 {
     const int cmd = 19; /* SPEED in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 1u))
+    float x0[1];
+    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* speed */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
-    cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], a, rec, ao); /* speed_positive: SPEED speed */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_SPEED, 24u, a + 0, 1u, rec, ao + 0u); /* SPEED speed: speed */
+    cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], x0, ok0, rec, ao); /* speed_positive: SPEED speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_SPEED, 24u, x0, 1u, ok0, rec, ao + 0u); /* SPEED speed: speed */
 }
 
 /* ACCEL: 8 argument bytes */
@@ -4253,14 +4381,18 @@ static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, long rec, s
 {
     const int cmd = 20; /* ACCEL in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 1u))
+    float x0[1];
+    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* accel */
+    float x1[1];
+    const int ok1 = cbf__floats_at(a + 4, 1u, x1); /* decel */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "accel");
-    if (!cbf__finite_at(a + 4, 1u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "decel");
-    cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], a, rec, ao); /* accel_positive: ACCEL accel decel */
-    cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], a, rec, ao); /* accel_positive: ACCEL accel decel */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 25u, a + 0, 1u, rec, ao + 0u); /* ACCEL accel: acceleration */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 26u, a + 4, 1u, rec, ao + 4u); /* ACCEL decel: acceleration */
+    cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], x0, ok0, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], x1, ok1, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 25u, x0, 1u, ok0, rec, ao + 0u); /* ACCEL accel: acceleration */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 26u, x1, 1u, ok1, rec, ao + 4u); /* ACCEL decel: acceleration */
 }
 
 /* CUTTER_ON: 0 argument bytes */
@@ -4289,18 +4421,26 @@ static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, long rec,
 {
     const int cmd = 24; /* FCPARMS in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    if (!cbf__finite_at(a + 0, 1u))
+    float x0[1];
+    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* nom_speed */
+    float x1[1];
+    const int ok1 = cbf__floats_at(a + 4, 1u, x1); /* max_speed */
+    float x2[1];
+    const int ok2 = cbf__floats_at(a + 8, 1u, x2); /* min_speed */
+    float x3[1];
+    const int ok3 = cbf__floats_at(a + 12, 1u, x3); /* max_force */
+    if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "nom_speed");
-    if (!cbf__finite_at(a + 4, 1u))
+    if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "max_speed");
-    if (!cbf__finite_at(a + 8, 1u))
+    if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 8u, "%s %s is not finite", cbf__commands[cmd].name, "min_speed");
-    if (!cbf__finite_at(a + 12, 1u))
+    if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "max_force");
     cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 27u, a + 0, 1u, rec, ao + 0u); /* FCPARMS nom_speed: speed */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 28u, a + 4, 1u, rec, ao + 4u); /* FCPARMS max_speed: speed */
-    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 29u, a + 8, 1u, rec, ao + 8u); /* FCPARMS min_speed: speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 27u, x0, 1u, ok0, rec, ao + 0u); /* FCPARMS nom_speed: speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 28u, x1, 1u, ok1, rec, ao + 4u); /* FCPARMS max_speed: speed */
+    cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 29u, x2, 1u, ok2, rec, ao + 8u); /* FCPARMS min_speed: speed */
 }
 
 /* VERSION: 32 argument bytes */

@@ -167,13 +167,21 @@ def _plan_layout(lay: dict[str, Any], cmd: dict[str, Any], checks: list[dict[str
         """(offset, element count) of a float argument, (-1, 0) when the role has none."""
         return (int(args[i]["offset"]), int(args[i]["count"])) if i >= 0 and args[i]["kind"] == "FLOAT" else (-1, 0)
 
+    def var(i: int) -> str:
+        """The generated local that holds a 3-element float argument, decoded once a record (NULL: none)."""
+        return f"x{i}" if vec(i) >= 0 else "NULL"
+
     m = dict(zip(MOTION_KEYS, lay["motion"], strict=True))
     o = dict(zip(ORIENT_KEYS, lay["orient"], strict=True))
     lay["plan"] = {
-        "values": [dict(a, row=lay["first_arg"] + i) for i, a in enumerate(args) if a["kind"] in ("FLOAT", "STRING")],
+        # each float argument is decoded once into x<arg> (finite flag ok<arg>) and shared by the checks
+        "values": [dict(a, row=lay["first_arg"] + i, arg=i) for i, a in enumerate(args)
+                   if a["kind"] in ("FLOAT", "STRING")],
         "motion": {"start": vec(m["start"]), "end": vec(m["end"]), "center": vec(m["center"]),
-                   "normal": vec(m["normal"]), "degrees": scalar(m["degrees"]), "length": scalar(m["length"])},
-        "orient": {"start": vec(o["start"]), "end": vec(o["end"])},
+                   "normal": vec(m["normal"]), "degrees": scalar(m["degrees"]), "length": scalar(m["length"]),
+                   "start_var": var(m["start"]), "end_var": var(m["end"])},
+        "orient": {"start": vec(o["start"]), "end": vec(o["end"]),
+                   "start_var": var(o["start"]), "end_var": var(o["end"])},
         "targets": [],
     }
     for ct in ctargets[cmd["first_ct"]:cmd["first_ct"] + cmd["n_ct"]]:
