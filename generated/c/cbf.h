@@ -3511,18 +3511,14 @@ static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[
 #define CBF__COLD
 #endif
 
-/* The n binary32 elements at p, decoded once a record into x (the generated
- * layout function shares them between the checks): 1 when all are finite. */
-CBF__INLINE int cbf__floats_at(const uint8_t *p, unsigned n, float *x)
+/* The binary32 element at p, decoded once a record into *x (the generated layout
+ * function reads each element of a float argument with it, one call an element,
+ * and shares the values between the checks): 1 when it is finite. */
+CBF__INLINE int cbf__float_at(const uint8_t *p, float *x)
 {
-    unsigned i;
-    int finite = 1;
-    for (i = 0; i < n; i++) {
-        uint32_t u = cbf__get_u(p + 4u * i, 4);
-        finite &= cbf__bits_finite(u);
-        x[i] = cbf__bits_f4(u);
-    }
-    return finite;
+    uint32_t u = cbf__get_u(p, 4);
+    *x = cbf__bits_f4(u);
+    return cbf__bits_finite(u);
 }
 
 /* The 3-element float argument at args + off as doubles: 1 when every element
@@ -3943,15 +3939,19 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
 
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
  * function, finite: whether all are), called with j and n as constants: one branch-free
- * test of the box or range, the exact finding only when a value is out. */
+ * test of the box or range (written out for each of the 3 axes, so that it
+ * folds to n pairs of compares), the exact finding only when a value is out. */
 CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n, int finite,
                                  long rec, size_t off)
 {
     const float *lo = v->mlo[cbf__mrules[j].limit], *hi = v->mhi[cbf__mrules[j].limit];
-    unsigned i;
     int out = 0;
-    for (i = 0; i < n; i++)
-        out |= (x[i] < lo[i]) | (x[i] > hi[i]);
+    if (n > 0u)
+        out |= (x[0] < lo[0]) | (x[0] > hi[0]);
+    if (n > 1u)
+        out |= (x[1] < lo[1]) | (x[1] > hi[1]);
+    if (n > 2u)
+        out |= (x[2] < lo[2]) | (x[2] > hi[2]);
     if (out)
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
@@ -3967,9 +3967,9 @@ static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long r
     const int cmd = 0; /* CHECKPOINT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 16, 3u, x1); /* recovery_point */
+    const int ok1 = cbf__float_at(a + 16, &x1[0]) & cbf__float_at(a + 20, &x1[1]) & cbf__float_at(a + 24, &x1[2]); /* recovery_point */
     float x2[1];
-    const int ok2 = cbf__floats_at(a + 28, 1u, x2); /* completion */
+    const int ok2 = cbf__float_at(a + 28, &x2[0]); /* completion */
     cbf__check_string(v, &cbf__args[0], a, ao, rec);
     if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "recovery_point");
@@ -3993,11 +3993,11 @@ static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, long rec, 
     const int cmd = 1; /* CUTTER in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x1[1];
-    const int ok1 = cbf__floats_at(a + 16, 1u, x1); /* length */
+    const int ok1 = cbf__float_at(a + 16, &x1[0]); /* length */
     float x2[1];
-    const int ok2 = cbf__floats_at(a + 20, 1u, x2); /* radius */
+    const int ok2 = cbf__float_at(a + 20, &x2[0]); /* radius */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 24, 1u, x3); /* head_length */
+    const int ok3 = cbf__float_at(a + 24, &x3[0]); /* head_length */
     cbf__check_string(v, &cbf__args[4], a, ao, rec);
     if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
@@ -4018,9 +4018,9 @@ static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a, long re
     const int cmd = 1; /* CUTTER in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x1[1];
-    const int ok1 = cbf__floats_at(a + 16, 1u, x1); /* length */
+    const int ok1 = cbf__float_at(a + 16, &x1[0]); /* length */
     float x2[1];
-    const int ok2 = cbf__floats_at(a + 20, 1u, x2); /* radius */
+    const int ok2 = cbf__float_at(a + 20, &x2[0]); /* radius */
     cbf__check_string(v, &cbf__args[9], a, ao, rec);
     if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
@@ -4039,7 +4039,7 @@ static void cbf__layout_checks_orient(cbf__vctx *v, const uint8_t *a, long rec, 
     const int cmd = 2; /* ORIENT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* approach */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* approach */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "approach");
     cbf__orientation_at(v, cmd, CBF__ORIENT_SET, rec, ao, NULL, 0, x0, ok0);
@@ -4051,9 +4051,9 @@ static void cbf__layout_checks_orient5b(cbf__vctx *v, const uint8_t *a, long rec
     const int cmd = 3; /* ORIENT5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_approach */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start_approach */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end_approach */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* end_approach */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_approach");
     if (!ok1)
@@ -4113,7 +4113,7 @@ static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, long rec, s
     const int cmd = 10; /* POINT in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* point */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* point */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
     cbf__machine_at(v, cmd, CBF_LAYOUT_POINT, 5u, x0, 3u, ok0, rec, ao + 0u); /* POINT point: workspace */
@@ -4127,9 +4127,9 @@ static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, long rec, si
     const int cmd = 11; /* LINE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* end */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4146,13 +4146,13 @@ static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, long rec, 
     const int cmd = 12; /* LINE5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_pos */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start_pos */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* end_pos */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* end_pos */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* start_orient */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* start_orient */
     float x3[3];
-    const int ok3 = cbf__floats_at(a + 36, 3u, x3); /* end_orient */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]) & cbf__float_at(a + 40, &x3[1]) & cbf__float_at(a + 44, &x3[2]); /* end_orient */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
     if (!ok1)
@@ -4174,11 +4174,11 @@ static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long rec, siz
     const int cmd = 13; /* ARC in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* middle */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* middle */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* end */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* end */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4198,15 +4198,15 @@ static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, long rec, s
     const int cmd = 14; /* ARC5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start_pos */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start_pos */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* mid_pos */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* mid_pos */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* end_pos */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* end_pos */
     float x3[3];
-    const int ok3 = cbf__floats_at(a + 36, 3u, x3); /* start_orient */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]) & cbf__float_at(a + 40, &x3[1]) & cbf__float_at(a + 44, &x3[2]); /* start_orient */
     float x4[3];
-    const int ok4 = cbf__floats_at(a + 48, 3u, x4); /* end_orient */
+    const int ok4 = cbf__float_at(a + 48, &x4[0]) & cbf__float_at(a + 52, &x4[1]) & cbf__float_at(a + 56, &x4[2]); /* end_orient */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
     if (!ok1)
@@ -4231,13 +4231,13 @@ static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, long rec, 
     const int cmd = 15; /* CIRCLE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* center */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* normal */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]); /* ndegrees */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4259,17 +4259,17 @@ static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a, long rec
     const int cmd = 16; /* CIRCLE5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* center */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* normal */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]); /* ndegrees */
     float x4[3];
-    const int ok4 = cbf__floats_at(a + 40, 3u, x4); /* start_orient */
+    const int ok4 = cbf__float_at(a + 40, &x4[0]) & cbf__float_at(a + 44, &x4[1]) & cbf__float_at(a + 48, &x4[2]); /* start_orient */
     float x5[3];
-    const int ok5 = cbf__floats_at(a + 52, 3u, x5); /* end_orient */
+    const int ok5 = cbf__float_at(a + 52, &x5[0]) & cbf__float_at(a + 56, &x5[1]) & cbf__float_at(a + 60, &x5[2]); /* end_orient */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4296,15 +4296,15 @@ static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, long rec, s
     const int cmd = 17; /* HELIX in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* center */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* normal */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]); /* ndegrees */
     float x4[1];
-    const int ok4 = cbf__floats_at(a + 40, 1u, x4); /* length */
+    const int ok4 = cbf__float_at(a + 40, &x4[0]); /* length */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4328,19 +4328,19 @@ static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, long rec,
     const int cmd = 18; /* HELIX5B in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[3];
-    const int ok0 = cbf__floats_at(a + 0, 3u, x0); /* start */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* start */
     float x1[3];
-    const int ok1 = cbf__floats_at(a + 12, 3u, x1); /* center */
+    const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* center */
     float x2[3];
-    const int ok2 = cbf__floats_at(a + 24, 3u, x2); /* normal */
+    const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* normal */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 36, 1u, x3); /* ndegrees */
+    const int ok3 = cbf__float_at(a + 36, &x3[0]); /* ndegrees */
     float x4[1];
-    const int ok4 = cbf__floats_at(a + 40, 1u, x4); /* length */
+    const int ok4 = cbf__float_at(a + 40, &x4[0]); /* length */
     float x5[3];
-    const int ok5 = cbf__floats_at(a + 44, 3u, x5); /* start_orient */
+    const int ok5 = cbf__float_at(a + 44, &x5[0]) & cbf__float_at(a + 48, &x5[1]) & cbf__float_at(a + 52, &x5[2]); /* start_orient */
     float x6[3];
-    const int ok6 = cbf__floats_at(a + 56, 3u, x6); /* end_orient */
+    const int ok6 = cbf__float_at(a + 56, &x6[0]) & cbf__float_at(a + 60, &x6[1]) & cbf__float_at(a + 64, &x6[2]); /* end_orient */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
@@ -4369,7 +4369,7 @@ static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, long rec, s
     const int cmd = 19; /* SPEED in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[1];
-    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* speed */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]); /* speed */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
     cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], x0, ok0, rec, ao); /* speed_positive: SPEED speed */
@@ -4382,9 +4382,9 @@ static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, long rec, s
     const int cmd = 20; /* ACCEL in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[1];
-    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* accel */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]); /* accel */
     float x1[1];
-    const int ok1 = cbf__floats_at(a + 4, 1u, x1); /* decel */
+    const int ok1 = cbf__float_at(a + 4, &x1[0]); /* decel */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "accel");
     if (!ok1)
@@ -4422,13 +4422,13 @@ static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, long rec,
     const int cmd = 24; /* FCPARMS in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
     float x0[1];
-    const int ok0 = cbf__floats_at(a + 0, 1u, x0); /* nom_speed */
+    const int ok0 = cbf__float_at(a + 0, &x0[0]); /* nom_speed */
     float x1[1];
-    const int ok1 = cbf__floats_at(a + 4, 1u, x1); /* max_speed */
+    const int ok1 = cbf__float_at(a + 4, &x1[0]); /* max_speed */
     float x2[1];
-    const int ok2 = cbf__floats_at(a + 8, 1u, x2); /* min_speed */
+    const int ok2 = cbf__float_at(a + 8, &x2[0]); /* min_speed */
     float x3[1];
-    const int ok3 = cbf__floats_at(a + 12, 1u, x3); /* max_force */
+    const int ok3 = cbf__float_at(a + 12, &x3[0]); /* max_force */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "nom_speed");
     if (!ok1)
@@ -4516,6 +4516,12 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
         uint64_t x;
         memcpy(&x, p + i, sizeof x);
         lanes += (x & lo) + ((x >> 8) & lo);
+    }
+    if (n - i >= 4u) { /* a 4-byte rest (a float argument) in the low lanes, not byte by byte */
+        uint32_t x;
+        memcpy(&x, p + i, sizeof x);
+        lanes += (uint64_t)((x & 0x00FF00FFu) + ((x >> 8) & 0x00FF00FFu));
+        i += 4u;
     }
     lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
     acc = (uint32_t)(lanes & 0xFFFFFFFFull) + (uint32_t)(lanes >> 32);
