@@ -120,15 +120,13 @@ def _uint(cols: NDArray[np.uint8], f: T.FieldInfo) -> NDArray[Any]:
 
 
 def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDArray[np.uint8]:
-    """Bytes a[s:s+width] for each start: rows of a sliding-window view (no index matrix)."""
+    """Bytes a[s:s+width] for each start, as rows. The file is viewed as overlapping items of
+    ``width`` bytes (one at each offset, no copy), so the gather copies one item a row: about
+    ten times faster than an index matrix or a sliding-window view on rows of a few bytes."""
     if width == 0 or starts.shape[0] == 0:
         return np.empty((starts.shape[0], width), dtype=np.uint8)
-    if starts.shape[0] * width <= _SMALL_GATHER:  # a small index matrix costs less than making the view
-        return a[starts[:, None] + np.arange(width)]
-    return np.lib.stride_tricks.sliding_window_view(a, width)[starts]
-
-
-_SMALL_GATHER = 1 << 16  # bytes gathered with an index matrix (8 bytes an index: 512 KiB at most)
+    items = np.ndarray((a.shape[0] - width + 1,), dtype=np.dtype((np.void, width)), buffer=a, strides=(1,))
+    return items[starts].view(np.uint8).reshape(starts.shape[0], width)
 
 
 _DTYPES: dict[int, np.dtype[Any]] = {}
@@ -262,6 +260,12 @@ def _plain_arg_sum() -> bool:
                 == [{"region": "args", "start": None, "end": None, "exclude": []}])
 
 
+def _row_sums(rows: NDArray[np.uint8]) -> NDArray[Any]:
+    """The byte sum of each row (exact: int32 holds 255 x any argument size). einsum's loop is
+    about three times faster than numpy's row reduction on rows of a few bytes."""
+    return np.einsum("ij->i", rows.astype(np.int32))
+
+
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
     """The sums of the records of a layout, from the argument bytes the batch gathered."""
     if not _plain_arg_sum():
@@ -271,7 +275,7 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
         held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=np.int64), np.zeros(len(r.off), dtype=bool))
     sums, done = held
     if b.lay.size:
-        sums[b.rows] = b.bytes_.sum(axis=1, dtype=np.int64)
+        sums[b.rows] = _row_sums(b.bytes_)
     done[b.rows] = True
 
 
@@ -289,7 +293,7 @@ def _arg_checksum(r: Records, check: Check) -> None:
             for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
                 if size:
                     rows = left[nbl == size]
-                    sums[rows] = _gather(a, off[rows] + hs, size).sum(axis=1, dtype=np.int64)
+                    sums[rows] = _row_sums(_gather(a, off[rows] + hs, size))
         want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
         del sums, done
     else:
