@@ -274,8 +274,9 @@ def _code_copy(r: Records, check: Check) -> None:
           lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
 
 
+@lru_cache(maxsize=1)
 def _plain_arg_sum() -> bool:
-    """The argument checksum is a plain byte sum of the arguments alone."""
+    """The argument checksum is a plain byte sum of the arguments alone (asked once a batch)."""
     spec = T.CHECKSUMS["fields"]["args"]
     return bool(T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]]
                 == [{"region": "args", "start": None, "end": None, "exclude": []}])
