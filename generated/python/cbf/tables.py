@@ -229,8 +229,19 @@ BY_NAME = {c.name: c for c in COMMANDS}
 CHECKS: tuple[dict[str, Any], ...] = tuple(SPEC["checks"])
 
 
+def _checks_by_kind() -> dict[str, tuple[dict[str, Any], ...]]:
+    out: dict[str, tuple[dict[str, Any], ...]] = {}
+    for c in CHECKS:
+        out[c["kind"]] = (*out.get(c["kind"], ()), c)
+    return out
+
+
+_CHECKS_BY_KIND = _checks_by_kind()
+
+
 def checks_of(kind: str) -> tuple[dict[str, Any], ...]:
-    return tuple(c for c in CHECKS if c["kind"] == kind)
+    """The spec's checks of a kind, in spec order (a look-up: validation asks for every kind)."""
+    return _CHECKS_BY_KIND.get(kind, ())
 
 
 PROFILES: dict[str, dict[str, Any]] = SPEC["profiles"]

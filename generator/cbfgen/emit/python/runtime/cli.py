@@ -19,10 +19,8 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import secrets
 import stat
 import sys
-import tempfile
 from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
@@ -175,6 +173,8 @@ def _write_all(fd: int, data: bytes, sync: bool = True) -> None:
 
 
 def _temp_name(target: Path) -> Path:
+    import secrets  # here, not at the top: a command that writes nothing starts faster without it
+
     return target.parent / f".{target.name}.{secrets.token_hex(6)}.tmp"
 
 
@@ -219,6 +219,8 @@ def _write_unnamed(target: Path, data: bytes, mode: int) -> bool:
 
 
 def _write_named(target: Path, data: bytes, mode: int) -> None:
+    import tempfile  # here, not at the top (with shutil, random): a command that writes nothing starts faster
+
     fd, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
     try:
         os.fchmod(fd, mode)  # mkstemp makes 0600
