@@ -51,8 +51,10 @@ check-spec: venv  ## load and check spec/cbf.yaml only
 
 # cbfgen runs when what it reads changed: the spec, the generator, conformance/ (golden cases, the
 # reports the docs show) or a file of generated/ itself (a hand edit is overwritten, as always).
-# A deleted file of generated/ makes it run too.
-GENERATED_TRACKED := $(shell git ls-files generated 2>/dev/null)
+# A deleted file of generated/ makes it run too. Outside a git checkout (the revision drill's
+# copy of the tree) the files of generated/ that are there stand for the tracked ones.
+GENERATED_TRACKED := $(shell git ls-files generated 2>/dev/null || find generated -type f -not -path '*/__pycache__/*' \
+  -not -path 'generated/docs/site/*' -not -path 'generated/kaitai/java/target/*' 2>/dev/null)
 GENERATE_INPUTS = $(shell find spec generator conformance -type f -not -path '*/__pycache__/*' \
   -not -name '*.tmp' 2>/dev/null) $(wildcard $(GENERATED_TRACKED))
 GENERATE_FORCE = $(if $(filter-out $(wildcard $(GENERATED_TRACKED)),$(GENERATED_TRACKED)),FORCE)
