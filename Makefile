@@ -92,13 +92,18 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 test-py: venv
 	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile --junitxml=build/test-results/pytest.xml
 
-# `make test`: generated/ is checked first; then what the checks run is built, once (the testees,
-# cbf-c, Chromium: TEST_BUILD); then the checks run TEST_JOBS at a time (one per core), each one's
-# output printed whole (--output-sync). They only read the tree and write their own build/ folders
-# and temporary folders. The longest (pytest, the revision drill) start first.
+# `make test`: the toolchains first (setup, alone: apt-get takes one lock); then, TEST_JOBS at a
+# time (one per core), .venv and `generate check-generated` alongside the builds of what the checks
+# run (the testees, cbf-c, Chromium: TEST_BUILD), which read only committed files of generated/
+# (cbfgen and ksc replace a file atomically and only when its content changed; when one changes,
+# check-generated fails and so does `make test`). On a fresh clone the pip install of .venv takes
+# over a minute of one core: the builds fill the other. Then the checks run TEST_JOBS at a time,
+# each one's output printed whole (--output-sync). They only read the tree and write their own
+# build/ folders and temporary folders. The longest (pytest, the revision drill) start first.
 TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
-test: generate check-generated  ## the full test suite (what CI runs)
-	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse $(CONFORMANCE_BUILD) $(TEST_BUILD)
+test:  ## the full test suite (what CI runs)
+	@$(MAKE) setup
+	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse check-generated $(CONFORMANCE_BUILD) $(TEST_BUILD)
 	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse test-py $(filter revision-drill-quick,$(TEST_DEPS)) \
 	  $(filter-out revision-drill-quick,$(TEST_DEPS)) conformance lint
 	@$(MAKE) check-report

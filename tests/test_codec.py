@@ -80,7 +80,7 @@ def test_keep_stored_reproduces_every_well_framed_mutation() -> None:
     assert checked > 100
 
 
-@settings(max_examples=300, deadline=None)
+@settings(deadline=None)  # examples: the profile (tests/conftest.py)
 @given(st.binary(max_size=2000))
 def test_decoder_and_validator_are_total(data: bytes) -> None:
     try:
@@ -91,7 +91,7 @@ def test_decoder_and_validator_are_total(data: bytes) -> None:
     assert all(f.severity in ("error", "warning") for f in found)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(deadline=None)  # examples: the profile (tests/conftest.py)
 @given(st.binary(min_size=0, max_size=600))
 def test_header_plus_random_records_are_total(tail: bytes) -> None:
     head = (GOLDEN / "valid.v3.small.cbf").read_bytes()[:128]

@@ -63,7 +63,7 @@ def test_frame_ahead_is_used_and_frames_a_valid_big_file(monkeypatch: pytest.Mon
     assert calls and end == len(data) and len(offsets) > 1000
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])  # examples: the profile
 @given(st.one_of(mutations(), cutfiles(max_records=40), st.binary(max_size=2000)))
 def test_frame_ahead_agrees_with_the_loop_on_generated_files(data: bytes) -> None:
     with pytest.MonkeyPatch.context() as mp:

@@ -258,7 +258,7 @@ def _testee(binding: str, gen: Path, tmp_path: Path) -> list[str]:
     if cc is None:
         return []
     exe = tmp_path / "testee"
-    subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
+    subprocess.run([cc, "-std=c99", "-O0", "-o", str(exe), str(gen / "c" / "cbf_testee.c"), "-lm"], check=True,
                    capture_output=True)
     return [str(exe)]
 

@@ -98,6 +98,14 @@ def test_valid_bases_are_the_error_free_golden_files() -> None:
         assert not [f for f in doc["validate"][b.profile] if f[1] == "error"], b
 
 
+def test_distinct_bases_drop_only_repeated_bytes() -> None:
+    """--quick mutates each file once: the distinct bases hold the same bytes (and profiles) as all
+    of them, each once."""
+    every, distinct = valid_bases(700), valid_bases(700, distinct=True)
+    assert {(b.data, b.profile) for b in distinct} == {(b.data, b.profile) for b in every}
+    assert len({(b.data, b.profile) for b in distinct}) == len(distinct)
+
+
 OK = {"ok": True, "result": {"header": {}, "records": [], "trailing": ""}}
 KINDS = {"6.4.2": "code_copy", "6.2.1": "file_checksum"}
 

@@ -125,9 +125,10 @@ class Base:
     profile: str
 
 
-def valid_bases(max_size: int | None = None) -> list[Base]:
-    """The golden files that validate with no error, each under the first profile its expectation accepts."""
-    out = []
+def valid_bases(max_size: int | None = None, distinct: bool = False) -> list[Base]:
+    """The golden files that validate with no error, each under the first profile its expectation accepts;
+    ``distinct``: the first of the files with the same bytes and profile only (their mutants are the same)."""
+    out: list[Base] = []
     for exp in sorted(GOLDEN.glob("*.expect.yaml")):
         name = exp.name[: -len(".expect.yaml")]
         doc = yaml.safe_load(exp.read_text(encoding="utf-8"))
@@ -139,7 +140,8 @@ def valid_bases(max_size: int | None = None) -> list[Base]:
             continue
         for profile, findings in (doc.get("validate") or {}).items():
             if not any(f[1] == "error" for f in (findings or [])):
-                out.append(Base(name, data, profile))
+                if not (distinct and any(b.data == data and b.profile == profile for b in out)):
+                    out.append(Base(name, data, profile))
                 break
     return out
 
@@ -184,8 +186,11 @@ def detection(pool: Pool, bases: list[Base], scratch: Scratch, samples: dict[str
 
 # -- 2. blind spots -------------------------------------------------------------------------
 def blind_spots(pool: Pool, bases: list[Base], profile: str, scratch: Scratch, framing: Framing,
-                pairs: int, seed: int) -> dict[str, Any]:
+                pairs: int, seed: int, share: float = 1.0) -> dict[str, Any]:
+    """Each blind-spot class over every base; ``share`` < 1 keeps that share of the mutants, drawn
+    with a seeded generator of its own (the same ones every run)."""
     rng = random.Random(seed)
+    keep = random.Random(seed + 1)
     gens: tuple[tuple[str, Callable[[bytes], Iterable[Mutant]]], ...] = (
         ("transposition", transpositions),
         ("record_swap", lambda d: record_swaps(d, framing)),
@@ -194,7 +199,10 @@ def blind_spots(pool: Pool, bases: list[Base], profile: str, scratch: Scratch, f
     for cls, gen in gens:
         row = result.setdefault(cls, {"trials": 0, "detected": 0})
         for base in bases:
-            for batch in batched(gen(base.data)):
+            mutants = gen(base.data)
+            if share < 1.0:
+                mutants = (m for m in mutants if keep.random() < share)
+            for batch in batched(mutants):
                 paths = scratch.write([m.data for m in batch])
                 answers = pool.many([{"op": "validate", "file": p, "profile": profile} for p in paths])
                 row["trials"] += len(batch)
