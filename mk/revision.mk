@@ -8,12 +8,15 @@
 #                             copy of the tree, then `cbfgen diff` (the classification the
 #                             fixture states), `make generate`, `make golden`,
 #                             `make conformance` (every binding) and the whole pytest suite.
-#   revision-drill-quick      the same with the subset of tests/revisions/drill.py: conformance
+#   revision-drill-quick      the same with the subset of tests/revisions/drill.py: the fixtures
+#                             whose kind no in-tree test makes (IN_TREE: a new command is made
+#                             by tests/test_new_command.py, another checksum algorithm by
+#                             tests/test_golden_checksums.py, both in `make test`), conformance
 #                             of QUICK_BINDINGS (python, c, kaitai-javascript: the two runtimes
 #                             that implement the checks and one Kaitai parser) and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI).
-# `make test` runs revision-drill-quick, two fixtures at once (DRILL_JOBS): 77-97 s on an idle
+# `make test` runs revision-drill-quick, its two fixtures at once (DRILL_JOBS). Before IN_TREE: 77-97 s on an idle
 # 2-core machine. Measured serially on the shared machine (load 6-9):
 # the quick drill takes 205-267 s for the four fixtures (150-160 s of CPU): per fixture,
 # copy 1-2 s, generate 6-9 s, golden 3-5 s, C testee 9-10 s, conformance 14-20 s, tests

@@ -32,6 +32,20 @@ def test_four_kinds_of_revision_are_drilled() -> None:
             ("profile_checksum_algorithm_changed", True)} <= kinds
 
 
+def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
+    """`make test` makes every fixture's kind of revision: in the quick drill, or in the in-tree
+    test IN_TREE names, which revises a copy of the spec the same way (a new command, another
+    checksum algorithm) and runs generation and the bindings on it."""
+    names = {drill.load_fixture(p).name for p in FIXTURES}
+    assert set(drill.IN_TREE) < names, "IN_TREE names a fixture that does not exist, or every fixture"
+    kinds = {"new_command": "command_added", "checksum_profile": "profile_checksum_algorithm_changed"}
+    for name, test in drill.IN_TREE.items():
+        fx = drill.load_fixture(drill.HERE / f"{name}.yaml")
+        assert kinds[name] in {w["kind"] for w in fx.expect}, name
+        text = (REPO / test).read_text(encoding="utf-8")
+        assert "generate(" in text or "cbfgen" in text, f"{test} does not generate from a revised spec"
+
+
 @pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
 def test_cbfgen_diff_classifies_the_fixture(path: Path, tmp_path: Path) -> None:
     fx = drill.load_fixture(path)
