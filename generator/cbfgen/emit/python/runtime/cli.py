@@ -398,8 +398,6 @@ def _json_finding(d: dict[str, Any]) -> str:
 
 
 def cmd_validate(a: argparse.Namespace) -> int:
-    from .validation import iter_findings
-
     data = _read(a.file, _max_file_size())
     _refuse_not_cbf(a.file, data)
     cutters = None
@@ -419,6 +417,10 @@ def cmd_validate(a: argparse.Namespace) -> int:
             machine = load_machine(a.machine)
         except MachineError as exc:
             raise _Fail(exc.message) from None  # names the file and the JSON path already
+    # The engine (and numpy) is imported once every input has been read and checked: a refused
+    # file, cutter table or machine file costs no more than the refusal.
+    from .validation import iter_findings
+
     # Findings are printed as they are made, never all held: a file can give millions.
     findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters, machine=machine)
     errors = total = 0
