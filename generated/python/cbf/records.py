@@ -882,15 +882,19 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
                 cutters, machine if machine is not None else DEFAULT_MACHINE)
     r.head.update(_head(r.a, r.off))
     active = _active(cutters is not None)
-    for check, kernel in active:
-        if kernel.every is not None:
-            kernel.every(r, check)
-    for b in _batches(r):
-        for check, fn in _plan(cutters is not None, b.lay):
-            fn(r, check, b)
-    for check, kernel in active:
-        if kernel.end is not None:
-            kernel.end(r, check)
+    # The kernels meet NaNs (signalling ones too), infinities and huge values on purpose: the
+    # checks report them as findings. numpy's floating-point warnings (an invalid cast, an
+    # overflow) would only be noise on stderr, never a finding: they are off while the kernels run.
+    with np.errstate(all="ignore"):
+        for check, kernel in active:
+            if kernel.every is not None:
+                kernel.every(r, check)
+        for b in _batches(r):
+            for check, fn in _plan(cutters is not None, b.lay):
+                fn(r, check, b)
+        for check, kernel in active:
+            if kernel.end is not None:
+                kernel.end(r, check)
     r.pending.sort(key=finding_order)
     return iter(heapq.merge(iter(r.pending), *r.groups, key=finding_order))
 
