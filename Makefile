@@ -78,6 +78,15 @@ check-generated: generate  ## fail when generated/ differs from what the spec gi
 	  echo "generated/ is stale: run 'make generate' and commit the result" >&2; exit 1; fi
 	@echo "generated/ is fresh"
 
+# Bytecode of this checkout's Python, compiled once beside the sources (__pycache__/, ignored by git).
+# PYTHONDONTWRITEBYTECODE (above, and set by the CI environment) stops Python writing it, so without this
+# every Python process `make test` starts (CLI calls, testees, tools, revised trees) compiles cbf, cbfgen
+# and the runner again: about 0.1 CPU s a process. A .pyc whose source changed later is ignored.
+BYTECODE_DIRS = generator generated/python generated/kaitai/python conformance tests $(wildcard bench)
+.PHONY: bytecode
+bytecode: generate
+	@$(PY) -m compileall -q -j0 $(BYTECODE_DIRS) >/dev/null
+
 # -- quality ------------------------------------------------------------------
 MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability conformance/kit.py bench/bench.py)
 LINT_INPUTS = $(shell find generator conformance tests generated/python bench -name '*.py' -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
@@ -104,6 +113,7 @@ TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 test:  ## the full test suite (what CI runs)
 	@$(MAKE) setup
 	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse check-generated $(CONFORMANCE_BUILD) $(TEST_BUILD)
+	@$(MAKE) bytecode
 	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse test-py $(filter revision-drill-quick,$(TEST_DEPS)) \
 	  $(filter-out revision-drill-quick,$(TEST_DEPS)) conformance lint
 	@$(MAKE) check-report
