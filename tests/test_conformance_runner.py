@@ -2,16 +2,18 @@
 
 from __future__ import annotations
 
+import importlib.util
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
 
 from conformance.runner.compare import f32_bits, findings_difference, first_difference
-from conformance.runner.run import read_failures, write_failures
+from conformance.runner.run import load_cases, read_failures, run_case, write_failures
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -127,3 +129,32 @@ def test_a_finding_at_the_record_start_turns_the_run_red(tmp_path: Path) -> None
     assert res.returncode == 1, res.stdout
     assert "python: check.6.4.2.code_copy: FAIL validate: [default] missing" in res.stdout
     assert "@offset" in res.stdout
+
+
+def test_encode_sends_back_what_the_decode_step_got() -> None:
+    """The encode step re-encodes the decode step's answer instead of asking for a second decode
+    (which cost a second decode of every file)."""
+    path = REPO / "conformance" / "testees" / "python" / "testee.py"
+    loader = importlib.util.spec_from_file_location("py_testee", path)
+    assert loader is not None and loader.loader is not None
+    testee = importlib.util.module_from_spec(loader)
+    loader.loader.exec_module(testee)
+
+    class Recorder:
+        def __init__(self) -> None:
+            self.asked: list[dict[str, Any]] = []
+
+        def ask(self, request: dict[str, Any]) -> dict[str, Any]:
+            self.asked.append(request)
+            answer: dict[str, Any] = testee.handle(request)
+            return answer
+
+    golden = REPO / "conformance" / "golden"
+    cases = [c for c in load_cases(golden) if c.expect.get("encode") and c.cbf.stat().st_size < 4096]
+    with_decode = next(c for c in cases if c.expect.get("decode") is not None)
+    rec = Recorder()
+    assert run_case(rec, with_decode) == ("pass", "")  # type: ignore[arg-type]
+    ops = [r["op"] for r in rec.asked]
+    assert ops.count("decode") == 1 and "encode" in ops
+    decoded = testee.handle({"op": "decode", "file": str(with_decode.cbf)})["result"]
+    assert all(r["json"] == decoded for r in rec.asked if r["op"] == "encode")
