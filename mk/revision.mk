@@ -13,7 +13,8 @@
 #                             by tests/test_new_command.py, another checksum algorithm by
 #                             tests/test_golden_checksums.py, both in `make test`), conformance
 #                             of QUICK_BINDINGS (python, c, kaitai-javascript: the two runtimes
-#                             that implement the checks and one Kaitai parser) and the pytest
+#                             that implement the checks and one Kaitai parser) on the golden
+#                             files up to QUICK_MAX_BYTES (not the 65,535-record case) and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI).
 # `make test` runs revision-drill-quick, its two fixtures at once (DRILL_JOBS). Before IN_TREE: 77-97 s on an idle

@@ -46,6 +46,19 @@ def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
         assert "generate(" in text or "cbfgen" in text, f"{test} does not generate from a revised spec"
 
 
+def test_the_quick_drill_leaves_out_only_the_large_golden_files() -> None:
+    """The quick drill's conformance runs every golden case but the files over QUICK_MAX_BYTES (which the main
+    tree's conformance runs): each case is named whole, and a threshold that drops small files fails here."""
+    golden = REPO / "conformance" / "golden"
+    every = sorted(p.name[: -len(".expect.yaml")] for p in golden.glob("*.expect.yaml"))
+    chosen = drill.quick_cases(REPO)
+    left_out = set(every) - set(chosen)
+    assert set(chosen) <= set(every) and left_out, "the quick drill runs the large files or names unknown cases"
+    assert all((golden / f"{n}.cbf").stat().st_size > drill.QUICK_MAX_BYTES for n in left_out)
+    assert all((golden / f"{n}.cbf").stat().st_size <= drill.QUICK_MAX_BYTES for n in chosen)
+    assert len(left_out) <= len(every) // 20, f"the quick drill leaves out {len(left_out)} of {len(every)} cases"
+
+
 @pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
 def test_cbfgen_diff_classifies_the_fixture(path: Path, tmp_path: Path) -> None:
     fx = drill.load_fixture(path)
