@@ -149,3 +149,11 @@ def test_memory_stays_bounded_on_the_biggest_file_and_on_lying_counts() -> None:
         assert any(f.as_dict()["check"] == "6.2.2" for f in found)
     finally:
         tracemalloc.stop()
+
+
+def test_the_report_names_an_out_path_outside_the_repository(tmp_path: Path) -> None:
+    """--out outside the checkout is named whole (it raised ValueError, a traceback, after the whole run)."""
+    from conformance.reliability.__main__ import shown
+
+    assert shown(tmp_path / "r.json") == str((tmp_path / "r.json").resolve())
+    assert shown(REPO / "build" / "reliability" / "r.json") == str(Path("build") / "reliability" / "r.json")

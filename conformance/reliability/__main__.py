@@ -55,6 +55,12 @@ REGRESSIONS = ROOT / "regressions"
 QUICK_PYTHON_SHARE = 0.1
 
 
+def shown(path: Path) -> str:
+    """path as the report names it: relative to the repository when inside it (--out may be anywhere)."""
+    full = path.resolve()
+    return str(full.relative_to(REPO) if full.is_relative_to(REPO) else full)
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="conformance.reliability")
     ap.add_argument("--quick", action="store_true", help="the CI subset")
@@ -144,7 +150,7 @@ def main(argv: list[str] | None = None) -> int:
     os.replace(tmp, out_path)
     for line in problems[:100]:
         print(line)
-    print(f"reliability: {len(problems)} problem(s); results in {out_path.relative_to(REPO)}")
+    print(f"reliability: {len(problems)} problem(s); results in {shown(out_path)}")
     return 1 if problems else 0
 
 
