@@ -13,6 +13,7 @@ from conftest import generate, spec_with_fixture_command
 SCRIPT = r"""
 import struct, sys
 import cbf
+from cbf import tables as T
 from cbf.layouts import CommandCode, Dwell, Point
 from cbf.model import Cbf, Record, new_header
 
@@ -20,8 +21,12 @@ assert CommandCode.DWELL == 0x44
 model = Cbf(new_header("3.0", implant_descriptor="PN-1"),
             (Record.of(Point(point=(0.0, 0.0, 0.0))), Record.of(Dwell(seconds=1.5))))
 data = cbf.encode(model)
-assert data[128 + 20 + 2] == 0x44 and data[128 + 20 + 4] == 4
 back = cbf.decode(data)
+# where the record's code and argument-size fields are: from the model, never from rev 03's sizes
+at = back.records[1].offset
+code, size = T.RECORD_BY_ROLE["code"], T.RECORD_BY_ROLE["arg_size"]
+field = lambda f, buf: int.from_bytes(buf[at + f.offset:at + f.end], T.SPEC["byte_order"])
+assert field(code, data) == 0x44 and field(size, data) == 4   # the fixture's code and size
 assert back.records[1].decode_args() == Dwell(seconds=1.5)
 assert cbf.validate(data) == []
 text = cbf.to_cut(back)
@@ -29,8 +34,10 @@ assert "dwell 1.5" in text.splitlines(), text
 assert cbf.encode(cbf.from_cut(text)) == data
 doc = cbf.to_canonical(back)
 assert doc["records"][1]["command"] == "DWELL" and doc["records"][1]["args"] == {"seconds": 1.5}
-bad = bytearray(data); bad[128 + 20 + 4] = 5   # DWELL with 5 argument bytes breaks the framing
-assert any(f.check == "6.4.3" or f.check == "4.3" for f in cbf.validate(bytes(bad)))
+bad = bytearray(data)   # DWELL with 5 argument bytes breaks the framing
+bad[at + size.offset:at + size.end] = (5).to_bytes(size.size, T.SPEC["byte_order"])
+framing = {c["id"] for c in T.CHECKS if c["kind"] in ("arg_size", "truncated_record")}
+assert framing and any(f.check in framing for f in cbf.validate(bytes(bad)))
 open(sys.argv[1], "wb").write(data)
 """
 
