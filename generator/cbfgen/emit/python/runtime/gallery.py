@@ -50,8 +50,8 @@ def build(out: Path, files: Sequence[Path]) -> list[str]:
         except CbfError as exc:  # pragma: no cover - a clean file decodes
             skipped.append(f"{name} ({exc})")
             continue
-        for fmt in ("png", "svg"):
-            (out / f"{name}.{fmt}").write_bytes(plot.render(model, fmt, "cut", name))
+        for fmt, image in plot.renderings(model, ("png", "svg"), "cut", name).items():
+            (out / f"{name}.{fmt}").write_bytes(image)
         s = stats(model)
         text = render(s, path.name)
         (out / f"{name}.stats.txt").write_text(text, encoding="utf-8")
