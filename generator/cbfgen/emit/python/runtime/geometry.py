@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import tables as T
+from .fields import unpack_args
 from .model import Cbf
 
 Vec = tuple[float, float, float]
@@ -241,16 +242,23 @@ class Step:
     curve: Curve | None = None
 
 
+def _units() -> dict[tuple[int, str, str], str | None]:
+    """The unit the spec gives each argument, by (command code, layout variant, argument name):
+    spec_data keeps it, FieldInfo does not. The first the spec lists wins."""
+    units: dict[tuple[int, str, str], str | None] = {}
+    for c in T.SPEC["commands"]:
+        for sl in c["layouts"]:
+            for arg in sl["args"]:
+                units.setdefault((c["code"], sl["variant"], arg["name"]), str(arg["unit"]) if arg.get("unit") else None)
+    return units
+
+
+_ARG_UNITS = _units()
+
+
 def _arg_unit(cmd: T.CommandInfo, lay: T.LayoutInfo, argname: str) -> str | None:
     """The unit the spec gives an argument (spec_data keeps it; FieldInfo does not)."""
-    for c in T.SPEC["commands"]:
-        if c["code"] == cmd.code:
-            for sl in c["layouts"]:
-                if sl["variant"] == lay.variant:
-                    for arg in sl["args"]:
-                        if arg["name"] == argname:
-                            return str(arg["unit"]) if arg.get("unit") else None
-    return None
+    return _ARG_UNITS.get((cmd.code, lay.variant, argname))
 
 
 def _scaled(cmd: T.CommandInfo, lay: T.LayoutInfo, argname: str, value: Any, units: dict[str, float]) -> float | None:
@@ -272,7 +280,7 @@ def walk(model: Cbf) -> Iterator[Step]:
         lay = cmd.layout_for_size(vid, len(r.raw_args))
         if lay is None:
             continue
-        a = r.decode_args(vid)
+        a = unpack_args(lay, r.raw_args)  # r.decode_args(vid), without finding lay again
         changes: dict[str, Any] = {}
         for key, val in (cmd.sets or {}).items():
             if isinstance(val, bool):
