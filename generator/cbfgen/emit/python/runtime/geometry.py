@@ -316,22 +316,25 @@ def bounds(points: Sequence[Vec]) -> tuple[Vec, Vec] | None:
 
 def curve_bounds(c: Curve) -> tuple[Vec, Vec]:
     """The exact axis-aligned box of a curve (lines: their ends; arcs: ends and axis extremes)."""
-    pts = [c.start, c.end]
-    if c.curved:
-        # extremes of coordinate i: d/dt of the circular part plus the linear rise;
-        # sample finely and add the analytic extremes of the pure circle.
-        n = max(8, math.ceil(math.degrees(c.angle) / 2.0))
-        pts.extend(c.at(k / n) for k in range(n + 1))
-        for i in range(3):
-            a, b = c.e1[i], c.e2[i]
-            if a == 0.0 and b == 0.0:
-                continue
-            phi = math.atan2(b, a)  # cos(th - phi) extreme at th = phi, phi + pi
-            for base in (phi, phi + math.pi):
-                th = base % (2.0 * math.pi)
-                while th <= c.angle:
-                    pts.append(c.at(th / c.angle))
-                    th += 2.0 * math.pi
+    s, e = c.start, c.end
+    if not c.curved:  # bounds([s, e]), without the generic loops (every move of a straight path)
+        return ((min(s[0], e[0]), min(s[1], e[1]), min(s[2], e[2])),
+                (max(s[0], e[0]), max(s[1], e[1]), max(s[2], e[2])))
+    pts = [s, e]
+    # extremes of coordinate i: d/dt of the circular part plus the linear rise;
+    # sample finely and add the analytic extremes of the pure circle.
+    n = max(8, math.ceil(math.degrees(c.angle) / 2.0))
+    pts.extend(c.at(k / n) for k in range(n + 1))
+    for i in range(3):
+        a, b = c.e1[i], c.e2[i]
+        if a == 0.0 and b == 0.0:
+            continue
+        phi = math.atan2(b, a)  # cos(th - phi) extreme at th = phi, phi + pi
+        for base in (phi, phi + math.pi):
+            th = base % (2.0 * math.pi)
+            while th <= c.angle:
+                pts.append(c.at(th / c.angle))
+                th += 2.0 * math.pi
     box = bounds(pts)
     assert box is not None
     return box
