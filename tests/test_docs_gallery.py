@@ -4,6 +4,7 @@ from every page, with no link leaving the site."""
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -12,6 +13,7 @@ import pytest
 
 import cbf
 from cbf import tables as T
+from cbf.stats import render, stats
 from cbfgen.emit.docs import GALLERY, site, site_links
 from cbfgen.loader import load
 
@@ -33,6 +35,13 @@ def test_the_site_shows_the_gallery(tmp_path: Path) -> None:
                    capture_output=True, text=True)
     drawn = {p.name.removesuffix(".cbf") for p in small if _clean(p)}
     assert drawn and {p.stem for p in folder.glob("*.svg")} == drawn
+    for p in small:  # the gallery walks each file once for its drawing and its stats: the stats of `cbf stats`
+        name = p.name.removesuffix(".cbf")
+        if name in drawn:
+            s = stats(cbf.decode(p.read_bytes()))
+            assert s.moves and (folder / f"{name}.stats.txt").read_text(encoding="utf-8") == render(s, p.name)
+            assert json.loads((folder / f"{name}.stats.json").read_text(encoding="utf-8")) == {"file": p.name,
+                                                                                             **s.as_dict()}
     out = tmp_path / "site"
     site.build(load(REPO / "spec" / "cbf.yaml"), out, folder)
     page = (out / GALLERY / "index.html").read_text(encoding="utf-8")

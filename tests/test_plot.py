@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from cbf import tables as T
+from cbf.codec import decode
 from cbf.model import Cbf, Record, new_header
 
 pytest.importorskip("matplotlib")
@@ -81,6 +82,19 @@ def test_every_colour_mode_and_format_renders() -> None:
     assert plot.render(model, "pdf", "cutter").startswith(b"%PDF")
     with pytest.raises(ValueError):
         plot.render(model, "bmp")
+
+
+def test_one_figure_gives_every_format_the_bytes_it_gives_alone() -> None:
+    """The gallery draws each file once and saves it in two formats (``plot.renderings``): the bytes
+    are those ``render`` gives each format from a figure of its own, and the same on every call
+    (SVG ids are hashed with a fixed salt, not matplotlib's random one)."""
+    model = decode((GOLDEN / "valid.v3.all_commands.cbf").read_bytes())
+    together = plot.renderings(model, plot.FORMATS, "shape", "all commands")
+    assert list(together) == list(plot.FORMATS)
+    for fmt in plot.FORMATS:
+        assert together[fmt] == plot.render(model, fmt, "shape", "all commands"), fmt
+    with pytest.raises(ValueError):
+        plot.renderings(model, ("png", "bmp"))
 
 
 def test_cli_plot_and_bad_output(tmp_path: Path) -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import struct
 from dataclasses import dataclass
+from functools import cache
 from importlib import import_module
 from pathlib import Path
 from struct import Struct
@@ -18,6 +19,7 @@ from typing import Any
 SPEC: dict[str, Any] = json.loads(Path(__file__).with_name("spec_data.json").read_text(encoding="utf-8"))
 
 
+@cache  # LayoutInfo.cls is asked once per decoded record: look each class up once
 def _layouts_class(registry: str, key: Any) -> type:
     """A generated dataclass of cbf.layouts, imported on first use (keeps start-up fast)."""
     table: dict[Any, type] = getattr(import_module(f"{__package__}.layouts"), registry)

@@ -16,6 +16,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from . import geometry as G
 from . import plot
 from . import tables as T
 from .codec import decode
@@ -50,9 +51,10 @@ def build(out: Path, files: Sequence[Path]) -> list[str]:
         except CbfError as exc:  # pragma: no cover - a clean file decodes
             skipped.append(f"{name} ({exc})")
             continue
-        for fmt in ("png", "svg"):
-            (out / f"{name}.{fmt}").write_bytes(plot.render(model, fmt, "cut", name))
-        s = stats(model)
+        steps = list(G.walk(model))  # walked once, drawn and counted
+        for fmt, image in plot.renderings(model, ("png", "svg"), "cut", name, steps).items():
+            (out / f"{name}.{fmt}").write_bytes(image)
+        s = stats(model, steps)
         text = render(s, path.name)
         (out / f"{name}.stats.txt").write_text(text, encoding="utf-8")
         (out / f"{name}.stats.json").write_text(json.dumps({"file": path.name, **s.as_dict()}, indent=1) + "\n",

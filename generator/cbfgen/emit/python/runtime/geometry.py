@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import tables as T
+from .fields import unpack_args
 from .model import Cbf
 
 Vec = tuple[float, float, float]
@@ -241,16 +242,23 @@ class Step:
     curve: Curve | None = None
 
 
+def _units() -> dict[tuple[int, str, str], str | None]:
+    """The unit the spec gives each argument, by (command code, layout variant, argument name):
+    spec_data keeps it, FieldInfo does not. The first the spec lists wins."""
+    units: dict[tuple[int, str, str], str | None] = {}
+    for c in T.SPEC["commands"]:
+        for sl in c["layouts"]:
+            for arg in sl["args"]:
+                units.setdefault((c["code"], sl["variant"], arg["name"]), str(arg["unit"]) if arg.get("unit") else None)
+    return units
+
+
+_ARG_UNITS = _units()
+
+
 def _arg_unit(cmd: T.CommandInfo, lay: T.LayoutInfo, argname: str) -> str | None:
     """The unit the spec gives an argument (spec_data keeps it; FieldInfo does not)."""
-    for c in T.SPEC["commands"]:
-        if c["code"] == cmd.code:
-            for sl in c["layouts"]:
-                if sl["variant"] == lay.variant:
-                    for arg in sl["args"]:
-                        if arg["name"] == argname:
-                            return str(arg["unit"]) if arg.get("unit") else None
-    return None
+    return _ARG_UNITS.get((cmd.code, lay.variant, argname))
 
 
 def _scaled(cmd: T.CommandInfo, lay: T.LayoutInfo, argname: str, value: Any, units: dict[str, float]) -> float | None:
@@ -272,7 +280,7 @@ def walk(model: Cbf) -> Iterator[Step]:
         lay = cmd.layout_for_size(vid, len(r.raw_args))
         if lay is None:
             continue
-        a = r.decode_args(vid)
+        a = unpack_args(lay, r.raw_args)  # r.decode_args(vid), without finding lay again
         changes: dict[str, Any] = {}
         for key, val in (cmd.sets or {}).items():
             if isinstance(val, bool):
@@ -308,22 +316,25 @@ def bounds(points: Sequence[Vec]) -> tuple[Vec, Vec] | None:
 
 def curve_bounds(c: Curve) -> tuple[Vec, Vec]:
     """The exact axis-aligned box of a curve (lines: their ends; arcs: ends and axis extremes)."""
-    pts = [c.start, c.end]
-    if c.curved:
-        # extremes of coordinate i: d/dt of the circular part plus the linear rise;
-        # sample finely and add the analytic extremes of the pure circle.
-        n = max(8, math.ceil(math.degrees(c.angle) / 2.0))
-        pts.extend(c.at(k / n) for k in range(n + 1))
-        for i in range(3):
-            a, b = c.e1[i], c.e2[i]
-            if a == 0.0 and b == 0.0:
-                continue
-            phi = math.atan2(b, a)  # cos(th - phi) extreme at th = phi, phi + pi
-            for base in (phi, phi + math.pi):
-                th = base % (2.0 * math.pi)
-                while th <= c.angle:
-                    pts.append(c.at(th / c.angle))
-                    th += 2.0 * math.pi
+    s, e = c.start, c.end
+    if not c.curved:  # bounds([s, e]), without the generic loops (every move of a straight path)
+        return ((min(s[0], e[0]), min(s[1], e[1]), min(s[2], e[2])),
+                (max(s[0], e[0]), max(s[1], e[1]), max(s[2], e[2])))
+    pts = [s, e]
+    # extremes of coordinate i: d/dt of the circular part plus the linear rise;
+    # sample finely and add the analytic extremes of the pure circle.
+    n = max(8, math.ceil(math.degrees(c.angle) / 2.0))
+    pts.extend(c.at(k / n) for k in range(n + 1))
+    for i in range(3):
+        a, b = c.e1[i], c.e2[i]
+        if a == 0.0 and b == 0.0:
+            continue
+        phi = math.atan2(b, a)  # cos(th - phi) extreme at th = phi, phi + pi
+        for base in (phi, phi + math.pi):
+            th = base % (2.0 * math.pi)
+            while th <= c.angle:
+                pts.append(c.at(th / c.angle))
+                th += 2.0 * math.pi
     box = bounds(pts)
     assert box is not None
     return box

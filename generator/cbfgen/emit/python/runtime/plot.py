@@ -13,6 +13,7 @@ matplotlib is imported here only, so ``cbf`` starts fast and works without it.
 from __future__ import annotations
 
 import io
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -30,6 +31,9 @@ PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7
 # (title, horizontal axis, vertical axis) of the three projections
 VIEWS = (("top (X-Y)", 0, 1), ("front (X-Z)", 0, 2), ("side (Y-Z)", 1, 2))
 _AXIS = "XYZ"
+# matplotlib names SVG clip paths and markers by a hash salted with a random UUID unless the
+# salt is fixed: a fixed salt makes the same figure the same SVG bytes on every run.
+SVG_HASH_SALT = "cbf plot"
 
 
 class PlotUnavailable(RuntimeError):
@@ -53,7 +57,8 @@ def _category(step: G.Step, mode: str) -> str:
     return f"{mode} {value}" if value else f"no {mode}"
 
 
-def path_of(model: Cbf, mode: str = "cut") -> Path:
+def path_of(model: Cbf, mode: str = "cut", steps: Iterable[G.Step] | None = None) -> Path:
+    """What to draw of ``model``; ``steps`` is ``G.walk(model)`` when the caller has walked it already."""
     if mode not in COLOR_MODES:
         raise ValueError(f"colour mode {mode!r}: one of {', '.join(COLOR_MODES)}")
     lines: list[tuple[str, list[G.Vec]]] = []
@@ -62,7 +67,7 @@ def path_of(model: Cbf, mode: str = "cut") -> Path:
     pos: G.Vec | None = None
     pending_shapes: list[tuple[int, str]] = []
     pending_checks: list[int] = []
-    for step in G.walk(model):
+    for step in G.walk(model) if steps is None else steps:
         cmd = step.cmd
         if cmd.progress:
             if pos is not None:
@@ -105,8 +110,8 @@ def _cube(path: Path) -> tuple[G.Vec, float]:
     return center, (span if span > 0 else 1.0) * 1.1
 
 
-def figure(model: Cbf, mode: str = "cut", title: str = "") -> Any:
-    """A matplotlib Figure of the path (no pyplot, no global state)."""
+def figure(model: Cbf, mode: str = "cut", title: str = "", steps: Iterable[G.Step] | None = None) -> Any:
+    """A matplotlib Figure of the path (no pyplot, no global state); ``steps`` as for ``path_of``."""
     try:
         from matplotlib.collections import LineCollection
         from matplotlib.figure import Figure
@@ -114,7 +119,7 @@ def figure(model: Cbf, mode: str = "cut", title: str = "") -> Any:
         from mpl_toolkits.mplot3d.art3d import Line3DCollection  # type: ignore[import-untyped]
     except ImportError:
         raise PlotUnavailable("cbf plot needs matplotlib: pip install 'cbf[plot]'") from None
-    path = path_of(model, mode)
+    path = path_of(model, mode, steps)
     colors = _colors(path, mode)
     center, span = _cube(path)
     lims = [(center[i] - span / 2, center[i] + span / 2) for i in range(3)]
@@ -166,12 +171,28 @@ def figure(model: Cbf, mode: str = "cut", title: str = "") -> Any:
     return fig
 
 
+def renderings(model: Cbf, fmts: Sequence[str], mode: str = "cut", title: str = "",
+               steps: Iterable[G.Step] | None = None) -> dict[str, bytes]:
+    """The figure in each of ``fmts`` (PNG, SVG, PDF bytes), drawn from ONE figure: the same bytes
+    as ``render`` gives each format alone. Deterministic: no timestamps in SVG/PDF metadata, and
+    SVG ids hashed with a fixed salt."""
+    for fmt in fmts:
+        if fmt not in FORMATS:
+            raise ValueError(f"format {fmt!r}: one of {', '.join(FORMATS)}")
+    fig = figure(model, mode, title, steps)
+    from matplotlib import rc_context
+
+    out: dict[str, bytes] = {}
+    with rc_context({"svg.hashsalt": SVG_HASH_SALT}):
+        for fmt in fmts:
+            buf = io.BytesIO()
+            meta: dict[str, Any] = {"png": {"Software": None}, "svg": {"Date": None},
+                                    "pdf": {"CreationDate": None}}[fmt]
+            fig.savefig(buf, format=fmt, metadata=meta)
+            out[fmt] = buf.getvalue()
+    return out
+
+
 def render(model: Cbf, fmt: str, mode: str = "cut", title: str = "") -> bytes:
-    """The figure as PNG, SVG or PDF bytes (deterministic: no timestamps in SVG/PDF metadata)."""
-    if fmt not in FORMATS:
-        raise ValueError(f"format {fmt!r}: one of {', '.join(FORMATS)}")
-    fig = figure(model, mode, title)
-    buf = io.BytesIO()
-    meta: dict[str, Any] = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}[fmt]
-    fig.savefig(buf, format=fmt, metadata=meta)
-    return buf.getvalue()
+    """The figure as PNG, SVG or PDF bytes (deterministic, see ``renderings``)."""
+    return renderings(model, (fmt,), mode, title)[fmt]

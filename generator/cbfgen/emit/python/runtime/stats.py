@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -117,7 +118,8 @@ class Stats:
         }
 
 
-def stats(model: Cbf) -> Stats:
+def stats(model: Cbf, steps: Iterable[G.Step] | None = None) -> Stats:
+    """The stats of ``model``; ``steps`` is ``G.walk(model)`` when the caller has walked it already."""
     out = Stats(model.version_id, len(model.records))
     counts: Counter[str] = Counter()
     for r in model.records:
@@ -129,7 +131,7 @@ def stats(model: Cbf) -> Stats:
     hi: list[float] = []
     run = _Run()
     open_shape: dict[str, Any] | None = None
-    for step in G.walk(model):
+    for step in G.walk(model) if steps is None else steps:
         cmd, a, st = step.cmd, step.args, step.state
         if cmd.shape:
             if cmd.shape["kind"] == "start":
