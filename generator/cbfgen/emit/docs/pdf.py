@@ -21,6 +21,7 @@ import re
 import shutil
 import sys
 import unicodedata
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -163,11 +164,28 @@ def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, 
             f'<section class="chapter" id="{c.anchor}">{c.body}</section>' for c in chs)
         final = print_("reference", _doc(f"{spec.meta['title']}: format reference", body))
     shutil.copyfile(final, out)
-    texts = [page.extract_text() or "" for page in PdfReader(str(out)).pages]
+    texts = PageTexts(PdfReader(str(out)))
     return len(texts), verify(out.name, texts, [(c.title, s) for c, s in zip(chs, starts, strict=True)], total)
 
 
-def verify(name: str, texts: list[str], toc: list[tuple[str, int]], total: int) -> list[str]:
+class PageTexts(Sequence[str]):
+    """The text of a PDF's pages, each extracted when first read: verify reads the pages the contents
+    name, and pypdf's extraction of all 74 pages took most of the check's time."""
+
+    def __init__(self, reader: PdfReader) -> None:
+        self._pages = reader.pages
+        self._texts: dict[int, str] = {}
+
+    def __len__(self) -> int:
+        return len(self._pages)
+
+    def __getitem__(self, index: int) -> str:  # type: ignore[override]
+        if index not in self._texts:
+            self._texts[index] = self._pages[index].extract_text() or ""
+        return self._texts[index]
+
+
+def verify(name: str, texts: Sequence[str], toc: list[tuple[str, int]], total: int) -> list[str]:
     """What the contents promise against the PDF's pages (their text): the page count, and each title
     on its page."""
     if len(texts) != total:
