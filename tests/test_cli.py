@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from cli_many import run_many
 
 from cbf import tables as T
 
@@ -71,11 +72,17 @@ def test_validate_prints_at_most_max_findings(tmp_path: Path) -> None:
     # a CBF header, then text where records should be: hundreds of findings
     header = (GOLDEN / "valid.v3.small.cbf").read_bytes()[:T.HEADER_SIZE]
     p.write_bytes(header + b"These are my notes, not a cutfile.\n" * 200)
-    every = json.loads(cbf("validate", str(p), "--json").stdout)["findings"]
+    flags: list[tuple[tuple[str, ...], int | None]] = [((), 50), (("--max-findings", "7"), 7),
+                                                        (("--max-findings", "0"), None)]
+    # one process runs them all (cli_many), each with its own streams and exit code
+    (whole, _), *runs, (negative, _) = run_many([["validate", str(p), "--json"],
+                                                 *(["validate", str(p), *flag] for flag, _ in flags),
+                                                 ["validate", str(p), "--max-findings", "-1"]], ENV)
+    every = json.loads(whole.stdout)["findings"]
     errors = sum(f["severity"] == "error" for f in every)
     assert len(every) > 60
-    for flag, shown in (((), 50), (("--max-findings", "7"), 7), (("--max-findings", "0"), len(every))):
-        res = cbf("validate", str(p), *flag)
+    for (flag, limit), (res, _) in zip(flags, runs, strict=True):
+        shown = len(every) if limit is None else limit
         assert res.returncode == 1
         lines = res.stdout.splitlines()
         findings = [ln for ln in lines if ": error " in ln or ": warning " in ln]
@@ -85,7 +92,7 @@ def test_validate_prints_at_most_max_findings(tmp_path: Path) -> None:
                          "(--max-findings 0 prints all, --json lists all)"] if shown < len(every) else [])
         # the verdict still counts every finding
         assert lines[-1] == f"{p}: FAIL: {errors} error(s), {len(every) - errors} warning(s) [profile default]"
-    assert "--max-findings" in _one_line_error(cbf("validate", str(p), "--max-findings", "-1"))
+    assert "--max-findings" in _one_line_error(negative)
 
 
 @pytest.mark.parametrize("cmd", ["decode", "validate", "info"])

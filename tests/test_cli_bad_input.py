@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from cli_many import run_many
 from conftest import file_maker, locked_file, unprivileged_prefix
 
 from cbf import tables as T
@@ -116,60 +117,6 @@ CASES = [
 ]
 
 
-# One process runs the CLI's main() for many command lines, one after another, each with its own
-# stdout and stderr and its own peak memory (VmHWM, reset through /proc/self/clear_refs before each;
-# where the reset is refused the peak so far is kept, an upper bound). What escapes main() is printed
-# as the interpreter would, a traceback on that command's stderr, and an exit with SystemExit's code.
-# A process per command line cost 72 interpreter starts (0.5 CPU s each, most of it imports).
-RUNNER_MANY = r"""
-import io, json, sys, traceback
-from cbf.cli import main
-argvs = json.load(open(sys.argv[1]))
-out = []
-for argv in argvs:
-    try:
-        open("/proc/self/clear_refs", "w").write("5")
-    except OSError:
-        pass
-    real = sys.stdout, sys.stderr
-    sys.stdout = io.TextIOWrapper(io.BytesIO(), encoding="utf-8", errors="backslashreplace")
-    sys.stderr = io.TextIOWrapper(io.BytesIO(), encoding="utf-8", errors="backslashreplace")
-    try:
-        rc = main(argv)
-    except SystemExit as exc:
-        rc = exc.code if isinstance(exc.code, int) else 0 if exc.code is None else 1
-    except BaseException:
-        traceback.print_exc()
-        rc = 1
-    texts = []
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.flush()
-        except Exception:
-            pass
-        texts.append(stream.buffer.getvalue().decode("utf-8", "backslashreplace"))
-    sys.stdout, sys.stderr = real
-    peak = [l.split()[1] for l in open("/proc/self/status") if l.startswith("VmHWM")]
-    out.append({"argv": argv, "rc": rc, "stdout": texts[0], "stderr": texts[1], "peak": int(peak[0] if peak else 0)})
-json.dump(out, open(sys.argv[2], "w"))
-"""
-
-
-def _run_many(tmp: Path, argvs: list[list[str]], prefix: Sequence[str] = ()
-              ) -> list[tuple[subprocess.CompletedProcess[str], int]]:
-    """Each command line's result and peak resident memory in kB, from one process (RUNNER_MANY)."""
-    todo, done = tmp / "argvs.json", tmp / "results.json"
-    todo.write_text(json.dumps(argvs), encoding="utf-8")
-    res = subprocess.run([*prefix, sys.executable, "-c", RUNNER_MANY, str(todo), str(done)], env=ENV,
-                         capture_output=True, text=True, stdin=subprocess.DEVNULL)
-    assert res.returncode == 0 and res.stderr == "", res.stderr
-    results = json.loads(done.read_text(encoding="utf-8"))
-    todo.unlink()
-    done.unlink()
-    assert [r["argv"] for r in results] == argvs
-    return [(subprocess.CompletedProcess(r["argv"], r["rc"], r["stdout"], r["stderr"]), r["peak"]) for r in results]
-
-
 def _run(tmp: Path, *args: str, prefix: Sequence[str] = ()) -> tuple[subprocess.CompletedProcess[str], int]:
     peak_file = tmp / "peak.txt"
     res = subprocess.run([*prefix, sys.executable, "-c", RUNNER, str(peak_file), *args], env=ENV,
@@ -219,7 +166,7 @@ def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
     out_dir = tmp_path / "out"
     out_dir.mkdir()
     argvs = [_argv(cmd, path, out_dir / f"{cmd}.out") for cmd in SUBCOMMANDS]
-    results = _run_many(tmp_path, argvs, prefix=prefix)
+    results = run_many(argvs, ENV, prefix=prefix)
     assert list(out_dir.iterdir()) == [], f"output written for bad input: {sorted(out_dir.iterdir())}"
     for cmd, (res, peak_kb) in zip(SUBCOMMANDS, results, strict=True):
         code, needles = _expect(case, cmd)
@@ -231,15 +178,16 @@ def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
 
 def test_output_in_a_missing_folder(tmp_path: Path) -> None:
     cut = tmp_path / "a.cut"
-    res, _ = _run(tmp_path, "decode", str(VALID), "--to", "cut", "-o", str(cut))
-    assert res.returncode == 0, res.stderr
     inputs = {cmd: cut if cmd in TEXT_INPUT else VALID for cmd in SUBCOMMANDS}
     writers = [cmd for cmd in SUBCOMMANDS if _has_output(SUBCOMMANDS[cmd])]
-    for cmd in writers:
-        target = tmp_path / "no" / "such" / f"{cmd}.out"
-        res, _ = _run(tmp_path, *_argv(cmd, inputs[cmd], target))
+    targets = [tmp_path / "no" / "such" / f"{cmd}.out" for cmd in writers]
+    # one process, in order: the decode writes the CUT text the encode then reads
+    argvs = [_argv(cmd, inputs[cmd], target) for cmd, target in zip(writers, targets, strict=True)]
+    (res, _), *results = run_many([["decode", str(VALID), "--to", "cut", "-o", str(cut)], *argvs], ENV)
+    assert res.returncode == 0, res.stderr
+    for target, (res, _) in zip(targets, results, strict=True):
         _assert_outcome(res, EXIT_USAGE, (str(target), "does not exist"))
-        assert not (tmp_path / "no").exists()
+    assert not (tmp_path / "no").exists()
 
 
 # -- an encode killed mid-write ------------------------------------------------------------------
@@ -347,11 +295,18 @@ def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> 
         _read_text(str(p), 99)
 
 
-@pytest.mark.parametrize("argv", [[], ["nope"], *([cmd] for cmd in SUBCOMMANDS),
-                                  *([cmd, "x", "--nope"] for cmd in SUBCOMMANDS)], ids=" ".join)
-def test_bad_usage_is_one_line(argv: list[str], tmp_path: Path) -> None:
-    res, _ = _run(tmp_path, *argv)
-    _assert_outcome(res, EXIT_USAGE, ("--help",))
+BAD_USAGE = [[], ["nope"], *([cmd] for cmd in SUBCOMMANDS), *([cmd, "x", "--nope"] for cmd in SUBCOMMANDS)]
+
+
+@pytest.fixture(scope="module")
+def bad_usage() -> dict[str, subprocess.CompletedProcess[str]]:
+    """Each bad command line's result, all from one process (cli_many)."""
+    return {" ".join(argv): res for argv, (res, _) in zip(BAD_USAGE, run_many(BAD_USAGE, ENV), strict=True)}
+
+
+@pytest.mark.parametrize("argv", BAD_USAGE, ids=" ".join)
+def test_bad_usage_is_one_line(argv: list[str], bad_usage: dict[str, subprocess.CompletedProcess[str]]) -> None:
+    _assert_outcome(bad_usage[" ".join(argv)], EXIT_USAGE, ("--help",))
 
 
 @pytest.mark.parametrize("unnamed", [True, False], ids=["O_TMPFILE", "named_temp"])

@@ -233,21 +233,44 @@ def test_to_cut_by_layout_writes_what_one_by_one_writes(name: str, model: Cbf) -
 
 # -- the floats, batched ---------------------------------------------------------------------------
 def _patterns() -> np.ndarray:
+    """Finite patterns, both signs: the places the batched formatter could part from the loop
+    (every exponent with edge mantissas, the neighbours of d * 10^k, binary fractions whose
+    decimal digits end in a tie, millimetres to three places, the subnormals) and a seeded
+    sample of all 2^32 (make floats-exhaustive checks every pattern)."""
     rng = np.random.default_rng(17)
-    steps = [np.arange(0, 1 << 32, 40_009, dtype=np.uint64).astype(np.uint32),
-             rng.integers(0, 1 << 32, 20_000, dtype=np.uint64).astype(np.uint32),
-             np.array([(e << 23) | m for e in range(255) for m in (0, 1, 2, 0x7FFFFF, 0x400000)], dtype=np.uint32),
-             (np.arange(-20_000, 20_000) / np.float32(1000)).astype(np.float32).view(np.uint32),
-             np.arange(0, 5_000, dtype=np.float32).view(np.uint32),
-             np.array([1, 0x007FFFFF, 0x00800000, 0x7F7FFFFF, 0x3F800000, 0x3F800001], dtype=np.uint32)]
+    edges = (0, 1, 2, 3, 0x155555, 0x2AAAAA, 0x3FFFFF, 0x400000, 0x400001, 0x7FFFFD, 0x7FFFFE, 0x7FFFFF)
+    tens = np.array([d * 10.0**k for k in range(-45, 39) for d in range(1, 10)])
+    tens = tens[tens < float(np.finfo(np.float32).max)].astype(np.float32).view(np.uint32).astype(np.int64)
+    steps = [np.array([(e << 23) | m for e in range(255) for m in edges], dtype=np.int64),
+             (tens[:, None] + np.arange(-2, 3)).ravel(),
+             np.array([(2 * m + 1) / 2.0**j for j in range(1, 12) for m in range(64)], dtype=np.float32)
+             .view(np.uint32).astype(np.int64),
+             (np.arange(-2_000, 2_000) / np.float32(1000)).astype(np.float32).view(np.uint32).astype(np.int64),
+             np.arange(0, 1_024, dtype=np.int64),
+             rng.integers(0, 1 << 23, 1_000, dtype=np.int64),
+             np.arange(0, 1 << 32, 1_000_003, dtype=np.int64),
+             rng.integers(0, 1 << 32, 8_000, dtype=np.int64)]
     bits = np.concatenate(steps)
+    bits = bits[(bits >= 0) & (bits < 1 << 31)].astype(np.uint32)
     bits = np.concatenate([bits, bits | np.uint32(0x80000000)])
     return bits[(bits & 0x7F800000) != 0x7F800000]
 
 
+def _digits(text: str) -> int:
+    return max(len(text.replace("-", "").replace(".", "").strip("0")), 1)
+
+
 def test_format_floats_writes_what_format_float_writes() -> None:
     bits = _patterns()
-    assert format_floats(bits) == [format_float(b) for b in bits.tolist()]
+    want = [format_float(b) for b in bits.tolist()]
+    assert format_floats(bits) == want
+    # The set reaches both sides of the batched search's first guess (7 digits): every length
+    # of text from 1 to 9 digits among the normals, and from 1 to 8 among the subnormals
+    # (whose 23 bits or fewer never needed a 9th digit here).
+    normal = (bits & 0x7F800000) != 0
+    for kind, mask, lengths in (("normal", normal, range(1, 10)), ("subnormal", ~normal, range(1, 9))):
+        got = {_digits(t) for t, m in zip(want, mask.tolist(), strict=True) if m}
+        assert got >= set(lengths), (kind, sorted(got))
 
 
 @given(st.lists(st.integers(0, (1 << 32) - 1), max_size=50))

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from cli_many import run_many
 from conftest import file_maker, locked_file, unprivileged_prefix
 
 import cbf
@@ -398,46 +399,108 @@ def _run(tool: str, cbf_c: Path, argv: list[str], inp: Input) -> subprocess.Comp
                           stdin=subprocess.DEVNULL, errors="replace")
 
 
-@pytest.mark.parametrize("tool", ["cbf", "cbf-c"])
-@pytest.mark.parametrize("row", ROWS, ids=lambda r: r.input[:60])
-def test_the_readme_table(row: Row, tool: str, cbf_c: Path, tmp_path: Path) -> None:
-    code = row.exits[tool]
-    if code is None:
-        pytest.skip(f"{tool} has no {row.commands[0].split()[0]}")
-    src = tmp_path / "in"
+@dataclass(frozen=True)
+class Run:
+    """One command of a row on one of its inputs, with its own output folder."""
+    inp: Input
+    command: str
+    argv: list[str]
+    subs: dict[str, str]
+    out_dir: Path
+
+
+def _plan(row: Row, tool: str, tmp: Path) -> list[Run]:
+    src = tmp / "in"
     src.mkdir()
-    out_dir = tmp_path / "out"
-    out_dir.mkdir()
-    good = file_maker("good.cbf", VALID.read_bytes())(tmp_path)
+    good = file_maker("good.cbf", VALID.read_bytes())(tmp)
+    runs = []
     for inp in INPUTS[row.input](src):
-        subs = {"FILE": str(inp.path), "OUT": str(out_dir / "out"), "GOOD": str(good), "VERSION": TARGET}
         for command in row.commands:
+            out_dir = tmp / f"out{len(runs)}"
+            out_dir.mkdir()
+            subs = {"FILE": str(inp.path), "OUT": str(out_dir / "out"), "GOOD": str(good), "VERSION": TARGET}
             argv = [_PLACES.sub(lambda m: str(subs[m.group(1)]), a) for a in command.split()]  # noqa: B023
             if tool == "cbf-c" and argv[0] == READER["cbf"]:
                 argv[0] = READER["cbf-c"]
-            res = _run(tool, cbf_c, argv, inp)
-            what = (tool, command, inp.path.name, res.returncode, res.stderr[-600:], res.stdout[-600:])
-            assert "Traceback" not in res.stderr + res.stdout, what
-            assert res.returncode == code, what
-            if code == USAGE:
-                assert res.stdout == "", what
-                assert list(out_dir.iterdir()) == [], what  # nothing written to -o
-                lines = res.stderr.splitlines()
-                assert len(lines) == 1 or (row.usage and lines), what
-                text = lines
-            else:
-                assert res.stderr == "", what
-                text = res.stdout.splitlines()
-            for pattern in (p for p in row.patterns if _applies(p, tool)):
-                rx = _regex(pattern, tool, subs)
-                assert any(rx.fullmatch(line) for line in text), (pattern, rx.pattern, *what)
-            for needle in inp.needles:
-                assert needle in "\n".join(text), (needle, *what)
-            if code != USAGE and argv[0] == "validate":
-                verdict = "FAIL" if code == FINDINGS else "ok"
-                assert text[-1].startswith(f"{inp.path}: {verdict}: "), what
-            elif code == OK and argv[0] in READER.values():
-                assert text, what  # the header and the records
+            runs.append(Run(inp, command, argv, subs, out_dir))
+    return runs
+
+
+Done = list[tuple[Run, subprocess.CompletedProcess[str]]]
+
+
+@pytest.fixture(scope="module")
+def cbf_done(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, tuple[str, ...]], Done | str]:
+    """Every row's `cbf` runs (or why the row is skipped), from one process per kind of run
+    (cli_many: main() per command line, each with its own streams and exit code): plain, held
+    to the mode bits, without matplotlib. A process per run cost about 0.3 CPU s each."""
+    plans: dict[tuple[str, tuple[str, ...]], list[Run] | str] = {}  # by input and commands: a row
+    for row in ROWS:
+        try:
+            plans[row.input, row.commands] = _plan(row, "cbf", tmp_path_factory.mktemp("row"))
+        except pytest.skip.Exception as exc:
+            plans[row.input, row.commands] = str(exc.msg)
+    runs = [run for plan in plans.values() if not isinstance(plan, str) for run in plan]
+    results: dict[int, subprocess.CompletedProcess[str] | str] = {}
+    for unprivileged, hide in sorted({(r.inp.unprivileged, r.inp.hide_matplotlib) for r in runs}):
+        group = [r for r in runs if (r.inp.unprivileged, r.inp.hide_matplotlib) == (unprivileged, hide)]
+        try:
+            prefix = unprivileged_prefix() if unprivileged else []
+        except pytest.skip.Exception as exc:
+            results.update((id(r), str(exc.msg)) for r in group)
+            continue
+        done = run_many([r.argv for r in group], ENV, prefix=prefix, hide=["matplotlib"] if hide else [])
+        results.update((id(r), res) for r, (res, _) in zip(group, done, strict=True))
+    out: dict[tuple[str, tuple[str, ...]], Done | str] = {}
+    for key, plan in plans.items():
+        if isinstance(plan, str):
+            out[key] = plan
+            continue
+        got = [results[id(r)] for r in plan]
+        why = next((g for g in got if isinstance(g, str)), None)
+        out[key] = why if why is not None else [(r, g) for r, g in zip(plan, got, strict=True)
+                                                 if not isinstance(g, str)]
+    return out
+
+
+@pytest.mark.parametrize("tool", ["cbf", "cbf-c"])
+@pytest.mark.parametrize("row", ROWS, ids=lambda r: r.input[:60])
+def test_the_readme_table(row: Row, tool: str, request: pytest.FixtureRequest, tmp_path: Path) -> None:
+    code = row.exits[tool]
+    if code is None:
+        pytest.skip(f"{tool} has no {row.commands[0].split()[0]}")
+    if tool == "cbf":
+        done: Done | str = request.getfixturevalue("cbf_done")[row.input, row.commands]
+    else:
+        cbf_c = request.getfixturevalue("cbf_c")
+        done = [(run, _run(tool, cbf_c, run.argv, run.inp)) for run in _plan(row, tool, tmp_path)]
+    if isinstance(done, str):
+        pytest.skip(done)
+    assert done
+    for run, res in done:
+        inp, command, subs = run.inp, run.command, run.subs
+        what = (tool, command, inp.path.name, res.returncode, res.stderr[-600:], res.stdout[-600:])
+        assert "Traceback" not in res.stderr + res.stdout, what
+        assert res.returncode == code, what
+        if code == USAGE:
+            assert res.stdout == "", what
+            assert list(run.out_dir.iterdir()) == [], what  # nothing written to -o
+            lines = res.stderr.splitlines()
+            assert len(lines) == 1 or (row.usage and lines), what
+            text = lines
+        else:
+            assert res.stderr == "", what
+            text = res.stdout.splitlines()
+        for pattern in (p for p in row.patterns if _applies(p, tool)):
+            rx = _regex(pattern, tool, subs)
+            assert any(rx.fullmatch(line) for line in text), (pattern, rx.pattern, *what)
+        for needle in inp.needles:
+            assert needle in "\n".join(text), (needle, *what)
+        if code != USAGE and run.argv[0] == "validate":
+            verdict = "FAIL" if code == FINDINGS else "ok"
+            assert text[-1].startswith(f"{inp.path}: {verdict}: "), what
+        elif code == OK and run.argv[0] in READER.values():
+            assert text, what  # the header and the records
 
 
 # -- what the table does not say row by row ---------------------------------------------------------------
@@ -463,13 +526,14 @@ def test_cbf_c_validate_exits_with_the_worst_status(cbf_c: Path, tmp_path: Path)
     assert res.returncode == USAGE and f"{VALID}: ok: " in res.stdout
 
 
-def test_cbf_validate_json_prints_nothing_for_input_that_is_not_cbf(cbf_c: Path, tmp_path: Path) -> None:
+def test_cbf_validate_json_prints_nothing_for_input_that_is_not_cbf(tmp_path: Path) -> None:
     rows = [r for r in ROWS if r.exits["cbf"] == USAGE and "validate FILE" in r.commands]
     assert rows
-    for row in rows:
-        for inp in INPUTS[row.input](tmp_path):
-            if inp.unprivileged:
-                continue
-            res = _run("cbf", cbf_c, ["validate", "--json", str(inp.path)], inp)
-            assert res.returncode == USAGE and res.stdout == "", (row.input, res)
-            assert len(res.stderr.splitlines()) == 1 and res.stderr.startswith(f"cbf: {inp.path}: ")
+    todo = []
+    for k, row in enumerate(rows):
+        (tmp_path / str(k)).mkdir()
+        todo += [(row, inp) for inp in INPUTS[row.input](tmp_path / str(k)) if not inp.unprivileged]
+    done = run_many([["validate", "--json", str(inp.path)] for _, inp in todo], ENV)  # one process
+    for (row, inp), (res, _) in zip(todo, done, strict=True):
+        assert res.returncode == USAGE and res.stdout == "", (row.input, res)
+        assert len(res.stderr.splitlines()) == 1 and res.stderr.startswith(f"cbf: {inp.path}: ")

@@ -4,6 +4,7 @@ validate. ``HYPOTHESIS_PROFILE=long`` runs many more examples (default: ci)."""
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import subprocess
@@ -32,6 +33,14 @@ CUTTERS = {"BALL6": (50.0, 3.0), "FLAT4": (42.5, 2.0)}
 DOCUMENTED = (cbf.CbfError,)
 
 
+@functools.cache
+def _cutfiles(max_records: int, profile: str, part_number: bool, cutters: bool) -> st.SearchStrategy[bytes]:
+    """cutfiles() built once per set of parameters, not once per example (building one
+    defines a composite strategy, which hypothesis inspects: about 6 ms)."""
+    return cutfiles(max_records=max_records, profile=profile, part_number="PN-42" if part_number else None,
+                    cutters=CUTTERS if cutters else None)
+
+
 @st.composite
 def _files(draw: st.DrawFn, max_records: int) -> tuple[dict[str, Any], bytes]:
     """A profile, maybe a part number and a cutter table, and a file valid under them."""
@@ -40,7 +49,7 @@ def _files(draw: st.DrawFn, max_records: int) -> tuple[dict[str, Any], bytes]:
         kw["part_number"] = "PN-42"
     if draw(st.booleans()):
         kw["cutters"] = CUTTERS
-    return kw, draw(cutfiles(max_records=max_records, **kw))
+    return kw, draw(_cutfiles(max_records, kw["profile"], "part_number" in kw, "cutters" in kw))
 
 
 def _errors(findings: list[cbf.Finding]) -> list[cbf.Finding]:
@@ -199,12 +208,18 @@ def test_cut_numbers_are_ascii_digits() -> None:
 
 
 # -- validate after encode -----------------------------------------------------------------
+@functools.cache
+def _models(profile: str) -> st.SearchStrategy[Cbf]:
+    """models() built once per profile, not once per example (see _cutfiles)."""
+    return models(versions=WRITABLE, profile=profile, max_records=12)
+
+
 @st.composite
 def _edited_models(draw: st.DrawFn) -> tuple[str, Cbf]:
     """A valid model, then one edit: random argument bytes, a record dropped, repeated,
     moved or replaced by any command of the version, a new reserved byte."""
     profile = draw(st.sampled_from(PROFILES))
-    model = draw(models(versions=WRITABLE, profile=profile, max_records=12))
+    model = draw(_models(profile))
     recs = list(model.records)
     cmds = [c for c in T.COMMANDS if c.layouts_for(model.version_id)]
     edit = draw(st.integers(0, 5))

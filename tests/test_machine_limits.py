@@ -17,7 +17,6 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -25,6 +24,7 @@ from typing import Any
 import jsonschema
 import pytest
 import yaml
+from cli_many import run_many
 
 import cbf
 from cbf import tables as T
@@ -219,25 +219,26 @@ def test_a_yaml_machine_file_reads_as_its_json(tmp_path: Path) -> None:
         load_machine(y)
 
 
-def _cbf_c(tmp: Path) -> Path | None:
+@pytest.fixture(scope="module")
+def cbf_c(tmp_path_factory: pytest.TempPathFactory) -> Path | None:
+    """cbf-c compiled once for this module, or None without a C compiler."""
     cc = shutil.which("gcc") or shutil.which("cc")
     if cc is None:
         return None
-    exe = tmp / "cbf-c"
+    exe = tmp_path_factory.mktemp("cbf_c") / "cbf-c"
     subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(REPO / "generated" / "c" / "cbf_tool.c"), "-lm"],
                    check=True, capture_output=True)
     return exe
 
 
-def test_both_tools_refuse_a_bad_machine_file_alike_with_exit_2(tmp_path: Path) -> None:
-    exe = _cbf_c(tmp_path)
+def test_both_tools_refuse_a_bad_machine_file_alike_with_exit_2(cbf_c: Path | None, tmp_path: Path) -> None:
+    exe = cbf_c
     data, _ = _file(CASES[0][1], CASES[0][2], None)
     target = tmp_path / "ok.cbf"
     target.write_bytes(data)
-    for name, doc in sorted(BAD.items()):
-        path = _machine_file(tmp_path, doc, f"{name}.json")
-        py = subprocess.run([sys.executable, "-m", "cbf", "validate", "--machine", str(path), str(target)],
-                            capture_output=True, text=True, env=ENV)
+    paths = {name: _machine_file(tmp_path, doc, f"{name}.json") for name, doc in sorted(BAD.items())}
+    pys = run_many([["validate", "--machine", str(path), str(target)] for path in paths.values()], ENV)  # one process
+    for (name, path), (py, _) in zip(paths.items(), pys, strict=True):
         assert py.returncode == 2 and py.stdout == "", (name, py)
         lines = py.stderr.splitlines()
         assert len(lines) == 1 and lines[0].startswith(f"cbf: {path}: "), (name, py.stderr)
@@ -250,11 +251,11 @@ def test_both_tools_refuse_a_bad_machine_file_alike_with_exit_2(tmp_path: Path) 
             assert c.stderr.strip().removeprefix("cbf-c: ") == lines[0].removeprefix("cbf: "), name
 
 
-def test_both_tools_give_the_same_findings_with_and_without_a_machine_file(tmp_path: Path) -> None:
+def test_both_tools_give_the_same_findings_with_and_without_a_machine_file(cbf_c: Path | None, tmp_path: Path) -> None:
     """Every target's values outside its limit, one record each in one file: `cbf validate` and
     `cbf-c validate` print the same machine_limits lines (one a record), without and with a
     machine file (one process per tool and mode, not one per value)."""
-    exe = _cbf_c(tmp_path)
+    exe = cbf_c
     if exe is None:
         pytest.skip("no C compiler")
     machine = _machine_file(tmp_path, machine_data(SPEC))
@@ -267,9 +268,9 @@ def test_both_tools_give_the_same_findings_with_and_without_a_machine_file(tmp_p
             records.append(cbf.Record(code=T.BY_NAME[command].code, raw_args=raw))
     f = tmp_path / "outside.cbf"
     f.write_bytes(seal(cbf.Cbf(cbf.new_header(T.DEFAULT_VERSION), tuple(records))))
-    for extra in ([], ["--machine", str(machine)]):
-        py = subprocess.run([sys.executable, "-m", "cbf", "validate", "--max-findings", "0", *extra, str(f)],
-                            capture_output=True, text=True, env=ENV)
+    modes: list[list[str]] = [[], ["--machine", str(machine)]]
+    pys = run_many([["validate", "--max-findings", "0", *extra, str(f)] for extra in modes], ENV)  # one process
+    for extra, (py, _) in zip(modes, pys, strict=True):
         c = subprocess.run([str(exe), "validate", *extra, str(f)], capture_output=True, text=True)
         want = [ln for ln in py.stdout.splitlines() if "machine_limits" in ln]
         assert len(want) == len(records) > len(CASES), (extra, py.stdout[-2000:])
