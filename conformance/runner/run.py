@@ -92,7 +92,7 @@ class Testee:
             self.proc.stdin.flush()
             line = self.lines.get(timeout=self.timeout)
         except queue.Empty:
-            self.stop()
+            self.stop(ask_first=False)  # it did not answer this request: it will not answer quit either
             raise RuntimeError(f"testee gave no answer within {self.timeout:g} s") from None
         except (BrokenPipeError, OSError) as exc:
             self.stop()
@@ -108,17 +108,24 @@ class Testee:
             raise RuntimeError("testee answered with something other than an object")
         return answer
 
-    def stop(self) -> None:
-        if self.proc is not None:
+    def stop(self, ask_first: bool = True) -> None:
+        """Ask the testee to quit (5 s), then kill it; or kill it at once (ask_first=False)."""
+        if self.proc is None:
+            return
+        quit_ = False
+        if ask_first:
             try:
                 if self.proc.poll() is None and self.proc.stdin:
                     self.proc.stdin.write('{"op": "quit"}\n')
                     self.proc.stdin.flush()
-                    self.proc.wait(timeout=5)
+                self.proc.wait(timeout=5)
+                quit_ = True
             except (OSError, subprocess.TimeoutExpired):
-                self.proc.kill()
-                self.proc.wait()
-            self.proc = None
+                pass
+        if not quit_:
+            self.proc.kill()
+            self.proc.wait()
+        self.proc = None
 
 
 def load_cases(golden: Path, prefixes: list[str] | None = None) -> list[Case]:
