@@ -46,6 +46,28 @@ def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
         assert "generate(" in text or "cbfgen" in text, f"{test} does not generate from a revised spec"
 
 
+def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
+    """The quick drill applies its fixtures to one tree: their spec edits, one after the other, give a spec
+    the loader accepts that holds each fixture's own revision (each changes what cbfgen diff says of it
+    alone), and no two of them add the same file."""
+    quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
+    assert len(quick) > 1
+    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    for fx in quick:
+        for edit in fx.edits:
+            if str(edit.get("file", drill.SPEC)) == drill.SPEC:
+                drill.apply_edit(doc, edit)
+    path = tmp_path / "cbf.yaml"
+    path.write_text(drill._dump(doc), encoding="utf-8")
+    together = load(path)
+    for fx in quick:
+        alone = load(drill.revised_spec(fx, SPEC, tmp_path / fx.name))
+        assert {v.id for v in alone.versions} <= {v.id for v in together.versions}, fx.name
+        assert {c.name for c in alone.commands} <= {c.name for c in together.commands}, fx.name
+    added = [rel for fx in quick for rel in fx.files]
+    assert len(added) == len(set(added)), "two quick fixtures add the same file"
+
+
 def test_the_quick_drill_leaves_out_only_the_large_golden_files() -> None:
     """The quick drill's conformance runs every golden case but the files over QUICK_MAX_BYTES (which the main
     tree's conformance runs): each case is named whole, and a threshold that drops small files fails here."""

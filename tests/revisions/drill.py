@@ -15,8 +15,11 @@ runs, in order: `cbfgen diff` (the classification the fixture states),
 `make generate`, `make golden` (the golden .cbf re-assembled from their
 .hex: the assembler follows the revised checksums), `make conformance`
 (every binding) and the test suite. `--quick` runs the subset `make test`
-uses (QUICK_BINDINGS and QUICK_TESTS below; mk/revision.mk has the times). It prints one line per step with its time and
-exits 1 when a step fails, showing the end of that step's output.
+uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
+the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
+then applies them all to ONE tree, where the steps run once (drill_together).
+It prints one line per step with its time and exits 1 when a step fails,
+showing the end of that step's output.
 
 Path syntax of an edit: keys separated by dots; `[N]` indexes a list,
 `[key=value]` picks the list item whose key equals value, `[*]` every
@@ -35,6 +38,7 @@ expectation of a golden case, a binding's known-failure list).
 from __future__ import annotations
 
 import argparse
+import copy
 import json
 import os
 import re
@@ -162,7 +166,7 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
 def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     op, path = edit.get("op"), str(edit.get("path", ""))
     slots = _resolve(root, path)
-    value = edit.get("value")
+    value = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
     if op == "set":
         for c, k in slots:
             c[k] = value
@@ -307,6 +311,30 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str,
             ("pytest" + (" (subset)" if quick else ""), pytest, env)]
 
 
+def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
+    """The steps of _steps in the tree at root, a line each; False at the first that fails (its output's end shown)."""
+    for name, cmd, extra in _steps(root, quick, keep_going):
+        t = time.monotonic()
+        env = dict(os.environ, **extra)
+        for var in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS"):
+            env.pop(var, None)
+        res = subprocess.run(cmd, cwd=root, env=env, capture_output=True, text=True, stdin=subprocess.DEVNULL)
+        good = res.returncode == 0
+        print(f"  {'ok' if good else 'FAIL':<4} {name} ({time.monotonic() - t:.1f} s)", flush=True)
+        if not good:
+            tail = (res.stdout + res.stderr).strip().splitlines()[-(80 if keep_going else 40):]
+            print("\n".join("       | " + line for line in tail))
+            return False
+    return True
+
+
+def _said(fx: Fixture, problems: list[str], t0: float, what: str) -> None:
+    print(f"{fx.name}: {fx.title}\n  adds: {fx.adds}")
+    verdict = "breaking" if fx.breaking else "not breaking"
+    print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
+          f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s {what})")
+
+
 def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> bool:
     root = Path(tempfile.mkdtemp(prefix=f"cbf-drill-{fx.name}-"))
     ok = True
@@ -315,25 +343,43 @@ def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> boo
         copy_tree(root)
         apply(fx, root)
         problems = check_diff(fx, REPO / SPEC, root / SPEC)
-        print(f"{fx.name}: {fx.title}\n  adds: {fx.adds}")
-        verdict = "breaking" if fx.breaking else "not breaking"
-        print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
-              f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s with the copy)")
-        ok = not problems
-        for name, cmd, extra in _steps(root, quick, keep_going):
-            t = time.monotonic()
-            env = dict(os.environ, **extra)
-            for var in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS"):
-                env.pop(var, None)
-            res = subprocess.run(cmd, cwd=root, env=env, capture_output=True, text=True, stdin=subprocess.DEVNULL)
-            good = res.returncode == 0
-            print(f"  {'ok' if good else 'FAIL':<4} {name} ({time.monotonic() - t:.1f} s)", flush=True)
-            if not good:
-                ok = False
-                tail = (res.stdout + res.stderr).strip().splitlines()[-(80 if keep_going else 40):]
-                print("\n".join("       | " + line for line in tail))
-                break
+        _said(fx, problems, t0, "with the copy")
+        ok = _run_steps(root, quick, keep_going) and not problems
         return ok
+    finally:
+        if keep or not ok:
+            print(f"  tree kept: {root}")
+        else:
+            shutil.rmtree(root, ignore_errors=True)
+
+
+def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: bool = False) -> dict[str, bool]:
+    """The quick drill: each fixture's `cbfgen diff` checked alone (on the spec it alone revises), then every
+    fixture applied, one after the other, to ONE copy of the tree, and the steps run once there (one generation,
+    one golden assembly, one testee build, one conformance run, one test run: half the CPU of a tree a
+    fixture). A failure fails every fixture of the run; `drill.py run FIXTURE` (and `make revision-drill`)
+    drills each alone."""
+    root = Path(tempfile.mkdtemp(prefix="cbf-drill-together-"))
+    results: dict[str, bool] = {}
+    ok = False
+    try:
+        t0 = time.monotonic()
+        copy_tree(root)
+        for fx in chosen:
+            t = time.monotonic()
+            problems = check_diff(fx, REPO / SPEC, revised_spec(fx, REPO / SPEC, root / "build" / "drill" / fx.name))
+            _said(fx, problems, t, "alone")
+            results[fx.name] = not problems
+        try:
+            for fx in chosen:
+                apply(fx, root)
+        except FixtureError as exc:
+            print(f"  FAIL the fixtures do not apply together: {exc}")
+            return dict.fromkeys(results, False)
+        print(f"together: {', '.join(fx.name for fx in chosen)}, applied to one copy of the tree "
+              f"({time.monotonic() - t0:.1f} s with the copy)")
+        ok = _run_steps(root, quick, keep_going)
+        return {name: good and ok for name, good in results.items()}
     finally:
         if keep or not ok:
             print(f"  tree kept: {root}")
@@ -386,7 +432,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"drill: {exc}", file=sys.stderr)
         return 2
     t0 = time.monotonic()
-    if args.jobs > 1 and len(chosen) > 1:
+    if args.quick and not args.fixture and len(chosen) > 1:
+        results = drill_together(chosen, args.quick, args.keep, args.keep_going)
+    elif args.jobs > 1 and len(chosen) > 1:
         results = _in_parallel(chosen, args)
     else:
         results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
