@@ -1,7 +1,7 @@
 # Reliability campaign (issue #7): conformance/reliability/README.md.
 #   reliability        the full campaign: every valid golden file, 10,000 differential
 #                      files; writes conformance/reliability.json, then the docs' table
-#   reliability-quick  the CI part (distinct golden files up to 700 bytes, a seeded tenth of
+#   reliability-quick  the CI part (distinct golden files up to 700 bytes, a seeded 4% of
 #                      the Python codec's corruption and blind-spot mutants, 1,000 differential
 #                      files); writes build/reliability/reliability.json
 #   fuzz-long          libFuzzer on the C harness for FUZZ_LONG_RUNS executions (10 M),
