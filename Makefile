@@ -21,6 +21,7 @@ STAMPS := build/stamps
 GENERATE_POST :=
 TEST_DEPS :=
 TEST_BUILD :=
+TEST_EARLY :=
 CONFORMANCE_BUILD :=
 -include mk/*.mk
 .PHONY: all venv generate generate-py check-generated check-spec lint typecheck test test-py clean help
@@ -106,13 +107,14 @@ test-py: venv
 # run (the testees, cbf-c, Chromium: TEST_BUILD), which read only committed files of generated/
 # (cbfgen and ksc replace a file atomically and only when its content changed; when one changes,
 # check-generated fails and so does `make test`). On a fresh clone the pip install of .venv takes
-# over a minute of one core: the builds fill the other. Then the checks run TEST_JOBS at a time,
+# over a minute of one core: the builds, and the checks that need no .venv (the C checks: TEST_EARLY),
+# fill the other. Then the checks run TEST_JOBS at a time,
 # each one's output printed whole (--output-sync). They only read the tree and write their own
 # build/ folders and temporary folders. The longest (pytest, the revision drill) start first.
 TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 test:  ## the full test suite (what CI runs)
 	@$(MAKE) setup
-	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse check-generated $(CONFORMANCE_BUILD) $(TEST_BUILD)
+	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse check-generated $(CONFORMANCE_BUILD) $(TEST_BUILD) $(TEST_EARLY)
 	@$(MAKE) bytecode
 	@$(MAKE) -j$(TEST_JOBS) --output-sync=recurse test-py $(filter revision-drill-quick,$(TEST_DEPS)) \
 	  $(filter-out revision-drill-quick,$(TEST_DEPS)) conformance lint
