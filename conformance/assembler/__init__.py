@@ -17,6 +17,7 @@ import math
 import operator
 import re
 import struct
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -76,21 +77,44 @@ def _parse(expr: str) -> ast.Expression:
     return ast.parse(expr, mode="eval")
 
 
-def _eval(expr: str, env: dict[str, int]) -> float:
-    def ev(node: ast.AST) -> float:
-        if isinstance(node, ast.Expression):
-            return ev(node.body)
-        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
-            return node.value
-        if isinstance(node, ast.Name) and node.id in env:
-            return env[node.id]
-        if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
-            return float(_OPS[type(node.op)](ev(node.left), ev(node.right)))
-        if isinstance(node, ast.UnaryOp) and type(node.op) in _OPS:
-            return float(_OPS[type(node.op)](ev(node.operand)))
-        raise ValueError(f"unsupported expression {expr!r}")
+Evaluator = Callable[[dict[str, int]], float]
 
-    return ev(_parse(expr))
+
+@functools.lru_cache(maxsize=4096)
+def _compile(expr: str) -> Evaluator:
+    """expr as a function of the variables, its syntax tree walked once (a `repeat` body evaluates the same
+    expressions thousands of times): +, -, *, /, //, %, unary minus, numbers and variable names."""
+
+    def unsupported() -> ValueError:
+        return ValueError(f"unsupported expression {expr!r}")
+
+    def comp(node: ast.AST) -> Evaluator:
+        if isinstance(node, ast.Expression):
+            return comp(node.body)
+        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
+            value = node.value
+            return lambda env: value
+        if isinstance(node, ast.Name):
+            name = node.id
+
+            def var(env: dict[str, int]) -> float:
+                if name not in env:
+                    raise unsupported()
+                return env[name]
+            return var
+        if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
+            fn, left, right = _OPS[type(node.op)], comp(node.left), comp(node.right)
+            return lambda env: float(fn(left(env), right(env)))
+        if isinstance(node, ast.UnaryOp) and type(node.op) in _OPS:
+            fn1, operand = _OPS[type(node.op)], comp(node.operand)
+            return lambda env: float(fn1(operand(env)))
+        raise unsupported()
+
+    return comp(_parse(expr))
+
+
+def _eval(expr: str, env: dict[str, int]) -> float:
+    return _compile(expr)(env)
 
 
 def _f32(tok: str, env: dict[str, int]) -> bytes:
@@ -107,10 +131,18 @@ def _f32(tok: str, env: dict[str, int]) -> bytes:
 
 
 _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|\S+')
+_HEX_BYTE = re.compile(r"[0-9a-fA-F]{2}")
 
 
 def _tokens(text: str) -> list[str]:
     return _TOKEN.findall(text)
+
+
+@functools.lru_cache(maxsize=4096)
+def _line(raw: str) -> tuple[str, tuple[str, ...]]:
+    """A source line's code (the comment cut off) and its tokens, made once per line text."""
+    code = raw.split("#", 1)[0].strip()
+    return code, tuple(_tokens(code))
 
 
 def assemble_text(text: str, path: str = "<text>", base: Path | None = None, spec: Path | None = None) -> bytes:
@@ -161,13 +193,11 @@ def _patch(st: _State, off: int, data: bytes, path: str, line: int) -> None:
 def _run(lines: list[str], start: int, end: int, st: _State, env: dict[str, int], path: str) -> None:
     i = start
     while i < end:
-        raw = lines[i]
-        code = raw.split("#", 1)[0].strip()
+        code, toks = _line(lines[i])
         lineno = i + 1
         i += 1
         if not code:
             continue
-        toks = _tokens(code)
         op = toks[0].lower()
         try:
             if op == "repeat":
@@ -191,12 +221,12 @@ def _run(lines: list[str], start: int, end: int, st: _State, env: dict[str, int]
             raise AsmError(path, lineno, f"{code!r}: {exc}") from None
 
 
-def _directive(op: str, toks: list[str], st: _State, env: dict[str, int], lineno: int) -> None:
+def _directive(op: str, toks: tuple[str, ...], st: _State, env: dict[str, int], lineno: int) -> None:
     out = st.out
     args = toks[1:]
-    if re.fullmatch(r"[0-9a-fA-F]{2}", toks[0]):
+    if _HEX_BYTE.fullmatch(toks[0]):
         for t in toks:
-            if not re.fullmatch(r"[0-9a-fA-F]{2}", t):
+            if not _HEX_BYTE.fullmatch(t):
                 raise ValueError(f"{t!r} is not a hex byte")
             out.append(int(t, 16))
     elif op in ("u8", "u16", "u32"):
