@@ -131,17 +131,20 @@ test:  ## the full test suite (what CI runs)
 	@$(MAKE) check-report
 
 # -- distributions (what users install) ------------------------------------------
-# `cbf` (codec + CLI, from generated/python), `cbfgen` (the generator) and `cbf-conformance`
-# (the runner with the golden cases, staged by conformance/kit.py), as wheels and
+# `cbf` (codec + CLI, from generated/python), `cbfgen` (the generator), `cbf-kaitai` (the Kaitai
+# Python parser, generated/kaitai/python) and `cbf-conformance` (the runner with the golden cases,
+# staged by conformance/kit.py), as wheels and
 # sdists in dist/. Built with the pinned setuptools of .venv (no download at build time).
 .PHONY: dist
-dist: generate-py  ## build the cbf, cbfgen and cbf-conformance wheels and sdists into dist/
+dist: generate  ## build the cbf, cbfgen, cbf-kaitai and cbf-conformance wheels and sdists into dist/
 	@rm -rf dist && mkdir -p dist
 	$(PY) -m build --no-isolation --outdir dist generated/python >/dev/null
 	$(PY) -m build --no-isolation --outdir dist generator >/dev/null
+	$(PY) -m build --no-isolation --outdir dist generated/kaitai/python >/dev/null
 	$(PY) -m conformance.kit build/kit >/dev/null
 	$(PY) -m build --no-isolation --outdir dist build/kit >/dev/null
-	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info
+	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info \
+	  generated/kaitai/python/build generated/kaitai/python/*.egg-info
 	@ls dist
 
 clean:
