@@ -5,13 +5,13 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import yaml
+from conftest import load_yaml
 
 from cbfgen.loader import load
 
 REPO = Path(__file__).resolve().parents[1]
 SPEC = load(REPO / "spec" / "cbf.yaml")
-EXPECT = {p.name[: -len(".expect.yaml")]: yaml.safe_load(p.read_text(encoding="utf-8"))
+EXPECT = {p.name[: -len(".expect.yaml")]: load_yaml(p)
           for p in (REPO / "conformance" / "golden").glob("*.expect.yaml")}
 
 

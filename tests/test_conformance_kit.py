@@ -13,8 +13,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-import yaml
-from conftest import clean_venv
+from conftest import clean_venv, load_yaml
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
@@ -52,7 +51,7 @@ def kit(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _expected_validate_failures() -> set[str]:
     out = set()
     for exp in GOLDEN.glob("*.expect.yaml"):
-        want = yaml.safe_load(exp.read_text(encoding="utf-8")).get("validate") or {}
+        want = load_yaml(exp).get("validate") or {}
         if any(want.values()):
             out.add(exp.name[: -len(".expect.yaml")])
     return out

@@ -11,6 +11,7 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import load_yaml
 
 from conformance.runner.compare import f32_bits, findings_difference, first_difference
 from conformance.runner.run import load_cases, read_failures, run_case, write_failures
@@ -20,7 +21,7 @@ REPO = Path(__file__).resolve().parents[1]
 
 def _scratch_codec(tmp: Path, edit: str) -> Path:
     """The Python codec generated from an edited copy of the spec."""
-    spec = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    spec = load_yaml(REPO / "spec" / "cbf.yaml")
     if edit == "swap_line_args":
         line = next(c for c in spec["commands"] if c["name"] == "LINE")
         args = line["layouts"][0]["args"]
@@ -110,7 +111,7 @@ def test_findings_compare_offsets() -> None:
 
 def test_every_golden_expectation_states_offsets() -> None:
     for exp in sorted((REPO / "conformance" / "golden").glob("*.expect.yaml")):
-        doc = yaml.safe_load(exp.read_text(encoding="utf-8"))
+        doc = load_yaml(exp)
         for profile, findings in (doc.get("validate") or {}).items():
             for f in findings or []:
                 assert len(f) == 4 and isinstance(f[3], int), (exp.name, profile, f)

@@ -6,7 +6,7 @@ import re
 from pathlib import Path
 
 import pytest
-from conftest import generate, spec_with_fixture_command
+from conftest import generate, load_yaml, spec_with_fixture_command
 
 from cbfgen.loader import load
 
@@ -79,14 +79,13 @@ RECORD_LEVEL = {"sequence", "code_copy", "arg_size", "arg_checksum", "reserved_b
 
 def test_command_pages_list_every_check_the_golden_cases_raise_on_them() -> None:
     """Each finding a golden case expects on a record is listed on that record's command page."""
-    import yaml
 
     from cbf.codec import decode
 
     kinds = {k.id: k.kind for k in SPEC.checks}
     seen = 0
     for expect in sorted((REPO / "conformance" / "golden").glob("*.expect.yaml")):
-        doc = yaml.safe_load(expect.read_text(encoding="utf-8"))
+        doc = load_yaml(expect)
         if doc.get("decode") != "ok":
             continue
         records = decode(expect.with_name(expect.name.replace(".expect.yaml", ".cbf")).read_bytes()).records

@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import yaml
+from conftest import load_yaml
 
 from conformance.assembler import AsmError, assemble, assemble_text
 
@@ -26,7 +26,7 @@ def test_reassembles_to_committed_bytes(name: str) -> None:
 
 @pytest.mark.parametrize("name", CASES)
 def test_expectation_is_well_formed(name: str) -> None:
-    exp = yaml.safe_load((GOLDEN / f"{name}.expect.yaml").read_text(encoding="utf-8"))
+    exp = load_yaml(GOLDEN / f"{name}.expect.yaml")
     assert isinstance(exp["description"], str) and exp["description"]
     assert exp["clauses"], "every case names the clauses it exercises"
     assert "decode" in exp

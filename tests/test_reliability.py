@@ -8,7 +8,7 @@ import tracemalloc
 from pathlib import Path
 
 import pytest
-import yaml
+from conftest import load_yaml
 
 import cbf
 from conformance.reliability.campaign import Base, Pool, Scratch, compare, detection, valid_bases
@@ -94,7 +94,7 @@ def test_valid_bases_are_the_error_free_golden_files() -> None:
     assert "valid.v3.small" in names and "valid.implib.checksum" in names
     assert "check.6.4.4.arg_checksum" not in names and "truncated.args" not in names
     for b in bases:  # warnings allowed, errors not, under the profile the base is used with
-        doc = yaml.safe_load((REPO / "conformance" / "golden" / f"{b.name}.expect.yaml").read_text(encoding="utf-8"))
+        doc = load_yaml(REPO / "conformance" / "golden" / f"{b.name}.expect.yaml")
         assert not [f for f in doc["validate"][b.profile] if f[1] == "error"], b
 
 

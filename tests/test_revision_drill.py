@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import YAML_LOADER, load_yaml
 from revisions import drill
 
 from cbfgen.loader import load
@@ -52,7 +53,7 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
     alone), and no two of them add the same file."""
     quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
     assert len(quick) > 1
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    doc = load_yaml(SPEC)
     for fx in quick:
         for edit in fx.edits:
             if str(edit.get("file", drill.SPEC)) == drill.SPEC:
@@ -108,7 +109,7 @@ def test_a_fixture_adds_golden_cases_and_expectations_only(path: Path, tmp_path:
     new_checks = {str(c["id"]) for e in fx.edits if e.get("path") == "checks" and e["op"] == "append"
                   for c in [e["value"]]}
     reported = {str(f[0]) for r, text in fx.files.items() if r.endswith(".expect.yaml")
-                for f in (yaml.safe_load(text).get("validate") or {}).get("default", [])}
+                for f in (yaml.load(text, Loader=YAML_LOADER).get("validate") or {}).get("default", [])}
     assert new_checks <= reported
 
 

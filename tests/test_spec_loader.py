@@ -15,12 +15,13 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import YAML_LOADER
 
 from cbfgen.loader import SpecError, load
 
 SPEC_PATH = Path(__file__).resolve().parents[1] / "spec" / "cbf.yaml"
 TEXT = SPEC_PATH.read_text(encoding="utf-8")
-RAW: dict[str, Any] = yaml.safe_load(TEXT)
+RAW: dict[str, Any] = yaml.load(TEXT, Loader=YAML_LOADER)
 SPEC = load(SPEC_PATH)
 
 

@@ -20,6 +20,9 @@ import yaml
 
 from .compare import findings_difference, first_difference
 
+# libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster.
+_YAML_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
 ROOT = Path(__file__).resolve().parents[1]
 REPO = ROOT.parent
 # Installed as the cbf-conformance kit, the golden cases ship beside the runner.
@@ -134,13 +137,13 @@ def load_cases(golden: Path, prefixes: list[str] | None = None) -> list[Case]:
         name = exp.name[: -len(".expect.yaml")]
         if prefixes and not any(name.startswith(p) for p in prefixes):
             continue
-        data = yaml.safe_load(exp.read_text(encoding="utf-8"))
+        data = yaml.load(exp.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
         cases.append(Case(name, golden / f"{name}.cbf", data))
     return cases
 
 
 def load_bindings(path: Path) -> list[Binding]:
-    data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    data = yaml.load(path.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
     return [Binding(b["name"], list(b["command"]), dict(b.get("env", {})), list(b.get("requires", [])))
             for b in data["bindings"]]
 

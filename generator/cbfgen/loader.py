@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 from collections.abc import Iterable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import jsonschema
 import yaml
@@ -60,7 +60,15 @@ class _Seq(list[Any]):
     line = 0
 
 
-class _Loader(yaml.SafeLoader):
+# libyaml's parser (PyYAML's C binding, in its wheels) when present: it reads the spec about ten
+# times faster than the pure-Python one, with the same marks (line, column) and the same safe types.
+if TYPE_CHECKING:  # the stubs type both alike
+    _SafeLoader = yaml.SafeLoader
+else:
+    _SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+class _Loader(_SafeLoader):
     """A SafeLoader that remembers lines and refuses duplicate keys."""
 
 
