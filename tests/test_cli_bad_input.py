@@ -14,6 +14,7 @@ import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import pytest
 from cli_many import run_many
@@ -26,19 +27,6 @@ REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 VALID = GOLDEN / "valid.v3.small.cbf"
-# The CLI, then its peak resident memory (VmHWM: ru_maxrss would carry the parent's peak over exec).
-RUNNER = r"""
-import sys
-from cbf.cli import main
-try:
-    rc = main(sys.argv[2:])
-finally:
-    peak = [l.split()[1] for l in open("/proc/self/status") if l.startswith("VmHWM")]
-    open(sys.argv[1], "w").write(peak[0] if peak else "0")
-sys.exit(rc)
-"""
-
-
 def _subcommands() -> dict[str, argparse.ArgumentParser]:
     for action in parser()._actions:
         if isinstance(action, argparse._SubParsersAction):
@@ -117,15 +105,6 @@ CASES = [
 ]
 
 
-def _run(tmp: Path, *args: str, prefix: Sequence[str] = ()) -> tuple[subprocess.CompletedProcess[str], int]:
-    peak_file = tmp / "peak.txt"
-    res = subprocess.run([*prefix, sys.executable, "-c", RUNNER, str(peak_file), *args], env=ENV,
-                         capture_output=True, text=True, stdin=subprocess.DEVNULL)
-    peak = int(peak_file.read_text() or 0)
-    peak_file.unlink()
-    return res, peak
-
-
 def _argv(cmd: str, path: Path, out: Path) -> list[str]:
     return [cmd, str(path), *EXTRA_ARGS.get(cmd, [])] + (["-o", str(out)] if _has_output(SUBCOMMANDS[cmd]) else [])
 
@@ -152,21 +131,122 @@ def _assert_outcome(res: subprocess.CompletedProcess[str], code: int, needles: t
         assert needle in text, (needle, text)
 
 
+Result = tuple[subprocess.CompletedProcess[str], int]  # cli_many's: the outcome, the peak memory in kB
+Ran = tuple[Path, Path, list[Result]]  # a case's input, its output folder, every subcommand's result
+Shared = dict[str, tuple[Any, list[Result]]]  # the one_process fixture's
+
+
+def _case_lines(cases: Sequence[Case], tmp: Path) -> tuple[dict[str, tuple[Path, Path]], list[list[str]]]:
+    """Each case's input and output folder, made in tmp, and the command lines running every
+    subcommand on each input, case by case."""
+    made: dict[str, tuple[Path, Path]] = {}
+    argvs = []
+    for case in cases:
+        src, out_dir = tmp / case.name / "in", tmp / case.name / "out"
+        src.mkdir(parents=True)
+        out_dir.mkdir()
+        made[case.name] = (case.make(src), out_dir)
+        argvs += [_argv(cmd, made[case.name][0], out_dir / f"{cmd}.out") for cmd in SUBCOMMANDS]
+    return made, argvs
+
+
+def _ran(made: dict[str, tuple[Path, Path]], results: list[Result]) -> dict[str, Ran]:
+    n = len(SUBCOMMANDS)
+    return {name: (path, out, results[k * n:(k + 1) * n]) for k, (name, (path, out)) in enumerate(made.items())}
+
+
+CUTTER_TABLE = "name,length,radius\nBALL6,50,3\nFLAT4,forty,2\n"
+JSON_CHOKES = [
+    ("deep", "[" * 100_000 + "]" * 100_000, "nested too deep"),
+    ("long_number", '{"header": ' + "1" * 5000 + "}", "digits"),
+    ("not_json", '{"header": {"version_major": 3,}}', "line 1: not JSON"),
+]
+
+
+def _lone_lines(tmp: Path) -> tuple[dict[str, Path], list[list[str]]]:
+    """The input of test_a_bad_cutter_table_is_named_once and of each test_json_the_parser_chokes_on,
+    made in tmp, and their command lines."""
+    tmp.mkdir()
+    inputs = {"cutters": tmp / "cutters.csv"}
+    inputs["cutters"].write_text(CUTTER_TABLE)
+    argvs = [["validate", str(VALID), "--cutters", str(inputs["cutters"])]]
+    for name, text, _ in JSON_CHOKES:
+        (tmp / name).mkdir()
+        src = inputs[name] = tmp / name / f"{name}.json"
+        src.write_text(text)
+        argvs.append(["encode", str(src), "-o", str(tmp / name / "out.cbf")])
+    return inputs, argvs
+
+
+BAD_USAGE = [[], ["nope"], *([cmd] for cmd in SUBCOMMANDS), *([cmd, "x", "--nope"] for cmd in SUBCOMMANDS)]
+
+
+def _missing_folder_lines(tmp: Path) -> tuple[list[Path], list[list[str]]]:
+    """test_output_in_a_missing_folder's targets and command lines, in order: a decode writes the
+    CUT text the encode then reads."""
+    tmp.mkdir()
+    cut = tmp / "a.cut"
+    inputs = {cmd: cut if cmd in TEXT_INPUT else VALID for cmd in SUBCOMMANDS}
+    writers = [cmd for cmd in SUBCOMMANDS if _has_output(SUBCOMMANDS[cmd])]
+    targets = [tmp / "no" / "such" / f"{cmd}.out" for cmd in writers]
+    argvs = [_argv(cmd, inputs[cmd], target) for cmd, target in zip(writers, targets, strict=True)]
+    return targets, [["decode", str(VALID), "--to", "cut", "-o", str(cut)], *argvs]
+
+
+def _bom_lines(tmp: Path) -> tuple[tuple[int, Path], list[list[str]]]:
+    """test_a_byte_order_mark_is_accepted's input, CUT text as `decode --to cut` writes it (run in
+    this process) with a byte order mark put before it; the decode's exit code, the encode's target
+    and its command line."""
+    from cbf.cli import main
+
+    tmp.mkdir()
+    cut = tmp / "a.cut"
+    decoded = main(["decode", str(VALID), "--to", "cut", "-o", str(cut)])
+    if cut.exists():
+        cut.write_bytes(b"\xef\xbb\xbf" + cut.read_bytes())
+    return (decoded, tmp / "a.cbf"), [["encode", str(cut), "-o", str(tmp / "a.cbf")]]
+
+
+def _case_group(tmp: Path) -> tuple[dict[str, tuple[Path, Path]], list[list[str]]]:
+    # no_permission needs a process held to the mode bits (its test runs it); random_100mb comes
+    # first, so that its peak memory is measured as in a process of its own
+    return _case_lines(sorted((c for c in CASES if c.name != "no_permission"), key=lambda c: c.name != "random_100mb"),
+                       tmp)
+
+
+# What each group of command lines needs (made in a folder of its own) and the lines, in order.
+GROUPS: dict[str, Callable[[Path], tuple[Any, list[list[str]]]]] = {
+    "cases": _case_group, "lone": _lone_lines, "usage": lambda tmp: (None, BAD_USAGE),
+    "missing_folder": _missing_folder_lines, "bom": _bom_lines}
+
+
+@pytest.fixture(scope="module")
+def one_process(tmp_path_factory: pytest.TempPathFactory) -> Shared:
+    """Every command line of this module that needs no process of its own, all in one process
+    (cli_many: each judged by its own exit code, output and peak memory, as if alone) instead of
+    one process a test (0.22 CPU s of interpreter and imports each); by group, what the group's
+    test needs to judge them and their results."""
+    tmp = tmp_path_factory.mktemp("one_process")
+    groups = {name: make(tmp / name) for name, make in GROUPS.items()}
+    results = run_many([argv for _, argvs in groups.values() for argv in argvs], ENV)
+    out: Shared = {}
+    for name, (made, argvs) in groups.items():
+        out[name], results = (made, results[:len(argvs)]), results[len(argvs):]
+    return out
+
+
 def test_the_table_covers_the_cli() -> None:
     assert set(SUBCOMMANDS) >= TEXT_INPUT | REPORTS_FINDINGS
     assert [c for c in SUBCOMMANDS if _has_output(SUBCOMMANDS[c])], "no subcommand writes a file"
 
 
 @pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
-def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
-    prefix = unprivileged_prefix() if case.name == "no_permission" else []
-    src = tmp_path / "in"
-    src.mkdir()
-    path = case.make(src)
-    out_dir = tmp_path / "out"
-    out_dir.mkdir()
-    argvs = [_argv(cmd, path, out_dir / f"{cmd}.out") for cmd in SUBCOMMANDS]
-    results = run_many(argvs, ENV, prefix=prefix)
+def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path, one_process: Shared) -> None:
+    if case.name == "no_permission":
+        made, argvs = _case_lines([case], tmp_path)
+        path, out_dir, results = _ran(made, run_many(argvs, ENV, prefix=unprivileged_prefix()))[case.name]
+    else:
+        path, out_dir, results = _ran(*one_process["cases"])[case.name]
     assert list(out_dir.iterdir()) == [], f"output written for bad input: {sorted(out_dir.iterdir())}"
     for cmd, (res, peak_kb) in zip(SUBCOMMANDS, results, strict=True):
         code, needles = _expect(case, cmd)
@@ -176,18 +256,12 @@ def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path) -> None:
             assert peak_kb < 60_000, f"{cmd}: peak RSS {peak_kb} kB for a 100 MB input"
 
 
-def test_output_in_a_missing_folder(tmp_path: Path) -> None:
-    cut = tmp_path / "a.cut"
-    inputs = {cmd: cut if cmd in TEXT_INPUT else VALID for cmd in SUBCOMMANDS}
-    writers = [cmd for cmd in SUBCOMMANDS if _has_output(SUBCOMMANDS[cmd])]
-    targets = [tmp_path / "no" / "such" / f"{cmd}.out" for cmd in writers]
-    # one process, in order: the decode writes the CUT text the encode then reads
-    argvs = [_argv(cmd, inputs[cmd], target) for cmd, target in zip(writers, targets, strict=True)]
-    (res, _), *results = run_many([["decode", str(VALID), "--to", "cut", "-o", str(cut)], *argvs], ENV)
+def test_output_in_a_missing_folder(one_process: Shared) -> None:
+    targets, ((res, _), *results) = one_process["missing_folder"]
     assert res.returncode == 0, res.stderr
     for target, (res, _) in zip(targets, results, strict=True):
         _assert_outcome(res, EXIT_USAGE, (str(target), "does not exist"))
-    assert not (tmp_path / "no").exists()
+    assert not (targets[0].parents[1]).exists()
 
 
 # -- an encode killed mid-write ------------------------------------------------------------------
@@ -249,35 +323,28 @@ def test_an_encode_killed_mid_write_leaves_the_target_whole(tmp_path: Path) -> N
     assert sorted(p.name for p in tmp_path.iterdir()) == ["big.cut", "out.cbf"]
 
 
-def test_a_bad_cutter_table_is_named_once(tmp_path: Path) -> None:
-    table = tmp_path / "cutters.csv"
-    table.write_text("name,length,radius\nBALL6,50,3\nFLAT4,forty,2\n")
-    res, _ = _run(tmp_path, "validate", str(VALID), "--cutters", str(table))
+def test_a_bad_cutter_table_is_named_once(one_process: Shared) -> None:
+    inputs, results = one_process["lone"]
+    table, (res, _) = inputs["cutters"], results[list(inputs).index("cutters")]
+    assert table.read_text() == CUTTER_TABLE
     _assert_outcome(res, EXIT_USAGE, (str(table), "line 3"))
     assert res.stderr.count("line 3") == 1, res.stderr
 
 
-@pytest.mark.parametrize(("name", "text", "needle"), [
-    ("deep", "[" * 100_000 + "]" * 100_000, "nested too deep"),
-    ("long_number", '{"header": ' + "1" * 5000 + "}", "digits"),
-    ("not_json", '{"header": {"version_major": 3,}}', "line 1: not JSON"),
-])
-def test_json_the_parser_chokes_on(name: str, text: str, needle: str, tmp_path: Path) -> None:
-    src = tmp_path / f"{name}.json"
-    src.write_text(text)
-    res, _ = _run(tmp_path, "encode", str(src), "-o", str(tmp_path / "out.cbf"))
+@pytest.mark.parametrize(("name", "text", "needle"), JSON_CHOKES)
+def test_json_the_parser_chokes_on(name: str, text: str, needle: str, one_process: Shared) -> None:
+    inputs, results = one_process["lone"]
+    src, (res, _) = inputs[name], results[list(inputs).index(name)]
+    assert src.read_text() == text
     _assert_outcome(res, EXIT_USAGE, (str(src), needle))
-    assert not (tmp_path / "out.cbf").exists()
+    assert not (src.parent / "out.cbf").exists()
 
 
-def test_a_byte_order_mark_is_accepted(tmp_path: Path) -> None:
-    cut = tmp_path / "a.cut"
-    res, _ = _run(tmp_path, "decode", str(VALID), "--to", "cut", "-o", str(cut))
+def test_a_byte_order_mark_is_accepted(one_process: Shared) -> None:
+    (decoded, target), ((res, _),) = one_process["bom"]
+    assert decoded == 0
     assert res.returncode == 0, res.stderr
-    cut.write_bytes(b"\xef\xbb\xbf" + cut.read_bytes())
-    res, _ = _run(tmp_path, "encode", str(cut), "-o", str(tmp_path / "a.cbf"))
-    assert res.returncode == 0, res.stderr
-    assert (tmp_path / "a.cbf").read_bytes() == VALID.read_bytes()
+    assert target.read_bytes() == VALID.read_bytes()
 
 
 def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> None:
@@ -295,18 +362,10 @@ def test_text_is_read_in_chunks_without_splitting_characters(tmp_path: Path) -> 
         _read_text(str(p), 99)
 
 
-BAD_USAGE = [[], ["nope"], *([cmd] for cmd in SUBCOMMANDS), *([cmd, "x", "--nope"] for cmd in SUBCOMMANDS)]
-
-
-@pytest.fixture(scope="module")
-def bad_usage() -> dict[str, subprocess.CompletedProcess[str]]:
-    """Each bad command line's result, all from one process (cli_many)."""
-    return {" ".join(argv): res for argv, (res, _) in zip(BAD_USAGE, run_many(BAD_USAGE, ENV), strict=True)}
-
-
 @pytest.mark.parametrize("argv", BAD_USAGE, ids=" ".join)
-def test_bad_usage_is_one_line(argv: list[str], bad_usage: dict[str, subprocess.CompletedProcess[str]]) -> None:
-    _assert_outcome(bad_usage[" ".join(argv)], EXIT_USAGE, ("--help",))
+def test_bad_usage_is_one_line(argv: list[str], one_process: Shared) -> None:
+    _, results = one_process["usage"]
+    _assert_outcome(results[BAD_USAGE.index(argv)][0], EXIT_USAGE, ("--help",))
 
 
 @pytest.mark.parametrize("unnamed", [True, False], ids=["O_TMPFILE", "named_temp"])

@@ -16,12 +16,13 @@ import base64
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from _b_built import built
+from cli_many import run_many
 
 import cbf
 from cbf import tables as T
@@ -117,26 +118,22 @@ def test_implib_writes_its_own_layout_from_json(tmp_path: Path) -> None:
         assert r["arg_size"] == names[r["command"]][1].size  # the long layout, as JSON gives it
     src = tmp_path / "in.json"
     src.write_text(json.dumps(doc))
-    out = tmp_path / "out.cbf"
-    res = run("encode", str(src), "--profile", profile, "-o", str(out))
+    out, plain = tmp_path / "out.cbf", tmp_path / "plain.cbf"
+    (res, _), (res_plain, _) = run_many([["encode", str(src), "--profile", profile, "-o", str(out)],
+                                         ["encode", str(src), "-o", str(plain)]], ENV)  # one process
     assert res.returncode == 0, res.stderr
     written = cbf.decode(out.read_bytes())
     sizes = [len(r.raw_args) for r in written.records if T.BY_CODE[r.code].name in names]
     assert sizes == [names[r["command"]][0].size for r in present]
     assert cbf.validate(out.read_bytes(), profile=profile) == []
     # the default profile still writes the default layout, unchanged
-    res = run("encode", str(src), "-o", str(out))
-    assert res.returncode == 0 and out.read_bytes() == SMALL.read_bytes()
+    assert res_plain.returncode == 0 and plain.read_bytes() == SMALL.read_bytes()
 
 
-def _c_testee(tmp_path: Path) -> Path:
-    cc = shutil.which("gcc")
-    if cc is None:
-        pytest.skip("gcc not installed")
-    exe = tmp_path / "cbf_testee"
-    subprocess.run([cc, "-std=c99", "-O1", "-o", str(exe), str(REPO / "generated" / "c" / "cbf_testee.c"), "-lm"],
-                   check=True, capture_output=True)
-    return exe
+@pytest.fixture(scope="module")
+def c_testee() -> Path:
+    """The C conformance testee as `make c-build` builds it (not compiled again per test: _b_built)."""
+    return built("cbf_testee")
 
 
 def _c_encode(exe: Path, doc: dict[str, object], profile: str) -> dict[str, object]:
@@ -146,14 +143,14 @@ def _c_encode(exe: Path, doc: dict[str, object], profile: str) -> dict[str, obje
     return out
 
 
-def test_c_writer_writes_the_implib_layout_like_python(tmp_path: Path) -> None:
+def test_c_writer_writes_the_implib_layout_like_python(c_testee: Path) -> None:
     """The C writer under implib writes the profile's own layout (the 16-byte VERSION), byte for
     byte what the Python writer writes; the default profile keeps the JSON's layout."""
     profile = _implib()
     names = {cmd.name: (lay, other) for cmd, lay, other in _profile_layouts(profile)}
     doc = cbf.to_canonical(cbf.decode(SMALL.read_bytes()))
     assert any(r["command"] in names for r in doc["records"])
-    exe = _c_testee(tmp_path)
+    exe = c_testee
     got = _c_encode(exe, doc, profile)
     assert got["ok"] is True, got
     data = base64.b64decode(str(got["bytes"]))
@@ -167,14 +164,14 @@ def test_c_writer_writes_the_implib_layout_like_python(tmp_path: Path) -> None:
     assert default["ok"] is True and base64.b64decode(str(default["bytes"])) == SMALL.read_bytes()
 
 
-def test_c_writer_refuses_what_the_implib_layout_cannot_hold(tmp_path: Path) -> None:
+def test_c_writer_refuses_what_the_implib_layout_cannot_hold(c_testee: Path) -> None:
     profile = _implib()
     cmd, lay, other = _profile_layouts(profile)[0]
     doc = cbf.to_canonical(cbf.decode(SMALL.read_bytes()))
     rec = next(r for r in doc["records"] if r["command"] == cmd.name)
     cut_off = [f for f in other.args if f not in lay.args]
     rec["args"][cut_off[0].name] = "01" + "00" * (cut_off[0].size - 1)  # a non-zero reserved byte
-    got = _c_encode(_c_testee(tmp_path), doc, profile)
+    got = _c_encode(c_testee, doc, profile)
     assert got["ok"] is False, got
 
 
@@ -232,7 +229,10 @@ def test_cli_decode_to_cut_under_implib_refuses_in_one_line(tmp_path: Path) -> N
     profile = _implib()
     src = tmp_path / "ph.cbf"
     src.write_bytes(cbf.encode(_with_cutter_name("ph-1.a")))
-    line = _one_line_exit_2(run("decode", str(src), "--to", "cut", "--profile", profile, "-o", str(tmp_path / "o.cut")))
+    (refused, _), (default, _) = run_many([
+        ["decode", str(src), "--to", "cut", "--profile", profile, "-o", str(tmp_path / "o.cut")],
+        ["decode", str(src), "--to", "cut"]], ENV)  # one process
+    line = _one_line_exit_2(refused)
     assert "ph-1.a" in line and profile in line
     assert not (tmp_path / "o.cut").exists()
-    assert run("decode", str(src), "--to", "cut").returncode == 0
+    assert default.returncode == 0

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
+import os
 from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_many import run_many
 
 from cbf import tables as T
 from cbf.codec import decode
@@ -98,26 +98,22 @@ def test_one_figure_gives_every_format_the_bytes_it_gives_alone() -> None:
 
 
 def test_cli_plot_and_bad_output(tmp_path: Path) -> None:
+    """Both command lines in one process (cli_many: each judged by its own exit code and output;
+    a process of its own imports matplotlib, about 0.5 CPU s, for each)."""
     src = GOLDEN / "valid.v3.all_commands.cbf"
     out = tmp_path / "p.svg"
-    r = subprocess.run([sys.executable, "-m", "cbf", "plot", str(src), "-o", str(out), "--color", "shape"],
-                       capture_output=True, text=True)
+    (r, _), (bad, _) = run_many([["plot", str(src), "-o", str(out), "--color", "shape"],
+                                 ["plot", str(src), "-o", str(tmp_path / "p.bmp")]], os.environ)
     assert r.returncode == 0, r.stderr
     assert out.read_bytes().lstrip().startswith(b"<?xml")
-    r = subprocess.run([sys.executable, "-m", "cbf", "plot", str(src), "-o", str(tmp_path / "p.bmp")],
-                       capture_output=True, text=True)
-    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--format" in r.stderr
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--format" in bad.stderr
 
 
 def test_cbf_starts_without_matplotlib() -> None:
-    code = ("import sys; sys.modules['matplotlib'] = None\n"
-            "from cbf.cli import main\n"
-            "sys.exit(main(['plot', sys.argv[1], '-o', sys.argv[2]]))")
-    r = subprocess.run([sys.executable, "-c", code, str(GOLDEN / "valid.v3.small.cbf"), "/tmp/unused-h7.png"],
-                       capture_output=True, text=True)
+    """matplotlib made unimportable (as for a user without it), both command lines in one process."""
+    small = str(GOLDEN / "valid.v3.small.cbf")
+    (r, _), (stats, _) = run_many([["plot", small, "-o", "/tmp/unused-h7.png"], ["stats", small]], os.environ,
+                                  hide=["matplotlib"])
     assert r.returncode == 2
     assert r.stderr.strip().endswith("pip install 'cbf[plot]'") and r.stderr.count("\n") == 1
-    r = subprocess.run([sys.executable, "-c", "import sys; sys.modules['matplotlib'] = None\n"
-                        "from cbf.cli import main; sys.exit(main(['stats', sys.argv[1]]))",
-                        str(GOLDEN / "valid.v3.small.cbf")], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+    assert stats.returncode == 0, stats.stderr
