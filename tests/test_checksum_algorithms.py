@@ -19,7 +19,7 @@ from typing import Any
 
 import pytest
 import yaml
-from _b_built import built
+from c_programs import built
 
 from cbf import checksums as runtime
 from cbfgen.loader import SpecError, load
@@ -228,7 +228,7 @@ def test_checksum_messages_c() -> None:
     import json
 
     ids, cases = _checksum_cases()
-    testee = built("cbf_testee")  # as make c-build builds it, not compiled again here (_b_built)
+    testee = built("cbf_testee")  # as make c-build builds it, not compiled again here (c_programs.py)
     req = "".join(json.dumps({"op": "validate", "file": str(p), "profile": "default", "part_number": None,
                               "cutters": None}) + "\n" for p in cases) + '{"op": "quit"}\n'
     ans = subprocess.run([str(testee)], input=req, capture_output=True, text=True, check=True)

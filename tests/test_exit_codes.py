@@ -10,7 +10,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 from collections.abc import Callable
@@ -19,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from c_programs import built
 from cli_many import run_many
 from conftest import file_maker, locked_file, unprivileged_prefix
 
@@ -376,11 +376,11 @@ def test_every_row_has_its_input_and_every_input_its_row() -> None:
 # -- the two tools ----------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def cbf_c() -> Path:
-    """cbf-c as `make c-build` builds it (make, so an up-to-date tool is reused, not compiled again)."""
-    if shutil.which("gcc") is None:
-        pytest.skip("gcc not installed")
-    subprocess.run(["make", "-s", "-C", str(REPO), str(CBF_C.relative_to(REPO))], check=True, capture_output=True)
-    return CBF_C
+    """cbf-c as `make c-build` builds it (c_programs.built: an up-to-date tool is reused, not compiled again,
+    and two workers never build it at once)."""
+    path = built(CBF_C.name)
+    assert path == CBF_C
+    return path
 
 
 HIDE_MATPLOTLIB = "import sys, runpy; sys.modules['matplotlib'] = None; sys.argv[0] = 'cbf'; " \

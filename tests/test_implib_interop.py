@@ -21,7 +21,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from _b_built import built
+from c_programs import built
 from cli_many import run_many
 
 import cbf
@@ -132,7 +132,7 @@ def test_implib_writes_its_own_layout_from_json(tmp_path: Path) -> None:
 
 @pytest.fixture(scope="module")
 def c_testee() -> Path:
-    """The C conformance testee as `make c-build` builds it (not compiled again per test: _b_built)."""
+    """The C conformance testee as `make c-build` builds it (not compiled again per test: c_programs.py)."""
     return built("cbf_testee")
 
 

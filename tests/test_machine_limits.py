@@ -24,7 +24,7 @@ from typing import Any
 import jsonschema
 import pytest
 import yaml
-from _b_built import built
+from c_programs import built
 from cli_many import run_many
 
 import cbf
@@ -222,7 +222,7 @@ def test_a_yaml_machine_file_reads_as_its_json(tmp_path: Path) -> None:
 
 @pytest.fixture(scope="module")
 def cbf_c() -> Path | None:
-    """cbf-c as `make c-build` builds it (not compiled again here: _b_built), or None without gcc."""
+    """cbf-c as `make c-build` builds it (not compiled again here: c_programs.py), or None without gcc."""
     try:
         return built("cbf-c")
     except pytest.skip.Exception:
