@@ -98,9 +98,13 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 	@mkdir -p $(@D) && touch $@
 
 # One worker per core; a test file stays on one worker (--dist loadfile), so module-scoped
-# fixtures (built wheels, venvs) are made once.
+# fixtures (built wheels, venvs) are made once. The two plugins the suite uses are named, not
+# autoloaded: an autoloaded plugin's package is marked for pytest's assertion rewriting, which
+# PYTHONDONTWRITEBYTECODE never lets it cache (hypothesis' modules: about 0.6 CPU s a process).
+PYTEST_PLUGINS_NAMED := -p xdist.plugin -p _hypothesis_pytestplugin
 test-py: venv
-	$(PY) -m pytest -p no:cacheprovider -n auto --dist loadfile --junitxml=build/test-results/pytest.xml
+	PYTEST_DISABLE_PLUGIN_AUTOLOAD=1 $(PY) -m pytest -p no:cacheprovider $(PYTEST_PLUGINS_NAMED) -n auto --dist loadfile \
+	  --junitxml=build/test-results/pytest.xml
 
 # `make test`: the toolchains first (setup, alone: apt-get takes one lock); then ONE make of
 # TEST_JOBS jobs (one per core) runs everything else as one graph (test-run), so that no core
