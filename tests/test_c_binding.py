@@ -4,6 +4,8 @@ regeneration, with no code change."""
 
 from __future__ import annotations
 
+import copy
+import functools
 import json
 import re
 import shutil
@@ -11,12 +13,14 @@ import subprocess
 import sys
 import zlib
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
 from conftest import cover_missing
 
 from cbfgen.loader import load
+from cbfgen.model import Spec
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
@@ -97,9 +101,27 @@ def _generate(spec: Path, out: Path) -> None:
                    check=True, env=env, cwd=ROOT, capture_output=True)
 
 
+@functools.cache
+def _model() -> Spec:
+    """The model of spec/cbf.yaml, loaded once per module (about 0.17 CPU s a load); tests only read it."""
+    return load(SPEC)
+
+
+@functools.cache
+def _parsed() -> dict[str, Any]:
+    return yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+
+
+def _doc() -> dict[str, Any]:
+    """The spec's YAML, parsed once per module (about 0.13 CPU s a parse): a copy the caller may edit.
+    (The DWELL and CRC-32 edits stay in trees of their own: under CRC-32 the C validator no longer
+    folds the file's byte sum into its record pass, a path the DWELL record must go through.)"""
+    return copy.deepcopy(_parsed())
+
+
 def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
     cc = _need("gcc")
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    doc = _doc()
     doc["units"]["s"] = {"doc": "second"}
     doc["commands"].append(DWELL)
     # every version without the command is named by exactly one availability check (loader.py)
@@ -114,7 +136,7 @@ def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
                    "CBF_LAYOUT_DWELL =", '"DWELL"'):
         assert needle in header, needle
     # The enum is sorted by code: DWELL sits between the commands with the codes around its own.
-    model = load(SPEC)
+    model = _model()
     below = max((c for c in model.commands if c.code < DWELL["code"]), key=lambda c: c.code)
     above = min((c for c in model.commands if c.code > DWELL["code"]), key=lambda c: c.code)
     assert header.index(f"CBF_CMD_{below.name} = 0x{below.code:02X}") < header.index("CBF_CMD_DWELL = 0x44") < (
@@ -180,8 +202,8 @@ int main(void)
 def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
     """FORMAT-NOTES: another algorithm must be a one-line spec change; the C codec follows it."""
     cc = _need("gcc")
-    model = load(SPEC)
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    model = _model()
+    doc = _doc()
     next(f for f in doc["checksums"]["fields"] if f["field"] == "file")["algorithm"] = "crc32"
     for p in doc["profiles"]:
         p.pop("file_algorithm", None)  # the field's algorithm, under every profile
@@ -207,7 +229,7 @@ def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
 
 def test_templates_and_emitter_name_no_format_detail() -> None:
     """Command names, codes and check ids come from the model, never from the C templates or emitter."""
-    doc = yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    doc = _parsed()
     folder = ROOT / "generator" / "cbfgen" / "emit" / "c"
     text = "\n".join(p.read_text(encoding="utf-8") for p in sorted(folder.rglob("*"))
                      if p.is_file() and p.suffix in (".py", ".j2"))

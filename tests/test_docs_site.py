@@ -7,6 +7,7 @@ not a previous build. The link checkers are themselves tested on broken pages.
 
 from __future__ import annotations
 
+import functools
 import json
 import posixpath
 import re
@@ -34,9 +35,17 @@ CASES = golden.load_cases(docs.GOLDEN)
 
 # -- helpers ---------------------------------------------------------------------
 
+@functools.cache
+def _emitted() -> dict[str, bytes]:
+    """docs.emit(SPEC), made once per module (about 0.27 CPU s a call): the tests only read it.
+    test_pages_and_figures_are_deterministic compares it with a call of its own."""
+    return docs.emit(SPEC)
+
+
 def _md_pages(spec: Spec) -> dict[str, str]:
     """The Markdown pages of the emitter, by path relative to the docs folder."""
-    return {rel[len("docs/"):]: data.decode() for rel, data in docs.emit(spec).items() if rel.endswith(".md")}
+    emitted = _emitted() if spec is SPEC else docs.emit(spec)
+    return {rel[len("docs/"):]: data.decode() for rel, data in emitted.items() if rel.endswith(".md")}
 
 
 def _md_links(text: str) -> list[str]:
@@ -86,6 +95,14 @@ def parse_html(text: str) -> ET.Element:
     return tree
 
 
+@functools.cache
+def _parsed_page(path: Path) -> ET.Element:
+    """parse_html of a page of the module's html_site, once per module (the 161 pages take about
+    1.3 CPU s): the tests only read the trees. A parse error is not cached, so it raises again in
+    every test that reads the page."""
+    return parse_html(path.read_text(encoding="utf-8"))
+
+
 def _ids(tree: ET.Element) -> list[str]:
     return [el.attrib["id"] for el in tree.iter() if "id" in el.attrib]
 
@@ -110,7 +127,7 @@ def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 def test_every_markdown_link_and_anchor_resolves() -> None:
     pages = _md_pages(SPEC)
-    files = {rel[len("docs/"):] for rel in docs.emit(SPEC)}
+    files = {rel[len("docs/"):] for rel in _emitted()}
     # the reference, the changes, a page per command, the golden index, a page per case, the field index
     assert len(pages) == 2 + len(SPEC.commands) + 1 + len(CASES) + 1
     assert sum(len(_md_links(t)) for t in pages.values()) > 100
@@ -125,7 +142,7 @@ def test_markdown_link_checker_finds_broken_links() -> None:
 
 
 def test_every_page_and_figure_is_in_generated() -> None:
-    for rel in docs.emit(SPEC):
+    for rel in _emitted():
         path = REPO / "generated" / rel
         assert path.exists(), f"{rel} is not committed: run make generate"
 
@@ -174,7 +191,7 @@ def test_figures_are_svg_with_every_field() -> None:
 
 
 def test_pages_and_figures_are_deterministic() -> None:
-    assert docs.emit(SPEC) == docs.emit(SPEC)
+    assert docs.emit(SPEC) == _emitted()  # two calls: the module's first one and this one
     pages = _md_pages(SPEC)
     assert not re.search(r"\b20\d\d-\d\d-\d\dT\d\d:", "".join(pages.values()))
 
@@ -186,7 +203,7 @@ def test_html_parses_without_errors(html_site: Path) -> None:
     own = [p for p in pages if "files" not in p.relative_to(html_site).parts]
     assert len(own) == 4 + len(SPEC.commands) + len(CASES)
     for p in pages:
-        parse_html(p.read_text(encoding="utf-8"))
+        _parsed_page(p)
 
 
 def test_html_parser_is_strict() -> None:
@@ -233,7 +250,7 @@ def test_site_works_alone_when_copied(html_site: Path, tmp_path: Path) -> None:
 
 def test_html_is_self_contained(html_site: Path) -> None:
     for p in html_site.rglob("*.html"):
-        tree = parse_html(p.read_text(encoding="utf-8"))
+        tree = _parsed_page(p)
         assert not list(tree.iter("script")), p
         for el in tree.iter():
             if el.tag in ("link", "img", "iframe", "object"):
@@ -242,12 +259,12 @@ def test_html_is_self_contained(html_site: Path) -> None:
 
 
 def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
-    index = parse_html((html_site / "index.html").read_text(encoding="utf-8"))
+    index = _parsed_page(html_site / "index.html")
     text = _text(index)
     ids = set(_ids(index))
     for c in SPEC.commands:
         assert c.name in text
-        page = parse_html((html_site / (docs.command_page(c)[:-3] + ".html")).read_text(encoding="utf-8"))
+        page = _parsed_page(html_site / (docs.command_page(c)[:-3] + ".html"))
         h1 = next(page.iter("h1"))
         assert "".join(h1.itertext()) == f"{c.name} (0x{c.code:02X})"
     for k in SPEC.checks:
@@ -255,7 +272,7 @@ def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
 
 
 def test_html_traceability_matrix_lists_every_check(html_site: Path) -> None:
-    index = parse_html((html_site / "index.html").read_text(encoding="utf-8"))
+    index = _parsed_page(html_site / "index.html")
     seen = False
     listed: list[str] = []
     for el in index.find("body").iter():  # type: ignore[union-attr]
