@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import struct
+from collections import Counter
 from typing import Any
 
 WILDCARD = "*"
@@ -107,13 +108,16 @@ def findings_difference(expected: list[Any], actual: list[Any]) -> str | None:
     a = sorted(finding_key(f) for f in actual)
     if e == a:
         return None
-    missing = [k for k in e if k not in a or e.count(k) > a.count(k)]
-    extra = [k for k in a if k not in e or a.count(k) > e.count(k)]
+    # counted once (list.count per finding was quadratic: a broken binding that reports the 65,535
+    # records of the largest case ran for minutes before it said so)
+    ec, ac = Counter(e), Counter(a)
+    missing = [k for k in dict.fromkeys(e) if ec[k] > ac[k]]
+    extra = [k for k in dict.fromkeys(a) if ac[k] > ec[k]]
     parts = []
     if missing:
-        parts.append("missing " + ", ".join(_fk(k) for k in dict.fromkeys(missing)))
+        parts.append("missing " + ", ".join(_fk(k) for k in missing))
     if extra:
-        parts.append("unexpected " + ", ".join(_fk(k) for k in dict.fromkeys(extra)))
+        parts.append("unexpected " + ", ".join(_fk(k) for k in extra))
     return "; ".join(parts)
 
 
