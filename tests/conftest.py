@@ -19,9 +19,17 @@ from hypothesis import HealthCheck, settings
 YAML_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
+YAML_DUMPER = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+
+
 def load_yaml(path: Path) -> Any:
     """A YAML file's data, as yaml.safe_load gives it."""
     return yaml.load(path.read_text(encoding="utf-8"), Loader=YAML_LOADER)
+
+
+def dump_yaml(data: Any, **options: Any) -> str:
+    """data as YAML text, as yaml.safe_dump writes it (options: sort_keys, width, ...)."""
+    return str(yaml.dump(data, Dumper=YAML_DUMPER, **options))
 
 # Hypothesis never decides whether a submission lands (issue 13, item 17). `make test`
 # loads the derandomised "ci" profile: a fixed seed per test and no example database,

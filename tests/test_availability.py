@@ -23,6 +23,7 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import load_yaml
 
 from cbfgen.loader import SpecError, load
 
@@ -33,7 +34,7 @@ NEW_CHECK = "availability_newcmd"
 
 @functools.cache
 def _parsed() -> dict[str, Any]:
-    return yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    return load_yaml(SPEC)
 
 
 def _doc() -> dict[str, Any]:

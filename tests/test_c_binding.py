@@ -17,7 +17,7 @@ from typing import Any
 
 import pytest
 import yaml
-from conftest import cover_missing
+from conftest import cover_missing, load_yaml
 
 from cbfgen.loader import load
 from cbfgen.model import Spec
@@ -109,7 +109,7 @@ def _model() -> Spec:
 
 @functools.cache
 def _parsed() -> dict[str, Any]:
-    return yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    return load_yaml(SPEC)
 
 
 def _doc() -> dict[str, Any]:

@@ -18,8 +18,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-import yaml
 from c_programs import built
+from conftest import dump_yaml, load_yaml
 
 from cbf import checksums as runtime
 from cbfgen.loader import SpecError, load
@@ -34,7 +34,7 @@ SPEC = ROOT / "spec" / "cbf.yaml"
 def _yaml(path: Path) -> Any:
     """A YAML file's data, parsed once (libyaml's parser, the same safe constructors: the
     pure-Python parser took 0.12 CPU s for the spec). Callers that edit it take a deep copy."""
-    return yaml.load(path.read_text(encoding="utf-8"), Loader=yaml.CSafeLoader)
+    return load_yaml(path)
 
 
 def _spec_doc() -> Any:
@@ -134,7 +134,7 @@ def _spec_with(tmp_path: Path, edit: object) -> tuple[Path, list[str]]:
     doc = _spec_doc()
     assert callable(edit)
     edit(doc)
-    text = yaml.dump(doc, Dumper=yaml.CSafeDumper, sort_keys=False)  # safe_dump, by libyaml
+    text = dump_yaml(doc, sort_keys=False)
     path = tmp_path / "cbf.yaml"
     path.write_text(text, encoding="utf-8")
     return path, text.splitlines()

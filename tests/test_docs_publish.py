@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import load_yaml
 from markdown_it import MarkdownIt
 
 import cbfgen.emit.docs as docs
@@ -123,7 +124,7 @@ def test_no_page_and_no_spec_text_cites_a_file_the_reader_lacks(md_pages: dict[s
 def test_units_table_refuses_unknown_keys(tmp_path: Path) -> None:
     """An unquoted comma in a unit's doc splits it into two keys: the schema refuses the second."""
     unit, doc = next(iter(SPEC.units.items()))
-    raw = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    raw = load_yaml(REPO / "spec" / "cbf.yaml")
     raw["units"][unit] = yaml.safe_load(f"{{doc: {doc}, 0 to 100}}")  # what the unquoted comma parses to
     assert set(raw["units"][unit]) == {"doc", "0 to 100"}
     path = tmp_path / "cbf.yaml"

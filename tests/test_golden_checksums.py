@@ -27,6 +27,7 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import load_yaml
 
 from cbfgen.model import ALGORITHM_KINDS
 from conformance.assembler import assemble, assemble_text
@@ -41,7 +42,7 @@ Doc = dict[str, Any]
 
 @functools.cache
 def _parsed_spec() -> Doc:
-    return yaml.safe_load(SPEC.read_text(encoding="utf-8"))
+    return load_yaml(SPEC)
 
 
 def spec_doc() -> Doc:
@@ -66,7 +67,7 @@ def golden_cases() -> tuple[Case, ...]:
     for src in sorted(GOLDEN.glob("*.hex")):
         name = src.name[: -len(".hex")]
         out.append(Case(name, src.read_text(encoding="utf-8"), (GOLDEN / f"{name}.cbf").read_bytes(),
-                        yaml.safe_load((GOLDEN / f"{name}.expect.yaml").read_text(encoding="utf-8"))))
+                        load_yaml(GOLDEN / f"{name}.expect.yaml")))
     return tuple(out)
 
 

@@ -11,8 +11,7 @@ from typing import Any
 
 import jsonschema
 import pytest
-import yaml
-from conftest import generate, spec_with_fixture_command
+from conftest import generate, load_yaml, spec_with_fixture_command
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO.parent / "shared" / "kaitai" / "ksy_schema.json"
@@ -32,7 +31,7 @@ def _stringify_keys(x: Any) -> Any:
 def test_ksy_validates_against_the_official_schema() -> None:
     if not SCHEMA.exists():
         pytest.skip(f"{SCHEMA} is not beside the repository")
-    ksy = _stringify_keys(yaml.safe_load(KSY.read_text(encoding="utf-8")))
+    ksy = _stringify_keys(load_yaml(KSY))
     validator = jsonschema.Draft7Validator(json.loads(SCHEMA.read_text(encoding="utf-8")))
     errors = sorted(validator.iter_errors(ksy), key=lambda e: list(e.absolute_path))
     assert not errors, [f"{'/'.join(map(str, e.absolute_path))}: {e.message}" for e in errors[:5]]
@@ -45,10 +44,10 @@ def test_ksy_validates_against_the_official_schema() -> None:
 
 
 def test_ksy_follows_the_style_guide() -> None:
-    ksy = yaml.safe_load(KSY.read_text(encoding="utf-8"))
+    ksy = load_yaml(KSY)
     # the style guide's key order; xref carries the spec's own references
     assert list(ksy["meta"]) == ["id", "title", "file-extension", "xref", "license", "ks-version", "endian"]
-    spec = yaml.safe_load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"))
+    spec = load_yaml(REPO / "spec" / "cbf.yaml")
     for key, refs in spec["meta"]["xref"].items():
         assert ksy["meta"]["xref"][key] in (refs, refs[0]), key
     assert ksy["meta"]["ks-version"] == "0.11" and ksy["meta"]["endian"] == "le"
