@@ -49,59 +49,15 @@ GOLDEN_MODELS = _golden_models()
 SMALL = 20_000  # characters of CUT text: every golden file but the 65,535-record one
 
 
-def _codes(model: Cbf) -> set[int]:
-    """The command codes a file holds, read as one column of a decoded file's bytes (making a
-    Record of each of 65,535 records to ask its code costs 0.2 CPU s)."""
-    source = getattr(model.records, "source", None)
-    code = T.RECORD_BY_ROLE["code"]
-    if source is None or code.elem_size != 1:
-        return {r.code for r in model.records}
-    buf, offsets = source
-    return set(np.frombuffer(buf, dtype=np.uint8)[np.asarray(offsets, dtype=np.int64) + code.offset].tolist())
-
-
-def _profile_neutral(model: Cbf) -> bool:
-    """Whether the profiles read this file's records alike: no command it holds has a layout of
-    a profile's own in its version (the only way a profile picks another layout), nor an argument
-    whose CUT form a profile restricts (profile_words)."""
-    words = {a for rule in C.get("profile_words", {}).values() for a in rule["args"]}
-    for code in _codes(model):
-        cmd = T.BY_CODE.get(code)
-        if cmd is None:
-            return False
-        for lay in cmd.layouts_for(model.version_id):
-            if lay.profiles or any(f.name in words for f in lay.args):
-                return False
-    return True
-
-
-def _big_once(name: str, model: Cbf, profile: str, text: str, done: dict[str, tuple[str, str]]) -> bool:
-    """Whether test_golden_texts_read_alike reads a big file under this profile: once, under the
-    first profile, when the profiles read it alike (the same text, the same layouts). from_cut
-    takes the profile into account only in the layout it picks for a command, so under each
-    further profile it would repeat the first reading line for line (about 2 CPU s); what a
-    profile does to a line, the small golden files check under each profile, on both paths.
-    (to_cut is another matter: it writes by layout only from 64 records on, so the big file is
-    the one that checks that path, under every profile.)"""
-    if len(text) < SMALL or not _profile_neutral(model):
-        return True
-    first = done.setdefault(name, (profile, text))
-    return first[0] == profile or first[1] != text
-
-
 def _golden_texts() -> list[tuple[str, str, str]]:
-    """(name, profile, CUT text) of every golden file that has a CUT form, small ones first (a
-    big profile-neutral file under its first profile only: _big_once)."""
+    """(name, profile, CUT text) of every golden file that has a CUT form, small ones first."""
     out = []
-    done: dict[str, tuple[str, str]] = {}
     for name, model in GOLDEN_MODELS:
         for profile in PROFILES:
             try:
-                text = cbf.to_cut(model, profile=profile)
+                out.append((name, profile, cbf.to_cut(model, profile=profile)))
             except ValueError:
                 continue
-            if _big_once(name, model, profile, text, done):
-                out.append((name, profile, text))
     return sorted(out, key=lambda t: len(t[2]))
 
 
