@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import copy
+import functools
 import os
 import shutil
 import subprocess
@@ -25,6 +27,16 @@ YAML_DUMPER = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
 def load_yaml(path: Path) -> Any:
     """A YAML file's data, as yaml.safe_load gives it."""
     return yaml.load(path.read_text(encoding="utf-8"), Loader=YAML_LOADER)
+
+
+@functools.cache
+def _spec_yaml() -> Any:
+    return load_yaml(SPEC)
+
+
+def spec_doc() -> dict[str, Any]:
+    """spec/cbf.yaml as data, parsed once per process: a deep copy of its own, for the caller to edit."""
+    return copy.deepcopy(_spec_yaml())
 
 
 def dump_yaml(data: Any, **options: Any) -> str:
@@ -71,7 +83,7 @@ def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iter
 
 def spec_with_fixture_command(tmp: Path) -> Path:
     """spec/cbf.yaml plus tests/fixtures/dwell_command.yaml, written to tmp."""
-    spec = load_yaml(SPEC)
+    spec = spec_doc()
     extra = load_yaml(REPO / "tests" / "fixtures" / "dwell_command.yaml")
     spec["units"].update(extra["units"])
     spec["commands"].append(extra["command"])

@@ -10,8 +10,6 @@ itself makes.
 
 from __future__ import annotations
 
-import copy
-import functools
 import json
 import os
 import shutil
@@ -23,23 +21,13 @@ from typing import Any
 
 import pytest
 import yaml
-from conftest import load_yaml
+from conftest import spec_doc
 
 from cbfgen.loader import SpecError, load
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
 NEW_CHECK = "availability_newcmd"
-
-
-@functools.cache
-def _parsed() -> dict[str, Any]:
-    return load_yaml(SPEC)
-
-
-def _doc() -> dict[str, Any]:
-    """The spec's YAML, parsed once per module (about 0.13 CPU s a parse): a copy the test may edit."""
-    return copy.deepcopy(_parsed())
 
 
 def _gates(doc: dict[str, Any]) -> list[dict[str, Any]]:
@@ -69,7 +57,7 @@ def _line_after(lines: list[str], first: str, then: str) -> int:
 
 
 def test_every_missing_command_is_covered_by_exactly_one_check() -> None:
-    doc = _doc()
+    doc = spec_doc()
     missing = _missing(doc)
     assert missing, "the spec has versions without some commands; this test must see them"
     covered: dict[tuple[str, str], list[str]] = {}
@@ -86,7 +74,7 @@ def test_every_missing_command_is_covered_by_exactly_one_check() -> None:
 
 
 def test_loader_refuses_a_missing_command_no_check_covers(tmp_path: Path) -> None:
-    doc = _doc()
+    doc = spec_doc()
     gate = _gates(doc)[0]
     dropped = gate["commands"].pop()
     path, lines = _write(doc, tmp_path / "cbf.yaml")
@@ -98,7 +86,7 @@ def test_loader_refuses_a_missing_command_no_check_covers(tmp_path: Path) -> Non
 
 
 def test_loader_refuses_a_command_two_checks_cover(tmp_path: Path) -> None:
-    doc = _doc()
+    doc = spec_doc()
     first = _gates(doc)[0]
     twin = {**first, "id": "availability_twin", "clause": first["clause"], "commands": first["commands"][:1]}
     twin.pop("decision", None)
@@ -112,7 +100,7 @@ def test_loader_refuses_a_command_two_checks_cover(tmp_path: Path) -> None:
 
 
 def test_loader_refuses_a_check_naming_a_command_the_version_has(tmp_path: Path) -> None:
-    doc = _doc()
+    doc = spec_doc()
     gate = _gates(doc)[0]
     present = next(c["name"] for c in doc["commands"]
                    if all(v in lay["versions"] for lay in c["layouts"][:1] for v in gate["versions"]))
@@ -125,12 +113,12 @@ def test_loader_refuses_a_check_naming_a_command_the_version_has(tmp_path: Path)
 
 
 def test_schema_wants_commands_on_availability_checks_only(tmp_path: Path) -> None:
-    doc = _doc()
+    doc = spec_doc()
     del _gates(doc)[0]["commands"]
     path, _ = _write(doc, tmp_path / "a.yaml")
     with pytest.raises(SpecError, match="schema: checks/.*'commands' is a required property"):
         load(path)
-    doc = _doc()
+    doc = spec_doc()
     other = next(c for c in doc["checks"] if c["kind"] != "availability")
     other["commands"] = [doc["commands"][0]["name"]]
     path, _ = _write(doc, tmp_path / "b.yaml")
@@ -143,7 +131,7 @@ def _revision(tmp_path: Path) -> tuple[Path, dict[tuple[str, str], str], dict[st
     """A spec copy with a new command that only the default version has, and a new
     availability check for every other version: each of those versions is then
     covered by two checks (the old one for the old commands, the new one for the new)."""
-    doc = _doc()
+    doc = spec_doc()
     expected = {}
     for g in _gates(doc):
         for v in g["versions"]:

@@ -4,7 +4,6 @@ regeneration, with no code change."""
 
 from __future__ import annotations
 
-import copy
 import functools
 import json
 import re
@@ -13,11 +12,10 @@ import subprocess
 import sys
 import zlib
 from pathlib import Path
-from typing import Any
 
 import pytest
 import yaml
-from conftest import cover_missing, load_yaml
+from conftest import cover_missing, spec_doc
 
 from cbfgen.loader import load
 from cbfgen.model import Spec
@@ -107,21 +105,11 @@ def _model() -> Spec:
     return load(SPEC)
 
 
-@functools.cache
-def _parsed() -> dict[str, Any]:
-    return load_yaml(SPEC)
-
-
-def _doc() -> dict[str, Any]:
-    """The spec's YAML, parsed once per module (about 0.13 CPU s a parse): a copy the caller may edit.
-    (The DWELL and CRC-32 edits stay in trees of their own: under CRC-32 the C validator no longer
-    folds the file's byte sum into its record pass, a path the DWELL record must go through.)"""
-    return copy.deepcopy(_parsed())
-
-
+# The DWELL and CRC-32 edits stay in trees of their own: under CRC-32 the C validator no longer
+# folds the file's byte sum into its record pass, a path the DWELL record must go through.
 def test_added_command_reaches_header_codec_and_testee(tmp_path: Path) -> None:
     cc = _need("gcc")
-    doc = _doc()
+    doc = spec_doc()
     doc["units"]["s"] = {"doc": "second"}
     doc["commands"].append(DWELL)
     # every version without the command is named by exactly one availability check (loader.py)
@@ -203,7 +191,7 @@ def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
     """FORMAT-NOTES: another algorithm must be a one-line spec change; the C codec follows it."""
     cc = _need("gcc")
     model = _model()
-    doc = _doc()
+    doc = spec_doc()
     next(f for f in doc["checksums"]["fields"] if f["field"] == "file")["algorithm"] = "crc32"
     for p in doc["profiles"]:
         p.pop("file_algorithm", None)  # the field's algorithm, under every profile
@@ -229,7 +217,7 @@ def test_checksum_algorithm_is_one_spec_line(tmp_path: Path) -> None:
 
 def test_templates_and_emitter_name_no_format_detail() -> None:
     """Command names, codes and check ids come from the model, never from the C templates or emitter."""
-    doc = _parsed()
+    doc = spec_doc()
     folder = ROOT / "generator" / "cbfgen" / "emit" / "c"
     text = "\n".join(p.read_text(encoding="utf-8") for p in sorted(folder.rglob("*"))
                      if p.is_file() and p.suffix in (".py", ".j2"))

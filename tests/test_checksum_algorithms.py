@@ -10,7 +10,6 @@ and split into odd pieces (a coverage feeds several ranges as one stream).
 
 from __future__ import annotations
 
-import copy
 import functools
 import shutil
 import subprocess
@@ -19,7 +18,7 @@ from typing import Any
 
 import pytest
 from c_programs import built
-from conftest import dump_yaml, load_yaml
+from conftest import dump_yaml, load_yaml, spec_doc
 
 from cbf import checksums as runtime
 from cbfgen.loader import SpecError, load
@@ -37,9 +36,6 @@ def _yaml(path: Path) -> Any:
     return load_yaml(path)
 
 
-def _spec_doc() -> Any:
-    """spec/cbf.yaml as data, a copy of its own to edit."""
-    return copy.deepcopy(_yaml(SPEC))
 
 # (kind, data, value): published check values
 VECTORS = [
@@ -131,7 +127,7 @@ def test_c_header(tmp_path: Path) -> None:
 
 # -- the loader: algorithms are data, and a result must fit its field ---------------
 def _spec_with(tmp_path: Path, edit: object) -> tuple[Path, list[str]]:
-    doc = _spec_doc()
+    doc = spec_doc()
     assert callable(edit)
     edit(doc)
     text = dump_yaml(doc, sort_keys=False)
@@ -149,7 +145,7 @@ def _narrowest(doc: dict[str, object]) -> tuple[str, int]:
 
 
 def test_loader_refuses_a_result_wider_than_its_field(tmp_path: Path) -> None:
-    doc0 = _spec_doc()
+    doc0 = spec_doc()
     tag, bits = _narrowest(doc0)
     wide = next(name for name, a in doc0["checksums"]["algorithms"].items()
                 if (ALGORITHM_KINDS[a["kind"]] or 0) > bits)
@@ -167,7 +163,7 @@ def test_loader_refuses_a_result_wider_than_its_field(tmp_path: Path) -> None:
 
 
 def test_a_profile_chooses_the_file_algorithm(tmp_path: Path) -> None:
-    doc0 = _spec_doc()
+    doc0 = spec_doc()
     pid = doc0["profiles"][-1]["id"]
     current = next(f["algorithm"] for f in doc0["checksums"]["fields"] if f["field"] == "file")
     other = next(n for n, a in doc0["checksums"]["algorithms"].items() if n != current and a["kind"] != "sum")

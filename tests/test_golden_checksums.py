@@ -13,7 +13,6 @@ under the others).
 
 from __future__ import annotations
 
-import copy
 import functools
 import json
 import os
@@ -27,7 +26,7 @@ from typing import Any
 
 import pytest
 import yaml
-from conftest import load_yaml
+from conftest import load_yaml, spec_doc
 
 from cbfgen.model import ALGORITHM_KINDS
 from conformance.assembler import assemble, assemble_text
@@ -38,16 +37,6 @@ ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
 GOLDEN = ROOT / "conformance" / "golden"
 Doc = dict[str, Any]
-
-
-@functools.cache
-def _parsed_spec() -> Doc:
-    return load_yaml(SPEC)
-
-
-def spec_doc() -> Doc:
-    """spec/cbf.yaml parsed (once per module: about 0.13 CPU s a parse), a copy the caller may edit."""
-    return copy.deepcopy(_parsed_spec())
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,6 @@ tests/test_rev03_facts.py.
 from __future__ import annotations
 
 import copy
-import functools
 import json
 import math
 import os
@@ -26,7 +25,7 @@ import pytest
 import yaml
 from c_programs import built
 from cli_many import run_many
-from conftest import dump_yaml, load_yaml
+from conftest import dump_yaml, spec_doc
 
 import cbf
 from cbf import tables as T
@@ -283,14 +282,8 @@ def test_both_tools_give_the_same_findings_with_and_without_a_machine_file(cbf_c
             assert all(" warning machine_limits " in ln for ln in want)
 
 
-@functools.cache
-def _raw_spec() -> Any:
-    """spec/cbf.yaml as data, parsed once (libyaml's parser, the same safe constructors)."""
-    return load_yaml(SPEC_PATH)
-
-
 def _variant(tmp: Path, edit: Any) -> Path:
-    doc = copy.deepcopy(_raw_spec())
+    doc = spec_doc()
     edit(doc)
     p = tmp / "cbf.yaml"
     p.write_text(dump_yaml(doc, sort_keys=False, width=1000), encoding="utf-8")
