@@ -212,16 +212,21 @@ def toml_string(text: str) -> str:
     return "".join(out)
 
 
-# Every ASCII punctuation character CommonMark lets a backslash escape, minus those that are only
-# special in positions one_line() already rules out or that never start markup inline.
-_MD_SPECIAL = re.compile(r"([\\`*_{}\[\]<>()#+\-.!|~&$])")
+# The ASCII punctuation that starts inline markup anywhere in a line (CommonMark and GFM: escapes,
+# code, emphasis, links and images, autolinks and raw HTML, entities, tables, strikethrough, math).
+# `(`, `)` and `!` are special only after `]` / before `[`, both escaped here.
+_MD_SPECIAL = re.compile(r"([\\`*_\[\]<>|~&$])")
+# What is special only at the start of a line: headings, lists, block quotes, thematic breaks.
+_MD_LINE_START = re.compile(r"^([#+=-]|\d+[.)])")
 
 
 def markdown_inline(text: str) -> str:
-    """Markdown inline text that renders as the text: one line, every markup character
-    backslash-escaped (CommonMark and GFM: emphasis, code, links, raw HTML, entities, tables)."""
+    """Markdown inline text that renders as the text: one line (whitespace collapsed), every markup
+    character backslash-escaped, and a leading ``#``/``-``/``+``/``=``/``1.`` too, so that the text
+    may also start a line."""
     shown = "".join(ch if _is_plain(ch) else "\ufffd" for ch in _no_surrogates(one_line(text)))
-    return _MD_SPECIAL.sub(r"\\\1", shown)
+    escaped = _MD_SPECIAL.sub(r"\\\1", shown)
+    return _MD_LINE_START.sub(lambda m: m.group(1)[:-1] + "\\" + m.group(1)[-1], escaped)
 
 
 def markdown_cell(text: str) -> str:
