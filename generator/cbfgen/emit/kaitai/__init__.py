@@ -225,7 +225,8 @@ def build(spec: Spec) -> dict[str, Any]:
     }
     if not ksy["meta"]["xref"]:  # optional in the spec: no empty mapping in the .ksy
         del ksy["meta"]["xref"]
-    return _escape_docs(ksy)
+    escaped: dict[str, Any] = _escape_docs(ksy)
+    return escaped
 
 
 def _escape_docs(node: Any) -> Any:
