@@ -167,22 +167,27 @@ def kaitai_doc(text: str) -> str:
       cannot start a ``\\uXXXX`` escape (which javac applies inside comments too);
     - ``*/`` is written ``*\\x2f``: it ends no comment, and the Python docstring reads ``*/``;
     - a ``"`` that would close the Python docstring is ``\\"``;
-    - controls become ``\\xNN`` (the Python docstring reads them back); a lone surrogate, which
-      neither UTF-8 nor JSON carries, becomes U+FFFD.
+    - controls (NUL, which Python and Go refuse, ...) become ``\\xNN``, and format characters (a
+      BOM, which Go refuses mid-file; bidi controls) ``\\N{NAME}``: the Python docstring reads them
+      back; a lone surrogate, which neither UTF-8 nor JSON carries, becomes U+FFFD.
 
     The Python parser's docstrings therefore hold the original text; the comments of the other
     targets show it with doubled backslashes.
     """
     out = []
     for ch in one_line(text):
+        category = unicodedata.category(ch)
         if ch == "\\":
             out.append("\\\\")
-        elif unicodedata.category(ch) == "Cs":
+        elif category == "Cs":
             out.append("\ufffd")
-        elif _is_plain(ch):
+        elif category == "Cc":
+            out.append(f"\\x{ord(ch):02x}")
+        elif category == "Cf":  # never \uXXXX, which javac would read; \N{NAME} is Python's own
+            name = unicodedata.name(ch, "")
+            out.append(f"\\N{{{name}}}" if name else "\ufffd")
+        else:  # printable, or unassigned / private use: UTF-8 carries it into every target
             out.append(ch)
-        else:
-            out.append(f"\\x{ord(ch):02x}" if ord(ch) < 0x100 else "\ufffd")
     body = "".join(out).replace("*/", "*\\x2f")
     return re.sub(r'"(?=")|"$', r'\\"', body)
 
