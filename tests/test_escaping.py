@@ -30,6 +30,7 @@ import types
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
+from xml.dom import minidom
 
 import pytest
 import yaml
@@ -84,6 +85,11 @@ def test_data_formats_read_back_as_the_text(text: str) -> None:
     assert html.unescape(escape.html_text(text)) == "".join(
         "\ufffd" if c not in "\n\t" and not escape._is_plain(c) else c for c in text)
     assert "<" not in escape.html_text(text) and '"' not in escape.html_text(text)
+    assert json.loads(escape.json_string(text)) == text and escape.json_string(text).isascii()
+    shown = "".join(c if escape._is_plain(c) else "\ufffd" for c in escape.one_line(text))
+    assert escape.line_comment(text) == shown
+    comment = minidom.parseString(f"<a><!--{escape.xml_comment(text)}--></a>").documentElement.firstChild
+    assert isinstance(comment, minidom.Comment) and comment.data.replace("- -", "--").strip() == shown.strip()
 
 
 @given(TEXT)
@@ -366,10 +372,29 @@ def check_kaitai(spec: Any, text: str, ksc: Ksc) -> dict[str, str]:
     flat = escape.one_line(text)
     assert any(flat in s for s in _string_constants(tree)), "the text in a Kaitai Python docstring"
     assert not _java_unicode_escape(out["java"])
+    check_kaitai_packages(spec, text)
     if shutil.which("gofmt"):
         res = subprocess.run(["gofmt", "-e", "-l"], input=out["go"], capture_output=True, text=True)
         assert res.returncode == 0, res.stderr[:500]
     return out
+
+
+def check_kaitai_packages(spec: Any, title: str) -> None:
+    """The packages' metadata carry the spec's title and stay well-formed."""
+    files = {k.removeprefix(f"{kaitai_emit.OUT}/"): v.decode() for k, v in kaitai_emit.emit(spec).items()}
+    shown = "".join(c if escape._is_plain(c) or c in "\n\t" else "\ufffd" for c in title)  # as html_text
+    pom = minidom.parseString(files["java/pom.xml"])
+    description = pom.getElementsByTagName("description")[0].firstChild
+    assert isinstance(description, minidom.Text) and description.data.startswith(
+        f"Kaitai Struct Java parser of the {shown} (")
+    assert json.loads(files["javascript/package.json"])["description"].startswith(
+        f"Kaitai Struct JavaScript parser of the {title} (")
+    assert tomllib.loads(files["python/pyproject.toml"])["project"]["description"].startswith(
+        f"Kaitai Struct parser of the {title} (")
+    init = ast.parse(files["python/cbf_kaitai/__init__.py"])
+    assert (ast.get_docstring(init, clean=False) or "").startswith(f"Kaitai Struct parser of the {title} (")
+    gomod = files["go/go.mod"].splitlines()
+    assert gomod[0].startswith("// ") and gomod[1].startswith("module ")
 
 
 EXAMPLES = 12 if HYPOTHESIS_PROFILE == "ci" else 200

@@ -15,6 +15,9 @@ no other character. Registered as jinja filters in render.py (the name in bracke
   Python docstrings, JavaScript/Java/Go ``/** */`` comments and Java ``@see "..."``.
 - `yaml_scalar` [yaml_str]: a complete YAML flow scalar (double-quoted), one line.
 - `toml_string` [toml_str]: a complete TOML basic string, quotes included.
+- `json_string` [json_str]: a complete JSON string, quotes included (also a JavaScript literal).
+- `line_comment` [line_comment]: text after ``#`` or ``//`` (Python, TOML, YAML, Go, go.mod).
+- `xml_comment` [xml_comment]: text inside ``<!-- ... -->``.
 - `markdown_inline` [md]: Markdown (CommonMark/GFM) inline text, one line.
 - `markdown_cell` [md_cell]: a GFM table cell.
 - `html_text` [html]: HTML text or a quoted attribute value.
@@ -24,6 +27,7 @@ no other character. Registered as jinja filters in render.py (the name in bracke
 from __future__ import annotations
 
 import html
+import json
 import keyword
 import re
 import unicodedata
@@ -35,14 +39,17 @@ __all__ = [
     "c_comment",
     "c_string",
     "html_text",
+    "json_string",
     "kaitai_doc",
     "keyword_clash",
+    "line_comment",
     "markdown_cell",
     "markdown_inline",
     "one_line",
     "py_docstring",
     "py_string",
     "toml_string",
+    "xml_comment",
     "yaml_scalar",
 ]
 
@@ -215,6 +222,27 @@ def toml_string(text: str) -> str:
             out.append(f"\\u{n:04X}" if n < 0x10000 else f"\\U{n:08X}")
     out.append('"')
     return "".join(out)
+
+
+def json_string(text: str) -> str:
+    """A JSON string (quotes included) whose value is the text; ASCII only, so that it is also a
+    JavaScript string literal whatever the engine (U+2028) and whatever the file's encoding."""
+    return json.dumps(_no_surrogates(text), ensure_ascii=True)
+
+
+def line_comment(text: str) -> str:
+    """Text for a line comment (``#``, ``//``): one line, whitespace collapsed, no control or
+    format character (a NUL or a BOM, which Go and TOML refuse): U+FFFD instead."""
+    return "".join(ch if _is_plain(ch) else "\ufffd" for ch in _no_surrogates(one_line(text)))
+
+
+def xml_comment(text: str) -> str:
+    """Text inside ``<!-- ... -->``: one line, no ``--`` (XML forbids it in a comment), no ``-``
+    last, no character XML 1.0 refuses."""
+    body = line_comment(text)
+    while "--" in body:
+        body = body.replace("--", "- -")
+    return body + " " if body.endswith("-") else body
 
 
 # The ASCII punctuation that starts inline markup anywhere in a line (CommonMark and GFM: escapes,
