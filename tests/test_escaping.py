@@ -235,8 +235,10 @@ def test_the_spec_reader_refuses_bombs_fast_in_one_line(tmp_path: Path, case: st
     assert time.process_time() - start < 0.5
     assert re.search(message, info.value.message) and info.value.line >= 1
     spec = str(REPO / "spec" / "cbf.yaml")
-    for argv in (["--spec", str(path), "--out", str(tmp_path / "out")], ["--check-spec", "--spec", str(path)],
-                 ["diff", str(path), spec], ["diff", spec, str(path)]):
+    runs = [["--check-spec", "--spec", str(path)], ["diff", spec, str(path)]]
+    if case == "alias_bomb":  # every entry point reads through load(): each once is enough
+        runs += [["--spec", str(path), "--out", str(tmp_path / "out")], ["diff", str(path), spec]]
+    for argv in runs:
         res = subprocess.run([sys.executable, "-m", "cbfgen", *argv], cwd=REPO, capture_output=True, text=True,
                              timeout=20)
         assert res.returncode == 2, (argv, res.stderr)
