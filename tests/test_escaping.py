@@ -331,7 +331,7 @@ def hostile_spec(text: str) -> tuple[dict[str, Any], dict[str, str]]:
     field = next(iter(doc["headers"].values()))["fields"][-1]
     check = next(c for c in doc["checks"] if c["kind"] not in ("magic", "code_copy", "arg_size", "availability"))
     cmd["doc"] = arg["doc"] = field["doc"] = check["text"] = doc["decisions"][0]["decision"] = text
-    doc["meta"]["title"] = text
+    doc["meta"]["title"] = doc["meta"]["document"] = text  # the title reaches packages, the document a doc-ref
     return doc, {"command": cmd["name"], "arg": arg["name"], "field": field["name"], "check": str(check["id"])}
 
 
@@ -449,6 +449,17 @@ def test_hostile_docs_compile_in_java_and_go(ksc: Ksc, tmp_path: Path) -> None:
                              env={**os.environ, "GOFLAGS": "-mod=readonly", "GOPROXY": "off"})
         assert res.returncode == 0, res.stderr[-2000:]
         ran.append("go")
+    # the whole codec package, as a user imports it, in its own interpreter
+    for rel, data in python_emit.emit(load(path)).items():
+        (tmp_path / "py" / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / "py" / rel).write_bytes(data)
+    probe = ("import sys, cbf, cbf.layouts as L; "
+             "sys.stdout.write(L.__doc__ + '\\0' + '\\0'.join(c.__doc__ for c in L.ARGS_CLASSES.values()))")
+    res = subprocess.run([sys.executable, "-c", probe], capture_output=True, cwd=tmp_path,  # bytes: \r stays
+                         env={**os.environ, "PYTHONPATH": str(tmp_path / "py" / "python"), "PYTHONIOENCODING": "utf-8"})
+    assert res.returncode == 0, res.stderr[-2000:]
+    module_doc, *class_docs = res.stdout.decode("utf-8").split("\0")
+    assert module_doc.startswith(f"Typed layouts of {WORST} (") and any(WORST.strip() in d for d in class_docs)
     if not ran:
         pytest.skip("neither the Kaitai Java runtime nor the Go build folder is here (make conformance builds them)")
 
