@@ -183,7 +183,10 @@ def test_a_command_name_reserved_in_a_binding_is_refused(tmp_path: Path, name: s
     assert repr(name) in err.message
 
 
-@pytest.mark.parametrize("name", ["class", "new", "default", "none", "bytes"])
+# class/new/default: keywords; none: its Go/Python class is None; bytes: the codec's class bodies call
+# bytes(); wait, get_class: java.lang.Object's final methods (javac refuses the getters); read: the
+# Go parser's Read method; close: kaitaistruct.KaitaiStruct.close.
+@pytest.mark.parametrize("name", ["class", "new", "default", "none", "bytes", "wait", "get_class", "read", "close"])
 def test_an_argument_name_reserved_in_a_binding_is_refused(tmp_path: Path, name: str) -> None:
     doc = spec_doc()
     cmd = next(c for c in doc["commands"] if c["layouts"][0]["args"])
@@ -202,6 +205,10 @@ def test_an_argument_name_reserved_in_a_binding_is_refused(tmp_path: Path, name:
 
 def test_keyword_clash_names_the_languages() -> None:
     assert escape.keyword_clash("line_x") is None
+    # a command's spellings are NAME, name, Name: WAIT is no Java getter, READ no Go field
+    assert escape.keyword_clash("WAIT", what="command") is None and escape.keyword_clash("READ", what="command") is None
+    assert escape.keyword_clash("wait", what="field") and escape.keyword_clash("read", what="field")
+    assert escape.keyword_clash("WAIT")  # unqualified: the strictest, command and field alike
     assert "Python" in (escape.keyword_clash("NONE") or "")
     assert {"Java", "JavaScript", "C++"} <= set(re.findall(r"[\w+]+", escape.keyword_clash("new") or ""))
     # the spec's own names are all fine (else the real spec would not load)

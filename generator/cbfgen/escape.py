@@ -36,6 +36,7 @@ import yaml
 
 __all__ = [
     "RESERVED",
+    "RESERVED_MEMBERS",
     "c_comment",
     "c_string",
     "html_text",
@@ -296,13 +297,13 @@ arguments eval undefined NaN Infinity constructor prototype"""
 _GO = """break case chan const continue default defer else fallthrough for func go goto if import
 interface map package range return select struct switch type var nil iota true false"""
 # Kaitai Struct's expression language: operators and literals, and the names ksc gives every type.
-_KAITAI = "and or not true false as sizeof bitsizeof _io _root _parent _index _on _is_le _sizeof _ io root parent"
-# Python: hard and soft keywords, and the builtins the generated Python itself calls inside class
-# bodies (a dataclass field named `bytes` would shadow `bytes(6)`, the default of a later field).
-_PYTHON = " ".join([*keyword.kwlist, *keyword.softkwlist]) + " bytes int float str bool tuple dict list type object"
-# Names the generated layouts/records already use in the same scopes as spec names.
-_GENERATED = "CODE NAME VARIANT SIZE LAYOUT ClassVar dataclass IntEnum annotations"
+_KAITAI = "and or not true false as sizeof bitsizeof _io _root _parent _index _on _is_le _sizeof _"
+# Python: hard and soft keywords (`None`, `True`: a command NONE's layout class is `None`); the soft
+# keywords of 3.12 named here, so that the rule does not change with the Python that runs cbfgen.
+_PYTHON = " ".join([*keyword.kwlist, *keyword.softkwlist, "_", "case", "match", "type"])
 
+# Language keywords: no spelling of any spec name (command, argument, header or record field) may
+# be one of them.
 RESERVED: dict[str, frozenset[str]] = {
     "Python": frozenset(_PYTHON.split()),
     "C": frozenset(_C.split()),
@@ -311,38 +312,60 @@ RESERVED: dict[str, frozenset[str]] = {
     "JavaScript": frozenset(_JS.split()),
     "Go": frozenset(_GO.split()),
     "Kaitai": frozenset(_KAITAI.split()),
-    "the generated code": frozenset(_GENERATED.split()),
+}
+
+# Members the generated classes already have, beside which an argument or field becomes one more
+# member: found by compiling ksc's parsers with each name as an argument (javac: "wait() in ArgsCutter
+# cannot override wait() in Object"; go: "field and method with the same name Read"; Python:
+# `self.close = ...` hides KaitaiStruct.close), and the codec's own class bodies (a dataclass field
+# named `bytes` hides `bytes(6)`, the default of a later field).
+RESERVED_MEMBERS: dict[str, frozenset[str]] = {
+    "Java (java.lang.Object)": frozenset(
+        "clone equals finalize getClass hashCode notify notifyAll toString wait".split()),
+    "Python (kaitaistruct.KaitaiStruct)": frozenset("close from_file from_bytes from_io".split()),
+    "Go (the Kaitai parser's Read method)": frozenset({"Read"}),
+    "the generated code": frozenset(
+        "bytes int float str bool tuple dict list type object CODE NAME VARIANT SIZE LAYOUT ClassVar dataclass "
+        "IntEnum annotations".split()),
 }
 
 
-def _forms(name: str) -> set[str]:
-    """The spellings the bindings give a spec name: as written, lower (Kaitai enum ids, C),
-    upper (Java/JavaScript enum constants, C macros), CamelCase (Python/Java/Go classes) and
-    lowerCamel (JavaScript fields)."""
+def _forms(name: str, what: str | None) -> set[str]:
+    """The spellings the bindings give a spec name. A command: as written (Python enum member), lower
+    (Kaitai enum id), UPPER (Java/JavaScript enum constant), CamelCase (its layout classes, e.g.
+    `None`). A field: as written (Python, C, Kaitai), CamelCase (Go), lowerCamel (JavaScript
+    property, Java getter)."""
     parts = [p for p in re.split(r"[_\W]+", name) if p]
     camel = "".join(p[:1].upper() + p[1:].lower() for p in parts)
     lower_camel = (parts[0].lower() + camel[len(parts[0]):]) if parts else name
-    return {name, name.lower(), name.upper(), camel, lower_camel}
+    command = {name, name.lower(), name.upper(), camel}
+    field = {name, name.lower(), camel, lower_camel}
+    return command if what == "command" else field if what == "field" else command | field
 
 
-def keyword_clash(name: str) -> str | None:
+def keyword_clash(name: str, *, what: str | None = None) -> str | None:
     """None when the spec name is safe as an identifier in every binding; otherwise why not, e.g.
     ``'class' is reserved in C++, Java, JavaScript, Python``.
 
-    The loader refuses such a name (with its YAML line) rather than renaming it: one spelling in
-    every binding, the spec's, and no renaming rule for each binding to get wrong. Every spelling a
-    binding derives from the name is checked (see `_forms`): `NONE` is refused because its class is
-    `None`, `default` because Java, JavaScript, Go and C reserve it. The names of the generated code
-    itself (`SIZE`, `CODE`...) are checked as written only.
+    ``what`` is "command" (a command name) or "field" (an argument, header or record field); None
+    (the default) checks the name as both, the strictest. The loader refuses such a name (with its
+    YAML line) rather than renaming it: one spelling in every binding, the spec's, and no renaming
+    rule for each binding to get wrong. Every spelling a binding derives from the name is checked
+    (`_forms`) against every language's keywords (RESERVED): `NONE` is refused because its class
+    is `None`, `default` because Java, JavaScript, Go and C reserve it; a field also against the
+    members its class already has (RESERVED_MEMBERS): `wait`, `read`, `close`, `bytes`.
     """
-    forms = _forms(name)
+    if what not in (None, "command", "field"):
+        raise ValueError(f"what: {what!r} is not 'command', 'field' or None")
+    forms = _forms(name, what)
+    tables = [RESERVED] if what == "command" else [RESERVED, RESERVED_MEMBERS]
     hits: list[str] = []
     spelled: set[str] = set()
-    for lang, words in RESERVED.items():
-        found = {name} & words if lang == "the generated code" else forms & words
-        if found:
-            hits.append(lang)
-            spelled |= found
+    for table in tables:
+        for lang, words in table.items():
+            if forms & words:
+                hits.append(lang)
+                spelled |= forms & words
     if not hits:
         return None
     as_ = ", ".join(sorted(f"'{s}'" for s in spelled - {name}))

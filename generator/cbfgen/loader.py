@@ -176,7 +176,7 @@ class _Ctx:
 
 
 def _field(ctx: _Ctx, raw: _Map, types: dict[str, PrimitiveType], offset: int, where: str) -> Field:
-    if clash := keyword_clash(raw["name"]):  # escape.py; vocab's names pass may take this over
+    if clash := keyword_clash(raw["name"], what="field"):  # escape.py; vocab's names pass may take this over
         raise ctx.fail(raw, f"{where}: the name {clash}", "name")
     ptype = types.get(raw["type"])
     if ptype is None:
@@ -335,7 +335,7 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
         name, code = c["name"], c["code"]
         if name in names:
             raise ctx.fail(c, f"duplicate command name {name} (also line {names[name]})", "name")
-        if clash := keyword_clash(name):  # escape.py; vocab's names pass may take this over
+        if clash := keyword_clash(name, what="command"):  # escape.py; vocab's names pass may take this over
             raise ctx.fail(c, f"command name {clash}", "name")
         if code in codes:
             raise ctx.fail(c, f"{name}: duplicate code 0x{code:02X}, already {codes[code]}", "code")
