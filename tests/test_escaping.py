@@ -254,6 +254,21 @@ def test_the_spec_reader_refuses_bombs_fast_in_one_line(tmp_path: Path, case: st
     assert not (tmp_path / "out").exists()
 
 
+def test_the_bounds_hold_without_libyaml(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """The same reader over PyYAML's pure-Python parser (a Python without libyaml): the same
+    refusals, and the real spec still loads."""
+    from cbfgen import loader
+
+    pure = type("PureLoader", (loader._BoundedComposer, yaml.SafeLoader),
+                {"yaml_constructors": loader._Loader.yaml_constructors})
+    monkeypatch.setattr(loader, "_Loader", pure)
+    for case, (text, message) in BAD_YAML.items():
+        (tmp_path / f"{case}.yaml").write_text(text, encoding="utf-8")
+        with pytest.raises(SpecError, match=message):
+            load(tmp_path / f"{case}.yaml")
+    assert load(REPO / "spec" / "cbf.yaml").commands
+
+
 def test_aliases_within_the_bounds_still_load(tmp_path: Path) -> None:
     """The bounded composer keeps what YAML means: an anchored doc and its alias read the same, and
     a bomb one level smaller than the bound is not refused by the bound."""

@@ -81,20 +81,22 @@ else:
 MAX_NODES = 100_000  # nodes once every alias is expanded
 MAX_DEPTH = 50  # nested mappings and sequences
 
+if TYPE_CHECKING:
+    _Composer = yaml.SafeLoader
+else:
+    _Composer = yaml.composer.Composer
 
-class _Loader(_SafeLoader):
-    """A SafeLoader that remembers lines, refuses duplicate keys, and bounds size and depth.
 
-    The composer is PyYAML's (Python), over libyaml's events when present: it counts every node
-    with the expanded size of each alias, and the depth, and stops at the first node past a bound
-    with a SpecError naming the line. Composition stays linear in the file's size.
-    """
+class _BoundedComposer(_Composer):
+    """PyYAML's composer (over libyaml's events, or PyYAML's own parser) that counts every node,
+    each alias at the expanded size of its anchor, and the depth, and stops at the first node past
+    a bound with a SpecError naming the line. Composition stays linear in the file's size."""
 
-    def __init__(self, stream: str) -> None:
-        super().__init__(stream)
+    def compose_document(self) -> Any:
         self._nodes = 0  # nodes so far, aliases counted at their expanded size
         self._depth = 0
         self._sizes: dict[int, int] = {}  # id(anchored node) -> its expanded size
+        return super().compose_document()
 
     def _count(self, n: int, mark: Any) -> None:
         self._nodes += n
@@ -123,6 +125,10 @@ class _Loader(_SafeLoader):
         if getattr(event, "anchor", None) is not None:
             self._sizes[id(node)] = self._nodes - start
         return node
+
+
+class _Loader(_BoundedComposer, _SafeLoader):
+    """A SafeLoader that remembers lines, refuses duplicate keys, and bounds size and depth."""
 
 
 def _construct_map(loader: _Loader, node: yaml.MappingNode) -> _Map:
