@@ -42,6 +42,7 @@ from cbfgen import escape
 from cbfgen.emit import kaitai as kaitai_emit
 from cbfgen.emit import python as python_emit
 from cbfgen.loader import MAX_DEPTH, MAX_NODES, SpecError, load
+from cbfgen.model import camel
 
 # Each piece breaks some target when written raw: Python (\x, \u, \N{, """, a closing "),
 # C and JS/Java/Go comments (/*, */), C (??/ trigraph, a trailing backslash), Java (\u in a
@@ -350,11 +351,14 @@ def hostile_spec(text: str) -> tuple[dict[str, Any], dict[str, str]]:
     doc = spec_doc()
     cmd = next(c for c in doc["commands"] if c["layouts"][0]["args"])
     arg = cmd["layouts"][0]["args"][0]
-    field = next(iter(doc["headers"].values()))["fields"][-1]
+    header = next(iter(doc["headers"].values()))
+    field = header["fields"][-1]
+    header["doc"] = cmd["layouts"][0]["doc"] = text  # a header's and a layout's own doc
     check = next(c for c in doc["checks"] if c["kind"] not in ("magic", "code_copy", "arg_size", "availability"))
     cmd["doc"] = arg["doc"] = field["doc"] = check["text"] = doc["decisions"][0]["decision"] = text
     doc["meta"]["title"] = doc["meta"]["document"] = text  # the title reaches packages, the document a doc-ref
-    return doc, {"command": cmd["name"], "arg": arg["name"], "field": field["name"], "check": str(check["id"])}
+    return doc, {"command": cmd["name"], "arg": arg["name"], "field": field["name"], "check": str(check["id"]),
+                 "header": next(iter(doc["headers"]))}
 
 
 def _string_constants(tree: ast.AST) -> list[str]:
@@ -383,6 +387,10 @@ def check_python_codec(spec: Any, text: str, where: dict[str, str], folder: Path
     assert raw is not None and raw.startswith(f"{where['command']} (0x{cls.CODE:02X}): {value}\n")
     # Class.__doc__ is that value (Python 3.13 on: as inspect.cleandoc gives it)
     assert cls.__doc__ == (raw if sys.version_info < (3, 13) else inspect.cleandoc(raw))
+    assert f"\n\n    {value}\n" in raw  # the layout's own doc
+    header_class = f"Header{camel(where['header'])}"
+    header = next(n for n in ast.walk(tree) if isinstance(n, ast.ClassDef) and n.name == header_class)
+    assert (ast.get_docstring(header, clean=False) or "").startswith(value + "\n")
     assert module.__doc__ is not None and module.__doc__.startswith(f"Typed layouts of {text} (")
     description = tomllib.loads(files["python/pyproject.toml"].decode())["project"]["description"]
     assert description.startswith(text + " (")
