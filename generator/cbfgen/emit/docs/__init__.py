@@ -383,7 +383,8 @@ def _document(spec: Spec) -> dict[str, Any]:
         h = spec.headers[v.header]
         if h not in headers:
             headers.append(h)
-    return {"sections": sections, "added_checks": added, "headers_42": headers, "table_51": _table_51(spec),
+    older = [h for h in spec.headers.values() if h not in headers]
+    return {"sections": sections, "added_checks": added, "headers_42": headers, "headers_older": older, "table_51": _table_51(spec),
             "history": list(m.get("history", [])), "approvals": list(m.get("approvals", [])),
             "release": {"date": None, "change_order": None, **dict(m.get("release", {}))}, "clause_text": {str(c["id"]): c["text"] for c in clauses},
             "notes": _notes(spec)}
