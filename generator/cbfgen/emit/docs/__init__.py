@@ -294,7 +294,8 @@ def _notes(spec: Spec) -> dict[str, dict[str, Any]]:
     raw = {str(e["id"]): e for e in spec.raw.get("errata", [])}
     for e in spec.errata:
         out[e.id] = {"kind": "erratum", "id": e.id, "topic": e.clause or "", "text": e.text,
-                     "revision": str(raw.get(e.id, {}).get("revision", "")), "evidence": "", "anchor": f"erratum-{_anchor(e.id)}"}
+                     "revision": str(raw.get(e.id, {}).get("revision", "")), "evidence": "",
+                     "anchor": f"erratum-{_anchor(e.id)}"}
     return out
 
 
@@ -384,9 +385,11 @@ def _document(spec: Spec) -> dict[str, Any]:
         if h not in headers:
             headers.append(h)
     older = [h for h in spec.headers.values() if h not in headers]
-    return {"sections": sections, "added_checks": added, "headers_42": headers, "headers_older": older, "table_51": _table_51(spec),
-            "history": list(m.get("history", [])), "approvals": list(m.get("approvals", [])),
-            "release": {"date": None, "change_order": None, **dict(m.get("release", {}))}, "clause_text": {str(c["id"]): c["text"] for c in clauses},
+    return {"sections": sections, "added_checks": added, "headers_42": headers, "headers_older": older,
+            "table_51": _table_51(spec), "history": list(m.get("history", [])),
+            "approvals": list(m.get("approvals", [])),
+            "release": {"date": None, "change_order": None, **dict(m.get("release", {}))},
+            "clause_text": {str(c["id"]): c["text"] for c in clauses},
             "notes": _notes(spec)}
 
 
@@ -411,7 +414,8 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
     cut_note = next((d.id for d in spec.decisions if "companion document" in d.text), "")
     quoted = [f'"{k}"' for k in keywords]
     rows = [" | ".join(quoted[k:k + 5]) for k in range(0, len(quoted), 5)]
-    return {"keywords": keywords, "keyword_alts": "\n                | ".join(rows), "fields": fields, "implant": by_role.get("implant_descriptor"),
+    return {"keywords": keywords, "keyword_alts": "\n                | ".join(rows), "fields": fields,
+            "implant": by_role.get("implant_descriptor"),
             "config": by_role.get("configuration_descriptor"),
             "no_config": [v.id for v in spec.versions
                           if not any(f.role == "configuration_descriptor" for f in spec.headers[v.header].fields)],
@@ -515,3 +519,9 @@ def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
     files[f"{OUT}/changes.md"] = env.get_template("changes.md.j2").render(
         steps=version_steps(spec), available=available, **ctx).encode()
     return files
+
+
+def reference(spec: Spec) -> str:
+    """The reference page (index.md) alone: 300071 rev N with its appendices (the seed-conformance test
+    renders it for many edited specs)."""
+    return str(_environment(spec).get_template("index.md.j2").render(**context(spec)))

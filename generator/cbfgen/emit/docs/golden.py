@@ -152,9 +152,9 @@ EXAMPLE_RECORDS = 40  # the companion document's example file: a valid case of a
 
 def cut_example(spec: Spec, cases: list[Case]) -> tuple[str, str] | None:
     """(case name, CUT text) of the companion document's complete example: of the valid cases of the
-    default version without findings under the default profile whose records all have a keyword line, the one with the most
-    distinct commands (at most EXAMPLE_RECORDS records). The text is what the CUT writer writes: the
-    header line, the header_ext line when the configuration descriptor is set, one line a record."""
+    default version without findings under the default profile whose records all have a keyword line,
+    the one with the most distinct commands (at most EXAMPLE_RECORDS records). The text is what the CUT
+    writer writes: the header line, the header_ext line when the configuration descriptor is set, one line a record."""
     cut = spec.cut
     best: tuple[int, str, str] | None = None
     header = spec.header_for(spec.default_version)
