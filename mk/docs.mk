@@ -20,7 +20,7 @@ docs: docs-site  ## Markdown docs (generated/docs/) and the HTML site ($(DOCS_HT
 
 # The site shows the toolpath gallery (`cbf plot` and `cbf stats` of every golden file that
 # validates clean, mk/gallery.mk) on a page of its own.
-docs-site: generate-py
+docs-site: generate-py node_modules/.stamp
 	@rm -rf $(GALLERY) && $(PY) -m cbf.gallery $(GALLERY) conformance/golden/*.cbf
 	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY)
 

@@ -363,6 +363,7 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
     pages = {
         "ok.html": head + "<p>fits</p></body></html>",
         "wide.html": head + '<div style="width:900px">too wide at 390 px</div></body></html>',
+        "wider.html": head + '<div style="width:1400px">too wide at 1280 px</div></body></html>',
         "image.html": head + '<img src="none.svg" alt="x"></body></html>',
         "console.html": head + "<script>console.log('hello')</script></body></html>",
     }
@@ -371,12 +372,14 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
     chromium = browser.chromium()
     assert chromium
     with Browser(chromium) as b:
-        assert browser.check_page(b, tmp_path / "ok.html", "ok.html", 390) == []
-        assert browser.check_page(b, tmp_path / "wide.html", "wide.html", 1280) == []
-        assert any("horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wide.html", "w", 390))
-        assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", 1280))
+        assert browser.check_page(b, tmp_path / "ok.html", "ok.html") == []
+        assert browser.check_page(b, tmp_path / "wide.html", "wide.html", (1280,)) == []
+        assert any("@390px: horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wide.html", "w"))
+        # measured at 1280 after the 390 px load: the resize is seen
+        assert any("@1280px: horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wider.html", "w"))
+        assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", (1280,)))
         assert any("console" in p and "hello" in p
-                   for p in browser.check_page(b, tmp_path / "console.html", "c", 1280))
+                   for p in browser.check_page(b, tmp_path / "console.html", "c", (1280,)))
 
 
 def test_pdf_check_fails_when_the_contents_do_not_match_the_pages() -> None:

@@ -259,21 +259,25 @@ def _field_index(spec: Spec) -> list[dict[str, str]]:
     for h in spec.headers.values():
         for f in h.fields:
             rows.append({"name": f.name, "what": f"header {h.id} field, offset {f.offset}",
-                         "href": f"index.md#header-{h.id}"})
+                         "href": f"index.md#header-{h.id}", "label": f"header layout {h.id}"})
     for f in spec.record.fields:
-        rows.append({"name": f.name, "what": f"record head field, offset {f.offset}", "href": "index.md#records"})
+        rows.append({"name": f.name, "what": f"record head field, offset {f.offset}", "href": "index.md#records",
+                     "label": "record head"})
     for c in spec.commands:
         for lay in c.layouts:
             tag = f" ({lay.variant})" if lay.variant else ""
             for a in lay.args:
                 rows.append({"name": a.name, "what": f"{c.name}{tag} argument, offset {a.offset}",
-                             "href": f"{command_page(c)}#layout-{_anchor(lay.variant or 'primary')}"})
-        rows.append({"name": c.name, "what": f"command 0x{c.code:02X}", "href": command_page(c)})
+                             "href": f"{command_page(c)}#layout-{_anchor(lay.variant or 'primary')}",
+                             "label": f"{c.name} layout {lay.variant or 'primary'}"})
+        rows.append({"name": c.name, "what": f"command 0x{c.code:02X}", "href": command_page(c),
+                     "label": f"{c.name} page"})
     for k in spec.checks:
         rows.append({"name": k.id, "what": f"check ({k.kind}, {k.severity})",
-                     "href": f"index.md#check-{_anchor(k.id)}"})
+                     "href": f"index.md#check-{_anchor(k.id)}", "label": f"check {k.id}"})
     for d in spec.decisions:
-        rows.append({"name": d.id, "what": f"decision: {d.topic}", "href": f"index.md#decision-{_anchor(d.id)}"})
+        rows.append({"name": d.id, "what": f"decision: {d.topic}", "href": f"index.md#decision-{_anchor(d.id)}",
+                     "label": f"decision {d.id}"})
     return sorted(rows, key=lambda r: (r["name"].lower(), r["what"]))
 
 
