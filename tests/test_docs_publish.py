@@ -383,11 +383,13 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
 
 
 def test_pdf_check_fails_when_the_contents_do_not_match_the_pages() -> None:
-    from cbfgen.emit.docs.pdf import verify
+    from cbfgen.emit.docs.pdf import _key, verify
 
     texts = ["Contents A 2 B 3", "A\nchapter one", "B chapter two"]
-    toc = [("A", 2), ("B", 3)]
-    assert verify("r.pdf", texts, toc, 3) == []
-    assert verify("r.pdf", texts + ["one page more"], toc, 3) == ["r.pdf: 4 pages, the contents promise 3"]
-    assert verify("r.pdf", texts, [("A", 2), ("B", 2)], 3) == ["r.pdf: 'B' is not on page 2, where the contents put it"]
-    assert verify("r.pdf", ["Contents", "Pro\ufb01les here"], [("Profiles", 2)], 2) == []  # a ligature is text
+    outline = [(_key("A"), 2), (_key("B"), 3)]
+    assert verify("r.pdf", ["A", "B"], ["2", "3"], outline, texts) == []
+    assert verify("r.pdf", ["A", "B"], ["2", "2"], outline, texts) == ["r.pdf: 'B' is on page 3, the contents say 2"]
+    assert verify("r.pdf", ["A", "C"], ["2", "3"], outline, texts) == ["r.pdf: 'C' is on page None, the contents say 3"]
+    assert verify("r.pdf", ["A", "B"], ["2", "3"], [(_key("A"), 2), (_key("B"), 2)], texts) != []
+    assert verify("r.pdf", ["Profiles"], ["2"], [(_key("Profiles"), 2)], ["Contents", "Pro\ufb01les here"]) == []
+    assert verify("r.pdf", ["Profiles"], ["1"], [(_key("Profiles"), 1)], ["Contents", "Profiles"]) != []
