@@ -61,7 +61,7 @@ enum cbf_version {
 
 /** Validation profiles. */
 enum cbf_profile {
-    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with the decisions N1 to N11. */
+    CBF_PROFILE_DEFAULT = 0, /**< What 300071 says, read with the decisions N1 to N11. */
     CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum covers implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. A file whose checksum matches the default coverage instead is an error here, and the finding names the coverage it matches: accepting either coverage let any change equal to their difference (the sum of the sequence bytes; 1 for a two-record file) pass unseen, which the reliability campaign found as missed bit flips. */
     CBF_PROFILE__COUNT = 2
 };

@@ -426,6 +426,9 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
             "descriptor_checks": spec.checks_of_kind("descriptor_word"),
             # the clauses that send the reader to the CUT document: those the CUT decision notes
             "note": cut_note,
+            # the part number of the CUT specification 300071 cites (meta.related)
+            "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
+                         "?"),
             "citing": [str(c["id"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
             "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else ""}
 
