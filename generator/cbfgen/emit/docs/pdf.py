@@ -54,14 +54,14 @@ h1 { font-size: 17pt; } h2 { font-size: 14pt; } h3 { font-size: 12pt; } h4 { fon
 h1, h2, h3, h4 { break-after: avoid; overflow-wrap: anywhere; }
 .part { break-before: page; }
 table { border-collapse: collapse; margin: 0.5em 0; width: 100%; font-size: 8pt; }
-th, td { border: 1px solid #999; padding: 2px 4px; vertical-align: top; text-align: left; overflow-wrap: anywhere; }
+th, td { border: 1px solid #999; padding: 2px 4px; vertical-align: top; text-align: left; overflow-wrap: break-word; }
 th { background: #eee; }
 tr, img, svg, .toc li, blockquote { break-inside: avoid; }
 table.one-page { break-inside: avoid; font-size: 7.5pt; }
 table.one-page td:nth-child(-n+4), table.one-page th:nth-child(-n+4) { white-space: nowrap; overflow-wrap: normal; }
 caption { text-align: left; font-size: 9pt; padding: 0.3em 0; }
 img { max-width: 100%; height: auto; }
-code { font: 8pt "DejaVu Sans Mono", monospace; overflow-wrap: anywhere; }
+code { font: 8pt "DejaVu Sans Mono", monospace; overflow-wrap: break-word; }
 pre { white-space: pre-wrap; background: #f6f6f6; border: 1px solid #ccc; padding: 4px; font-size: 6.5pt; }
 pre code { font-size: 6.5pt; }
 blockquote { margin: 0.4em 0; padding: 0.1em 0.6em; border-left: 2px solid #99a; background: #f6f7fa; }
@@ -152,29 +152,30 @@ def chapters(spec: Spec) -> list[Chapter]:
     held = {path: _pid(path) for path, _ in rendered}
     out: list[Chapter] = []
     first_command = command_page(spec.commands[0])[:-3] + ".html"
-    first_case = next((p for p, _ in rendered if p.startswith("golden/") and p != GOLDEN_INDEX[:-3] + ".html"), "")
+    golden_index = GOLDEN_INDEX[:-3] + ".html"
     for path, body in rendered:
         local = _localise(Page(path, held[path], body), held)
         if path != "index.html":
             h1 = re.search(r"<h1[^>]*>(.*?)</h1>", local, re.S)
             title = _text(h1.group(1)) if h1 else path
-            out.append(Chapter(title, held[path], f'<a id="{held[path]}"></a>{local}',
-                               path not in (*(command_page(c)[:-3] + ".html" for c in spec.commands[1:]),)
-                               and not (path.startswith("golden/") and path not in (first_case,)),
-                               level=2 if path.startswith(("commands/", "golden/")) and path not in (
-                                   first_command, first_case) else 1))
+            command = path.startswith("commands/")
+            case = path.startswith("golden/") and path != golden_index
+            # a new page for each part; the command pages and the cases flow one after the other
+            part = not (command and path != first_command) and not case and path != golden_index
+            out.append(Chapter(title, held[path], f'<a id="{held[path]}"></a>{local}', part,
+                               level=2 if command or case else 1))
             continue
         parts = re.split(r"(?=<h2>)", local)
         head = parts[0]
         h1 = re.search(r"<h1>(.*?)</h1>", head)
         out.append(Chapter(_text(h1.group(1)) if h1 else "Reference", "top", head, False))
-        for part in parts[1:]:
-            h2 = re.match(r"<h2>(.*?)</h2>", part)
+        for section in parts[1:]:
+            h2 = re.match(r"<h2>(.*?)</h2>", section)
             name = _text(h2.group(1)) if h2 else "Section"
             if name == "Contents":
                 continue  # the PDF has its own contents, with page numbers
             starts_part = bool(re.match(r"1\b", name)) or name.startswith("Appendix A")
-            out.append(Chapter(name, f"ch-{len(out)}", f'<a id="ch-{len(out)}"></a>{part}', starts_part))
+            out.append(Chapter(name, f"ch-{len(out)}", f'<a id="ch-{len(out)}"></a>{section}', starts_part))
     return out
 
 
