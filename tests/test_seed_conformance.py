@@ -233,7 +233,7 @@ def _command(doc: dict[str, Any], name: str) -> dict[str, Any]:
 
 
 def _clause(doc: dict[str, Any], cid: str) -> dict[str, Any]:
-    return next(c for c in doc["meta"]["clauses"] if c["id"] == cid)
+    return next(c for c in doc["meta"]["clauses"] if c["number"] == cid)
 
 
 def _field(doc: dict[str, Any], name: str) -> dict[str, Any]:

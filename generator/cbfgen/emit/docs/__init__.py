@@ -371,17 +371,17 @@ def _document(spec: Spec) -> dict[str, Any]:
     sections = []
     clauses = list(m.get("clauses", []))
     for sec in m.get("sections", []):
-        own = [c for c in clauses if str(c["id"]).split(".")[0] == str(sec["id"])]
+        own = [c for c in clauses if str(c["number"]).split(".")[0] == str(sec["id"])]
         sections.append({"id": str(sec["id"]), "title": sec["title"], "clauses": [
-            {"title": None, "table": None, **c, "id": str(c["id"]), "depth": str(c["id"]).count("."),
+            {"title": None, "table": None, **c, "id": str(c["number"]), "depth": str(c["number"]).count("."),
              "notes": _note_refs(spec, list(c.get("notes", []))),
-             "checks": checks_by_clause.get(str(c["id"]), [])} for c in own]})
+             "checks": checks_by_clause.get(str(c["number"]), [])} for c in own]})
     seen: set[str] = set()
     for sec_ in sections:  # a note is given whole where it first applies, by id and topic after that
         for c_ in sec_["clauses"]:
             c_["notes"] = [{**n, "first": n["id"] not in seen} for n in c_["notes"]]
             seen.update(n["id"] for n in c_["notes"])
-    clause_ids = {str(c["id"]) for c in clauses}
+    clause_ids = {str(c["number"]) for c in clauses}
     added = [k for k in spec.checks if k.id not in clause_ids]
     headers = []
     for v in spec.writable_versions:
@@ -393,7 +393,7 @@ def _document(spec: Spec) -> dict[str, Any]:
             "table_51": _table_51(spec), "history": list(m.get("history", [])),
             "approvals": list(m.get("approvals", [])),
             "release": {"date": None, "change_order": None, **dict(m.get("release", {}))},
-            "clause_text": {str(c["id"]): c["text"] for c in clauses},
+            "clause_text": {str(c["number"]): c["text"] for c in clauses},
             "notes": _notes(spec)}
 
 
@@ -429,7 +429,7 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
             # the part number of the CUT specification 300071 cites (meta.related)
             "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
                          "?"),
-            "citing": [str(c["id"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
+            "citing": [str(c["number"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
             "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else ""}
 
 
