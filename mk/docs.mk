@@ -5,12 +5,14 @@
 #               README, hex sources) are copied in under files/; copy the folder anywhere.
 #               ksc's Graphviz view of the .ksy is not built: one graph of every type, about
 #               21 m wide, that no reader can use (the docs' byte-field diagrams show the layouts).
-#   docs-pdf    headless Chromium prints the reference to $(DOCS_PDF): contents with page
-#               numbers, page numbers in the footer; fails unless the PDF has the pages the
-#               contents promise, each chapter where they say (generator/cbfgen/emit/docs/pdf.py).
+#               The search index is built by node with MiniSearch from node_modules.
+#   docs-pdf    headless Chromium prints the whole site to $(DOCS_PDF) in 300071's frame
+#               (header and footer from `meta`, page N of M); fails unless each chapter is on
+#               the page the contents give (generator/cbfgen/emit/docs/pdf.py).
 #   docs-check  every link of the site stays inside it and resolves; in headless Chromium
 #               (Debian `chromium`, installed by .ci/setup-debian.sh with CBF_WANT_CHROMIUM=1)
-#               no page overflows at 1280 px or 390 px, every image loads, no console message
+#               no page of the site overflows at 1280 px or 390 px, every image loads, no
+#               console message, the search finds a check and a command
 #               (generator/cbfgen/emit/docs/browser.py); then docs-pdf.
 DOCS_HTML := build/docs-html
 DOCS_PDF := build/docs-pdf/cbf-reference.pdf
@@ -20,7 +22,7 @@ docs: docs-site  ## Markdown docs (generated/docs/) and the HTML site ($(DOCS_HT
 
 # The site shows the toolpath gallery (`cbf plot` and `cbf stats` of every golden file that
 # validates clean, mk/gallery.mk) on a page of its own.
-docs-site: generate-py
+docs-site: generate-py node_modules/.stamp
 	@rm -rf $(GALLERY) && $(PY) -m cbf.gallery $(GALLERY) conformance/golden/*.cbf
 	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY)
 
@@ -35,6 +37,7 @@ docs-check: docs docs-chromium  ## links stay in the site; Chromium: no overflow
 	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF)
 
 # Installing chromium (about 15 s on Debian 12 with a warm apt mirror), the browser
-# check (about 40 s) and the PDF (about 45 s) fit in CI's budget: `make test` runs them.
+# check (164 pages, about 17 s) and the PDF (about 200 pages, two prints, about 13 s) fit in
+# CI's budget: `make test` runs them.
 TEST_DEPS += docs-check
 TEST_BUILD += docs-chromium

@@ -55,9 +55,12 @@ speed 0.5000
 line < 0.0000, 0.0000, 0.0000 > < 10.0000, 0.0000, 0.0000 >
 cutter_on
 comment rest of the line is the text
-check_sum 12345
+check_sum {}
 """
-    model = cbf.from_cut(text)
+    data = cbf.encode(cbf.from_cut(text.format(0).replace("check_sum 0\n", "")))
+    field = T.HEADER_CHECKSUM_FIELDS["file"]  # the check_sum line must state the file checksum (issue 26)
+    order = "little" if T.BO == "<" else "big"
+    model = cbf.from_cut(text.format(int.from_bytes(data[field.offset:field.offset + field.size], order)))
     assert model.header.implant_descriptor == "PN-4711 ACME KNEE 4"
     assert model.header.configuration_descriptor == "CFG-A"
     names = [r.name for r in model.records]

@@ -314,8 +314,8 @@ def test_matrix_never_says_fail_for_a_listed_limitation(md_pages: dict[str, str]
 # -- CUT keyword table, field index ----------------------------------------------------------------
 
 def test_cut_table_has_every_layout(md_pages: dict[str, str]) -> None:
-    index = md_pages["index.md"]
-    table = index[index.index('<a id="the-cut-text-form"></a>'):index.index('<a id="change-history"></a>')]
+    page = md_pages[docs.CUT_PAGE]  # the companion document (issue 26)
+    table = page[page.index('<a id="cut-commands"></a>'):page.index('<a id="cut-version"></a>')]
     for c in SPEC.commands:
         kw = c.name.lower() if SPEC.cut["keyword_case"] == "lower" else c.name
         for lay in c.layouts:
@@ -363,6 +363,7 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
     pages = {
         "ok.html": head + "<p>fits</p></body></html>",
         "wide.html": head + '<div style="width:900px">too wide at 390 px</div></body></html>',
+        "wider.html": head + '<div style="width:1400px">too wide at 1280 px</div></body></html>',
         "image.html": head + '<img src="none.svg" alt="x"></body></html>',
         "console.html": head + "<script>console.log('hello')</script></body></html>",
     }
@@ -371,20 +372,24 @@ def test_browser_check_fails_on_overflow_broken_image_and_console(tmp_path: Path
     chromium = browser.chromium()
     assert chromium
     with Browser(chromium) as b:
-        assert browser.check_page(b, tmp_path / "ok.html", "ok.html", 390) == []
-        assert browser.check_page(b, tmp_path / "wide.html", "wide.html", 1280) == []
-        assert any("horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wide.html", "w", 390))
-        assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", 1280))
+        assert browser.check_page(b, tmp_path / "ok.html", "ok.html") == []
+        assert browser.check_page(b, tmp_path / "wide.html", "wide.html", (1280,)) == []
+        assert any("@390px: horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wide.html", "w"))
+        # measured at 1280 after the 390 px load: the resize is seen
+        assert any("@1280px: horizontal overflow" in p for p in browser.check_page(b, tmp_path / "wider.html", "w"))
+        assert any("image not loaded" in p for p in browser.check_page(b, tmp_path / "image.html", "i", (1280,)))
         assert any("console" in p and "hello" in p
-                   for p in browser.check_page(b, tmp_path / "console.html", "c", 1280))
+                   for p in browser.check_page(b, tmp_path / "console.html", "c", (1280,)))
 
 
 def test_pdf_check_fails_when_the_contents_do_not_match_the_pages() -> None:
-    from cbfgen.emit.docs.pdf import verify
+    from cbfgen.emit.docs.pdf import _key, verify
 
     texts = ["Contents A 2 B 3", "A\nchapter one", "B chapter two"]
-    toc = [("A", 2), ("B", 3)]
-    assert verify("r.pdf", texts, toc, 3) == []
-    assert verify("r.pdf", texts + ["one page more"], toc, 3) == ["r.pdf: 4 pages, the contents promise 3"]
-    assert verify("r.pdf", texts, [("A", 2), ("B", 2)], 3) == ["r.pdf: 'B' is not on page 2, where the contents put it"]
-    assert verify("r.pdf", ["Contents", "Pro\ufb01les here"], [("Profiles", 2)], 2) == []  # a ligature is text
+    outline = [(_key("A"), 2), (_key("B"), 3)]
+    assert verify("r.pdf", ["A", "B"], ["2", "3"], outline, texts) == []
+    assert verify("r.pdf", ["A", "B"], ["2", "2"], outline, texts) == ["r.pdf: 'B' is on page 3, the contents say 2"]
+    assert verify("r.pdf", ["A", "C"], ["2", "3"], outline, texts) == ["r.pdf: 'C' is on page None, the contents say 3"]
+    assert verify("r.pdf", ["A", "B"], ["2", "3"], [(_key("A"), 2), (_key("B"), 2)], texts) != []
+    assert verify("r.pdf", ["Profiles"], ["2"], [(_key("Profiles"), 2)], ["Contents", "Pro\ufb01les here"]) == []
+    assert verify("r.pdf", ["Profiles"], ["1"], [(_key("Profiles"), 1)], ["Contents", "Profiles"]) != []

@@ -23,6 +23,7 @@ from markdown_it.token import Token
 
 import cbfgen.emit.docs as docs
 from cbfgen.emit.docs import golden, site, site_links
+from cbfgen.emit.docs.site import SEARCH_PAGE, search_documents
 from cbfgen.loader import load
 from cbfgen.model import Spec
 
@@ -128,8 +129,9 @@ def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_every_markdown_link_and_anchor_resolves() -> None:
     pages = _md_pages(SPEC)
     files = {rel[len("docs/"):] for rel in _emitted()}
-    # the reference, the changes, a page per command, the golden index, a page per case, the field index
-    assert len(pages) == 2 + len(SPEC.commands) + 1 + len(CASES) + 1
+    # the reference, the changes, the CUT companion, a page per command, the golden index, a page per case,
+    # the field index
+    assert len(pages) == 3 + len(SPEC.commands) + 1 + len(CASES) + 1
     assert sum(len(_md_links(t)) for t in pages.values()) > 100
     assert md_problems(pages, files, DOCS) == []
 
@@ -157,7 +159,7 @@ def test_every_command_and_check_is_in_the_markdown() -> None:
             for a in lay.args:
                 assert f"`{a.name}`" in pages[docs.command_page(c)], (c.name, a.name)
     for k in SPEC.checks:
-        assert f'<a id="check-{docs._anchor(k.id)}"></a>`{k.id}`' in index
+        assert re.search(f'<a id="check-{docs._anchor(k.id)}"></a>(Check )?`{re.escape(k.id)}`', index), k.id
 
 
 def test_markdown_traceability_matrix_lists_every_check() -> None:
@@ -201,7 +203,7 @@ def test_pages_and_figures_are_deterministic() -> None:
 def test_html_parses_without_errors(html_site: Path) -> None:
     pages = sorted(html_site.rglob("*.html"))
     own = [p for p in pages if "files" not in p.relative_to(html_site).parts]
-    assert len(own) == 4 + len(SPEC.commands) + len(CASES)
+    assert len(own) == 6 + len(SPEC.commands) + len(CASES)  # the search page too
     for p in pages:
         _parsed_page(p)
 
@@ -251,11 +253,28 @@ def test_site_works_alone_when_copied(html_site: Path, tmp_path: Path) -> None:
 def test_html_is_self_contained(html_site: Path) -> None:
     for p in html_site.rglob("*.html"):
         tree = _parsed_page(p)
-        assert not list(tree.iter("script")), p
+        scripts = [el.attrib.get("src", "") for el in tree.iter("script")]
+        if p.name == SEARCH_PAGE:  # the search page's scripts are files of the site (issue 26)
+            assert all((p.parent / s).is_file() for s in scripts if s) and scripts, scripts
+            assert all(not _external(s) for s in scripts)
+        else:
+            assert not scripts, p
         for el in tree.iter():
             if el.tag in ("link", "img", "iframe", "object"):
                 ref = el.attrib.get("href") or el.attrib.get("src") or ""
                 assert not _external(ref), (p, ref)
+
+
+def test_search_documents_cover_every_page(html_site: Path) -> None:
+    site = {p.relative_to(html_site).as_posix(): p.read_bytes() for p in html_site.rglob("*.html")}
+    docs_ = search_documents(site)
+    pages = {d["url"].split("#")[0] for d in docs_}
+    assert pages == {p for p in site if p != SEARCH_PAGE and not p.startswith("files/")}
+    # a check id and a command name are in the text the index is built from
+    assert any(SPEC.checks[-1].id in d["text"] for d in docs_)
+    assert any(d["title"].startswith(SPEC.commands[-1].name) for d in docs_)
+    index = (html_site / "search" / "search-index.js").read_text(encoding="utf-8")
+    assert index.startswith("window.CBF_SEARCH_INDEX = ") and '\\"documentCount\\":' in index
 
 
 def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
@@ -276,7 +295,7 @@ def test_html_traceability_matrix_lists_every_check(html_site: Path) -> None:
     seen = False
     listed: list[str] = []
     for el in index.find("body").iter():  # type: ignore[union-attr]
-        if el.tag == "h2":
+        if el.tag in ("h2", "h3"):
             seen = "".join(el.itertext()) == "Traceability matrix"
         elif seen and el.tag == "tr":
             cells = list(el)

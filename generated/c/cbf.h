@@ -61,7 +61,7 @@ enum cbf_version {
 
 /** Validation profiles. */
 enum cbf_profile {
-    CBF_PROFILE_DEFAULT = 0, /**< What 300071 rev 03 says, read with the decisions N1 to N11. */
+    CBF_PROFILE_DEFAULT = 0, /**< What 300071 says, read with the decisions N1 to N11. */
     CBF_PROFILE_IMPLIB = 1, /**< Compatibility with files written by THINK Surgical's implib (2017): the file checksum covers implib's range (without sequence numbers) and VERSION may carry only its 16 listed bytes. Writers under this profile use implib's coverage and the 16-byte VERSION. A file whose checksum matches the default coverage instead is an error here, and the finding names the coverage it matches: accepting either coverage let any change equal to their difference (the sum of the sequence bytes; 1 for a two-record file) pass unseen, which the reliability campaign found as missed bit flips. */
     CBF_PROFILE__COUNT = 2
 };
@@ -568,7 +568,7 @@ struct cbf_header_v2 {
     uint8_t version_major; /**< Version number for cutfile format, major (N3). [u8; offset 16; clause 4.2] */
     uint8_t version_minor; /**< Version number for cutfile format, minor (N3). [u8; offset 17; clause 4.2] */
     char implant_descriptor[70 + 1]; /**< Implant descriptor (part number, manufacturer, type, size); the part number must be the first item (6.1.1). [string(70), NUL-terminated copy; offset 18; clause 4.2] */
-    char configuration_descriptor[34 + 1]; /**< Configuration descriptor. [string(34), NUL-terminated copy; offset 88; clause 7.2.2.1] */
+    char configuration_descriptor[34 + 1]; /**< Configuration descriptor; the field 7.2.2.1 made of the 1.x reserved bytes. [string(34), NUL-terminated copy; offset 88; clause 4.2] */
     uint16_t command_count; /**< Number of commands in cutting data section (6.2.2). [u16; offset 122; clause 4.2] */
     uint32_t end_pattern; /**< Special pattern indicating end of header, the complement of the start pattern (N5, bytes 6D 48 5E AC). [u32; offset 124; clause 4.2] */
 };

@@ -7,7 +7,7 @@ meta:
     thinksurgical:
     - 300071 rev 03
     - 300072 rev 07
-  license: CC0-1.0
+  license: LicenseRef-THINK-Surgical-Proprietary
   ks-version: '0.11'
   endian: le
 doc: 'The CBF file provides the toolpath information for cutting implant cavities with the ROBODOC System (1.1). It carries
@@ -100,8 +100,8 @@ types:
       size: 34
       encoding: ISO-8859-1
       pad-right: 0
-      doc: Configuration descriptor.
-      doc-ref: 300071 rev 03, 7.2.2.1
+      doc: Configuration descriptor; the field 7.2.2.1 made of the 1.x reserved bytes.
+      doc-ref: 300071 rev 03, 4.2
     - id: command_count
       type: u2
       doc: Number of commands in cutting data section (6.2.2).

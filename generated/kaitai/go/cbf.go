@@ -2119,8 +2119,8 @@ func (this *Cbf_HeaderV2) Read(io *kaitai.Stream, parent *Cbf_Header, root *Cbf)
  */
 
 /**
- * Configuration descriptor.
- * @see "300071 rev 03, 7.2.2.1"
+ * Configuration descriptor; the field 7.2.2.1 made of the 1.x reserved bytes.
+ * @see "300071 rev 03, 4.2"
  */
 
 /**

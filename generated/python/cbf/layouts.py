@@ -94,7 +94,7 @@ class HeaderV2:
     implant_descriptor: str
     """Implant descriptor (part number, manufacturer, type, size); the part number must be the first item (6.1.1). Offset 18, str(70). (4.2)"""
     configuration_descriptor: str
-    """Configuration descriptor. Offset 88, str(34). (7.2.2.1)"""
+    """Configuration descriptor; the field 7.2.2.1 made of the 1.x reserved bytes. Offset 88, str(34). (4.2)"""
     command_count: int
     """Number of commands in cutting data section (6.2.2). Offset 122, u2. (4.2)"""
     end_pattern: int

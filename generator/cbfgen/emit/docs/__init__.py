@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import struct
 from pathlib import Path
 from typing import Any
@@ -55,6 +56,7 @@ def case_page(name: str) -> str:
 
 
 GOLDEN_INDEX = "golden/index.md"
+CUT_PAGE = "cut.md"  # the companion document: the CUT text format
 FIELD_INDEX = "fields.md"
 GALLERY = "gallery"  # the toolpath gallery's folder in the site (site.py, made by cbf.gallery)
 
@@ -257,22 +259,178 @@ def _field_index(spec: Spec) -> list[dict[str, str]]:
     for h in spec.headers.values():
         for f in h.fields:
             rows.append({"name": f.name, "what": f"header {h.id} field, offset {f.offset}",
-                         "href": f"index.md#header-{h.id}"})
+                         "href": f"index.md#header-{h.id}", "label": f"header layout {h.id}"})
     for f in spec.record.fields:
-        rows.append({"name": f.name, "what": f"record head field, offset {f.offset}", "href": "index.md#records"})
+        rows.append({"name": f.name, "what": f"record head field, offset {f.offset}", "href": "index.md#records",
+                     "label": "record head"})
     for c in spec.commands:
         for lay in c.layouts:
             tag = f" ({lay.variant})" if lay.variant else ""
             for a in lay.args:
                 rows.append({"name": a.name, "what": f"{c.name}{tag} argument, offset {a.offset}",
-                             "href": f"{command_page(c)}#layout-{_anchor(lay.variant or 'primary')}"})
-        rows.append({"name": c.name, "what": f"command 0x{c.code:02X}", "href": command_page(c)})
+                             "href": f"{command_page(c)}#layout-{_anchor(lay.variant or 'primary')}",
+                             "label": f"{c.name} layout {lay.variant or 'primary'}"})
+        rows.append({"name": c.name, "what": f"command 0x{c.code:02X}", "href": command_page(c),
+                     "label": f"{c.name} page"})
     for k in spec.checks:
         rows.append({"name": k.id, "what": f"check ({k.kind}, {k.severity})",
-                     "href": f"index.md#check-{_anchor(k.id)}"})
+                     "href": f"index.md#check-{_anchor(k.id)}", "label": f"check {k.id}"})
     for d in spec.decisions:
-        rows.append({"name": d.id, "what": f"decision: {d.topic}", "href": f"index.md#decision-{_anchor(d.id)}"})
+        rows.append({"name": d.id, "what": f"decision: {d.topic}", "href": f"index.md#decision-{_anchor(d.id)}",
+                     "label": f"decision {d.id}"})
     return sorted(rows, key=lambda r: (r["name"].lower(), r["what"]))
+
+
+# -- 300071 as a controlled document (issue 26) ----------------------------------------
+NOTE_ID = re.compile(r"\b([A-Z][0-9]+)\b")
+
+
+class DocumentError(ValueError):
+    """The spec's document frame names a note (decision or erratum) it does not have."""
+
+
+def _notes(spec: Spec) -> dict[str, dict[str, Any]]:
+    """Every decision and erratum by id: kind, id, topic, text and (errata) the revision it corrects."""
+    out: dict[str, dict[str, Any]] = {}
+    for d in spec.decisions:
+        out[d.id] = {"kind": "decision", "id": d.id, "topic": d.topic, "text": d.text, "evidence": d.evidence,
+                     "anchor": f"decision-{_anchor(d.id)}"}
+    raw = {str(e["id"]): e for e in spec.raw.get("errata", [])}
+    for e in spec.errata:
+        out[e.id] = {"kind": "erratum", "id": e.id, "topic": e.clause or "", "text": e.text,
+                     "revision": str(raw.get(e.id, {}).get("revision", "")), "evidence": "",
+                     "anchor": f"erratum-{_anchor(e.id)}"}
+    return out
+
+
+def _note_refs(spec: Spec, ids: list[str] | tuple[str, ...]) -> list[dict[str, Any]]:
+    notes = _notes(spec)
+    missing = [i for i in ids if i not in notes]
+    if missing:
+        raise DocumentError(f"meta.clauses names {', '.join(missing)}, which is no decision or erratum")
+    return [notes[i] for i in ids]
+
+
+def _ids_in(spec: Spec, *texts: str | None) -> list[str]:
+    """The decision and erratum ids a text names, in order, once each."""
+    notes = _notes(spec)
+    seen: list[str] = []
+    for t in texts:
+        for m in NOTE_ID.finditer(t or ""):
+            if m.group(1) in notes and m.group(1) not in seen:
+                seen.append(m.group(1))
+    return seen
+
+
+def type_text(a: Any) -> str:
+    """An argument's type as table 5.1 writes it: string(16), float, float(3), byte, N bytes."""
+    if a.kind == "string":
+        return f"string({a.size})"
+    if a.kind == "float":
+        return "float" if a.count == 1 else f"float({a.count})"
+    if a.kind == "uint":
+        return "byte" if a.elem_size == 1 and a.count == 1 else f"uint{8 * a.elem_size}" + (
+            f"({a.count})" if a.count > 1 else "")
+    return f"{a.size} bytes"
+
+
+def _table_51(spec: Spec) -> list[dict[str, Any]]:
+    """Table 5.1: per command, the writable versions' majors, name, code, bytes and arguments, in the
+    spec's order, with the decisions and errata its layouts name."""
+    rows = []
+    writable = list(spec.writable_versions)
+    for c in spec.commands:
+        vers = [v for v in writable if c.available_in(v.id)]
+        lays = []
+        for v in vers:
+            for lay in c.layouts_for(v.id):
+                if not lay.profiles and lay not in lays:
+                    lays.append(lay)
+        if not lays:
+            lays = [c.primary]
+        args = []
+        for a in lays[0].args:
+            label = a.name.replace("_", " ")
+            args.append(f"{label}: {type_text(a)}")
+        sizes = sorted({lay.size for lay in lays})
+        ids = _ids_in(spec, lays[0].doc, *(a.doc for a in lays[0].args if a.reserved),
+                      c.erratum if c.declared_size else None)
+        rows.append({"command": c, "ver": ",".join(str(v.major) for v in vers), "hex": f"{c.code:02X}",
+                     "bytes": " or ".join(str(n) for n in sizes), "doc": c.doc.rstrip("."),
+                     "args": args, "notes": _note_refs(spec, ids)})
+    return rows
+
+
+def _document(spec: Spec) -> dict[str, Any]:
+    """300071's frame and body from meta: title block, approvals, release, history, sections with their
+    clauses (verbatim text, notes resolved), the checks enforcing each clause."""
+    m = spec.meta
+    checks_by_clause: dict[str, list[Check]] = {}
+    for k in spec.checks:
+        checks_by_clause.setdefault(k.id, []).append(k)
+    sections = []
+    clauses = list(m.get("clauses", []))
+    for sec in m.get("sections", []):
+        own = [c for c in clauses if str(c["number"]).split(".")[0] == str(sec["id"])]
+        sections.append({"id": str(sec["id"]), "title": sec["title"], "clauses": [
+            {"title": None, "table": None, **c, "id": str(c["number"]), "depth": str(c["number"]).count("."),
+             "notes": _note_refs(spec, list(c.get("notes", []))),
+             "checks": checks_by_clause.get(str(c["number"]), [])} for c in own]})
+    seen: set[str] = set()
+    for sec_ in sections:  # a note is given whole where it first applies, by id and topic after that
+        for c_ in sec_["clauses"]:
+            c_["notes"] = [{**n, "first": n["id"] not in seen} for n in c_["notes"]]
+            seen.update(n["id"] for n in c_["notes"])
+    clause_ids = {str(c["number"]) for c in clauses}
+    added = [k for k in spec.checks if k.id not in clause_ids]
+    headers = []
+    for v in spec.writable_versions:
+        h = spec.headers[v.header]
+        if h not in headers:
+            headers.append(h)
+    older = [h for h in spec.headers.values() if h not in headers]
+    return {"sections": sections, "added_checks": added, "headers_42": headers, "headers_older": older,
+            "table_51": _table_51(spec), "history": list(m.get("history", [])),
+            "approvals": list(m.get("approvals", [])),
+            "release": {"date": None, "change_order": None, **dict(m.get("release", {}))},
+            "clause_text": {str(c["number"]): c["text"] for c in clauses},
+            "notes": _notes(spec)}
+
+
+DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
+
+
+def _cut_doc(spec: Spec) -> dict[str, Any]:
+    """What the companion document needs beyond spec.cut: the keywords, the header fields a CUT text
+    may set, the descriptor fields of the default version, the versions without a configuration
+    descriptor, the checks that report an empty descriptor, the keyword of the VERSION-like command."""
+    lower = spec.cut["keyword_case"] == "lower"
+    keywords = [c.name.lower() if lower else c.name for c in spec.commands]
+    fields: list[Any] = []
+    for h in spec.headers.values():
+        for f in h.fields:
+            if f.role not in DERIVED_ROLES and f.name not in [g.name for g in fields]:
+                fields.append(f)
+    head = spec.header_for(spec.default_version)
+    by_role = {f.role: f for f in head.fields}
+    version_cmd = next((c for c in spec.commands if c.sets and "format_version" in c.sets), None)
+    # the decision that makes this page 300072's stand-in: the one whose text names the CUT document
+    cut_note = next((d.id for d in spec.decisions if "companion document" in d.text), "")
+    quoted = [f'"{k}"' for k in keywords]
+    rows = [" | ".join(quoted[k:k + 5]) for k in range(0, len(quoted), 5)]
+    return {"keywords": keywords, "keyword_alts": "\n                | ".join(rows), "fields": fields,
+            "implant": by_role.get("implant_descriptor"),
+            "config": by_role.get("configuration_descriptor"),
+            "no_config": [v.id for v in spec.versions
+                          if not any(f.role == "configuration_descriptor" for f in spec.headers[v.header].fields)],
+            "descriptor_checks": spec.checks_of_kind("descriptor_word"),
+            # the clauses that send the reader to the CUT document: those the CUT decision notes
+            "note": cut_note,
+            # the part number of the CUT specification 300071 cites (meta.related)
+            "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
+                         "?"),
+            "citing": [str(c["number"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
+            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else ""}
 
 
 def context(spec: Spec) -> dict[str, Any]:
@@ -290,6 +448,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "reliability": _reliability(_reliability_file()),
         "cases": cases,
         "examples": golden.examples(spec, cases),
+        "cut_example": golden.cut_example(spec, cases),
         "header_example": golden.header_example(spec, cases),
         "example": _worked_example(spec),
         "versions": [v.id for v in spec.versions],
@@ -301,6 +460,9 @@ def context(spec: Spec) -> dict[str, Any]:
         "field_index": _field_index(spec),
         "golden_index": GOLDEN_INDEX,
         "field_index_page": FIELD_INDEX,
+        "cut_page": CUT_PAGE,
+        "doc": _document(spec),
+        "cut_doc": _cut_doc(spec),
     }
 
 
@@ -355,6 +517,7 @@ def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
     case_tpl = env.get_template("golden_case.md.j2")
     for case in ctx["cases"]:
         files[f"{OUT}/{case_page(case.name)}"] = case_tpl.render(**golden.page_context(spec, case), **ctx).encode()
+    files[f"{OUT}/{CUT_PAGE}"] = env.get_template("cut.md.j2").render(**ctx).encode()
     files[f"{OUT}/{FIELD_INDEX}"] = env.get_template("fields.md.j2").render(**ctx).encode()
     for rel, svg_text in ctx["figures"].items():
         files[f"{OUT}/{rel}"] = svg_text.encode()
@@ -363,3 +526,9 @@ def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
     files[f"{OUT}/changes.md"] = env.get_template("changes.md.j2").render(
         steps=version_steps(spec), available=available, **ctx).encode()
     return files
+
+
+def reference(spec: Spec) -> str:
+    """The reference page (index.md) alone: 300071 rev N with its appendices (the seed-conformance test
+    renders it for many edited specs)."""
+    return str(_environment(spec).get_template("index.md.j2").render(**context(spec)))

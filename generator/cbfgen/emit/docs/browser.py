@@ -1,9 +1,10 @@
 """`make docs-check`: the HTML docs in real headless Chromium.
 
 Chromium (Debian's `chromium`) is driven over the DevTools protocol
-(cdp.py). Every page of the reference (the index, each command page, the
-golden case index and the field index) is loaded at 1280 and at 390 CSS
-pixels wide, and must show:
+(cdp.py). Every HTML page of the site (the reference, the CUT companion,
+each command and golden case page, the indexes, the gallery, the search page,
+the imported repository files) is loaded once at 390 CSS pixels wide and
+measured there and, after the viewport is widened, at 1280, and must show:
   - no horizontal overflow (the document is no wider than the viewport);
   - every image loaded (complete, with a natural width);
   - no console message, no uncaught exception and no browser log entry
@@ -11,8 +12,10 @@ pixels wide, and must show:
 A canary page that logs one console error is loaded first: the check fails
 if that message is not seen, so a silent browser cannot pass it. The site
 must also be self-contained (site_links.problems: every link and anchor
-resolves, none leaves the site). Screenshots at 1280 px of the index and of
-one command page are written to --out.
+resolves, none leaves the site). The search page is then asked for a
+check id and a command name and must list a result for each. Screenshots at
+1280 px of the index and of one command page are written to --out; --shots
+writes 390 px screenshots of the index and one golden case too.
 
     python -m cbfgen.emit.docs.browser --site build/docs-html --out build/docs-check
 """
@@ -23,10 +26,12 @@ import argparse
 import shutil
 import sys
 from pathlib import Path
+from urllib.parse import quote
 
 from ...loader import load
-from . import FIELD_INDEX, GALLERY, GOLDEN_INDEX, command_page, site_links
+from . import CUT_PAGE, FIELD_INDEX, GALLERY, GOLDEN_INDEX, command_page, site_links
 from .cdp import Browser, CdpError
+from .site import SEARCH_PAGE
 
 WIDTHS = (1280, 390)
 HEIGHT = 900
@@ -58,21 +63,59 @@ def canary(b: Browser, out: Path) -> list[str]:
     return []
 
 
-def check_page(b: Browser, page: Path, rel: str, width: int) -> list[str]:
+def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTHS) -> list[str]:
+    """Load the page once at the narrowest width, then measure it at each width (the viewport
+    resized, the page not reloaded: the layout follows, the console and images are the load's)."""
     import json
 
+    order = sorted(widths)
     since = len(b.events)
-    b.open(page.resolve().as_uri(), width, HEIGHT)
-    probe = json.loads(b.evaluate(PROBE))
-    problems = [f"{rel} @{width}px: console: {line}" for line in b.console(since)]
-    if probe["scroll"] > probe["client"]:
-        problems.append(f"{rel} @{width}px: horizontal overflow ({probe['scroll']} px wide in {probe['client']} px)")
-    problems += [f"{rel} @{width}px: image not loaded: {src}" for src in probe["broken"]]
+    b.open(page.resolve().as_uri(), order[0], HEIGHT)
+    problems: list[str] = []
+    for width in order:
+        if width != order[0]:
+            b.page("Emulation.setDeviceMetricsOverride",
+                   {"width": width, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": False})
+        probe = json.loads(b.evaluate(PROBE))
+        if probe["scroll"] > probe["client"]:
+            problems.append(f"{rel} @{width}px: horizontal overflow ({probe['scroll']} px wide in "
+                            f"{probe['client']} px)")
+        problems += [f"{rel} @{width}px: image not loaded: {src}" for src in probe["broken"]]
+    problems += [f"{rel}: console: {line}" for line in b.console(since)]
     return problems
 
 
-def check(browser: str, site: Path, out: Path, pages: list[str], shots: list[str]) -> list[str]:
+def check_search(b: Browser, site: Path, queries: list[str]) -> list[str]:
+    """The search page finds each query (MiniSearch over the built index, from file://)."""
+    page = site / SEARCH_PAGE
+    if not page.exists():
+        return [f"{SEARCH_PAGE}: missing (run `make docs`)"]
+    problems = []
+    for q in queries:
+        since = len(b.events)
+        b.open(page.resolve().as_uri() + "?q=" + quote(q), 1280, HEIGHT)
+        found = b.evaluate("document.querySelectorAll('#search-results li').length")
+        ready = b.evaluate("document.body.getAttribute('data-search-ready')")
+        problems += [f"{SEARCH_PAGE}?q={q}: console: {line}" for line in b.console(since)]
+        if not ready or not found:
+            problems.append(f"{SEARCH_PAGE}?q={q}: no result (index of {ready or 'no'} documents)")
+    return problems
+
+
+def shoot(b: Browser, page: Path, png: Path, width: int, height: int) -> None:
+    b.open(page.resolve().as_uri(), width, HEIGHT)
+    b.page("Emulation.setDeviceMetricsOverride",
+           {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    b.screenshot(png)
+    print(f"docs-check: screenshot {png}")
+
+
+def check(browser: str, site: Path, out: Path, pages: list[str], shots: list[str], queries: list[str],
+          narrow_shots: tuple[str, ...] | list[str] = ()) -> list[str]:
+    import time
+
     problems = site_links.problems(site)
+    start = time.monotonic()
     with Browser(browser) as b:
         problems += canary(b, out)
         for rel in pages:
@@ -80,16 +123,14 @@ def check(browser: str, site: Path, out: Path, pages: list[str], shots: list[str
             if not page.exists():
                 problems.append(f"{rel}: missing (run `make docs`)")
                 continue
-            for width in WIDTHS:
-                problems += check_page(b, page, rel, width)
+            problems += check_page(b, page, rel)
             if rel in shots:
-                png = out / (rel.replace("/", "_")[:-5] + ".png")
-                b.open(page.resolve().as_uri(), WIDTHS[0], HEIGHT)
-                b.page("Emulation.setDeviceMetricsOverride",
-                       {"width": WIDTHS[0], "height": 2400, "deviceScaleFactor": 1, "mobile": False})
-                b.screenshot(png)
-                print(f"docs-check: screenshot {png}")
-        print(f"docs-check: {len(pages)} pages at {', '.join(f'{w} px' for w in WIDTHS)}")
+                shoot(b, page, out / (rel.replace("/", "_")[:-5] + ".png"), WIDTHS[0], 2400)
+            if rel in narrow_shots:
+                shoot(b, page, out / (rel.replace("/", "_")[:-5] + f"-{min(WIDTHS)}.png"), min(WIDTHS), 1600)
+        problems += check_search(b, site, queries)
+        print(f"docs-check: {len(pages)} pages at {', '.join(f'{w} px' for w in WIDTHS)}, search "
+              f"{len(queries)} queries, in {time.monotonic() - start:.1f} s")
     return problems
 
 
@@ -98,24 +139,32 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--site", default="build/docs-html")
     ap.add_argument("--out", default="build/docs-check")
     ap.add_argument("--spec", default="spec/cbf.yaml")
+    ap.add_argument("--shots", action="store_true", help="also screenshots at 390 px of the index and a golden case")
     args = ap.parse_args(argv)
     browser = chromium()
     if browser is None:
         print("docs-check: chromium not found (CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh installs it)", file=sys.stderr)
         return 2
     spec = load(args.spec)
+    site = Path(args.site)
     # A command page with the motion figure and an argument diagram when the spec has one.
     first = next((c for c in spec.commands if c.motion and c.motion.get("kind") == "circle"), spec.commands[0])
     shots = ["index.html", command_page(first)[:-3] + ".html"]
-    pages = ["index.html", *(command_page(c)[:-3] + ".html" for c in spec.commands),
-             GOLDEN_INDEX[:-3] + ".html", FIELD_INDEX[:-3] + ".html", "changes.html"]
-    if (Path(args.site) / GALLERY / "index.html").exists():  # the toolpath gallery's drawings load too
-        pages.append(f"{GALLERY}/index.html")
+    pages = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
+    for need in ["index.html", CUT_PAGE[:-3] + ".html", GOLDEN_INDEX[:-3] + ".html", FIELD_INDEX[:-3] + ".html",
+                 "changes.html", SEARCH_PAGE, *(command_page(c)[:-3] + ".html" for c in spec.commands)]:
+        if need not in pages:
+            pages.append(need)  # reported missing
+    if (site / GALLERY / "index.html").exists():  # the toolpath gallery's drawings load too
         shots.append(f"{GALLERY}/index.html")
+    cases = sorted(p for p in pages if p.startswith("golden/") and p != GOLDEN_INDEX[:-3] + ".html")
+    # the longest case name: its h1 must wrap at 390 px
+    narrow = ["index.html", *(sorted(cases, key=len)[-1:])] if args.shots else []
+    queries = [spec.checks[-1].id, spec.commands[-1].name]
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     try:
-        problems = check(browser, Path(args.site), out, pages, shots)
+        problems = check(browser, site, out, pages, shots, queries, narrow)
     except CdpError as exc:
         problems = [f"chromium: {exc}"]
     for p in problems:

@@ -118,12 +118,12 @@ class Browser:
         data = self.page("Page.captureScreenshot", {"format": "png"})["data"]
         path.write_bytes(base64.b64decode(data))
 
-    def pdf(self, path: Path, footer: str) -> None:
+    def pdf(self, path: Path, footer: str, header: str = "<span></span>") -> None:
         data = self.page("Page.printToPDF", {
             "printBackground": True, "displayHeaderFooter": True, "generateDocumentOutline": True,
-            "headerTemplate": "<span></span>",
+            "headerTemplate": header,
             "footerTemplate": footer, "paperWidth": 8.27, "paperHeight": 11.69,
-            "marginTop": 0.6, "marginBottom": 0.7, "marginLeft": 0.6, "marginRight": 0.6})["data"]
+            "marginTop": 0.75, "marginBottom": 0.85, "marginLeft": 0.6, "marginRight": 0.6})["data"]
         path.write_bytes(base64.b64decode(data))
 
     def console(self, since: int = 0) -> list[str]:

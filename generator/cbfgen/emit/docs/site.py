@@ -8,8 +8,12 @@ link to a file of the repository outside the docs (the spec, the golden
 README, a case's hex source) is copied into the site under files/ (a
 Markdown file rendered as a page, any other text file also as a page with
 its text, beside the verbatim copy), so the site works alone wherever it is
-copied. The SVG figures are copied beside the pages. No CDN, no JavaScript:
-one inline style sheet per page.
+copied. The SVG figures are copied beside the pages. No CDN: one inline style
+sheet per page. The navigation folds behind a button on narrow screens (a
+checkbox and CSS, no script). Search (search.html) is MiniSearch, vendored
+from node_modules at build time (search/minisearch.js with its licence), over
+an index built at build time by node (search/build_index.cjs) into
+search/search-index.js: it works offline and from file://.
 
     python -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out build/docs-html
 """
@@ -18,8 +22,11 @@ from __future__ import annotations
 
 import argparse
 import html
+import json
 import posixpath
+import re
 import shutil
+import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,6 +42,75 @@ from . import GALLERY, HERE, OUT, REPO, command_page, context, emit
 
 DOCS = f"generated/{OUT}"  # where the Markdown pages live in the repository
 FILES = "files"  # repository files the pages link to, copied in
+SEARCH_PAGE = "search.html"
+NODE_MODULES = REPO / "node_modules"
+SEARCH_SRC = HERE / "search"
+# MiniSearch's options: the fields searched and the fields a result shows (the page reads them too)
+SEARCH_OPTIONS = {"fields": ["title", "text"], "storeFields": ["title", "url", "page"],
+                  "searchOptions": {"boost": {"title": 3}}}
+_ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
+_TAG = re.compile(r"<[^>]+>")
+_HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
+
+
+class SearchError(RuntimeError):
+    """The search index could not be built (node or the minisearch package missing)."""
+
+
+def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
+    """One document a part of a page: the text from one anchor to the next, titled by its heading
+    (or the page title), for every HTML page of the site but the search page and imported files."""
+    docs: list[dict[str, str]] = []
+    for page, data in sorted(site.items()):
+        if not page.endswith(".html") or page == SEARCH_PAGE or page.startswith(FILES + "/"):
+            continue
+        text = data.decode()
+        body = text[text.find("<main>"):text.find("<footer>")]
+        title_m = re.search(r"<title>(.*?) · ", text)
+        page_title = html.unescape(title_m.group(1)) if title_m else page
+        cuts = [(0, "")] + [(m.start(), m.group(1)) for m in _ANCHOR.finditer(body)]
+        for k, (start, anchor) in enumerate(cuts):
+            chunk = body[start:cuts[k + 1][0] if k + 1 < len(cuts) else len(body)]
+            words = " ".join(html.unescape(_TAG.sub(" ", chunk)).split())
+            if not words:
+                continue
+            head = _HEADING.search(chunk)
+            title = " ".join(html.unescape(_TAG.sub("", head.group(2))).split()) if head else \
+                (f"{page_title}: {words[:60]}" if anchor else page_title)
+            docs.append({"id": str(len(docs)), "title": title, "url": page + (f"#{anchor}" if anchor else ""),
+                         "page": page_title, "text": words})
+    return docs
+
+
+def search_files(site: dict[str, bytes]) -> dict[str, bytes]:
+    """The vendored library, its licence, the page script and the index built by node."""
+    lib = NODE_MODULES / "minisearch"
+    node = shutil.which("node")
+    if node is None or not (lib / "dist" / "umd" / "index.js").is_file():
+        raise SearchError("the search index needs node and node_modules/minisearch (`make kaitai-setup`: npm ci)")
+    payload = json.dumps({"options": SEARCH_OPTIONS, "documents": search_documents(site)})
+    run = subprocess.run([node, str(SEARCH_SRC / "build_index.cjs"), str(NODE_MODULES)], input=payload.encode(),
+                         capture_output=True, check=False, timeout=300)
+    if run.returncode != 0:
+        raise SearchError(f"building the search index failed: {run.stderr.decode(errors='replace')[:500]}")
+    return {"search/minisearch.js": (lib / "dist" / "umd" / "index.js").read_bytes(),
+            "search/minisearch-LICENSE.txt": (lib / "LICENSE.txt").read_bytes(),
+            "search/search.js": (SEARCH_SRC / "search.js").read_bytes(),
+            "search/search-index.js": run.stdout}
+
+
+def _search_body() -> str:
+    return ("<h1>Search</h1>\n"
+            '<form class="search-form" action="search.html" role="search">'
+            '<label for="search-input">Search the documentation</label> '
+            '<input id="search-input" name="q" type="search" autocomplete="off"></form>\n'
+            '<p id="search-status" aria-live="polite">Search needs JavaScript.</p>\n'
+            '<ol id="search-results"></ol>\n'
+            f'<script type="application/json" id="search-options">{json.dumps(SEARCH_OPTIONS)}</script>\n'
+            '<script src="search/minisearch.js"></script>\n<script src="search/search-index.js"></script>\n'
+            '<script src="search/search.js"></script>\n'
+            '<p class="note">Search: <a href="search/minisearch-LICENSE.txt">MiniSearch</a> (MIT licence), '
+            "with an index built when the site was built; it works offline.</p>\n")
 
 
 @dataclass
@@ -139,6 +215,8 @@ def pages(spec: Spec, gallery: Path | None = None) -> dict[str, bytes]:
         html_page = page[:-3] + ".html"
         title, body = to_html(md, data.decode(), html_page, imports)
         site[html_page] = render(html_page, title, body)
+    site[SEARCH_PAGE] = render(SEARCH_PAGE, "Search", _search_body())
+    site.update(search_files(site))
     done: set[str] = set()
     while imports.paths - done:  # an imported Markdown file may link further files
         repo_rel = sorted(imports.paths - done)[0]
@@ -183,7 +261,11 @@ def main(argv: list[str] | None = None) -> int:
     except SpecError as exc:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2
-    n = build(spec, Path(args.out), args.gallery)
+    try:
+        n = build(spec, Path(args.out), args.gallery)
+    except SearchError as exc:
+        print(f"docs-site: {exc}", file=sys.stderr)
+        return 2
     print(f"docs-site: {args.spec} -> {args.out}/index.html ({n} files)")
     return 0
 

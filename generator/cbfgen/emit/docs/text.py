@@ -11,21 +11,27 @@ erratum id (N1, C1, E2 ...) becomes a link to its row.
 from __future__ import annotations
 
 import re
-from html import escape
 
+from ... import escape as esc
 from ...model import Spec
 
-SPECIAL = re.compile(r"([\\`*_\[\]<>|&#!~])")
+_LINE_START = re.compile(r"^([#+=-]|\d+[.)])")  # what would start a heading or a list (escape.py)
 KEYREF = re.compile(r"\b(tolerances|limits)\.([a-z][a-z0-9_]*)")
 
 
 def md_escape(text: str) -> str:
-    """text as Markdown that renders to exactly text (one line, safe in a table cell)."""
-    return _escape(" ".join(str(text).split()))
+    """text as Markdown that renders to exactly text (one line, safe in a table cell): escape.py's."""
+    return esc.markdown_cell(str(text))
 
 
 def _escape(text: str) -> str:
-    return SPECIAL.sub(r"\\\1", text)
+    """A piece of one line of prose, its spaces at either end kept (escape.py strips them)."""
+    lead = text[:len(text) - len(text.lstrip(" "))]
+    trail = text[len(text.rstrip(" ")):] if text.strip(" ") else ""
+    # Not at the start of a line: escape.py's escapes of what would start a list or a heading there
+    # ("1.", "-", "#") are not needed; an "x" before the text keeps them out of the result.
+    inner = esc.markdown_cell("x" + text.strip(" "))[1:] if text.strip(" ") else ""
+    return lead + inner + trail
 
 
 def quantity(spec: Spec, table: str, key: str) -> str | None:
@@ -42,7 +48,7 @@ def quantity(spec: Spec, table: str, key: str) -> str | None:
 def value_html(spec: Spec, table: str, key: str) -> str:
     """A tolerance or limit as the reader needs it: the value; the key in a tooltip."""
     q = quantity(spec, table, key) or key
-    return f'<abbr title="{escape(table)}.{escape(key)}">{escape(q)}</abbr>'
+    return f'<abbr title="{esc.html_text(table)}.{esc.html_text(key)}">{esc.html_text(q)}</abbr>'
 
 
 def _note_ids(spec: Spec) -> dict[str, str]:
@@ -68,4 +74,5 @@ def prose(spec: Spec, text: str | None, index: str = "") -> str:
             out += [_escape(flat[pos:m.start()]), f"[{m.group(3)}]({index}#{notes[m.group(3)]})"]
         pos = m.end()
     out.append(_escape(flat[pos:]))
-    return "".join(out)
+    first = _LINE_START.sub(lambda m: m.group(1)[:-1] + "\\" + m.group(1)[-1], out[0])
+    return "".join([first, *out[1:]])

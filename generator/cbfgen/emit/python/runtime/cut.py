@@ -606,6 +606,7 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
     fields: dict[str, Any] = {}
     set_on: dict[str, int] = {}  # header field (or check_sum) -> the line that set it
     limit = T.LIMITS["max_commands"]
+    stated: list[tuple[int, str]] = []  # the check_sum line: (line, number), compared at the end
 
     def once(cur: _Cursor, name: str) -> None:
         if name in set_on:
@@ -638,6 +639,7 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
             if not (w.isascii() and w.isdigit()):
                 raise cur.fail(f"{_show(w)} is not a number")
             cur.end()
+            stated.append((n, w))
         elif kw == fkw:
             name = cur.word("field name")
             f = next((g for g in info.fields if g.name == name and g.role not in _DERIVED_ROLES), None)
@@ -702,4 +704,37 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
             out.flush(careful, text)
             texts, lines = out.texts, out.lines
     out.flush(careful, text)
-    return Cbf(new_header(f"{major}.{minor}", **fields), out.records())
+    model = Cbf(new_header(f"{major}.{minor}", **fields), out.records())
+    if stated:
+        _check_sum(model, *stated[0], profile)
+    return model
+
+
+# -- check_sum (issue 26) ------------------------------------------------------------
+def _check_sum(model: Cbf, line: int, stated: str, profile: str) -> None:
+    """Refuse a check_sum line whose number is not the file checksum of the CBF the text encodes to
+    (any of the file coverages the profile accepts): the companion document says so."""
+    from .codec import pack_file
+    from .validation import validate
+
+    fsum = T.HEADER_CHECKSUM_FIELDS.get("file")
+    if fsum is None:
+        raise CutSyntaxError(f"{C['checksum_keyword']}: this spec's header has no file checksum", line=line)
+    try:
+        data = bytearray(pack_file(model, profile=profile))
+    except (ValueError, OverflowError) as exc:
+        raise CutSyntaxError(f"{C['checksum_keyword']}: the text does not encode, so no checksum compares: {exc}",
+                             line=line) from None
+    computed = int.from_bytes(data[fsum.offset:fsum.offset + fsum.size], "little" if T.BO == "<" else "big")
+    value = int(stated)
+    if value == computed:
+        return
+    if value < 1 << (8 * fsum.size):  # another coverage the profile accepts may give this number
+        data[fsum.offset:fsum.offset + fsum.size] = value.to_bytes(fsum.size, "little" if T.BO == "<" else "big")
+        if not any(f.check == _FILE_CHECK for f in validate(bytes(data), profile=profile)):
+            return
+    raise CutSyntaxError(f"{C['checksum_keyword']}: {_show(stated)} is not the file checksum of this text, "
+                         f"{computed}", line=line)
+
+
+_FILE_CHECK = next(c["id"] for c in T.checks_of("file_checksum"))
