@@ -90,19 +90,25 @@ def _text(node: Scalar) -> str:
 
 
 def _yaml(text: str, rows: _Rows) -> None:
+    """Rows from the YAML tree, in document order (as cbf-c meets them in one pass)."""
     root = yaml_tree(text, rows.where, TABLE["max_depth"])
     if isinstance(root, Mapping):
-        for k, (key, _) in enumerate(root.pairs):
+        for k, (key, value) in enumerate(root.pairs):
             if key.text != "cutters":
                 raise rows.fail(key.line, f"unknown key '{key.text}' (known: cutters)")
             if k:
                 raise rows.fail(key.line, "duplicate key 'cutters'")
-        root = root.pairs[0][1] if root.pairs else None
-    if root is None or isinstance(root, Scalar) and root.value is None:
+            _rows(value, rows)
+    elif root is not None:
+        _rows(root, rows)
+
+
+def _rows(node: Scalar | Mapping | Sequence, rows: _Rows) -> None:
+    if isinstance(node, Scalar) and node.value is None:
         return
-    if not isinstance(root, Sequence):
-        raise rows.fail(root.line, f"expected a list of cutters ({', '.join(COLUMNS)})")
-    for item in root.items:
+    if not isinstance(node, Sequence):
+        raise rows.fail(node.line, f"expected a list of cutters ({', '.join(COLUMNS)})")
+    for item in node.items:
         if not isinstance(item, Mapping):
             raise rows.fail(item.line, f"a cutter is a mapping of {', '.join(COLUMNS)}")
         got: dict[str, str] = {}
