@@ -260,6 +260,7 @@ typedef struct yj {
     char kind[OPT_NEST_CAP + 1]; /* 'm' or 's'; flow collections live only inside yj_flow */
     unsigned items[OPT_NEST_CAP + 1];
     int pending, pending_ind; /* a key or list item whose value is still to come */
+    size_t pending_at; /* where its value goes: before the line breaks output since */
     unsigned long line, scalar_line; /* scalar_line: the last line that ended in a plain scalar value */
     int root_done, ended;
 } yj;
@@ -281,6 +282,20 @@ static int yj_err(yj *y, unsigned long line, const char *what)
     return opt_fail("%s: line %lu: %s", y->file, line, what);
 }
 
+/* The null of a value that never came, on the line of its key or item (as cbf's reader places it). */
+static int yj_null(yj *y)
+{
+    size_t breaks = y->n - y->pending_at, k;
+    y->n = y->pending_at;
+    if (!yj_put(y, "null", 4))
+        return 0;
+    for (k = 0; k < breaks; k++)
+        if (!yj_c(y, '\n'))
+            return 0;
+    y->pending = 0;
+    return 1;
+}
+
 static int yj_open(yj *y, char kind, int ind)
 {
     if (y->depth >= y->max_depth)
@@ -295,9 +310,8 @@ static int yj_open(yj *y, char kind, int ind)
 
 static int yj_close(yj *y)
 {
-    if (y->pending && !yj_put(y, "null", 4))
+    if (y->pending && !yj_null(y))
         return 0;
-    y->pending = 0;
     if (!yj_c(y, y->kind[y->depth] == 'm' ? '}' : ']'))
         return 0;
     y->depth--;
@@ -486,8 +500,11 @@ static int yj_flow(yj *y, const char **p, const char *end, int in_flow)
     {
         const char *v0 = s;
         size_t len;
-        while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}')))
+        while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}'))) {
+            if (*s == ':' && (s + 1 == end || s[1] == ' ' || s[1] == '\t'))
+                return opt_fail("%s: line %lu: not YAML (a ': ' inside a value)", y->file, y->line);
             s++;
+        }
         len = (size_t)(s - v0);
         while (len && (v0[len - 1] == ' ' || v0[len - 1] == '\t'))
             len--;
@@ -540,6 +557,7 @@ static int yj_inline(yj *y, const char *p, const char *end, int col)
         rest = yj_skip(p + 1, end);
         y->pending = 1; /* the item's value: on this line, or on the lines below */
         y->pending_ind = col;
+        y->pending_at = y->n;
         if (rest >= end)
             return 1;
         return yj_inline(y, rest, end, col + (int)(rest - p));
@@ -577,6 +595,7 @@ static int yj_inline(yj *y, const char *p, const char *end, int col)
         if (v >= end) {
             y->pending = 1;
             y->pending_ind = col;
+            y->pending_at = y->n;
             return 1;
         }
         if (!yj_flow(y, &v, end, 0))
@@ -652,11 +671,8 @@ static int yj_translate(const char *file, const char *src, char *out, size_t cap
             if (y.ended)
                 return yj_err(&y, y.line, "more than one document");
             if (y.pending && ind <= y.pending_ind
-                && !(item && ind == y.pending_ind && y.depth && y.kind[y.depth] == 'm')) {
-                if (!yj_put(&y, "null", 4))
-                    return 0;
-                y.pending = 0;
-            }
+                && !(item && ind == y.pending_ind && y.depth && y.kind[y.depth] == 'm') && !yj_null(&y))
+                return 0;
             while (y.depth && !y.pending && (y.ind[y.depth] > ind || (y.ind[y.depth] == ind && y.kind[y.depth] == 's'
                                                                       && !item)))
                 if (!yj_close(&y))
@@ -848,8 +864,10 @@ static void cj_scalar(cj *j, char *out, size_t cap)
 static int cutters_rows(cj *j)
 {
     cj_ws(j);
-    if (strncmp(j->s + j->i, "null", 4) == 0)
+    if (strncmp(j->s + j->i, "null", 4) == 0) {
+        j->i += 4;
         return 1;
+    }
     if (j->s[j->i] != '[')
         return opt_fail("%s: line %lu: expected a list of cutters (%s)", cutter_file, cj_line(j), opt_columns_list);
     j->i++;

@@ -151,6 +151,8 @@ def yaml_tree(text: str, where: str, max_depth: int) -> Node | None:
                 raise fail(line, "anchors and aliases are not allowed (limit: none)")
             if getattr(ev, "tag", None) is not None and not isinstance(ev, yaml.CollectionEndEvent):
                 raise fail(line, "tags are not allowed")
+            if isinstance(ev, (yaml.ScalarEvent, yaml.CollectionStartEvent)) and _explicit_key(text, ev.start_mark.index):
+                raise fail(line, "a key must be a plain value (complex key)")
             if isinstance(ev, yaml.ScalarEvent):
                 if ev.end_mark.line != ev.start_mark.line or ev.style in ("|", ">"):
                     raise fail(line, "a value over more than one line (one-line values only)")
@@ -178,6 +180,15 @@ def yaml_tree(text: str, where: str, max_depth: int) -> Node | None:
         at = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
         raise OptionFileError(f"{where}: {at}not YAML ({getattr(exc, 'problem', None) or exc})") from None
     return root
+
+
+def _explicit_key(text: str, at: int) -> bool:
+    """Whether the node at ``at`` follows a '?' indicator: an explicit key, refused as a complex key
+    is (cbf-c's reader refuses every '?' key; a plain key needs none)."""
+    k = at - 1
+    while k >= 0 and text[k] in " \t":
+        k -= 1
+    return k >= 0 and text[k] == "?" and k + 1 < at
 
 
 def plain_data(node: Node | None) -> Any:
