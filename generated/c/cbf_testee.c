@@ -625,6 +625,8 @@ static int yj_translate(const char *file, const char *src, char *out, size_t cap
     y.cap = cap;
     y.max_depth = max_depth;
     out[0] = 0;
+    if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
+        line += 3;
     while (*line) {
         const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line, *c;
         int ind, quote = 0;

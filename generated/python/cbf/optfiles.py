@@ -151,7 +151,8 @@ def yaml_tree(text: str, where: str, max_depth: int) -> Node | None:
                 raise fail(line, "anchors and aliases are not allowed (limit: none)")
             if getattr(ev, "tag", None) is not None and not isinstance(ev, yaml.CollectionEndEvent):
                 raise fail(line, "tags are not allowed")
-            if isinstance(ev, (yaml.ScalarEvent, yaml.CollectionStartEvent)) and _explicit_key(text, ev.start_mark.index):
+            if isinstance(ev, (yaml.ScalarEvent, yaml.CollectionStartEvent)) and \
+                    _explicit_key(text, ev.start_mark.index):
                 raise fail(line, "a key must be a plain value (complex key)")
             if isinstance(ev, yaml.ScalarEvent):
                 if ev.end_mark.line != ev.start_mark.line or ev.style in ("|", ">"):
