@@ -209,3 +209,18 @@ def test_a_file_name_with_dollars_plots(tmp_path: Path) -> None:
     r = subprocess.run([sys.executable, "-m", "cbf", "plot", str(src), "-o", str(tmp_path / "p.png")], env=ENV,
                        capture_output=True, text=True, timeout=TIME_CAP)
     assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr[-2000:]
+
+
+def test_the_bench_row_converts_a_helix(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`make bench`'s helix row (issue 28: 60,000 segments there; 2,000 here, the same code)."""
+    sys.path.insert(0, str(REPO))
+    import bench.bench as B
+
+    monkeypatch.setattr(B, "HELIX_SEGMENTS", 2_000)
+    result: dict[str, Any] = {"files": {}, "rows": {}, "targets": {}}
+    B._helix_convert_row(result, 1)
+    (name,) = result["files"]
+    segments = int(name.split("(")[1].split(" ")[0].replace(",", ""))
+    assert abs(segments - 2_000) <= 2_000 // 50, name  # the chord formula, backwards, gives about that many
+    assert result["rows"]["Python convert (curve to segments)"][name]["n"] == 1
+    assert "Python convert (curve to segments)" in B.table(result)
