@@ -190,6 +190,12 @@ def test_a_nearly_straight_arc_is_judged_against_the_tolerance() -> None:
     loose = convert(model, lacks, chord_tol=2e-4)  # one segment is within 2e-4: its true deviation
     assert loose.segments == 1 and math.isclose(loose.max_deviation, mid[1], rel_tol=0.02), loose.max_deviation
     assert cbf.validate(cbf.encode(conv.model)) == []
+    # a middle binary32 cannot tell from the line is straight (M1), and its distance is reported
+    flat_mid = (100.0, f32(1e-6), 0.0)
+    flat = Record.of(_args(cmd, has, {m["start"]: (0.0, 0.0, 0.0), m["through"]: flat_mid,
+                                      m["end"]: (200.0, 0.0, 0.0)}))
+    straight = convert(Cbf(model.header, (model.records[0], flat)), lacks, chord_tol=5e-5)
+    assert straight.segments == 1 and straight.max_deviation == pytest.approx(flat_mid[1], rel=1e-6)
 
 
 @pytest.mark.parametrize("title", ["$\\foo$", "x$\\bad$.cbf", "50$ and 20$", "^_{}%#&"])

@@ -454,6 +454,8 @@ def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill
                 pts, dev = linearise(curve, tol, "end" in motion)  # an arc ends exactly where it says
             except ConvertError as exc:  # name the record, as every other refusal does
                 raise ConvertError(f"{where}: {cmd.name} {exc}; raise --chord-tol", offset=r.offset) from None
+            if "through" in motion and not curve.curved:  # straight in binary32: its middle is still off
+                dev = max(dev, G.line_distance(G.vec(getattr(args, motion["through"])), curve.start, curve.end))
             worst = max(worst, dev)
             curves += 1
             segments += len(pts) - 1

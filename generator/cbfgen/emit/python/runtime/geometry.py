@@ -101,7 +101,7 @@ def point_segment_distance(p: Vec, a: Vec, b: Vec) -> float:
     return norm(sub(p, add(a, scale(ab, t))))
 
 
-def _line_distance(p: Vec, a: Vec, b: Vec) -> float:
+def line_distance(p: Vec, a: Vec, b: Vec) -> float:
     """The distance from p to the line through a and b (to a when they coincide)."""
     ab = sub(b, a)
     den = dot(ab, ab)
@@ -198,7 +198,7 @@ def _through(start: Vec, mid: Vec, end: Vec) -> Curve:
     n = cross(u, w)
     n2 = dot(n, n)
     big = max(abs(x) for x in (*start, *mid, *end))
-    if n2 == 0.0 or _line_distance(mid, start, end) <= _BINARY32_RESOLUTION * big:
+    if n2 == 0.0 or line_distance(mid, start, end) <= _BINARY32_RESOLUTION * big:
         # collinear (M1), or so nearly that the stored values cannot tell: straight. Anything
         # further off is a circle, however large: convert judges it against its tolerance.
         return Curve(start, end)
