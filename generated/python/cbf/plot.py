@@ -3,9 +3,10 @@
 Four views of one cube around the path, in mm with equal aspect: an
 isometric 3-D view and the top (X-Y), front (X-Z) and side (Y-Z)
 projections. Arcs, circles and helices are drawn from their geometry
-(decision M1), every 5 degrees of turn. Moves are coloured cutting /
+(decision M1), every 5 degrees of turn, at most geometry.MAX_DRAW_POINTS a curve
+whatever its sweep (a circle of many turns is drawn as one turn and the rest). Moves are coloured cutting /
 non-cutting (M2), or by phase, shape or cutter; checkpoints and shape starts
-are marked; one legend for the figure.
+are marked; one legend for the figure. Titles and labels are literal text, never mathtext.
 
 matplotlib is imported here only, so ``cbf`` starts fast and works without it.
 """
