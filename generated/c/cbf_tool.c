@@ -143,6 +143,9 @@ static long opt_read(const char *path, char *buf, size_t max, const char *what)
         }
         i += len;
     }
+    if (memchr(buf, 0, (size_t)n))
+        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
+                        (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
     return n;
 }
 

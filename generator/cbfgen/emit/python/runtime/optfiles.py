@@ -60,9 +60,12 @@ def read_text(path: Path, what: str, max_bytes: int) -> str:
     if len(data) > max_bytes:
         raise OptionFileError(f"{path}: larger than the {max_bytes} bytes a {what} may have (limit max_bytes)")
     try:
-        return data.decode("utf-8")
+        text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise OptionFileError(f"{path}: offset {exc.start}: not UTF-8 text") from None
+    if "\x00" in text:
+        raise OptionFileError(f"{path}: offset {data.index(0)}: not text (a NUL byte)")
+    return text
 
 
 def is_yaml(path: Path) -> bool:
