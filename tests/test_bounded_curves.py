@@ -230,3 +230,16 @@ def test_the_bench_row_converts_a_helix(monkeypatch: pytest.MonkeyPatch) -> None
     assert abs(segments - 2_000) <= 2_000 // 50, name  # the chord formula, backwards, gives about that many
     assert result["rows"]["Python convert (curve to segments)"][name]["n"] == 1
     assert "Python convert (curve to segments)" in B.table(result)
+
+
+def test_legend_labels_from_the_file_are_literal() -> None:
+    """A shape named like TeX colours the legend by its name as written (--color shape)."""
+    pytest.importorskip("matplotlib")
+    model, _ = _huge("circle", 90.0)
+    start = next((c for c in T.COMMANDS if c.shape and c.shape["kind"] == "start" and c.layouts_for(model.version_id)),
+                 None)
+    if start is None or start.shape is None:
+        pytest.skip("no command of this version starts a shape")
+    rec = Record.of(_args(start, model.version_id, {start.shape["name"]: "$\\x$", start.shape["count"]: 1}))
+    shaped = Cbf(model.header, (model.records[0], rec, model.records[1]))
+    assert plot.render(shaped, "svg", "shape").lstrip().startswith(b"<?xml")
