@@ -317,11 +317,54 @@ def run(reps: int) -> dict[str, Any]:
              str(tmp / "kaitai"), "python", "javascript", "java", "go"], cwd=REPO, capture_output=True, check=True))
             for g in gen]
         result["rows"]["generate with ksc"] = {"spec": _stats(ksc)}
+    _helix_convert_row(result, reps)
     big = files["65535 records"]
     result["memory"] = {"python_decode_validate_peak_extra_bytes": _rss_decode_validate(big),
                         "file_bytes": big.stat().st_size}
     result["targets"] = _targets(result)
     return result
+
+
+HELIX_SEGMENTS = 60_000  # issue 28: convert found the count one segment at a time (154 s for 63,655)
+
+
+def _helix_convert_row(result: dict[str, Any], reps: int) -> None:
+    """`cbf convert` of one 19-turn helix into about HELIX_SEGMENTS line segments: a helix command
+    of a writable version that another writable version lacks, found by roles (none: no row)."""
+    import math
+
+    import cbf
+    from cbf import tables as T
+    from cbf.convert import convert
+    from cbf.model import Cbf, Record, new_header
+
+    writable = [v.id for v in T.VERSIONS if v.writable]
+    pick = [(c, has, lacks) for c in T.COMMANDS if c.motion and c.motion["kind"] == "helix"
+            for has in writable if c.layouts_for(has) for lacks in writable if not c.layouts_for(lacks)]
+    if not pick:
+        return
+    cmd, has, lacks = pick[0]
+    m = cmd.motion or {}
+    lay = cmd.layouts_for(has)[0]
+    radius, turns = 50.0, 19
+    values = {m["start"]: (radius, 0.0, 0.0), m["center"]: (0.0, 0.0, 0.0), m["normal"]: (0.0, 0.0, 1.0),
+              m["degrees"]: 360.0 * turns, m["length"]: 20.0}
+    full = {f.name: values.get(f.name, (0.0, 0.0, 1.0) if f.kind == "float" and f.count == 3 else
+                                 0.0 if f.kind == "float" else "" if f.kind == "string" else
+                                 bytes(f.size) if f.kind == "bytes" else 0) for f in lay.args}
+    model = Cbf(new_header(has, implant_descriptor="BENCH-HELIX"), (Record.of(lay.cls(**full)),))
+    step = 2.0 * math.pi * turns / HELIX_SEGMENTS  # the chord formula, backwards: the sagitta at that step
+    tol = radius * (1.0 - math.cos(step / 2.0))
+    times, segments = [], 0
+    for _ in range(max(1, min(reps, 3))):
+        t0 = time.perf_counter()
+        conv = convert(model, lacks, chord_tol=tol)
+        cbf.encode(conv.model)
+        times.append(time.perf_counter() - t0)
+        segments = conv.segments
+    name = f"helix ({segments:,} segments)"
+    result["files"][name] = {"bytes": len(cbf.encode(model)), "records": 1}
+    result["rows"]["Python convert (curve to segments)"] = {name: _stats(times)}
 
 
 def _targets(r: dict[str, Any]) -> dict[str, Any]:

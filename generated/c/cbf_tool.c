@@ -66,24 +66,691 @@ static long read_file(const char *path, uint8_t *buf, size_t cap, const char **w
     return (long)n;
 }
 
-/* ---- cutter tables (6.1.2): CSV with a header row, or YAML rows of name, length, radius ---- */
-#define MAX_CUTTERS 4096
-#define CUTTER_NAME 128
-static char cutter_names[MAX_CUTTERS][CUTTER_NAME];
-static cbf_cutter cutters[MAX_CUTTERS];
+/* ---- option files: cutter tables (6.1.2) and machine files, by one rule (issue 28) ---- */
+/* ---- option files (issue 28): the rules of generator/cbfgen/option_files.yaml, completed from the
+ * spec (cbfgen/options.py), the same that cbf/option_files.json gives cbf. Every refusal is one line
+ * naming the file, the line (or JSON path) and the limit, the line cbf says (tests/option_files/). */
+#include <float.h>
+#include <stdarg.h>
+
+#define OPT_CUTTER_MAX_BYTES 1048576u
+#define OPT_CUTTER_MAX_ROWS 4096u
+#define OPT_CUTTER_MAX_COLUMNS 32
+#define OPT_CUTTER_MAX_DEPTH 3
+#define OPT_CUTTER_MAX_NAME 16u
+#define OPT_MACHINE_MAX_BYTES 65536u
+#define OPT_MACHINE_MAX_DEPTH 4
+#define OPT_YAML_MAX_KEYS 64u
+#define OPT_NEST_CAP 32 /* the deepest any option file may nest, and then one more */
+#if OPT_CUTTER_MAX_DEPTH >= OPT_NEST_CAP || OPT_MACHINE_MAX_DEPTH >= OPT_NEST_CAP
+#error "option_files.yaml: max_depth beyond OPT_NEST_CAP"
+#endif
+#define OPT_CUTTER_NAME_BYTES (4u * OPT_CUTTER_MAX_NAME + 1u) /* UTF-8: up to 4 bytes a character */
+static const char opt_cutter_what[] = "cutter table";
+static const char opt_machine_what[] = "machine file";
+static const char *const opt_cutter_columns[3] = { "name", "length", "radius" };
+static const char *const opt_columns_list = "name, length, radius";
+static const struct { const char *column; int positive; const char *check; } opt_cutter_values[2] = {
+    { "length", 1, "cutter_positive" },
+    { "radius", 1, "cutter_positive" },
+};
+
+static char opt_why[8192];
+
+static int opt_fail(const char *fmt, ...) CBF__PRINTF(1, 2);
+static int opt_fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    (void)vsnprintf(opt_why, sizeof opt_why, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+/* The file into buf (at most max bytes, never more read), checked to be UTF-8 as Python decodes it. */
+static long opt_read(const char *path, char *buf, size_t max, const char *what)
+{
+    const char *why;
+    long n = read_file(path, (uint8_t *)buf, max, &why);
+    size_t i = 0;
+    if (n < 0) {
+        if (strcmp(why, "file too large") == 0)
+            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max,
+                            what) - 1;
+        return opt_fail("%s: cannot read %s (%s)", path, what, why) - 1;
+    }
+    buf[n] = 0;
+    while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
+        const unsigned char *u = (const unsigned char *)buf + i;
+        size_t left = (size_t)n - i, len, k;
+        unsigned char lo = 0x80, hi = 0xBF;
+        if (u[0] < 0x80) {
+            i++;
+            continue;
+        }
+        if (u[0] >= 0xC2 && u[0] <= 0xDF) len = 2;
+        else if (u[0] >= 0xE0 && u[0] <= 0xEF) len = 3;
+        else if (u[0] >= 0xF0 && u[0] <= 0xF4) len = 4;
+        else return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+        if (u[0] == 0xE0) lo = 0xA0;
+        if (u[0] == 0xED) hi = 0x9F;
+        if (u[0] == 0xF0) lo = 0x90;
+        if (u[0] == 0xF4) hi = 0x8F;
+        for (k = 1; k < len; k++) {
+            unsigned char a = k == 1 ? lo : 0x80, b = k == 1 ? hi : 0xBF;
+            if (k >= left || u[k] < a || u[k] > b)
+                return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+        }
+        i += len;
+    }
+    if (memchr(buf, 0, (size_t)n))
+        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
+                        (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
+    return n;
+}
+
+static size_t opt_chars(const char *s) /* UTF-8 characters, as Python's len() */
+{
+    size_t n = 0;
+    for (; *s; s++)
+        n += ((unsigned char)*s & 0xC0u) != 0x80u;
+    return n;
+}
+
+/* RFC 8259's number grammar, the whole of s. */
+static int opt_is_number(const char *s)
+{
+    if (*s == '-')
+        s++;
+    if (*s == '0') {
+        s++;
+    } else if (*s >= '1' && *s <= '9') {
+        while (*s >= '0' && *s <= '9')
+            s++;
+    } else {
+        return 0;
+    }
+    if (*s == '.') {
+        s++;
+        if (!(*s >= '0' && *s <= '9'))
+            return 0;
+        while (*s >= '0' && *s <= '9')
+            s++;
+    }
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-')
+            s++;
+        if (!(*s >= '0' && *s <= '9'))
+            return 0;
+        while (*s >= '0' && *s <= '9')
+            s++;
+    }
+    return *s == 0;
+}
+
+static int opt_lower_eq(const char *s, const char *word)
+{
+    for (; *s && *word; s++, word++)
+        if ((*s >= 'A' && *s <= 'Z' ? *s - 'A' + 'a' : *s) != *word)
+            return 0;
+    return *s == 0 && *word == 0;
+}
+
+/* NULL and *out set, or why text is not a usable number ("not a number", "not a finite number"). */
+static const char *opt_number(const char *s, double *out)
+{
+    const char *w = s;
+    if (opt_is_number(s)) {
+        *out = strtod(s, NULL);
+        return *out <= DBL_MAX && *out >= -DBL_MAX ? NULL : "not a finite number";
+    }
+    if (*w == '+' || *w == '-')
+        w++;
+    if (*w == '.')
+        w++;
+    if (opt_lower_eq(w, "nan") || opt_lower_eq(w, "inf") || opt_lower_eq(w, "infinity"))
+        return "not a finite number";
+    return "not a number";
+}
+
+/* "line L, column C: nested deeper than N levels" for the first bracket beyond max outside strings
+ * (columns in characters), before the JSON reader reads a byte: its nesting is then bounded. */
+static int opt_json_depth(const char *path, const char *s, size_t n, int max)
+{
+    size_t i;
+    unsigned long line = 1, col = 0;
+    int depth = 0, in_string = 0, escaped = 0;
+    for (i = 0; i < n; i++) {
+        char c = s[i];
+        if (((unsigned char)c & 0xC0u) != 0x80u)
+            col++;
+        if (in_string) {
+            if (escaped) escaped = 0;
+            else if (c == '\\') escaped = 1;
+            else if (c == '"') in_string = 0;
+            else if (c == '\n') { line++; col = 0; }
+            continue;
+        }
+        if (c == '"') {
+            in_string = 1;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max)
+                return opt_fail("%s: line %lu, column %lu: nested deeper than %d levels (limit max_depth)", path, line,
+                                col, max);
+        } else if (c == ']' || c == '}') {
+            depth--;
+        } else if (c == '\n') {
+            line++;
+            col = 0;
+        }
+    }
+    return 1;
+}
+
+/* ---- YAML, the subset both tools read (option_files.yaml), as JSON text with the same lines ----
+ * Block and flow mappings and lists of one-line plain or quoted scalars, '#' comments, one document.
+ * Anchors, aliases, tags, complex keys, multi-line values, a second document and nesting beyond the
+ * limit are refused at the line they start, as cbf refuses them; a plain scalar becomes a JSON number
+ * (RFC 8259 grammar), true, false, null ('~' and nothing too) or a string, as cbf resolves it. The
+ * JSON keeps every source line break, so a JSON line is the YAML line. */
+typedef struct yj {
+    const char *file;
+    char *out;
+    size_t n, cap;
+    int max_depth, depth;
+    int ind[OPT_NEST_CAP + 1];
+    char kind[OPT_NEST_CAP + 1]; /* 'm' or 's'; flow collections live only inside yj_flow */
+    unsigned items[OPT_NEST_CAP + 1];
+    int pending, pending_ind; /* a key or list item whose value is still to come */
+    size_t pending_at; /* where its value goes: before the line breaks output since */
+    unsigned long line, scalar_line; /* scalar_line: the last line that ended in a plain scalar value */
+    int root_done, ended;
+} yj;
+
+static int yj_put(yj *y, const char *s, size_t len)
+{
+    if (y->cap - y->n <= len)
+        return opt_fail("%s: line %lu: not YAML (too long once read)", y->file, y->line);
+    memcpy(y->out + y->n, s, len);
+    y->n += len;
+    y->out[y->n] = 0;
+    return 1;
+}
+
+static int yj_c(yj *y, char c) { return yj_put(y, &c, 1); }
+
+static int yj_err(yj *y, unsigned long line, const char *what)
+{
+    return opt_fail("%s: line %lu: %s", y->file, line, what);
+}
+
+/* The null of a value that never came, on the line of its key or item (as cbf's reader places it). */
+static int yj_null(yj *y)
+{
+    size_t breaks = y->n - y->pending_at, k;
+    y->n = y->pending_at;
+    if (!yj_put(y, "null", 4))
+        return 0;
+    for (k = 0; k < breaks; k++)
+        if (!yj_c(y, '\n'))
+            return 0;
+    y->pending = 0;
+    return 1;
+}
+
+static int yj_open(yj *y, char kind, int ind)
+{
+    if (y->depth >= y->max_depth)
+        return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line, y->max_depth);
+    y->depth++;
+    y->kind[y->depth] = kind;
+    y->ind[y->depth] = ind;
+    y->items[y->depth] = 0;
+    y->pending = 0;
+    return yj_c(y, kind == 'm' ? '{' : '[');
+}
+
+static int yj_close(yj *y)
+{
+    if (y->pending && !yj_null(y))
+        return 0;
+    if (!yj_c(y, y->kind[y->depth] == 'm' ? '}' : ']'))
+        return 0;
+    y->depth--;
+    return 1;
+}
+
+/* A JSON string of s[0..len) (control characters were refused with the line). */
+static int yj_string(yj *y, const char *s, size_t len)
+{
+    size_t k;
+    if (!yj_c(y, '"'))
+        return 0;
+    for (k = 0; k < len; k++) {
+        if ((s[k] == '"' || s[k] == '\\') && !yj_c(y, '\\'))
+            return 0;
+        if (!yj_c(y, s[k]))
+            return 0;
+    }
+    return yj_c(y, '"');
+}
+
+/* A plain scalar resolved as cbf resolves it. */
+static int yj_plain(yj *y, const char *s, size_t len)
+{
+    char buf[512];
+    if (len == 0 || (len == 1 && s[0] == '~'))
+        return yj_put(y, "null", 4);
+    if (len < sizeof buf) {
+        memcpy(buf, s, len);
+        buf[len] = 0;
+        if (opt_is_number(buf) || strcmp(buf, "true") == 0 || strcmp(buf, "false") == 0 || strcmp(buf, "null") == 0)
+            return yj_put(y, s, len);
+    }
+    return yj_string(y, s, len);
+}
+
+/* A quoted scalar at *p (' or "), ending on this line; *p moves past it. */
+static int yj_quoted(yj *y, const char **p, const char *end)
+{
+    char q = **p;
+    const char *s = *p + 1;
+    if (!yj_c(y, '"'))
+        return 0;
+    for (;;) {
+        if (s >= end)
+            return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+        if (q == '\'' && *s == '\'') {
+            if (s + 1 < end && s[1] == '\'') {
+                if (!yj_c(y, '\''))
+                    return 0;
+                s += 2;
+                continue;
+            }
+            break;
+        }
+        if (q == '"' && *s == '"')
+            break;
+        if (q == '"' && *s == '\\') {
+            if (s + 1 >= end || !strchr("\"\\/bfnrtu", s[1]))
+                return opt_fail("%s: line %lu: not YAML (an escape this reader does not read)", y->file, y->line);
+            if (!yj_put(y, s, 2))
+                return 0;
+            s += 2;
+            continue;
+        }
+        if ((*s == '"' || *s == '\\') && !yj_c(y, '\\'))
+            return 0;
+        if (!yj_c(y, *s))
+            return 0;
+        s++;
+    }
+    *p = s + 1;
+    return yj_c(y, '"');
+}
+
+static int yj_node_mark(yj *y, const char *p)
+{
+    if (*p == '&' || *p == '*')
+        return yj_err(y, y->line, "anchors and aliases are not allowed (limit: none)");
+    if (*p == '!')
+        return yj_err(y, y->line, "tags are not allowed");
+    if (*p == '|' || *p == '>')
+        return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+    if (*p == '?' && (p[1] == ' ' || p[1] == 0 || p[1] == '\t'))
+        return yj_err(y, y->line, "a key must be a plain value (complex key)");
+    return 1;
+}
+
+static const char *yj_skip(const char *p, const char *end)
+{
+    while (p < end && (*p == ' ' || *p == '\t'))
+        p++;
+    return p;
+}
+
+/* A flow collection or scalar inside one, at *p; fdepth: the open flow collections around it. */
+static int yj_flow(yj *y, const char **p, const char *end, int in_flow)
+{
+    const char *s = yj_skip(*p, end);
+    if (!yj_node_mark(y, s))
+        return 0;
+    if (s < end && (*s == '[' || *s == '{')) {
+        char close = *s == '[' ? ']' : '}';
+        int mapping = *s == '{';
+        unsigned keys = 0;
+        if (y->depth >= y->max_depth)
+            return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line,
+                            y->max_depth);
+        y->depth++;
+        if (!yj_c(y, *s))
+            return 0;
+        s = yj_skip(s + 1, end);
+        if (s < end && *s == close) {
+            s++;
+        } else {
+            for (;;) {
+                s = yj_skip(s, end);
+                if (s >= end)
+                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+                if (mapping) {
+                    const char *k0;
+                    if (!yj_node_mark(y, s))
+                        return 0;
+                    if (*s == '[' || *s == '{')
+                        return yj_err(y, y->line, "a key must be a plain value (complex key)");
+                    if (++keys > OPT_YAML_MAX_KEYS)
+                        return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file,
+                                        y->line, OPT_YAML_MAX_KEYS);
+                    if (*s == '"' || *s == '\'') {
+                        if (!yj_quoted(y, &s, end))
+                            return 0;
+                    } else {
+                        size_t len;
+                        k0 = s;
+                        while (s < end && *s != ',' && *s != close && !(*s == ':' && (s + 1 >= end || s[1] == ' ')))
+                            s++;
+                        len = (size_t)(s - k0);
+                        while (len && (k0[len - 1] == ' ' || k0[len - 1] == '\t'))
+                            len--;
+                        if (!yj_string(y, k0, len))
+                            return 0;
+                    }
+                    s = yj_skip(s, end);
+                    if (!yj_c(y, ':'))
+                        return 0;
+                    if (s < end && *s == ':') {
+                        s++;
+                        if (!yj_flow(y, &s, end, 1))
+                            return 0;
+                    } else if (!yj_put(y, "null", 4)) {
+                        return 0;
+                    }
+                } else if (!yj_flow(y, &s, end, 1)) {
+                    return 0;
+                }
+                s = yj_skip(s, end);
+                if (s >= end)
+                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+                if (*s == ',') {
+                    s = yj_skip(s + 1, end);
+                    if (s < end && *s == close) {
+                        s++;
+                        break;
+                    }
+                    if (!yj_c(y, ','))
+                        return 0;
+                    continue;
+                }
+                if (*s == close) {
+                    s++;
+                    break;
+                }
+                return opt_fail("%s: line %lu: not YAML (expected ',' or '%c')", y->file, y->line, close);
+            }
+        }
+        y->depth--;
+        *p = s;
+        return yj_c(y, close);
+    }
+    if (s < end && (*s == '"' || *s == '\'')) {
+        if (!yj_quoted(y, &s, end))
+            return 0;
+        *p = s;
+        return 1;
+    }
+    {
+        const char *v0 = s;
+        size_t len;
+        while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}'))) {
+            if (*s == ':' && (s + 1 == end || s[1] == ' ' || s[1] == '\t'))
+                return opt_fail("%s: line %lu: not YAML (a ': ' inside a value)", y->file, y->line);
+            s++;
+        }
+        len = (size_t)(s - v0);
+        while (len && (v0[len - 1] == ' ' || v0[len - 1] == '\t'))
+            len--;
+        *p = s;
+        if (!in_flow)
+            y->scalar_line = y->line;
+        return yj_plain(y, v0, len);
+    }
+}
+
+/* The end of a plain or quoted key at p followed by ':' and a blank or the line's end, or NULL. */
+static const char *yj_key_end(const char *p, const char *end)
+{
+    if (p < end && (*p == '"' || *p == '\'')) {
+        char q = *p++;
+        while (p < end && !(*p == q && !(q == '\'' && p + 1 < end && p[1] == '\'')))
+            p += (q == '\'' && *p == '\'') || (q == '"' && *p == '\\') ? 2 : 1;
+        if (p >= end)
+            return NULL;
+        p = yj_skip(p + 1, end);
+        return p < end && *p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t') ? p : NULL;
+    }
+    if (p < end && (*p == '[' || *p == '{'))
+        return NULL;
+    for (; p < end; p++)
+        if (*p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t'))
+            return p;
+    return NULL;
+}
+
+/* The node a line holds from p (its column col): a list item, a key and its value, or a value. */
+static int yj_inline(yj *y, const char *p, const char *end, int col)
+{
+    const char *colon;
+    if (!yj_node_mark(y, p))
+        return 0;
+    if (*p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t')) {
+        const char *rest;
+        if (y->depth && y->kind[y->depth] == 's' && y->ind[y->depth] == col && !y->pending) {
+            if (!yj_c(y, ','))
+                return 0;
+        } else if (y->pending || (!y->depth && !y->root_done)) {
+            if (!yj_open(y, 's', col))
+                return 0;
+        } else {
+            return opt_fail("%s: line %lu: not YAML (a list item where none can be)", y->file, y->line);
+        }
+        y->root_done = 1;
+        y->items[y->depth]++;
+        rest = yj_skip(p + 1, end);
+        y->pending = 1; /* the item's value: on this line, or on the lines below */
+        y->pending_ind = col;
+        y->pending_at = y->n;
+        if (rest >= end)
+            return 1;
+        return yj_inline(y, rest, end, col + (int)(rest - p));
+    }
+    colon = yj_key_end(p, end);
+    if (colon) {
+        const char *v;
+        if (y->depth && y->kind[y->depth] == 'm' && y->ind[y->depth] == col && !y->pending) {
+            if (!yj_c(y, ','))
+                return 0;
+        } else if (y->pending || (!y->depth && !y->root_done)) {
+            if (!yj_open(y, 'm', col))
+                return 0;
+        } else {
+            return opt_fail("%s: line %lu: not YAML (a key where none can be)", y->file, y->line);
+        }
+        y->root_done = 1;
+        if (++y->items[y->depth] > OPT_YAML_MAX_KEYS)
+            return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file, y->line,
+                            OPT_YAML_MAX_KEYS);
+        if (*p == '"' || *p == '\'') {
+            const char *q = p;
+            if (!yj_quoted(y, &q, end))
+                return 0;
+        } else {
+            size_t len = (size_t)(colon - p);
+            while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
+                len--;
+            if (!yj_string(y, p, len))
+                return 0;
+        }
+        if (!yj_c(y, ':'))
+            return 0;
+        v = yj_skip(colon + 1, end);
+        if (v >= end) {
+            y->pending = 1;
+            y->pending_ind = col;
+            y->pending_at = y->n;
+            return 1;
+        }
+        if (!yj_flow(y, &v, end, 0))
+            return 0;
+        if (yj_skip(v, end) < end)
+            return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
+        return 1;
+    }
+    if (!y->pending && (y->depth || y->root_done)) {
+        if (y->scalar_line && y->scalar_line + 1 == y->line)
+            return yj_err(y, y->scalar_line, "a value over more than one line (one-line values only)");
+        return opt_fail("%s: line %lu: not YAML (a value where none can be)", y->file, y->line);
+    }
+    y->pending = 0;
+    y->root_done = 1;
+    if (!yj_flow(y, &p, end, 0))
+        return 0;
+    if (yj_skip(p, end) < end)
+        return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
+    return 1;
+}
+
+/* Translate the YAML text src into JSON in out (cap bytes); 0 with the one line in opt_why. */
+static int yj_translate(const char *file, const char *src, char *out, size_t cap, int max_depth)
+{
+    yj y;
+    const char *line = src;
+    memset(&y, 0, sizeof y);
+    y.file = file;
+    y.out = out;
+    y.cap = cap;
+    y.max_depth = max_depth;
+    out[0] = 0;
+    if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
+        line += 3;
+    while (*line) {
+        const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line, *c;
+        int ind, quote = 0;
+        y.line++;
+        for (c = line; c < end; c++) { /* refuse control characters; cut a comment outside quotes */
+            if ((unsigned char)*c < 0x20 && *c != '\t' && !(*c == '\r' && c + 1 == end))
+                return opt_fail("%s: line %lu: not YAML (a control character)", file, y.line);
+            if (quote) {
+                if (*c == quote)
+                    quote = 0;
+            } else if ((*c == '"' || *c == '\'') && (c == line || strchr(" \t[{,:-", c[-1]))) {
+                quote = *c;
+            } else if (*c == '#' && (c == line || c[-1] == ' ' || c[-1] == '\t')) {
+                end = c;
+                break;
+            }
+        }
+        while (end > line && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r'))
+            end--;
+        while (p < end && *p == ' ')
+            p++;
+        ind = (int)(p - line);
+        if (p < end && *p == '\t')
+            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y.line);
+        if (p < end) {
+            if (ind == 0 && end - p >= 3 && memcmp(p, "---", 3) == 0 && (end - p == 3 || p[3] == ' ')) {
+                if (y.root_done || y.ended)
+                    return yj_err(&y, y.line, "more than one document");
+                p = yj_skip(p + 3, end);
+                ind = (int)(p - line);
+            } else if (ind == 0 && end - p == 3 && memcmp(p, "...", 3) == 0) {
+                y.ended = 1;
+                p = end;
+            } else if (*p == '%') {
+                return opt_fail("%s: line %lu: not YAML (a directive)", file, y.line);
+            }
+        }
+        if (p < end) {
+            int item = *p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t');
+            if (y.ended)
+                return yj_err(&y, y.line, "more than one document");
+            if (y.pending && ind <= y.pending_ind
+                && !(item && ind == y.pending_ind && y.depth && y.kind[y.depth] == 'm') && !yj_null(&y))
+                return 0;
+            while (y.depth && !y.pending && (y.ind[y.depth] > ind || (y.ind[y.depth] == ind && y.kind[y.depth] == 's'
+                                                                      && !item)))
+                if (!yj_close(&y))
+                    return 0;
+            if (!yj_inline(&y, p, end, ind))
+                return 0;
+        }
+        if (!yj_c(&y, '\n'))
+            return 0;
+        if (!nl)
+            break;
+        line = nl + 1;
+    }
+    while (y.depth)
+        if (!yj_close(&y))
+            return 0;
+    if (!y.root_done && !yj_put(&y, "null", 4))
+        return 0;
+    return 1;
+}
+
+/* ---- cutter tables (6.1.2): the rows, each checked as it comes by the shared rules ---- */
+static char cutter_names[OPT_CUTTER_MAX_ROWS][OPT_CUTTER_NAME_BYTES];
+static unsigned long cutter_lines[OPT_CUTTER_MAX_ROWS];
+static cbf_cutter cutters[OPT_CUTTER_MAX_ROWS];
 static size_t ncutters;
-static uint8_t cutter_text[1u << 20];
+static char cutter_text[OPT_CUTTER_MAX_BYTES + 1u];
+static char cutter_json[4u * OPT_CUTTER_MAX_BYTES + 64u];
+static const char *cutter_file;
 
-static int is_blank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+static int cutter_add(unsigned long line, const char *name, const char *const value[2])
+{
+    size_t k, chars = opt_chars(name);
+    double v[2];
+    if (ncutters >= OPT_CUTTER_MAX_ROWS)
+        return opt_fail("%s: line %lu: more than %u cutters (limit max_rows)", cutter_file, line, OPT_CUTTER_MAX_ROWS);
+    if (!*name)
+        return opt_fail("%s: line %lu: empty cutter name", cutter_file, line);
+    if (chars > OPT_CUTTER_MAX_NAME)
+        return opt_fail("%s: line %lu: cutter name of %lu characters, longer than the %u a cutter record holds "
+                        "(limit max_name)", cutter_file, line, (unsigned long)chars, OPT_CUTTER_MAX_NAME);
+    for (k = 0; k < 2; k++) {
+        const char *why = opt_number(value[k], &v[k]);
+        if (why)
+            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, value[k],
+                            why);
+        if (opt_cutter_values[k].positive && v[k] <= 0.0)
+            return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
+                            opt_cutter_values[k].column, value[k], opt_cutter_values[k].check);
+    }
+    for (k = 0; k < ncutters; k++)
+        if (strcmp(cutter_names[k], name) == 0)
+            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line, name,
+                            cutter_lines[k]);
+    memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
+    cutter_lines[ncutters] = line;
+    cutters[ncutters].name = cutter_names[ncutters];
+    cutters[ncutters].length = v[0];
+    cutters[ncutters].radius = v[1];
+    ncutters++;
+    return 1;
+}
 
-/* Trim spaces and one pair of quotes; writes a NUL at the end. */
-static char *trim(char *s)
+static int opt_blank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+
+/* A CSV cell: trimmed of blanks, then of one pair of matching quotes (writes a NUL at the end). */
+static char *opt_cell(char *s)
 {
     size_t n;
-    while (*s && is_blank((unsigned char)*s))
+    while (*s && opt_blank((unsigned char)*s))
         s++;
     n = strlen(s);
-    while (n && is_blank((unsigned char)s[n - 1]))
+    while (n && opt_blank((unsigned char)s[n - 1]))
         s[--n] = 0;
     if (n >= 2 && (s[0] == '"' || s[0] == '\'') && s[n - 1] == s[0]) {
         s[n - 1] = 0;
@@ -92,150 +759,246 @@ static char *trim(char *s)
     return s;
 }
 
-static int parse_double(const char *s, double *out)
-{
-    char *end;
-    if (!*s)
-        return 0;
-    *out = strtod(s, &end);
-    return *trim(end) == 0;
-}
-
-static int cutter_add(const char *name, const char *length, const char *radius)
-{
-    size_t n = strlen(name);
-    double l, r;
-    if (ncutters == MAX_CUTTERS || n >= CUTTER_NAME || !parse_double(length, &l) || !parse_double(radius, &r))
-        return 0;
-    memcpy(cutter_names[ncutters], name, n + 1);
-    cutters[ncutters].name = cutter_names[ncutters];
-    cutters[ncutters].length = l;
-    cutters[ncutters].radius = r;
-    ncutters++;
-    return 1;
-}
-
-/* CSV: the first row names the columns (name, length, radius in any order). */
+/* CSV: the first non-blank line names the columns (name, length, radius in any order). */
 static int cutters_csv(char *text)
 {
-    char *line, *save = text;
-    int col[3] = { -1, -1, -1 }, first = 1;
-    static const char *const want[3] = { "name", "length", "radius" };
-    while ((line = save) != NULL && *line) {
-        char *cells[32];
-        int nc = 0, k;
-        char *p = line;
-        save = strchr(line, '\n');
-        if (save)
-            *save++ = 0;
-        if (!*trim(line))
+    char *line = text;
+    int col[3] = { -1, -1, -1 }, header = 1;
+    unsigned long n = 0;
+    while (line) {
+        char *cells[OPT_CUTTER_MAX_COLUMNS], *p = line, *next = strchr(line, '\n');
+        int nc = 1, k, i, blank = 1;
+        n++;
+        if (next)
+            *next++ = 0;
+        for (p = line; *p; p++)
+            blank &= opt_blank((unsigned char)*p);
+        if (blank) {
+            line = next;
             continue;
-        cells[nc++] = p;
-        for (; *p; p++) {
-            if (*p == ',') {
-                *p = 0;
-                if (nc < 32)
-                    cells[nc++] = p + 1;
-            }
+        }
+        cells[0] = line;
+        for (p = line; *p; p++) {
+            if (*p != ',')
+                continue;
+            if (nc == OPT_CUTTER_MAX_COLUMNS)
+                return opt_fail("%s: line %lu: more than %d columns (limit max_columns)", cutter_file, n,
+                                OPT_CUTTER_MAX_COLUMNS);
+            *p = 0;
+            cells[nc++] = p + 1;
         }
         for (k = 0; k < nc; k++)
-            cells[k] = trim(cells[k]);
-        if (first) {
-            int i;
-            first = 0;
-            for (k = 0; k < nc; k++)
-                for (i = 0; i < 3; i++)
-                    if (strcmp(cells[k], want[i]) == 0)
+            cells[k] = opt_cell(cells[k]);
+        if (header) {
+            header = 0;
+            for (i = 0; i < 3; i++)
+                for (k = 0; k < nc && col[i] < 0; k++)
+                    if (strcmp(cells[k], opt_cutter_columns[i]) == 0)
                         col[i] = k;
             if (col[0] < 0 || col[1] < 0 || col[2] < 0)
+                return opt_fail("%s: line %lu: the header row needs the columns %s", cutter_file, n, opt_columns_list);
+        } else {
+            const char *values[2];
+            if (col[0] >= nc || col[1] >= nc || col[2] >= nc)
+                return opt_fail("%s: line %lu: needs %s", cutter_file, n, opt_columns_list);
+            values[0] = cells[col[1]];
+            values[1] = cells[col[2]];
+            if (!cutter_add(n, cells[col[0]], values))
                 return 0;
-            continue;
         }
-        if (col[0] >= nc || col[1] >= nc || col[2] >= nc)
-            return 0;
-        if (!cutter_add(cells[col[0]], cells[col[1]], cells[col[2]]))
-            return 0;
+        line = next;
     }
     return 1;
 }
 
-/* YAML, the forms a cutter table takes: an optional "cutters:" key, then
- * "- name: X" items with "length:"/"radius:" lines, or "- {name: X, length: L, radius: R}". */
-static int cutters_yaml(char *text)
+/* ---- the JSON a YAML table becomes, walked with its lines ---- */
+typedef struct cj { const char *s; size_t i, at; unsigned long line; } cj;
+
+static unsigned long cj_line(cj *j) /* the line of position i (moving forward only) */
 {
-    char *save = text, *line;
-    char name[CUTTER_NAME] = "", length[64] = "", radius[64] = "";
-    int open = 0;
-    while ((line = save) != NULL && *line) {
-        char *s, *colon;
-        save = strchr(line, '\n');
-        if (save)
-            *save++ = 0;
-        if ((s = strchr(line, '#')) != NULL)
-            *s = 0;
-        s = trim(line);
-        if (!*s || strcmp(s, "---") == 0 || strcmp(s, "cutters:") == 0)
-            continue;
-        if (*s == '-') {
-            if (open && !cutter_add(name, length, radius))
-                return 0;
-            open = 1;
-            name[0] = length[0] = radius[0] = 0;
-            s = trim(s + 1);
-            if (*s == '{') {
-                char *part = s + 1, *close = strrchr(s, '}');
-                if (!close)
-                    return 0;
-                *close = 0;
-                while (part) {
-                    char *next = strchr(part, ',');
-                    if (next)
-                        *next++ = 0;
-                    colon = strchr(part, ':');
-                    if (colon) {
-                        char *k, *v;
-                        *colon = 0;
-                        k = trim(part);
-                        v = trim(colon + 1);
-                        if (strcmp(k, "name") == 0 && strlen(v) < sizeof name) strcpy(name, v);
-                        else if (strcmp(k, "length") == 0 && strlen(v) < sizeof length) strcpy(length, v);
-                        else if (strcmp(k, "radius") == 0 && strlen(v) < sizeof radius) strcpy(radius, v);
+    for (; j->at < j->i; j->at++)
+        j->line += j->s[j->at] == '\n';
+    return j->line;
+}
+
+static void cj_ws(cj *j)
+{
+    while (j->s[j->i] == ' ' || j->s[j->i] == '\n' || j->s[j->i] == '\t' || j->s[j->i] == '\r')
+        j->i++;
+}
+
+/* A scalar's text as cbf shows it: a string's characters, a number, true, false or null as written. */
+static void cj_scalar(cj *j, char *out, size_t cap)
+{
+    size_t k = 0;
+    if (j->s[j->i] == '"') {
+        j->i++;
+        while (j->s[j->i] && j->s[j->i] != '"') {
+            char c = j->s[j->i++];
+            if (c == '\\') {
+                c = j->s[j->i++];
+                if (c == 'n') c = '\n';
+                else if (c == 't') c = '\t';
+                else if (c == 'r') c = '\r';
+                else if (c == 'b') c = '\b';
+                else if (c == 'f') c = '\f';
+                else if (c == 'u') {
+                    unsigned u = 0, q;
+                    for (q = 0; q < 4 && j->s[j->i]; q++, j->i++) {
+                        char h = j->s[j->i];
+                        u = u * 16u + (unsigned)(h <= '9' ? h - '0' : (h | 0x20) - 'a' + 10);
                     }
-                    part = next;
+                    c = u < 0x80u ? (char)u : '?';
                 }
+            }
+            if (k + 1 < cap)
+                out[k++] = c;
+        }
+        if (j->s[j->i] == '"')
+            j->i++;
+    } else {
+        while (j->s[j->i] && !strchr(",]} \n\t\r", j->s[j->i])) {
+            if (k + 1 < cap)
+                out[k++] = j->s[j->i];
+            j->i++;
+        }
+    }
+    out[k] = 0;
+}
+
+static int cutters_rows(cj *j)
+{
+    cj_ws(j);
+    if (strncmp(j->s + j->i, "null", 4) == 0) {
+        j->i += 4;
+        return 1;
+    }
+    if (j->s[j->i] != '[')
+        return opt_fail("%s: line %lu: expected a list of cutters (%s)", cutter_file, cj_line(j), opt_columns_list);
+    j->i++;
+    for (;;) {
+        unsigned long row;
+        char got[3][OPT_CUTTER_NAME_BYTES + 64];
+        int have[3] = { 0, 0, 0 }, k;
+        cj_ws(j);
+        if (j->s[j->i] == ']') {
+            j->i++;
+            return 1;
+        }
+        if (j->s[j->i] == ',') {
+            j->i++;
+            continue;
+        }
+        row = cj_line(j);
+        if (j->s[j->i] != '{')
+            return opt_fail("%s: line %lu: a cutter is a mapping of %s", cutter_file, row, opt_columns_list);
+        j->i++;
+        for (;;) {
+            char key[256];
+            unsigned long kline;
+            cj_ws(j);
+            if (j->s[j->i] == '}') {
+                j->i++;
+                break;
+            }
+            if (j->s[j->i] == ',') {
+                j->i++;
                 continue;
             }
-            if (!*s)
-                continue;
+            kline = cj_line(j);
+            cj_scalar(j, key, sizeof key);
+            for (k = 0; k < 3 && strcmp(key, opt_cutter_columns[k]) != 0; k++)
+                ;
+            if (k == 3)
+                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
+                                opt_columns_list);
+            if (have[k])
+                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, key);
+            cj_ws(j);
+            if (j->s[j->i] == ':')
+                j->i++;
+            cj_ws(j);
+            if (j->s[j->i] == '[' || j->s[j->i] == '{')
+                return opt_fail("%s: line %lu: %s must be one value", cutter_file, cj_line(j), key);
+            cj_scalar(j, got[k], sizeof got[k]);
+            have[k] = 1;
         }
-        colon = strchr(s, ':');
-        if (!colon || !open)
-            return 0;
-        *colon = 0;
+        if (!have[0] || !have[1] || !have[2])
+            return opt_fail("%s: line %lu: needs %s", cutter_file, row, opt_columns_list);
         {
-            char *k = trim(s), *v = trim(colon + 1);
-            if (strcmp(k, "name") == 0 && strlen(v) < sizeof name) strcpy(name, v);
-            else if (strcmp(k, "length") == 0 && strlen(v) < sizeof length) strcpy(length, v);
-            else if (strcmp(k, "radius") == 0 && strlen(v) < sizeof radius) strcpy(radius, v);
+            const char *values[2];
+            values[0] = got[1];
+            values[1] = got[2];
+            if (!cutter_add(row, got[0], values))
+                return 0;
         }
     }
-    if (open && !cutter_add(name, length, radius))
-        return 0;
-    return 1;
 }
 
+static int cutters_yaml(const char *path)
+{
+    cj j;
+    int seen = 0;
+    if (!yj_translate(path, cutter_text, cutter_json, sizeof cutter_json, OPT_CUTTER_MAX_DEPTH))
+        return 0;
+    memset(&j, 0, sizeof j);
+    j.s = cutter_json;
+    j.line = 1;
+    cj_ws(&j);
+    if (j.s[j.i] != '{')
+        return j.s[j.i] == 'n' ? 1 : cutters_rows(&j);
+    j.i++;
+    for (;;) {
+        char key[256];
+        unsigned long kline;
+        cj_ws(&j);
+        if (j.s[j.i] == '}' || !j.s[j.i])
+            return 1;
+        if (j.s[j.i] == ',') {
+            j.i++;
+            continue;
+        }
+        kline = cj_line(&j);
+        cj_scalar(&j, key, sizeof key);
+        if (strcmp(key, "cutters") != 0)
+            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline, key);
+        if (seen++)
+            return opt_fail("%s: line %lu: duplicate key 'cutters'", path, kline);
+        cj_ws(&j);
+        if (j.s[j.i] == ':')
+            j.i++;
+        if (!cutters_rows(&j))
+            return 0;
+    }
+}
+
+/* Whether a path names a YAML file (.yaml or .yml, in any case, as cbf decides). */
+static int opt_is_yaml(const char *path)
+{
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash) || dot == path || (slash && dot == slash + 1))
+        return 0;
+    return opt_lower_eq(dot, ".yaml") || opt_lower_eq(dot, ".yml");
+}
+
+/* Read a cutter table into cutters[0..ncutters); 0 with the one line in opt_why. */
 static int load_cutters(const char *path)
 {
-    const char *why;
-    long n = read_file(path, cutter_text, sizeof cutter_text - 1, &why);
-    size_t plen = strlen(path);
+    long n;
     ncutters = 0;
+    cutter_file = path;
+    n = opt_read(path, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
-    cutter_text[n] = 0;
-    if ((plen >= 5 && strcmp(path + plen - 5, ".yaml") == 0) || (plen >= 4 && strcmp(path + plen - 4, ".yml") == 0))
-        return cutters_yaml((char *)cutter_text);
-    return cutters_csv((char *)cutter_text);
+    if (opt_is_yaml(path)) {
+        if (!cutters_yaml(path))
+            return 0;
+    } else if (!cutters_csv(cutter_text)) {
+        return 0;
+    }
+    if (!ncutters)
+        return opt_fail("%s: no cutters (the table is empty)", path);
+    return 1;
 }
 
 /* ---- machine files (decision L1, check machine_limits; machine_file.inc.j2) ----
@@ -243,14 +1006,13 @@ static int load_cutters(const char *path)
  *   {"name": "...", "limits": {"<limit>": {"unit": "<the spec's unit>", "min": N | [N, ...],
  *    "max": N | [N, ...], "axes": [...], "doc": "..."}, ...}}
  * every limit of cbf_machine_limit_names with unit, min and max; one number per axis for a box;
- * min <= max. cbf (Python) reads the same file, and YAML too; cbf-c reads JSON only. A bad
- * file gives one line naming the file and the JSON path (or line and column), as cbf says it. */
-#include <float.h>
-#include <stdarg.h>
-
+ * min <= max. Both tools read it as JSON, or as YAML for .yaml/.yml (the option-file subset above,
+ * translated to JSON with its lines). A bad file gives one line naming the file and the JSON path
+ * (or the line), as cbf says it. */
 static cbf_machine machine_file;
 static char machine_why[8192];
-static char machine_text[1u << 16];
+static char machine_text[OPT_MACHINE_MAX_BYTES + 1u];
+static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine file, as JSON */
 
 typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
 
@@ -665,19 +1427,28 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
 /* Read a machine file into machine_file; 0 with the one line in machine_why. */
 static int load_machine(const char *path)
 {
-    const char *why;
-    long n = read_file(path, (uint8_t *)machine_text, sizeof machine_text - 1, &why);
+    long n = opt_read(path, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     mjson j;
     unsigned has_limits = 0;
     int li, a;
     if (n < 0) {
-        (void)snprintf(machine_why, sizeof machine_why, "%s: cannot read machine file (%s)", path, why);
+        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;
     }
-    machine_text[n] = 0;
     memset(&machine_file, 0, sizeof machine_file);
     j.s = machine_text;
     j.n = (size_t)n;
+    if (opt_is_yaml(path)) {
+        if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
+            (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
+            return 0;
+        }
+        j.s = machine_json;
+        j.n = strlen(machine_json);
+    } else if (!opt_json_depth(path, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
+        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
+        return 0;
+    }
     j.i = 0;
     j.file = path;
     if (!mj_object(&j, "$", mj_top_key, &has_limits))
@@ -800,7 +1571,7 @@ static int cmd_validate(int argc, char **argv)
             opt.part_number = argv[++i];
         } else if (strcmp(argv[i], "--cutters") == 0 && i + 1 < argc) {
             if (!load_cutters(argv[++i])) {
-                fprintf(stderr, "cbf-c: %s: cannot read the cutter table (CSV or YAML: name, length, radius)\n", argv[i]);
+                fprintf(stderr, "cbf-c: %s\n", opt_why); /* names the table, the line and the limit (issue 28) */
                 return EXIT_USAGE;
             }
             opt.cutters = cutters;

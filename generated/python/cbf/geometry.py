@@ -21,7 +21,14 @@ from .fields import unpack_args
 from .model import Cbf
 
 Vec = tuple[float, float, float]
-_EPS_COLLINEAR = 1e-12
+# binary32 carries 24 bits: an ARC whose middle point lies within this fraction of its size of
+# the line through its ends is straight in the values stored (no circle through it is computable)
+_BINARY32_RESOLUTION = 2.0 ** -24
+# At most this many points per curve for drawing: two full turns at 5 degrees. A circle drawn
+# beyond a turn retraces itself (drawn as one turn and the rest); a helix of more turns is
+# sampled evenly at this many points, so a plot is bounded whatever the sweep.
+MAX_DRAW_POINTS = 145
+TWO_PI = 2.0 * math.pi
 
 
 def vec(x: Any) -> Vec:
@@ -94,6 +101,15 @@ def point_segment_distance(p: Vec, a: Vec, b: Vec) -> float:
     return norm(sub(p, add(a, scale(ab, t))))
 
 
+def line_distance(p: Vec, a: Vec, b: Vec) -> float:
+    """The distance from p to the line through a and b (to a when they coincide)."""
+    ab = sub(b, a)
+    den = dot(ab, ab)
+    if den == 0.0:
+        return norm(sub(p, a))
+    return norm(sub(sub(p, a), scale(ab, dot(sub(p, a), ab) / den)))
+
+
 @dataclass(frozen=True, slots=True)
 class Curve:
     """A motion's path p(t), t in [0, 1].
@@ -132,11 +148,26 @@ class Curve:
         return math.hypot(self.radius * self.angle, norm(self.rise))
 
     def points(self, max_step_deg: float = 5.0) -> list[Vec]:
-        """Points along the curve for drawing: every ``max_step_deg`` degrees of turn."""
+        """Points along the curve for drawing: every ``max_step_deg`` degrees of turn, at most
+        MAX_DRAW_POINTS whatever the sweep (a circle of many turns: one turn, then on to its end)."""
         if not self.curved:
             return [self.start, self.end]
-        n = max(1, math.ceil(math.degrees(self.angle) / max_step_deg))
+        step = math.radians(max_step_deg)
+        if self.rise == (0.0, 0.0, 0.0) and self.angle > TWO_PI:
+            turn = max(1, math.ceil(TWO_PI / step))
+            rest = math.fmod(self.angle, TWO_PI)
+            tail = max(1, math.ceil(rest / step))
+            return ([self._turned(TWO_PI * k / turn) for k in range(turn)]
+                    + [self._turned(rest * k / tail) for k in range(tail)] + [self.end])
+        n = max(1, min(MAX_DRAW_POINTS - 1, math.ceil(math.degrees(self.angle) / max_step_deg)))
         return [self.at(k / n) for k in range(n + 1)]
+
+    def _turned(self, th: float) -> Vec:
+        """The point of a flat circle (no rise) at turn ``th``."""
+        c, s = math.cos(th), math.sin(th)
+        return (self.center[0] + self.radius * (c * self.e1[0] + s * self.e2[0]),
+                self.center[1] + self.radius * (c * self.e1[1] + s * self.e2[1]),
+                self.center[2] + self.radius * (c * self.e1[2] + s * self.e2[2]))
 
 
 def _circular(start: Vec, center: Vec, normal: Vec, degrees: float, length: float) -> Curve | None:
@@ -166,8 +197,11 @@ def _through(start: Vec, mid: Vec, end: Vec) -> Curve:
     u, w = sub(mid, start), sub(end, start)
     n = cross(u, w)
     n2 = dot(n, n)
-    if n2 <= _EPS_COLLINEAR * max(dot(u, u) * dot(w, w), 1e-300):
-        return Curve(start, end)  # collinear: straight (M1)
+    big = max(abs(x) for x in (*start, *mid, *end))
+    if n2 == 0.0 or line_distance(mid, start, end) <= _BINARY32_RESOLUTION * big:
+        # collinear (M1), or so nearly that the stored values cannot tell: straight. Anything
+        # further off is a circle, however large: convert judges it against its tolerance.
+        return Curve(start, end)
     # circumcentre of start, mid, end
     rel = scale(cross(sub(scale(w, dot(u, u)), scale(u, dot(w, w))), n), 1.0 / (2.0 * n2))
     center = add(start, rel)
@@ -315,26 +349,31 @@ def bounds(points: Sequence[Vec]) -> tuple[Vec, Vec] | None:
 
 
 def curve_bounds(c: Curve) -> tuple[Vec, Vec]:
-    """The exact axis-aligned box of a curve (lines: their ends; arcs: ends and axis extremes)."""
+    """The exact axis-aligned box of a curve, found analytically whatever its sweep: its ends,
+    and per axis the turns where that coordinate is stationary. Coordinate i is
+    center_i + radius A cos(th - phi) + (th / angle) rise_i, stationary where
+    sin(th - phi) = rise_i / (angle radius A): two families of turns a full turn apart, and along
+    each family the value moves by a constant step, so its first and last member in [0, angle]
+    are the family's extremes (no sampling, whatever the number of turns)."""
     s, e = c.start, c.end
     if not c.curved:  # bounds([s, e]), without the generic loops (every move of a straight path)
         return ((min(s[0], e[0]), min(s[1], e[1]), min(s[2], e[2])),
                 (max(s[0], e[0]), max(s[1], e[1]), max(s[2], e[2])))
-    pts = [s, e]
-    # extremes of coordinate i: d/dt of the circular part plus the linear rise;
-    # sample finely and add the analytic extremes of the pure circle.
-    n = max(8, math.ceil(math.degrees(c.angle) / 2.0))
-    pts.extend(c.at(k / n) for k in range(n + 1))
+    lo, hi = [min(s[i], e[i]) for i in range(3)], [max(s[i], e[i]) for i in range(3)]
     for i in range(3):
-        a, b = c.e1[i], c.e2[i]
-        if a == 0.0 and b == 0.0:
+        amp = c.radius * math.hypot(c.e1[i], c.e2[i])
+        if amp == 0.0:
             continue
-        phi = math.atan2(b, a)  # cos(th - phi) extreme at th = phi, phi + pi
-        for base in (phi, phi + math.pi):
-            th = base % (2.0 * math.pi)
-            while th <= c.angle:
-                pts.append(c.at(th / c.angle))
-                th += 2.0 * math.pi
-    box = bounds(pts)
-    assert box is not None
-    return box
+        phi = math.atan2(c.e2[i], c.e1[i])
+        ratio = c.rise[i] / (c.angle * amp)
+        if abs(ratio) > 1.0:  # the rise outruns the turn: monotonic, the ends bound it
+            continue
+        shift = math.asin(ratio)
+        for base in (phi + shift, phi + math.pi - shift):
+            first = math.ceil(-base / TWO_PI)
+            last = math.floor((c.angle - base) / TWO_PI)
+            for k in {first, last} if first <= last else ():
+                th = min(max(base + TWO_PI * k, 0.0), c.angle)
+                x = c.at(th / c.angle)[i]
+                lo[i], hi[i] = min(lo[i], x), max(hi[i], x)
+    return (lo[0], lo[1], lo[2]), (hi[0], hi[1], hi[2])

@@ -24,6 +24,7 @@ from typing import Any
 
 from . import tables as T
 from .errors import CbfError
+from .optfiles import RULES, OptionFileError, Pairs, is_yaml, json_depth_error, plain_data, read_text, yaml_tree
 
 SCHEMA: dict[str, Any] = json.loads(Path(__file__).with_name("machine.schema.json").read_text(encoding="utf-8"))
 
@@ -90,7 +91,7 @@ def _schema_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | No
             return f"{path}: expected an object"
         props = schema.get("properties", {})
         seen: set[Any] = set()
-        for key, v in value.pairs if isinstance(value, _Object) else value.items():
+        for key, v in value.pairs if isinstance(value, Pairs) else value.items():
             if key in seen:
                 return f"{path}: duplicate key '{key}'"
             seen.add(key)
@@ -136,67 +137,32 @@ def _dumps(value: Any) -> str:
     return json.dumps(value, ensure_ascii=False)
 
 
-class _Object(dict[Any, Any]):
-    """A JSON or YAML object that keeps its pairs in order, a key given twice included: the
-    duplicate is refused where a reader meets it, never "the last one wins"."""
-
-    pairs: list[tuple[Any, Any]]
-
-
-def _no_duplicates(pairs: list[tuple[Any, Any]]) -> _Object:
-    out = _Object(pairs)
-    out.pairs = pairs
-    return out
-
-
 def _read(p: Path, text: str) -> Any:
-    if p.suffix.lower() in (".yaml", ".yml"):
-        import yaml
-
-        class _Loader(yaml.SafeLoader):
-            pass
-
-        def mapping(loader: yaml.SafeLoader, node: yaml.MappingNode) -> _Object:
-            loader.flatten_mapping(node)
-            pairs = [(loader.construct_object(k, deep=True), loader.construct_object(v, deep=True))  # type: ignore[no-untyped-call]
-                     for k, v in node.value]
-            return _no_duplicates(pairs)
-
-        _Loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, mapping)
-        try:
-            return yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
-        except yaml.YAMLError as exc:
-            mark = getattr(exc, "problem_mark", None)
-            where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
-            raise MachineError(f"{where}not YAML ({getattr(exc, 'problem', None) or exc})") from None
+    """The file's data by the option-file rules (optfiles.py): YAML event by event, JSON after its
+    nesting is measured; objects keep every pair, so a duplicate key is the schema's to refuse."""
+    rules = RULES["machine_file"]
+    if is_yaml(p):
+        return plain_data(yaml_tree(text, str(p), rules["max_depth"]))
+    deep = json_depth_error(text, rules["max_depth"])
+    if deep is not None:
+        raise OptionFileError(f"{p}: {deep}")
 
     def constant(name: str) -> Any:
-        raise MachineError(f"{name} is not a number")
+        raise OptionFileError(f"{p}: {name} is not a number")
 
     try:
-        return json.loads(text, object_pairs_hook=_no_duplicates, parse_constant=constant, parse_int=float)
+        return json.loads(text, object_pairs_hook=Pairs, parse_constant=constant, parse_int=float)
     except json.JSONDecodeError as exc:
-        raise MachineError(f"line {exc.lineno}, column {exc.colno}: not JSON ({exc.msg})") from None
+        raise OptionFileError(f"{p}: line {exc.lineno}, column {exc.colno}: not JSON ({exc.msg})") from None
 
 
 def load_machine(path: str | Path) -> Machine:
     """The machine of a file; raises MachineError with one line naming the file and the JSON path."""
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
-        doc = _read(p, text)
-    except FileNotFoundError:
-        raise MachineError(f"{p}: cannot read machine file (no such file)") from None
-    except PermissionError:
-        raise MachineError(f"{p}: cannot read machine file (permission denied)") from None
-    except IsADirectoryError:
-        raise MachineError(f"{p}: cannot read machine file (is a directory)") from None
-    except OSError:
-        raise MachineError(f"{p}: cannot read machine file (read error)") from None
-    except UnicodeDecodeError as exc:
-        raise MachineError(f"{p}: offset {exc.start}: not UTF-8 text") from None
-    except MachineError as exc:
-        raise MachineError(f"{p}: {exc.message}") from None
+        doc = _read(p, read_text(p, RULES["machine_file"]["what"], RULES["machine_file"]["max_bytes"]))
+    except OptionFileError as exc:
+        raise MachineError(exc.message) from None
     err = _schema_errors(doc, SCHEMA, "$")
     if err is None:
         for name in SCHEMA["properties"]["limits"]["properties"]:  # the spec's order

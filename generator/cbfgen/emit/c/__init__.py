@@ -20,6 +20,7 @@ from typing import Any
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import ALGORITHM_KINDS, Field, Layout, Spec
+from ...options import option_rules
 from ...render import environment
 from .machine import machine_context
 
@@ -463,6 +464,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["wrap"] = lambda s, width=76, indent="" : ("\n" + indent).join(textwrap.wrap(s, width))
     ctx = context(spec)
     ctx.update(machine_context(spec, ctx["layouts"], cfloat, macro))  # machine.h.j2 (L1)
+    ctx["options"] = option_rules(spec)  # option files, machine_file.inc.j2 (issue 28)
     out: dict[str, bytes] = {}
     for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         out[f"{OUT}/{name}"] = env.get_template(name + ".j2").render(**ctx).encode()

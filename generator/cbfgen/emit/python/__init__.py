@@ -11,6 +11,7 @@ from typing import Any
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
+from ...options import option_rules
 from ...render import environment
 from .machine import machine_data, machine_schema
 
@@ -161,6 +162,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     out[f"{PKG}/layouts.py"] = env.get_template("layouts.py.j2").render(spec=spec).encode()
     out[f"{PKG}/canonical.schema.json"] = (json.dumps(canonical_schema(spec), indent=1) + "\n").encode()
     out[f"{PKG}/machine.schema.json"] = (json.dumps(machine_schema(spec), indent=1) + "\n").encode()
+    out[f"{PKG}/option_files.json"] = (json.dumps(option_rules(spec), indent=1) + "\n").encode()  # issue 28
     out[f"{PKG}/py.typed"] = b""
     for src in sorted((HERE / "runtime").glob("*.py")):
         out[f"{PKG}/{src.name}"] = src.read_bytes()

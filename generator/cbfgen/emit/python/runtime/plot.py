@@ -3,9 +3,10 @@
 Four views of one cube around the path, in mm with equal aspect: an
 isometric 3-D view and the top (X-Y), front (X-Z) and side (Y-Z)
 projections. Arcs, circles and helices are drawn from their geometry
-(decision M1), every 5 degrees of turn. Moves are coloured cutting /
+(decision M1), every 5 degrees of turn, at most geometry.MAX_DRAW_POINTS a curve
+whatever its sweep (a circle of many turns is drawn as one turn and the rest). Moves are coloured cutting /
 non-cutting (M2), or by phase, shape or cutter; checkpoints and shape starts
-are marked; one legend for the figure.
+are marked; one legend for the figure. Titles and labels are literal text, never mathtext.
 
 matplotlib is imported here only, so ``cbf`` starts fast and works without it.
 """
@@ -110,6 +111,12 @@ def _cube(path: Path) -> tuple[G.Vec, float]:
     return center, (span if span > 0 else 1.0) * 1.1
 
 
+def _literal(text: str) -> str:
+    """``text`` for a legend label, which matplotlib reads as mathtext between dollars: each
+    dollar escaped, so a phase, shape or cutter name is drawn as written."""
+    return text.replace("$", "\\$")
+
+
 def figure(model: Cbf, mode: str = "cut", title: str = "", steps: Iterable[G.Step] | None = None) -> Any:
     """A matplotlib Figure of the path (no pyplot, no global state); ``steps`` as for ``path_of``."""
     try:
@@ -124,8 +131,8 @@ def figure(model: Cbf, mode: str = "cut", title: str = "", steps: Iterable[G.Ste
     center, span = _cube(path)
     lims = [(center[i] - span / 2, center[i] + span / 2) for i in range(3)]
     fig = Figure(figsize=(10, 10), dpi=100)
-    if title:
-        fig.suptitle(title)
+    if title:  # literal text: a title or file name with $ is never mathtext (issue 28)
+        fig.suptitle(title, parse_math=False)
     iso = fig.add_subplot(2, 2, 1, projection="3d")
     iso.set_title("isometric")
     iso.view_init(elev=35.264, azim=-45)
@@ -161,7 +168,7 @@ def figure(model: Cbf, mode: str = "cut", title: str = "", steps: Iterable[G.Ste
             xs = [t[-1] for t in pts]
             iso.plot([p[0] for p in xs], [p[1] for p in xs], [p[2] for p in xs], marker, color=color,
                      markersize=5, linestyle="none")
-    handles = [Line2D([], [], color=col, label=cat) for cat, col in colors.items()]
+    handles = [Line2D([], [], color=col, label=_literal(cat)) for cat, col in colors.items()]
     handles.append(Line2D([], [], marker="D", color=CHECKPOINT, linestyle="none",
                           label=f"checkpoint ({len(path.checkpoints)})"))
     handles.append(Line2D([], [], marker="^", color=SHAPE_START, linestyle="none",
