@@ -1,7 +1,8 @@
 # Format revisions (issue #12).
 #   breaking BASE=<git ref>   `cbfgen diff` of spec/cbf.yaml at BASE (via `git show`) against the
-#                             working tree's spec: every change by version and command; exit 1
-#                             when one changes the wire meaning of a version BASE has.
+#                             working tree's spec: every change by version and command, each
+#                             wire-breaking, text-breaking or neither; exit 0 when none breaks
+#                             anything, else make's 2 with cbfgen diff's code on the last line.
 #   revision-drill            every fixture of tests/revisions/ (a new command, a new version
 #                             dropping a command, a layout change in one version, another
 #                             checksum algorithm chosen by a profile) applied to a temporary
@@ -31,10 +32,22 @@ BASE ?= HEAD
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 .PHONY: breaking revision-drill revision-drill-quick
 
+# make's own exit status is 0 or 2 (any failed recipe), so `make breaking` cannot pass on cbfgen diff's
+# codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): it exits 0 when nothing breaks and
+# 2 otherwise, and its last line (stderr) names cbfgen diff's code and class. NEW_SPEC: the spec to
+# compare with BASE's (default the working tree's).
+NEW_SPEC ?= spec/cbf.yaml
 breaking: venv  ## cbfgen diff of spec/cbf.yaml at BASE=<git ref> (default HEAD) against the working tree
 	@tmp=$$(mktemp -d) && trap 'rm -rf "$$tmp"' EXIT && \
 	  git show "$(BASE):spec/cbf.yaml" > "$$tmp/cbf.yaml" && \
-	  $(PY) -m cbfgen diff "$$tmp/cbf.yaml" spec/cbf.yaml --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json)
+	  { $(PY) -m cbfgen diff "$$tmp/cbf.yaml" "$(NEW_SPEC)" --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json); \
+	    rc=$$?; } && \
+	  case $$rc in \
+	    0) ;; \
+	    1) echo "make breaking: cbfgen diff exit 1: wire-breaking" >&2 ;; \
+	    3) echo "make breaking: cbfgen diff exit 3: text-breaking only" >&2 ;; \
+	    *) echo "make breaking: cbfgen diff exit $$rc: usage, or a spec that does not load" >&2 ;; \
+	  esac && exit $$rc
 
 revision-drill: venv kaitai-setup  ## apply every tests/revisions/ fixture in a temp copy: generate, golden, conformance, tests
 	$(PY) tests/revisions/drill.py run --jobs $(DRILL_JOBS)

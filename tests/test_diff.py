@@ -113,7 +113,8 @@ def test_a_spec_against_itself_has_no_change() -> None:
     d = diff(SPEC, SPEC)
     assert d.changes == () and d.breaking == ()
     res = _cli(str(SPEC_PATH), str(SPEC_PATH))
-    assert res.returncode == 0 and "0 change(s), 0 breaking" in res.stdout
+    assert res.returncode == 0 and "0 change(s), 0 wire-breaking, 0 text-breaking" in res.stdout
+    assert res.stdout.splitlines()[-1].startswith("not breaking (exit 0)")
 
 
 def test_a_layout_change_to_the_newest_version_is_breaking(tmp_path: Path) -> None:
@@ -142,6 +143,7 @@ def test_a_layout_change_to_the_newest_version_is_breaking(tmp_path: Path) -> No
     assert not others, "the other versions keep their layout"
     res = _cli(str(SPEC_PATH), str(_variant(tmp_path, edit, "v.yaml")))
     assert res.returncode == 1 and "BREAKING" in res.stdout and cmd in res.stdout
+    assert res.stdout.splitlines()[-1].startswith("wire-breaking (exit 1)")
 
 
 def test_a_new_version_is_not_breaking(tmp_path: Path) -> None:
@@ -286,7 +288,8 @@ def test_fields_renamed_moved_resized(tmp_path: Path) -> None:
         next(x for x in raw["args"] if x["name"] == rarg)["name"] = "drill_" + rarg
 
     renamed = [c for c in _diff(tmp_path, rename).changes if c.command == rcmd]
-    assert renamed and all(c.kind == "field_renamed" and c.breaking and rarg in c.detail for c in renamed)
+    assert renamed and all(c.kind == "field_renamed" and c.text_breaking and not c.breaking and rarg in c.detail
+                           for c in renamed)
 
     def resize(doc: dict[str, Any]) -> None:
         layouts = _raw_command(doc, cmd)["layouts"]
@@ -349,3 +352,81 @@ def test_an_availability_check_extended_to_a_new_version_is_not_breaking(tmp_pat
     d = _diff(tmp_path, edit)
     changed = [c for c in d.changes if c.kind == "check_changed"]
     assert len(changed) == len(gates) and not d.breaking, d.text()
+
+
+def _rename_everywhere(doc: Any, old: str, new: str) -> Any:
+    """doc with every string equal to old (the command's name and each reference to it) spelled new."""
+    if isinstance(doc, dict):
+        return {k: _rename_everywhere(v, old, new) for k, v in doc.items()}
+    if isinstance(doc, list):
+        return [_rename_everywhere(v, old, new) for v in doc]
+    return new if doc == old else doc
+
+
+def _most_referenced_command() -> str:
+    """The command the checks name most often (so the rename reaches checks of several kinds), from the model."""
+    def refs(name: str) -> int:
+        return sum(name in ch.commands or any(t.command == name for t in ch.targets) for ch in SPEC.checks)
+    return max(SPEC.commands, key=lambda c: (refs(c.name), -SPEC.commands.index(c))).name
+
+
+def test_a_rename_is_text_breaking_and_not_wire_breaking(tmp_path: Path) -> None:
+    """A command renamed with the same code and layouts keeps every byte's meaning: each version that has it
+    reports command_renamed as TEXT, nothing is BREAKING, the exit code is 3 and the footer says so. The same
+    rename with a layout change as well is wire-breaking (exit 1)."""
+    cmd = _most_referenced_command()
+    versions = {v.id for v in SPEC.versions if SPEC.command(cmd).available_in(v.id)}
+
+    def rename(doc: dict[str, Any]) -> None:
+        doc.update(_rename_everywhere(copy.deepcopy(doc), cmd, cmd + "_NEW"))
+
+    d = _diff(tmp_path, rename)
+    assert not d.breaking, d.text()
+    renamed = {(c.version, c.impact) for c in d.changes if c.kind == "command_renamed" and c.command == cmd}
+    assert renamed == {(v, "text") for v in versions}, d.text()
+    assert d.exit_code == 3 and d.impact == "text"
+    res = _cli(str(SPEC_PATH), str(_variant(tmp_path, rename, "r.yaml")))
+    assert res.returncode == 3, res.stdout + res.stderr
+    assert res.stdout.splitlines()[-1].startswith("text-breaking only (exit 3)") and "TEXT" in res.stdout
+    assert "BREAKING" not in res.stdout
+    doc = json.loads(_cli(str(SPEC_PATH), str(tmp_path / "r.yaml"), "--json").stdout)
+    assert (doc["breaking"], doc["text_breaking"], doc["impact"], doc["exit"]) == (False, True, "text", 3)
+
+    def rename_and_grow(doc: dict[str, Any]) -> None:
+        rename(doc)
+        lay = _raw_command(doc, cmd + "_NEW")["layouts"][0]
+        lay["args"].append({"name": "drill_extra", "type": "bytes", "size": 2, "reserved": True, "doc": "x."})
+        lay["size"] += 2
+
+    grown = _diff(tmp_path, rename_and_grow)
+    assert grown.breaking and grown.exit_code == 1 and grown.impact == "wire"
+    assert any(c.kind == "command_renamed" and c.impact == "text" for c in grown.changes)
+
+
+def test_a_layout_variant_renamed_is_text_breaking(tmp_path: Path) -> None:
+    """A layout's variant names its C and Python identifiers: renaming it keeps every byte (TEXT, not BREAKING)."""
+    cmd, idx, variant = next(((c.name, i, lay.variant) for c in SPEC.commands for i, lay in enumerate(c.layouts)
+                              if lay.variant), ("", 0, None))
+    if not variant:
+        pytest.skip("no layout has a variant name")
+
+    def rename(doc: dict[str, Any]) -> None:
+        _raw_command(doc, cmd)["layouts"][idx]["variant"] = f"{variant}_new"
+
+    d = _diff(tmp_path, rename)
+    assert d.changes and not d.breaking and d.exit_code == 3, d.text()
+    assert {c.kind for c in d.changes} == {"layout_variant_renamed"}
+
+
+def test_the_exit_codes_are_documented() -> None:
+    """`--help` and the README name each exit code of cbfgen diff with its class."""
+    from cbfgen.diff import EXIT_CODES
+
+    res = _cli("--help")
+    assert res.returncode == 0
+    help_text = " ".join(res.stdout.split())
+    readme = " ".join((REPO / "README.md").read_text(encoding="utf-8").split())
+    assert len({code for code, _ in EXIT_CODES}) == 4
+    for code, what in EXIT_CODES:
+        assert f"{code} {what}" in help_text, (code, what)
+        assert f"{code} {what}" in readme, (code, what)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -137,13 +138,48 @@ def test_a_fixture_that_does_not_apply_names_the_edit(tmp_path: Path) -> None:
         drill.load_fixture(bad)
 
 
-def test_make_breaking_reads_the_spec_at_a_git_ref() -> None:
+def _fixture_with(breaking: bool) -> drill.Fixture:
+    return next(fx for fx in map(drill.load_fixture, FIXTURES) if fx.breaking == breaking)
+
+
+def test_make_breaking_reads_the_spec_at_a_git_ref(tmp_path: Path) -> None:
+    """`make breaking BASE=HEAD NEW_SPEC=...` prints what `cbfgen diff` of the spec at HEAD against that spec
+    prints, exits 0 when cbfgen diff does and 2 (make's status for a failed recipe) otherwise, and names cbfgen
+    diff's own code on its last line. Run on a wire-breaking fixture's spec and a non-breaking one's, so it
+    holds whether or not the working tree's spec equals HEAD's."""
     if shutil.which("git") is None or not (REPO / ".git").exists():
         pytest.skip("not a git checkout")
-    res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD"], cwd=REPO, capture_output=True, text=True)
-    assert res.returncode in (0, 1), res.stderr
-    assert res.stdout.startswith("cbfgen diff: HEAD:spec/cbf.yaml -> spec/cbf.yaml:")
+    head = tmp_path / "head.yaml"
+    head.write_bytes(subprocess.run(["git", "show", "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True,
+                                    check=True).stdout)
+    codes = []
+    for fx in (_fixture_with(True), _fixture_with(False)):
+        new = drill.revised_spec(fx, SPEC, tmp_path / fx.name)
+        direct = subprocess.run([sys.executable, "-m", "cbfgen", "diff", str(head), str(new), "--old-name",
+                                 "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True, text=True)
+        res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD", f"NEW_SPEC={new}"], cwd=REPO,
+                             capture_output=True, text=True)
+        assert direct.returncode in (0, 1, 3), direct.stderr
+        assert res.stdout == direct.stdout and res.stdout.startswith(f"cbfgen diff: HEAD:spec/cbf.yaml -> {new}:")
+        assert res.returncode == (0 if direct.returncode == 0 else 2), res.stderr
+        if direct.returncode:
+            assert f"make breaking: cbfgen diff exit {direct.returncode}: " in res.stderr
+        codes.append(direct.returncode)
+    assert codes[0] == 1, "a wire-breaking fixture is wire-breaking against HEAD's spec too"
     assert "TEST_DEPS += revision-drill-quick" in (REPO / "mk" / "revision.mk").read_text(encoding="utf-8")
+
+
+def test_make_golden_regenerates_what_is_made_from_the_goldens() -> None:
+    """The README's walkthrough runs `make generate` (step 2) before `make golden` (step 4), and the docs' golden
+    pages are made from the .cbf files: `make golden` assembles and then regenerates, so the tree it leaves is
+    fresh (the drill's `generated fresh` step checks it in a revised tree)."""
+    res = subprocess.run(["make", "-n", "-s", "golden"], cwd=REPO, capture_output=True, text=True)
+    lines = res.stdout.splitlines()
+    assembler = next(i for i, line in enumerate(lines) if "-m conformance.assembler" in line)
+    assert any(re.fullmatch(r"\S*make\b.* generate", line) for line in lines[assembler:]), res.stdout
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    steps = [readme.index(s) for s in ("**`make generate`.**", "`make golden`, which assembles", "**`make test`.**")]
+    assert steps == sorted(steps), "the README's walkthrough order changed: check make golden's recipe"
 
 
 def test_the_readme_lists_no_versions_by_hand() -> None:

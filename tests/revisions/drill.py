@@ -95,7 +95,8 @@ class Fixture:
     path: Path
     title: str
     adds: str
-    breaking: bool
+    breaking: bool  # wire-breaking
+    text_breaking: bool  # text-breaking (a name changes, every byte keeps its meaning)
     expect: tuple[dict[str, Any], ...]
     edits: tuple[dict[str, Any], ...]
     files: dict[str, str]
@@ -116,7 +117,8 @@ def load_fixture(path: Path) -> Fixture:
     if missing:
         raise FixtureError(f"{path}: missing {', '.join(sorted(missing))}")
     return Fixture(path.stem, path, str(doc["title"]), " ".join(str(doc["adds"]).split()), bool(doc["breaking"]),
-                   tuple(doc["expect"]), tuple(doc["edits"]), dict(doc.get("files") or {}))
+                   bool(doc.get("text_breaking", False)), tuple(doc["expect"]), tuple(doc["edits"]),
+                   dict(doc.get("files") or {}))
 
 
 # -- edits ----------------------------------------------------------------------
@@ -247,16 +249,21 @@ def check_diff(fx: Fixture, base: Path, revised: Path, python: str = sys.executa
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "generator"), os.environ.get("PYTHONPATH", "")]))
     res = subprocess.run([python, "-m", "cbfgen", "diff", str(base), str(revised), "--json"], capture_output=True,
                          text=True, env=env, cwd=REPO)
-    if res.returncode not in (0, 1):
+    if res.returncode not in (0, 1, 3):
         return [f"cbfgen diff exit {res.returncode}: {res.stderr.strip()}"]
     doc = json.loads(res.stdout)
     problems = []
-    if res.returncode != (1 if fx.breaking else 0) or doc["breaking"] != fx.breaking:
-        problems.append(f"expected {'breaking' if fx.breaking else 'not breaking'}, cbfgen diff exit {res.returncode}")
+    want = 1 if fx.breaking else 3 if fx.text_breaking else 0
+    if res.returncode != want or doc["breaking"] != fx.breaking or (fx.text_breaking and not doc["text_breaking"]):
+        problems.append(f"expected {_verdict(fx)} (exit {want}), cbfgen diff exit {res.returncode}")
     for want in fx.expect:
         if not any(all(c.get(k) == v for k, v in want.items()) for c in doc["changes"]):
             problems.append(f"no change {want}")
     return problems
+
+
+def _verdict(fx: Fixture) -> str:
+    return "wire-breaking" if fx.breaking else "text-breaking" if fx.text_breaking else "not breaking"
 
 
 # -- the drill --------------------------------------------------------------------
@@ -333,7 +340,7 @@ def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
 
 def _said(fx: Fixture, problems: list[str], t0: float, what: str) -> None:
     print(f"{fx.name}: {fx.title}\n  adds: {fx.adds}")
-    verdict = "breaking" if fx.breaking else "not breaking"
+    verdict = _verdict(fx)
     print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
           f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s {what})")
 
