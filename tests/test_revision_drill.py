@@ -9,6 +9,7 @@ revision.
 
 from __future__ import annotations
 
+import copy
 import re
 import shutil
 import subprocess
@@ -20,6 +21,7 @@ import yaml
 from conftest import YAML_LOADER, load_yaml
 from revisions import drill
 
+from cbfgen.diff import diff
 from cbfgen.loader import load
 
 REPO = Path(__file__).resolve().parents[1]
@@ -54,19 +56,17 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
     alone), and no two of them add the same file."""
     quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
     assert len(quick) > 1
-    doc = load_yaml(SPEC)
-    for fx in quick:
-        for edit in fx.edits:
-            if str(edit.get("file", drill.SPEC)) == drill.SPEC:
-                drill.apply_edit(doc, edit)
-    path = tmp_path / "cbf.yaml"
-    path.write_text(drill._dump(doc), encoding="utf-8")
-    together = load(path)
+    path, added = SPEC, []
+    for fx in quick:  # as drill.apply does: each fixture's ids chosen for the spec the ones before it left
+        added += drill.load_fixture(fx.path, drill.read_spec(path)).files
+        path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}")
+    together, before = load(path), len(load(SPEC).versions)
+    new_versions = 0
     for fx in quick:
         alone = load(drill.revised_spec(fx, SPEC, tmp_path / fx.name))
-        assert {v.id for v in alone.versions} <= {v.id for v in together.versions}, fx.name
+        new_versions += len(alone.versions) - before
         assert {c.name for c in alone.commands} <= {c.name for c in together.commands}, fx.name
-    added = [rel for fx in quick for rel in fx.files]
+    assert len(together.versions) - before == new_versions, "each version a fixture adds is there, once"
     assert len(added) == len(set(added)), "two quick fixtures add the same file"
 
 
@@ -189,3 +189,93 @@ def test_the_readme_lists_no_versions_by_hand() -> None:
         found = {v for v in ids if re.search(rf"(?<![\w.]){re.escape(v)}(?![\w])", line)}
         assert len(found) < 3, f"README.md:{n} lists versions {sorted(found)}: {line}"
         assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
+
+
+def _revised(fx: drill.Fixture, base: Path, out: Path) -> tuple[Path, drill.Fixture]:
+    """base revised by fx into out, and fx as it reads for base (its ids chosen there)."""
+    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, drill.read_spec(base))
+
+
+def _judged(fx: drill.Fixture, base: Path, revised: Path) -> list[str]:
+    """drill.check_diff in this process: what cbfgen diff of base against revised says, judged for fx."""
+    d = diff(load(base), load(revised))
+    return drill.judge(drill.load_fixture(fx.path, drill.read_spec(base)), d.exit_code, d.as_json())
+
+
+@pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
+def test_each_fixture_applies_on_top_of_each_other(first: Path, tmp_path: Path) -> None:
+    """Fixture B applied to fixture A's revised spec (every ordered pair, the spec edits only) gives a spec the
+    loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause taken
+    twice) and cbfgen diff of A's spec against it says what B states."""
+    a = drill.load_fixture(first)
+    base, a_here = _revised(a, SPEC, tmp_path / "a")
+    spec_a = load(base)
+    for other in FIXTURES:
+        if other == first:
+            continue
+        b = drill.load_fixture(other)
+        both, b_there = _revised(b, base, tmp_path / f"a_{other.stem}")
+        spec = load(both)  # the loader's checks (make check-spec)
+        assert len({c.code for c in spec.commands}) == len(spec.commands), (first.stem, other.stem)
+        assert not set(a_here.files) & set(b_there.files), f"{other.stem} adds a file {first.stem} added"
+        assert _judged(b, base, both) == [], (first.stem, other.stem)
+        assert {v.id for v in spec_a.versions} <= {v.id for v in spec.versions}
+
+
+def _layouts_moved(tmp_path: Path) -> Path:
+    """A real revision that gives every command its own layout for the newest version (the same bytes, under a
+    variant of its own), as a revision that changes one of them in that version does: the layout a fixture
+    edits for the newest version is no longer the first (a fixture that addresses layouts[0] edits the wrong
+    one)."""
+    doc = load_yaml(SPEC)
+    newest = max(load(SPEC).versions, key=lambda v: (v.major, v.minor or 0)).id
+    for c in doc["commands"]:
+        first = c["layouts"][0]
+        if newest in first["versions"] and len(first["versions"]) > 1:
+            own = copy.deepcopy(first)
+            first["versions"].remove(newest)
+            own.update(versions=[newest], variant=f"own_{newest.replace('.', '_')}")
+            c["layouts"].append(own)
+    path = tmp_path / "moved" / "cbf.yaml"
+    path.parent.mkdir()
+    path.write_text(drill._dump(doc), encoding="utf-8")
+    return path
+
+
+def test_the_fixtures_apply_after_a_real_revision(tmp_path: Path) -> None:
+    """A spec that already had a revision adding a version (the new_version fixture's result, as a format owner
+    would commit it), and one whose layouts moved, take every fixture, new_version again included: the next
+    free version, code and clause are chosen there, the loader accepts the result and cbfgen diff says what
+    each fixture states."""
+    adds_version = next(fx for fx in map(drill.load_fixture, FIXTURES)
+                        if any(w["kind"] == "version_added" for w in fx.expect))
+    real = drill.revised_spec(adds_version, SPEC, tmp_path / "real")
+    newest = max(load(real).versions, key=lambda v: (v.major, v.minor or 0)).id
+    assert newest not in {v.id for v in load(SPEC).versions}
+    for base in (real, _layouts_moved(tmp_path)):
+        for path in FIXTURES:
+            fx = drill.load_fixture(path)
+            revised, there = _revised(fx, base, tmp_path / base.parent.name / path.stem)
+            load(revised)
+            assert _judged(fx, base, revised) == [], (base, path.stem)
+            if base == real and fx.name == adds_version.name:
+                assert any(w.get("version") not in (None, newest) for w in there.expect
+                           if w["kind"] == "version_added")
+
+
+def test_fixture_ids_are_chosen_for_the_spec(tmp_path: Path) -> None:
+    """${...} names what the spec it renders for has free or holds: a version, code and clause no one uses,
+    the newest version, a command's code; and an unknown name is refused with the fixture's name."""
+    doc = load_yaml(SPEC)
+    v = drill.variables(doc)
+    model = load(SPEC)
+    assert v["new_version"] not in {x.id for x in model.versions}
+    assert int(v["new_major"]) > max(x.major for x in model.versions)
+    assert int(v["free_code"]) not in {c.code for c in model.commands} and 0 < int(v["free_code"]) < 256
+    assert v["free_clause"] not in {c.id for c in model.checks} | {str(c.clause) for c in model.checks}
+    assert v["newest_version"] == max(model.versions, key=lambda x: (x.major, x.minor or 0)).id
+    cmd = model.commands[-1]
+    assert drill.render(f"${{code:{cmd.name}}} ${{dec:{cmd.name}}}", doc, "t") == f"{cmd.code:02x} {cmd.code}"
+    assert drill.render(f"${{name:{cmd.name}}}", doc, "t") == f"{cmd.name}_2"
+    with pytest.raises(drill.FixtureError, match=r"t: \$\{code:NO_SUCH\} names nothing"):
+        drill.render("${code:NO_SUCH}", doc, "t")
