@@ -5,6 +5,7 @@ from __future__ import annotations
 import copy
 import functools
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -71,7 +72,9 @@ def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iter
             continue
         covering = [c for c in gates if v["id"] in c["versions"]]
         if not covering:  # a version that lacks nothing else yet
-            covering = [{"id": f"fixture_{v['id']}", "kind": "availability", "severity": "error",
+            # a check id the schema takes ([a-z][a-z0-9_]*): a version id such as "5.0" or "1.x" spelled with "_"
+            ident = "fixture_" + re.sub(r"[^a-z0-9_]", "_", str(v["id"]).lower())
+            covering = [{"id": ident, "kind": "availability", "severity": "error",
                          "versions": [v["id"]], "commands": [], "decision": spec["decisions"][0]["id"],
                          "text": "The fixture command is not in this version.", "fails": "A record holds it."}]
             spec["checks"].append(covering[0])

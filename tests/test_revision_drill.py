@@ -279,3 +279,26 @@ def test_fixture_ids_are_chosen_for_the_spec(tmp_path: Path) -> None:
     assert drill.render(f"${{name:{cmd.name}}}", doc, "t") == f"{cmd.name}_2"
     with pytest.raises(drill.FixtureError, match=r"t: \$\{code:NO_SUCH\} names nothing"):
         drill.render("${code:NO_SUCH}", doc, "t")
+
+
+def test_cover_missing_names_checks_the_schema_takes(tmp_path: Path) -> None:
+    """conftest.cover_missing gives a version no availability check covers yet a check of its own, its id from
+    the version's ("3.0", "5.0", "1.x") in the schema's id pattern: a command in one version only loads."""
+    from conftest import cover_missing
+
+    doc = load_yaml(SPEC)
+    model = load(SPEC)
+    only = model.versions[-1].id
+    free = next(c for c in range(1, 256) if c not in {x.code for x in model.commands})
+    cmd = {"name": "ONE_VERSION_ONLY", "code": free, "clause": "9.9", "doc": "In one version.",
+           "layouts": [{"versions": [only], "size": 4, "args": [{"name": "value", "type": "f4", "doc": "A value."}]}]}
+    doc["commands"].append(cmd)
+    cover_missing(doc, cmd)
+    path = tmp_path / "cbf.yaml"
+    path.write_text(drill._dump(doc), encoding="utf-8")
+    spec = load(path)
+    ungated = [v.id for v in model.versions if not any(v.id in c.versions for c in model.checks
+                                                       if c.kind == "availability")]
+    made = {c.id for c in spec.checks} - {c.id for c in model.checks}
+    assert len(made) == len([v for v in ungated if v != only]) and all("." not in i for i in made), made
+    assert all(spec.availability_check("ONE_VERSION_ONLY", v.id) for v in spec.versions if v.id != only)
