@@ -302,3 +302,21 @@ def test_cover_missing_names_checks_the_schema_takes(tmp_path: Path) -> None:
     made = {c.id for c in spec.checks} - {c.id for c in model.checks}
     assert len(made) == len([v for v in ungated if v != only]) and all("." not in i for i in made), made
     assert all(spec.availability_check("ONE_VERSION_ONLY", v.id) for v in spec.versions if v.id != only)
+
+
+def test_the_bench_file_of_every_writable_version_validates() -> None:
+    """bench's every-command file is made for the newest writable version, which a revision may give curves (3.0
+    has them today): for each writable version the file holds every command the version has and validates with
+    no finding (curves by their motion role, a full turn ending where they start)."""
+    import cbf
+    from bench.bench import _every_command_file
+    from cbf import tables as T
+
+    writable = [v for v in T.VERSIONS if v.writable]
+    assert any(any(c.motion and c.motion.get("kind") in ("circle", "helix") and c.layouts_for(v.id)
+                   for c in T.COMMANDS) for v in writable), "no writable version has a curve: this test proves less"
+    for v in writable:
+        data = _every_command_file(300, v.id)
+        assert cbf.validate(data) == [], v.id
+        codes = {r.code for r in cbf.decode(data).records}
+        assert codes == {c.code for c in T.COMMANDS if c.layouts_for(v.id)}, v.id
