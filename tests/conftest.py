@@ -89,7 +89,13 @@ def spec_with_fixture_command(tmp: Path) -> Path:
     spec = spec_doc()
     extra = load_yaml(REPO / "tests" / "fixtures" / "dwell_command.yaml")
     spec["units"].update(extra["units"])
-    spec["commands"].append(extra["command"])
+    # a revision may have taken its code or dropped one of its versions: the next free code, the versions there are
+    cmd, used = extra["command"], {int(c["code"]) for c in spec["commands"]}
+    cmd["code"] = next(c for c in [*range(int(cmd["code"]), 256), *range(1, 256)] if c not in used)
+    ids = {str(v["id"]) for v in spec["versions"]}
+    for lay in cmd["layouts"]:
+        lay["versions"] = [v for v in lay["versions"] if v in ids]
+    spec["commands"].append(cmd)
     cover_missing(spec, extra["command"], extra.get("covered_by", ()))
     path = tmp / "cbf.yaml"
     path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
