@@ -29,11 +29,23 @@ SPEC = REPO / "spec" / "cbf.yaml"
 FIXTURES = drill.fixtures()
 
 
-def test_four_kinds_of_revision_are_drilled() -> None:
-    kinds = {(w["kind"], w.get("breaking")) for p in FIXTURES for w in drill.load_fixture(p).expect}
-    assert len(FIXTURES) >= 4
+def test_the_kinds_of_revision_are_drilled_and_classed_as_a_format_owner_would() -> None:
+    """The fixtures make each kind of revision, and each states the class a format owner gives it: a new
+    version is not breaking, a layout change to an existing version is wire-breaking, a rename is
+    text-breaking and not wire-breaking (test_cbfgen_diff_classifies_the_fixture holds cbfgen diff to it)."""
+    fixtures = [drill.load_fixture(p) for p in FIXTURES]
+    kinds = {(w["kind"], w.get("breaking")) for fx in fixtures for w in fx.expect}
+    assert len(FIXTURES) >= 5
     assert {("command_added", True), ("version_added", False), ("command_removed", False), ("field_retyped", True),
-            ("profile_checksum_algorithm_changed", True)} <= kinds
+            ("profile_checksum_algorithm_changed", True), ("command_renamed", False)} <= kinds
+    for fx in fixtures:
+        stated = {w["kind"] for w in fx.expect}
+        if "command_renamed" in stated and len(stated - {"revision_changed"}) == 1:
+            assert fx.text_breaking and not fx.breaking, fx.name
+        if "version_added" in stated:
+            assert not fx.breaking and not fx.text_breaking, fx.name
+        if "field_retyped" in stated:
+            assert fx.breaking, fx.name
 
 
 def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
@@ -61,11 +73,14 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
         added += drill.load_fixture(fx.path, drill.read_spec(path)).files
         path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}")
     together, before = load(path), len(load(SPEC).versions)
+    names = {c.name for c in load(SPEC).commands}
     new_versions = 0
     for fx in quick:
         alone = load(drill.revised_spec(fx, SPEC, tmp_path / fx.name))
         new_versions += len(alone.versions) - before
-        assert {c.name for c in alone.commands} <= {c.name for c in together.commands}, fx.name
+        mine = {c.name for c in alone.commands}
+        assert mine - names <= {c.name for c in together.commands}, f"{fx.name}: a command it adds is not there"
+        assert not (names - mine) & {c.name for c in together.commands}, f"{fx.name}: a name it drops is there"
     assert len(together.versions) - before == new_versions, "each version a fixture adds is there, once"
     assert len(added) == len(set(added)), "two quick fixtures add the same file"
 
