@@ -5,9 +5,10 @@
 #                             anything, else make's 2 with cbfgen diff's code on the last line.
 #   revision-drill            every fixture of tests/revisions/ (a new command, a new version
 #                             dropping a command, a layout change in one version, another
-#                             checksum algorithm chosen by a profile) applied to a temporary
-#                             copy of the tree, then `cbfgen diff` (the classification the
-#                             fixture states), `make generate`, `make golden`,
+#                             checksum algorithm chosen by a profile, a rename), its ids
+#                             chosen for the spec it meets, applied to a temporary copy of
+#                             the tree, then `cbfgen diff` (the classification the fixture
+#                             states), `make generate`, `make golden`, generated/ fresh,
 #                             `make conformance` (every binding) and the whole pytest suite.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
 #                             whose kind no in-tree test makes (IN_TREE: a new command is made
@@ -20,8 +21,9 @@
 #                             to QUICK_MAX_BYTES (not the 65,535-record case), and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI), once.
-# Measured on an idle 2-core machine: 32 s and 31 CPU s for layout_change and new_version
-# together (diffs 2 s, copy 1 s, generate 3 s, golden 2 s, C testee 3 s, conformance 2 s,
+# Measured on the shared 2-core machine with rename added: 28-46 s and 14.5 CPU s (13.3 CPU s
+# without it) for the three together. Before, on an idle 2-core machine: 32 s and 31 CPU s for
+# layout_change and new_version together (diffs 2 s, copy 1 s, generate 3 s, golden 2 s, C testee 3 s, conformance 2 s,
 # tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
 # 65,535-record case in its conformance about 105 CPU s. The full drill takes 3-7 minutes a
 # fixture (every binding's build and the whole suite, a tree each). The quick drill does not
