@@ -59,6 +59,15 @@ def _cli(*args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.CompletedProcess(["cbfgen", "diff", *args], rc, out.getvalue(), err.getvalue())
 
 
+def _free_clause(n: int) -> str:
+    """The n-th clause id "9.k" no check, version or command of the spec uses (a revision may have taken 9.9)."""
+    used = {str(x) for c in SPEC.checks for x in (c.id, c.clause)} | {str(v.clause) for v in SPEC.versions}
+    return [f"9.{k}" for k in range(1, 1000) if f"9.{k}" not in used][n]
+
+
+GATE, DWELL_GATE = _free_clause(0), _free_clause(1)
+
+
 def _raw_command(doc: dict[str, Any], name: str) -> dict[str, Any]:
     return next(c for c in doc["commands"] if c["name"] == name)
 
@@ -89,7 +98,7 @@ def _add_version(doc: dict[str, Any], drop: str | None = None) -> str:
     base = _last_version()
     vid, major = _new_version_id(SPEC)
     doc["versions"].append({"id": vid, "major": major, "minor": 0, "header": SPEC.version(base).header,
-                            "clause": "9.9", "writable": True, "doc": f"Version {vid}."})
+                            "clause": GATE, "writable": True, "doc": f"Version {vid}."})
     for c in doc["commands"]:
         for lay in c["layouts"]:
             if base in lay["versions"] and c["name"] != drop:
@@ -97,7 +106,7 @@ def _add_version(doc: dict[str, Any], drop: str | None = None) -> str:
     missing = [c.name for c in SPEC.commands if not c.available_in(base)] + ([drop] if drop else [])
     if missing:
         named = any("commands" in ch for ch in doc["checks"] if ch["kind"] == "availability")
-        doc["checks"].append({"id": "9.9", "kind": "availability", "severity": "error", "clause": "9.9",
+        doc["checks"].append({"id": GATE, "kind": "availability", "severity": "error", "clause": GATE,
                               "versions": [vid], "commands": missing, "text": f"{vid} lacks {missing}.",
                               "fails": "A record's command has no layout for the file's version."})
         if not named:
@@ -169,14 +178,15 @@ def test_a_new_version_is_not_breaking(tmp_path: Path) -> None:
 
 def _dwell(versions: list[str]) -> dict[str, Any]:
     free = next(code for code in range(1, 256) if all(c.code != code for c in SPEC.commands))
-    return {"name": "DRILL_DWELL", "code": free, "clause": "9.8", "doc": "Dwell.",
+    return {"name": "DRILL_DWELL", "code": free, "clause": DWELL_GATE, "doc": "Dwell.",
             "layouts": [{"versions": versions, "size": 4,
                          "args": [{"name": "seconds", "type": "f4", "doc": "Dwell time."}]}]}
 
 
 def _gate(doc: dict[str, Any], versions: list[str], command: str) -> None:
     if versions:
-        check = {"id": "9.8", "kind": "availability", "severity": "error", "clause": "9.8", "versions": versions,
+        check = {"id": DWELL_GATE, "kind": "availability", "severity": "error", "clause": DWELL_GATE,
+                 "versions": versions,
                  "commands": [command], "text": "added later.", "fails": "no layout for the version."}
         if not any("commands" in ch for ch in doc["checks"] if ch["kind"] == "availability"):
             del check["commands"]
@@ -344,7 +354,7 @@ def test_an_availability_check_extended_to_a_new_version_is_not_breaking(tmp_pat
 
     def edit(doc: dict[str, Any]) -> None:
         vid = _add_version(doc)  # the command table of the newest version, gated like it
-        doc["checks"] = [c for c in doc["checks"] if c["id"] != "9.9"]
+        doc["checks"] = [c for c in doc["checks"] if c["id"] != GATE]
         for c in doc["checks"]:
             if str(c["id"]) in gates:
                 c["versions"].append(vid)
