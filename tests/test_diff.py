@@ -440,3 +440,24 @@ def test_the_exit_codes_are_documented() -> None:
     for code, what in EXIT_CODES:
         assert f"{code} {what}" in help_text, (code, what)
         assert f"{code} {what}" in readme, (code, what)
+
+
+def test_a_check_renamed_is_text_breaking(tmp_path: Path) -> None:
+    """A check given another id, judging the same: every file is judged the same, findings name the new id
+    (TEXT, exit 3). Given another id and another bound too, it is a removal and an addition (wire-breaking
+    when an error)."""
+    check = next(c for c in SPEC.checks if c.severity == "error" and c.kind != "availability")
+
+    def rename(doc: dict[str, Any]) -> None:
+        next(c for c in doc["checks"] if str(c["id"]) == check.id)["id"] = "drill_renamed_check"
+
+    d = _diff(tmp_path, rename)
+    assert [(c.kind, c.impact) for c in d.changes] == [("check_renamed", "text")], d.text()
+    assert d.exit_code == 3 and check.id in d.changes[0].detail
+
+    def rename_and_change(doc: dict[str, Any]) -> None:
+        raw = next(c for c in doc["checks"] if str(c["id"]) == check.id)
+        raw["id"], raw["severity"] = "drill_renamed_check", "warning"
+
+    kinds = {(c.kind, c.impact) for c in _diff(tmp_path, rename_and_change).changes}
+    assert kinds == {("check_removed", "wire"), ("check_added", "none")}, kinds

@@ -11,7 +11,8 @@ version and command by command. Each change is in one of three classes:
   its meaning, but a name a user or a program writes changes: a CUT keyword
   or argument name, a JSON key, a C macro or struct member, a Python name
   (a command renamed with the same code and layouts, an argument renamed
-  at the same offset with the same type, a layout variant renamed);
+  at the same offset with the same type, a layout variant renamed, a
+  check whose findings carry another id);
 - neither. Adding a version, and anything inside a version that OLD does
   not have, is neither; those changes are listed relative to the version
   before it, so a reader sees what the new version changes.
@@ -340,8 +341,14 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
         vs = getattr(c, "versions", ())
         return not vs or any(v in old_ids for v in vs)
 
+    moved = _check_renames(old, new, names)
     for oc in old.checks:
         nc = new_by_id.get(oc.id)
+        if nc is None and oc.id in moved:
+            # the same check under another id: every file is judged the same, but findings name the new id
+            out.append(Change("check_renamed", None, None, f"{oc.id} renamed to {moved[oc.id]} ({oc.kind}, "
+                              f"{oc.severity}; findings name the new id)", False, True))
+            continue
         if nc is None:
             out.append(Change("check_removed", None, None, f"{oc.id} ({oc.kind}, {oc.severity})",
                               oc.severity == "error"))
@@ -366,11 +373,30 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
                                   breaking))
     old_by_id = {c.id for c in old.checks}
     for nc in new.checks:
-        if nc.id not in old_by_id:
+        if nc.id not in old_by_id and nc.id not in moved.values():
             vs = getattr(nc, "versions", ())
             scope = f" for {', '.join(vs)}" if vs else ""
             out.append(Change("check_added", None, None, f"{nc.id} ({nc.kind}, {nc.severity}){scope}",
                               nc.severity == "error" and applies_to_old(nc) and not _only_gates_new(old, new, nc)))
+    return out
+
+
+def _judges(c: Check, names: dict[str, str]) -> tuple[Any, ...]:
+    """What a check judges, and how severely (its id and prose aside), its command names as NEW spells them."""
+    return (c.kind, c.severity, *(_renamed(getattr(c, f.name), names) for f in dataclasses.fields(c)
+                                  if f.name not in _CHECK_IGNORED))
+
+
+def _check_renames(old: Spec, new: Spec, names: dict[str, str]) -> dict[str, str]:
+    """Old check id -> new id, for a check of OLD that NEW has under another id and nothing else changed."""
+    gone = [c for c in old.checks if c.id not in {n.id for n in new.checks}]
+    came = [c for c in new.checks if c.id not in {o.id for o in old.checks}]
+    out: dict[str, str] = {}
+    for oc in gone:
+        same = [nc for nc in came if nc.id not in out.values() and type(nc) is type(oc)
+                and _judges(nc, {}) == _judges(oc, names)]
+        if len(same) == 1:
+            out[oc.id] = same[0].id
     return out
 
 
