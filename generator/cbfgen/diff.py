@@ -356,20 +356,18 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
         if oc.severity != nc.severity:
             out.append(Change("check_severity_changed", None, None, f"{oc.id}: {oc.severity} -> {nc.severity}",
                               applies_to_old(nc)))
-        for f in dataclasses.fields(oc):
-            if f.name in _CHECK_IGNORED:
-                continue
-            a, b = getattr(oc, f.name), getattr(nc, f.name)
+        for name in _judged_attrs(oc):
+            a, b = getattr(oc, name), getattr(nc, name)
             if a != b:
                 if _renamed(a, names) == b:  # the same check of a renamed command (reported as command_renamed)
-                    out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)} "
+                    out.append(Change("check_changed", None, None, f"{oc.id}: {name} {_short(a)} -> {_short(b)} "
                                       "(the renamed commands' new names)", False))
                     continue
                 breaking = applies_to_old(nc) and "error" in (oc.severity, nc.severity)
-                if f.name in ("versions", "commands") and oc.kind == nc.kind == "availability":
+                if name in ("versions", "commands") and oc.kind == nc.kind == "availability":
                     # new versions, commands: no
                     breaking = _covered(old, oc, old, {}) != _covered(old, nc, new, names)
-                out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)}",
+                out.append(Change("check_changed", None, None, f"{oc.id}: {name} {_short(a)} -> {_short(b)}",
                                   breaking))
     old_by_id = {c.id for c in old.checks}
     for nc in new.checks:
@@ -381,10 +379,14 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
     return out
 
 
+def _judged_attrs(c: Check) -> list[str]:
+    """The attributes of a check that define what it judges (not its id, severity, prose or line)."""
+    return [f.name for f in dataclasses.fields(c) if f.name not in _CHECK_IGNORED]
+
+
 def _judges(c: Check, names: dict[str, str]) -> tuple[Any, ...]:
     """What a check judges, and how severely (its id and prose aside), its command names as NEW spells them."""
-    return (c.kind, c.severity, *(_renamed(getattr(c, f.name), names) for f in dataclasses.fields(c)
-                                  if f.name not in _CHECK_IGNORED))
+    return (c.kind, c.severity, *(_renamed(getattr(c, name), names) for name in _judged_attrs(c)))
 
 
 def _check_renames(old: Spec, new: Spec, names: dict[str, str]) -> dict[str, str]:
