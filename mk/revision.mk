@@ -21,10 +21,10 @@
 #                             to QUICK_MAX_BYTES (not the 65,535-record case), and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI), once.
-# Measured on the shared 2-core machine with rename added: 28-46 s and 14.5 CPU s (13.3 CPU s
-# without it) for the three together. Before, on an idle 2-core machine: 32 s and 31 CPU s for
-# layout_change and new_version together (diffs 2 s, copy 1 s, generate 3 s, golden 2 s, C testee 3 s, conformance 2 s,
-# tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
+# Measured on the shared, loaded 2-core machine (load 7) with rename added: 46 s and 15.8 CPU s
+# (user + sys; 14.7 without it) for the three together. Before, on an idle 2-core machine: 32 s
+# and 31 CPU s for layout_change and new_version together (diffs 2 s, copy 1 s, generate 3 s,
+# golden 2 s, C testee 3 s, conformance 2 s, tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
 # 65,535-record case in its conformance about 105 CPU s. The full drill takes 3-7 minutes a
 # fixture (every binding's build and the whole suite, a tree each). The quick drill does not
 # re-assemble the goldens `make golden` just wrote, and builds its ASan/UBSan testee at -O0
