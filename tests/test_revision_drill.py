@@ -184,7 +184,7 @@ def test_make_breaking_reads_the_spec_at_a_git_ref(tmp_path: Path) -> None:
     assert "TEST_DEPS += revision-drill-quick" in (REPO / "mk" / "revision.mk").read_text(encoding="utf-8")
 
 
-def test_make_golden_regenerates_what_is_made_from_the_goldens() -> None:
+def test_the_walkthrough_order_leaves_a_tree_make_test_accepts() -> None:
     """The README's walkthrough runs `make generate` (step 2) before `make golden` (step 4), and the docs' golden
     pages are made from the .cbf files: `make golden` assembles and then regenerates, so the tree it leaves is
     fresh (the drill's `generated fresh` step checks it in a revised tree)."""
@@ -193,8 +193,12 @@ def test_make_golden_regenerates_what_is_made_from_the_goldens() -> None:
     assembler = next(i for i, line in enumerate(lines) if "-m conformance.assembler" in line)
     assert any(re.fullmatch(r"\S*make\b.* generate", line) for line in lines[assembler:]), res.stdout
     readme = (REPO / "README.md").read_text(encoding="utf-8")
-    steps = [readme.index(s) for s in ("**`make generate`.**", "`make golden`, which assembles", "**`make test`.**")]
+    steps = [readme.index(s) for s in ("**`make generate`.**", "`make golden`, which assembles",
+                                       "**`make conformance`, then stage the revision**", "**`make test`.**")]
     assert steps == sorted(steps), "the README's walkthrough order changed: check make golden's recipe"
+    # make test ends with check-report, which compares the run's report with what git holds: the walkthrough
+    # has the report made and staged before make test
+    assert "check-report" in (REPO / "Makefile").read_text(encoding="utf-8").split("\ntest:", 1)[1].split("\n\n")[0]
 
 
 def test_the_readme_lists_no_versions_by_hand() -> None:
