@@ -21,8 +21,8 @@
 #                             to QUICK_MAX_BYTES (not the 65,535-record case), and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI), once.
-# Measured on the shared, loaded 2-core machine (load 7) with rename added: 46 s and 15.8 CPU s
-# (user + sys; 14.7 without it) for the three together. Before, on an idle 2-core machine: 32 s
+# Measured with rename added, the three together: 16 s and 13.9 CPU s (user + sys) at load 2,
+# 46 s and 15.8 CPU s at load 7 (14.7 CPU s for the two without it). Before, on an idle 2-core machine: 32 s
 # and 31 CPU s for layout_change and new_version together (diffs 2 s, copy 1 s, generate 3 s,
 # golden 2 s, C testee 3 s, conformance 2 s, tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
 # 65,535-record case in its conformance about 105 CPU s. The full drill takes 3-7 minutes a
