@@ -71,15 +71,37 @@ def _files() -> dict[str, Path]:
     return files
 
 
-def _every_command_file(size: int) -> bytes:
-    """About ``size`` records: every command of the newest writable version, read from the model
-    (cbf.tables), over and over, each round in one shape. Plain values keep it valid: vectors
-    (0, 0, 1) (so every motion starts where the last ended), scalars 1.0, uints 1, strings "B"."""
+def _curve_values(cmd: Any, lay: Any) -> dict[str, Any]:
+    """The arguments a circle or helix (by its motion role) needs to stay valid and end where it starts, at
+    (0, 0, 1) as every other motion does: a full turn about (1, 0, 1) with the normal (0, 0, 1), a helix
+    of length 0. Nothing for other commands (their plain values are valid)."""
+    motion = cmd.motion or {}
+    if motion.get("kind") not in ("circle", "helix"):
+        return {}
+    counts = {f.name: f.count for f in lay.args}
+
+    def vec(first: float, n: int) -> tuple[float, ...]:  # (first, 0, ..., 0, 1)
+        return (first, *([0.0] * (n - 2)), 1.0) if n > 1 else (1.0,)
+
+    out: dict[str, Any] = {motion["center"]: vec(1.0, counts[motion["center"]]), motion["degrees"]: 360.0}
+    if "normal" in motion:
+        out[motion["normal"]] = vec(0.0, counts[motion["normal"]])
+    if "length" in motion:
+        out[motion["length"]] = 0.0
+    return out
+
+
+def _every_command_file(size: int, version_id: str | None = None) -> bytes:
+    """About ``size`` records: every command of a version (default the newest writable one), read from
+    the model (cbf.tables), over and over, each round in one shape. Plain values keep it valid: vectors
+    (0, 0, 1) (so every motion starts where the last ended), scalars 1.0, uints 1, strings "B"; curves
+    by their motion role (_curve_values)."""
     import cbf
     from cbf import tables as T
     from cbf.model import Cbf, Record, new_header
 
-    version = max((v for v in T.VERSIONS if v.writable), key=lambda v: (v.major, v.minor or 0))
+    version = (T.VERSION_BY_ID[version_id] if version_id is not None
+               else max((v for v in T.VERSIONS if v.writable), key=lambda v: (v.major, v.minor or 0)))
     plain: list[Record] = []
     shape: tuple[T.CommandInfo, T.CommandInfo] | None = None
     starts = [c for c in T.COMMANDS if c.shape and c.shape["kind"] == "start" and c.layouts_for(version.id)]
@@ -100,6 +122,7 @@ def _every_command_file(size: int) -> bytes:
                 values[f.name] = "B"
             else:
                 values[f.name] = bytes(f.size)
+        values.update(_curve_values(cmd, lay))
         plain.append(Record(code=cmd.code, raw_args=lay.struct.pack(*_flat(lay, values))))
     moves = sum(1 for r in plain if T.BY_CODE[r.code].motion)
     recs: list[Record] = []

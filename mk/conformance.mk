@@ -1,8 +1,11 @@
 # Conformance suite (issue #3): golden cases, assembler, runner.
 .PHONY: conformance golden golden-check
 
-golden: venv  ## re-assemble conformance/golden/*.hex into .cbf
+# The docs' golden pages are made from the .cbf files: `make golden` regenerates them, so that a
+# revision made in the README's order (generate, then golden) leaves generated/ fresh.
+golden: venv  ## re-assemble conformance/golden/*.hex into .cbf, then regenerate what is made from them
 	$(PY) -m conformance.assembler
+	@$(MAKE) --no-print-directory generate
 
 GOLDEN_FILES := $(wildcard conformance/golden/*)
 ASSEMBLER_FILES := $(wildcard conformance/assembler/*.py)

@@ -1,12 +1,14 @@
 # Format revisions (issue #12).
 #   breaking BASE=<git ref>   `cbfgen diff` of spec/cbf.yaml at BASE (via `git show`) against the
-#                             working tree's spec: every change by version and command; exit 1
-#                             when one changes the wire meaning of a version BASE has.
+#                             working tree's spec: every change by version and command, each
+#                             wire-breaking, text-breaking or neither; exit 0 when none breaks
+#                             anything, else make's 2 with cbfgen diff's code on the last line.
 #   revision-drill            every fixture of tests/revisions/ (a new command, a new version
 #                             dropping a command, a layout change in one version, another
-#                             checksum algorithm chosen by a profile) applied to a temporary
-#                             copy of the tree, then `cbfgen diff` (the classification the
-#                             fixture states), `make generate`, `make golden`,
+#                             checksum algorithm chosen by a profile, a rename), its ids
+#                             chosen for the spec it meets, applied to a temporary copy of
+#                             the tree, then `cbfgen diff` (the classification the fixture
+#                             states), `make generate`, `make golden`, generated/ fresh,
 #                             `make conformance` (every binding) and the whole pytest suite.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
 #                             whose kind no in-tree test makes (IN_TREE: a new command is made
@@ -19,11 +21,13 @@
 #                             to QUICK_MAX_BYTES (not the 65,535-record case), and the pytest
 #                             files QUICK_TESTS (spec loader, check coverage, codec, CUT, docs,
 #                             golden assembly, rev 03 facts, CLI), once.
-# Measured on an idle 2-core machine: 32 s and 31 CPU s for layout_change and new_version
-# together (diffs 2 s, copy 1 s, generate 3 s, golden 2 s, C testee 3 s, conformance 2 s,
-# tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
+# Measured with rename added, the three together: 16 s and 13.9 CPU s (user + sys) at load 2,
+# 46 s and 15.8 CPU s at load 7 (14.7 CPU s for the two without it). Before, on an idle 2-core machine: 32 s
+# and 31 CPU s for layout_change and new_version together (diffs 2 s, copy 1 s, generate 3 s,
+# golden 2 s, C testee 3 s, conformance 2 s, tests 19 s); a tree a fixture, as before, took 72 s on the CI run's two cores, and with the
 # 65,535-record case in its conformance about 105 CPU s. The full drill takes 3-7 minutes a
-# fixture (every binding's build and the whole suite, a tree each). The quick drill does not
+# fixture (every binding's build and the whole suite, a tree each): its five fixtures passed in
+# 1,531 s at DRILL_JOBS=1 under nice 19 on the shared machine at load 7-13. The quick drill does not
 # re-assemble the goldens `make golden` just wrote, and builds its ASan/UBSan testee at -O0
 # (QUICK_DESELECT, QUICK_C_SAN).
 BASE ?= HEAD
@@ -31,10 +35,22 @@ BASE ?= HEAD
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 .PHONY: breaking revision-drill revision-drill-quick
 
+# make's own exit status is 0 or 2 (any failed recipe), so `make breaking` cannot pass on cbfgen diff's
+# codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): it exits 0 when nothing breaks and
+# 2 otherwise, and its last line (stderr) names cbfgen diff's code and class. NEW_SPEC: the spec to
+# compare with BASE's (default the working tree's).
+NEW_SPEC ?= spec/cbf.yaml
 breaking: venv  ## cbfgen diff of spec/cbf.yaml at BASE=<git ref> (default HEAD) against the working tree
 	@tmp=$$(mktemp -d) && trap 'rm -rf "$$tmp"' EXIT && \
 	  git show "$(BASE):spec/cbf.yaml" > "$$tmp/cbf.yaml" && \
-	  $(PY) -m cbfgen diff "$$tmp/cbf.yaml" spec/cbf.yaml --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json)
+	  { $(PY) -m cbfgen diff "$$tmp/cbf.yaml" "$(NEW_SPEC)" --old-name "$(BASE):spec/cbf.yaml" $(if $(JSON),--json); \
+	    rc=$$?; } && \
+	  case $$rc in \
+	    0) ;; \
+	    1) echo "make breaking: cbfgen diff exit 1: wire-breaking" >&2 ;; \
+	    3) echo "make breaking: cbfgen diff exit 3: text-breaking only" >&2 ;; \
+	    *) echo "make breaking: cbfgen diff exit $$rc: usage, or a spec that does not load" >&2 ;; \
+	  esac && exit $$rc
 
 revision-drill: venv kaitai-setup  ## apply every tests/revisions/ fixture in a temp copy: generate, golden, conformance, tests
 	$(PY) tests/revisions/drill.py run --jobs $(DRILL_JOBS)

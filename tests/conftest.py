@@ -5,6 +5,7 @@ from __future__ import annotations
 import copy
 import functools
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -71,7 +72,9 @@ def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iter
             continue
         covering = [c for c in gates if v["id"] in c["versions"]]
         if not covering:  # a version that lacks nothing else yet
-            covering = [{"id": f"fixture_{v['id']}", "kind": "availability", "severity": "error",
+            # a check id the schema takes ([a-z][a-z0-9_]*): a version id such as "5.0" or "1.x" spelled with "_"
+            ident = "fixture_" + re.sub(r"[^a-z0-9_]", "_", str(v["id"]).lower())
+            covering = [{"id": ident, "kind": "availability", "severity": "error",
                          "versions": [v["id"]], "commands": [], "decision": spec["decisions"][0]["id"],
                          "text": "The fixture command is not in this version.", "fails": "A record holds it."}]
             spec["checks"].append(covering[0])
@@ -86,7 +89,13 @@ def spec_with_fixture_command(tmp: Path) -> Path:
     spec = spec_doc()
     extra = load_yaml(REPO / "tests" / "fixtures" / "dwell_command.yaml")
     spec["units"].update(extra["units"])
-    spec["commands"].append(extra["command"])
+    # a revision may have taken its code or dropped one of its versions: the next free code, the versions there are
+    cmd, used = extra["command"], {int(c["code"]) for c in spec["commands"]}
+    cmd["code"] = next(c for c in [*range(int(cmd["code"]), 256), *range(1, 256)] if c not in used)
+    ids = {str(v["id"]) for v in spec["versions"]}
+    for lay in cmd["layouts"]:
+        lay["versions"] = [v for v in lay["versions"] if v in ids]
+    spec["commands"].append(cmd)
     cover_missing(spec, extra["command"], extra.get("covered_by", ()))
     path = tmp / "cbf.yaml"
     path.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")

@@ -59,6 +59,15 @@ def _cli(*args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.CompletedProcess(["cbfgen", "diff", *args], rc, out.getvalue(), err.getvalue())
 
 
+def _free_clause(n: int) -> str:
+    """The n-th clause id "9.k" no check, version or command of the spec uses (a revision may have taken 9.9)."""
+    used = {str(x) for c in SPEC.checks for x in (c.id, c.clause)} | {str(v.clause) for v in SPEC.versions}
+    return [f"9.{k}" for k in range(1, 1000) if f"9.{k}" not in used][n]
+
+
+GATE, DWELL_GATE = _free_clause(0), _free_clause(1)
+
+
 def _raw_command(doc: dict[str, Any], name: str) -> dict[str, Any]:
     return next(c for c in doc["commands"] if c["name"] == name)
 
@@ -89,7 +98,7 @@ def _add_version(doc: dict[str, Any], drop: str | None = None) -> str:
     base = _last_version()
     vid, major = _new_version_id(SPEC)
     doc["versions"].append({"id": vid, "major": major, "minor": 0, "header": SPEC.version(base).header,
-                            "clause": "9.9", "writable": True, "doc": f"Version {vid}."})
+                            "clause": GATE, "writable": True, "doc": f"Version {vid}."})
     for c in doc["commands"]:
         for lay in c["layouts"]:
             if base in lay["versions"] and c["name"] != drop:
@@ -97,7 +106,7 @@ def _add_version(doc: dict[str, Any], drop: str | None = None) -> str:
     missing = [c.name for c in SPEC.commands if not c.available_in(base)] + ([drop] if drop else [])
     if missing:
         named = any("commands" in ch for ch in doc["checks"] if ch["kind"] == "availability")
-        doc["checks"].append({"id": "9.9", "kind": "availability", "severity": "error", "clause": "9.9",
+        doc["checks"].append({"id": GATE, "kind": "availability", "severity": "error", "clause": GATE,
                               "versions": [vid], "commands": missing, "text": f"{vid} lacks {missing}.",
                               "fails": "A record's command has no layout for the file's version."})
         if not named:
@@ -113,7 +122,8 @@ def test_a_spec_against_itself_has_no_change() -> None:
     d = diff(SPEC, SPEC)
     assert d.changes == () and d.breaking == ()
     res = _cli(str(SPEC_PATH), str(SPEC_PATH))
-    assert res.returncode == 0 and "0 change(s), 0 breaking" in res.stdout
+    assert res.returncode == 0 and "0 change(s), 0 wire-breaking, 0 text-breaking" in res.stdout
+    assert res.stdout.splitlines()[-1].startswith("not breaking (exit 0)")
 
 
 def test_a_layout_change_to_the_newest_version_is_breaking(tmp_path: Path) -> None:
@@ -142,6 +152,7 @@ def test_a_layout_change_to_the_newest_version_is_breaking(tmp_path: Path) -> No
     assert not others, "the other versions keep their layout"
     res = _cli(str(SPEC_PATH), str(_variant(tmp_path, edit, "v.yaml")))
     assert res.returncode == 1 and "BREAKING" in res.stdout and cmd in res.stdout
+    assert res.stdout.splitlines()[-1].startswith("wire-breaking (exit 1)")
 
 
 def test_a_new_version_is_not_breaking(tmp_path: Path) -> None:
@@ -167,14 +178,15 @@ def test_a_new_version_is_not_breaking(tmp_path: Path) -> None:
 
 def _dwell(versions: list[str]) -> dict[str, Any]:
     free = next(code for code in range(1, 256) if all(c.code != code for c in SPEC.commands))
-    return {"name": "DRILL_DWELL", "code": free, "clause": "9.8", "doc": "Dwell.",
+    return {"name": "DRILL_DWELL", "code": free, "clause": DWELL_GATE, "doc": "Dwell.",
             "layouts": [{"versions": versions, "size": 4,
                          "args": [{"name": "seconds", "type": "f4", "doc": "Dwell time."}]}]}
 
 
 def _gate(doc: dict[str, Any], versions: list[str], command: str) -> None:
     if versions:
-        check = {"id": "9.8", "kind": "availability", "severity": "error", "clause": "9.8", "versions": versions,
+        check = {"id": DWELL_GATE, "kind": "availability", "severity": "error", "clause": DWELL_GATE,
+                 "versions": versions,
                  "commands": [command], "text": "added later.", "fails": "no layout for the version."}
         if not any("commands" in ch for ch in doc["checks"] if ch["kind"] == "availability"):
             del check["commands"]
@@ -286,7 +298,8 @@ def test_fields_renamed_moved_resized(tmp_path: Path) -> None:
         next(x for x in raw["args"] if x["name"] == rarg)["name"] = "drill_" + rarg
 
     renamed = [c for c in _diff(tmp_path, rename).changes if c.command == rcmd]
-    assert renamed and all(c.kind == "field_renamed" and c.breaking and rarg in c.detail for c in renamed)
+    assert renamed and all(c.kind == "field_renamed" and c.text_breaking and not c.breaking and rarg in c.detail
+                           for c in renamed)
 
     def resize(doc: dict[str, Any]) -> None:
         layouts = _raw_command(doc, cmd)["layouts"]
@@ -341,7 +354,7 @@ def test_an_availability_check_extended_to_a_new_version_is_not_breaking(tmp_pat
 
     def edit(doc: dict[str, Any]) -> None:
         vid = _add_version(doc)  # the command table of the newest version, gated like it
-        doc["checks"] = [c for c in doc["checks"] if c["id"] != "9.9"]
+        doc["checks"] = [c for c in doc["checks"] if c["id"] != GATE]
         for c in doc["checks"]:
             if str(c["id"]) in gates:
                 c["versions"].append(vid)
@@ -349,3 +362,102 @@ def test_an_availability_check_extended_to_a_new_version_is_not_breaking(tmp_pat
     d = _diff(tmp_path, edit)
     changed = [c for c in d.changes if c.kind == "check_changed"]
     assert len(changed) == len(gates) and not d.breaking, d.text()
+
+
+def _rename_everywhere(doc: Any, old: str, new: str) -> Any:
+    """doc with every string equal to old (the command's name and each reference to it) spelled new."""
+    if isinstance(doc, dict):
+        return {k: _rename_everywhere(v, old, new) for k, v in doc.items()}
+    if isinstance(doc, list):
+        return [_rename_everywhere(v, old, new) for v in doc]
+    return new if doc == old else doc
+
+
+def _most_referenced_command() -> str:
+    """The command the checks name most often (so the rename reaches checks of several kinds), from the model."""
+    def refs(name: str) -> int:
+        return sum(name in ch.commands or any(t.command == name for t in ch.targets) for ch in SPEC.checks)
+    return max(SPEC.commands, key=lambda c: (refs(c.name), -SPEC.commands.index(c))).name
+
+
+def test_a_rename_is_text_breaking_and_not_wire_breaking(tmp_path: Path) -> None:
+    """A command renamed with the same code and layouts keeps every byte's meaning: each version that has it
+    reports command_renamed as TEXT, nothing is BREAKING, the exit code is 3 and the footer says so. The same
+    rename with a layout change as well is wire-breaking (exit 1)."""
+    cmd = _most_referenced_command()
+    versions = {v.id for v in SPEC.versions if SPEC.command(cmd).available_in(v.id)}
+
+    def rename(doc: dict[str, Any]) -> None:
+        doc.update(_rename_everywhere(copy.deepcopy(doc), cmd, cmd + "_NEW"))
+
+    d = _diff(tmp_path, rename)
+    assert not d.breaking, d.text()
+    renamed = {(c.version, c.impact) for c in d.changes if c.kind == "command_renamed" and c.command == cmd}
+    assert renamed == {(v, "text") for v in versions}, d.text()
+    assert d.exit_code == 3 and d.impact == "text"
+    res = _cli(str(SPEC_PATH), str(_variant(tmp_path, rename, "r.yaml")))
+    assert res.returncode == 3, res.stdout + res.stderr
+    assert res.stdout.splitlines()[-1].startswith("text-breaking only (exit 3)") and "TEXT" in res.stdout
+    assert "BREAKING" not in res.stdout
+    doc = json.loads(_cli(str(SPEC_PATH), str(tmp_path / "r.yaml"), "--json").stdout)
+    assert (doc["breaking"], doc["text_breaking"], doc["impact"], doc["exit"]) == (False, True, "text", 3)
+
+    def rename_and_grow(doc: dict[str, Any]) -> None:
+        rename(doc)
+        lay = _raw_command(doc, cmd + "_NEW")["layouts"][0]
+        lay["args"].append({"name": "drill_extra", "type": "bytes", "size": 2, "reserved": True, "doc": "x."})
+        lay["size"] += 2
+
+    grown = _diff(tmp_path, rename_and_grow)
+    assert grown.breaking and grown.exit_code == 1 and grown.impact == "wire"
+    assert any(c.kind == "command_renamed" and c.impact == "text" for c in grown.changes)
+
+
+def test_a_layout_variant_renamed_is_text_breaking(tmp_path: Path) -> None:
+    """A layout's variant names its C and Python identifiers: renaming it keeps every byte (TEXT, not BREAKING)."""
+    cmd, idx, variant = next(((c.name, i, lay.variant) for c in SPEC.commands for i, lay in enumerate(c.layouts)
+                              if lay.variant), ("", 0, None))
+    if not variant:
+        pytest.skip("no layout has a variant name")
+
+    def rename(doc: dict[str, Any]) -> None:
+        _raw_command(doc, cmd)["layouts"][idx]["variant"] = f"{variant}_new"
+
+    d = _diff(tmp_path, rename)
+    assert d.changes and not d.breaking and d.exit_code == 3, d.text()
+    assert {c.kind for c in d.changes} == {"layout_variant_renamed"}
+
+
+def test_the_exit_codes_are_documented() -> None:
+    """`--help` and the README name each exit code of cbfgen diff with its class."""
+    from cbfgen.diff import EXIT_CODES
+
+    res = _cli("--help")
+    assert res.returncode == 0
+    help_text = " ".join(res.stdout.split())
+    readme = " ".join((REPO / "README.md").read_text(encoding="utf-8").split())
+    assert len({code for code, _ in EXIT_CODES}) == 4
+    for code, what in EXIT_CODES:
+        assert f"{code} {what}" in help_text, (code, what)
+        assert f"{code} {what}" in readme, (code, what)
+
+
+def test_a_check_renamed_is_text_breaking(tmp_path: Path) -> None:
+    """A check given another id, judging the same: every file is judged the same, findings name the new id
+    (TEXT, exit 3). Given another id and another bound too, it is a removal and an addition (wire-breaking
+    when an error)."""
+    check = next(c for c in SPEC.checks if c.severity == "error" and c.kind != "availability")
+
+    def rename(doc: dict[str, Any]) -> None:
+        next(c for c in doc["checks"] if str(c["id"]) == check.id)["id"] = "drill_renamed_check"
+
+    d = _diff(tmp_path, rename)
+    assert [(c.kind, c.impact) for c in d.changes] == [("check_renamed", "text")], d.text()
+    assert d.exit_code == 3 and check.id in d.changes[0].detail
+
+    def rename_and_change(doc: dict[str, Any]) -> None:
+        raw = next(c for c in doc["checks"] if str(c["id"]) == check.id)
+        raw["id"], raw["severity"] = "drill_renamed_check", "warning"
+
+    kinds = {(c.kind, c.impact) for c in _diff(tmp_path, rename_and_change).changes}
+    assert kinds == {("check_removed", "wire"), ("check_added", "none")}, kinds

@@ -60,7 +60,7 @@ def _record(command: str, arg: str, value: float | None, axis: int = 0) -> tuple
     """A record of command whose machine-bounded arguments lie inside the default machine, and
     arg's component ``axis`` set to value. Returns the layout, the argument bytes and arg's offset."""
     cmd = T.BY_NAME[command]
-    lay = cmd.layouts_for(T.DEFAULT_VERSION)[0]
+    lay = cmd.candidates(T.DEFAULT_VERSION)[0]  # the layout a reader takes there, also for a command the version lacks
     bounded = {(t.command, a): SPEC.machine.limit(t.limit) for ch in CHECKS for t in ch.targets if t.limit
                for a in t.args}
     vals: list[Any] = []

@@ -8,7 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from conftest import generate, spec_with_fixture_command
+from conftest import generate, load_yaml, spec_with_fixture_command
 
 SCRIPT = r"""
 import struct, sys
@@ -17,8 +17,10 @@ from cbf import tables as T
 from cbf.layouts import CommandCode, Dwell, Point
 from cbf.model import Cbf, Record, new_header
 
-assert CommandCode.DWELL == 0x44
-model = Cbf(new_header("3.0", implant_descriptor="PN-1"),
+CODE = int(sys.argv[2])  # the fixture's code, as conftest chose it for this spec
+VERSION = next(v for v in T.VERSIONS if v.writable and T.BY_NAME["DWELL"].layouts_for(v.id))
+assert CommandCode.DWELL == CODE
+model = Cbf(new_header(f"{VERSION.major}.{VERSION.minor or 0}", implant_descriptor="PN-1"),
             (Record.of(Point(point=(0.0, 0.0, 0.0))), Record.of(Dwell(seconds=1.5))))
 data = cbf.encode(model)
 back = cbf.decode(data)
@@ -26,7 +28,7 @@ back = cbf.decode(data)
 at = back.records[1].offset
 code, size = T.RECORD_BY_ROLE["code"], T.RECORD_BY_ROLE["arg_size"]
 field = lambda f, buf: int.from_bytes(buf[at + f.offset:at + f.end], T.SPEC["byte_order"])
-assert field(code, data) == 0x44 and field(size, data) == 4   # the fixture's code and size
+assert field(code, data) == CODE and field(size, data) == 4   # the fixture's code and size
 assert back.records[1].decode_args() == Dwell(seconds=1.5)
 assert cbf.validate(data) == []
 text = cbf.to_cut(back)
@@ -47,7 +49,8 @@ def test_new_command_reaches_python_cut_and_cli(tmp_path: Path, repo: Path) -> N
     generate(spec, tmp_path / "gen", "python")
     env = dict(os.environ, PYTHONPATH=str(tmp_path / "gen" / "python"))
     out = tmp_path / "dwell.cbf"
-    subprocess.run([sys.executable, "-c", SCRIPT, str(out)], env=env, check=True, cwd=tmp_path)
+    code = next(c["code"] for c in load_yaml(spec)["commands"] if c["name"] == "DWELL")
+    subprocess.run([sys.executable, "-c", SCRIPT, str(out), str(code)], env=env, check=True, cwd=tmp_path)
     info = subprocess.run([sys.executable, "-m", "cbf", "info", str(out)], env=env, capture_output=True, text=True,
                           cwd=tmp_path)
     assert info.returncode == 0, info.stderr
@@ -58,4 +61,4 @@ def test_new_command_reaches_python_cut_and_cli(tmp_path: Path, repo: Path) -> N
     # and the committed codec does not know it: the command really came from the spec copy
     plain = subprocess.run([sys.executable, "-m", "cbf", "info", str(out)], capture_output=True, text=True,
                            env=dict(os.environ, PYTHONPATH=str(repo / "generated" / "python")), cwd=tmp_path)
-    assert "unknown 0x44: 1" in plain.stdout
+    assert f"unknown 0x{code:02X}: 1" in plain.stdout

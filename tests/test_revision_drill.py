@@ -9,9 +9,11 @@ revision.
 
 from __future__ import annotations
 
+import copy
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -19,6 +21,7 @@ import yaml
 from conftest import YAML_LOADER, load_yaml
 from revisions import drill
 
+from cbfgen.diff import diff
 from cbfgen.loader import load
 
 REPO = Path(__file__).resolve().parents[1]
@@ -26,11 +29,23 @@ SPEC = REPO / "spec" / "cbf.yaml"
 FIXTURES = drill.fixtures()
 
 
-def test_four_kinds_of_revision_are_drilled() -> None:
-    kinds = {(w["kind"], w.get("breaking")) for p in FIXTURES for w in drill.load_fixture(p).expect}
-    assert len(FIXTURES) >= 4
+def test_the_kinds_of_revision_are_drilled_and_classed_as_a_format_owner_would() -> None:
+    """The fixtures make each kind of revision, and each states the class a format owner gives it: a new
+    version is not breaking, a layout change to an existing version is wire-breaking, a rename is
+    text-breaking and not wire-breaking (test_cbfgen_diff_classifies_the_fixture holds cbfgen diff to it)."""
+    fixtures = [drill.load_fixture(p) for p in FIXTURES]
+    kinds = {(w["kind"], w.get("breaking")) for fx in fixtures for w in fx.expect}
+    assert len(FIXTURES) >= 5
     assert {("command_added", True), ("version_added", False), ("command_removed", False), ("field_retyped", True),
-            ("profile_checksum_algorithm_changed", True)} <= kinds
+            ("profile_checksum_algorithm_changed", True), ("command_renamed", False)} <= kinds
+    for fx in fixtures:
+        stated = {w["kind"] for w in fx.expect}
+        if "command_renamed" in stated and len(stated - {"revision_changed"}) == 1:
+            assert fx.text_breaking and not fx.breaking, fx.name
+        if "version_added" in stated:
+            assert not fx.breaking and not fx.text_breaking, fx.name
+        if "field_retyped" in stated:
+            assert fx.breaking, fx.name
 
 
 def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
@@ -53,19 +68,20 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
     alone), and no two of them add the same file."""
     quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
     assert len(quick) > 1
-    doc = load_yaml(SPEC)
-    for fx in quick:
-        for edit in fx.edits:
-            if str(edit.get("file", drill.SPEC)) == drill.SPEC:
-                drill.apply_edit(doc, edit)
-    path = tmp_path / "cbf.yaml"
-    path.write_text(drill._dump(doc), encoding="utf-8")
-    together = load(path)
+    path, added = SPEC, []
+    for fx in quick:  # as drill.apply does: each fixture's ids chosen for the spec the ones before it left
+        added += drill.load_fixture(fx.path, drill.read_spec(path)).files
+        path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}")
+    together, before = load(path), len(load(SPEC).versions)
+    names = {c.name for c in load(SPEC).commands}
+    new_versions = 0
     for fx in quick:
         alone = load(drill.revised_spec(fx, SPEC, tmp_path / fx.name))
-        assert {v.id for v in alone.versions} <= {v.id for v in together.versions}, fx.name
-        assert {c.name for c in alone.commands} <= {c.name for c in together.commands}, fx.name
-    added = [rel for fx in quick for rel in fx.files]
+        new_versions += len(alone.versions) - before
+        mine = {c.name for c in alone.commands}
+        assert mine - names <= {c.name for c in together.commands}, f"{fx.name}: a command it adds is not there"
+        assert not (names - mine) & {c.name for c in together.commands}, f"{fx.name}: a name it drops is there"
+    assert len(together.versions) - before == new_versions, "each version a fixture adds is there, once"
     assert len(added) == len(set(added)), "two quick fixtures add the same file"
 
 
@@ -137,13 +153,52 @@ def test_a_fixture_that_does_not_apply_names_the_edit(tmp_path: Path) -> None:
         drill.load_fixture(bad)
 
 
-def test_make_breaking_reads_the_spec_at_a_git_ref() -> None:
+def _fixture_with(breaking: bool) -> drill.Fixture:
+    return next(fx for fx in map(drill.load_fixture, FIXTURES) if fx.breaking == breaking)
+
+
+def test_make_breaking_reads_the_spec_at_a_git_ref(tmp_path: Path) -> None:
+    """`make breaking BASE=HEAD NEW_SPEC=...` prints what `cbfgen diff` of the spec at HEAD against that spec
+    prints, exits 0 when cbfgen diff does and 2 (make's status for a failed recipe) otherwise, and names cbfgen
+    diff's own code on its last line. Run on a wire-breaking fixture's spec and a non-breaking one's, so it
+    holds whether or not the working tree's spec equals HEAD's."""
     if shutil.which("git") is None or not (REPO / ".git").exists():
         pytest.skip("not a git checkout")
-    res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD"], cwd=REPO, capture_output=True, text=True)
-    assert res.returncode in (0, 1), res.stderr
-    assert res.stdout.startswith("cbfgen diff: HEAD:spec/cbf.yaml -> spec/cbf.yaml:")
+    head = tmp_path / "head.yaml"
+    head.write_bytes(subprocess.run(["git", "show", "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True,
+                                    check=True).stdout)
+    codes = []
+    for fx in (_fixture_with(True), _fixture_with(False)):
+        new = drill.revised_spec(fx, SPEC, tmp_path / fx.name)
+        direct = subprocess.run([sys.executable, "-m", "cbfgen", "diff", str(head), str(new), "--old-name",
+                                 "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True, text=True)
+        res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD", f"NEW_SPEC={new}"], cwd=REPO,
+                             capture_output=True, text=True)
+        assert direct.returncode in (0, 1, 3), direct.stderr
+        assert res.stdout == direct.stdout and res.stdout.startswith(f"cbfgen diff: HEAD:spec/cbf.yaml -> {new}:")
+        assert res.returncode == (0 if direct.returncode == 0 else 2), res.stderr
+        if direct.returncode:
+            assert f"make breaking: cbfgen diff exit {direct.returncode}: " in res.stderr
+        codes.append(direct.returncode)
+    assert codes[0] == 1, "a wire-breaking fixture is wire-breaking against HEAD's spec too"
     assert "TEST_DEPS += revision-drill-quick" in (REPO / "mk" / "revision.mk").read_text(encoding="utf-8")
+
+
+def test_the_walkthrough_order_leaves_a_tree_make_test_accepts() -> None:
+    """The README's walkthrough runs `make generate` (step 2) before `make golden` (step 4), and the docs' golden
+    pages are made from the .cbf files: `make golden` assembles and then regenerates, so the tree it leaves is
+    fresh (the drill's `generated fresh` step checks it in a revised tree)."""
+    res = subprocess.run(["make", "-n", "-s", "golden"], cwd=REPO, capture_output=True, text=True)
+    lines = res.stdout.splitlines()
+    assembler = next(i for i, line in enumerate(lines) if "-m conformance.assembler" in line)
+    assert any(re.fullmatch(r"\S*make\b.* generate", line) for line in lines[assembler:]), res.stdout
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    steps = [readme.index(s) for s in ("**`make generate`.**", "`make golden`, which assembles",
+                                       "**`make conformance`, then stage the revision**", "**`make test`.**")]
+    assert steps == sorted(steps), "the README's walkthrough order changed: check make golden's recipe"
+    # make test ends with check-report, which compares the run's report with what git holds: the walkthrough
+    # has the report made and staged before make test
+    assert "check-report" in (REPO / "Makefile").read_text(encoding="utf-8").split("\ntest:", 1)[1].split("\n\n")[0]
 
 
 def test_the_readme_lists_no_versions_by_hand() -> None:
@@ -153,3 +208,134 @@ def test_the_readme_lists_no_versions_by_hand() -> None:
         found = {v for v in ids if re.search(rf"(?<![\w.]){re.escape(v)}(?![\w])", line)}
         assert len(found) < 3, f"README.md:{n} lists versions {sorted(found)}: {line}"
         assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
+
+
+def _revised(fx: drill.Fixture, base: Path, out: Path) -> tuple[Path, drill.Fixture]:
+    """base revised by fx into out, and fx as it reads for base (its ids chosen there)."""
+    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, drill.read_spec(base))
+
+
+def _judged(fx: drill.Fixture, base: Path, revised: Path) -> list[str]:
+    """drill.check_diff in this process: what cbfgen diff of base against revised says, judged for fx."""
+    d = diff(load(base), load(revised))
+    return drill.judge(drill.load_fixture(fx.path, drill.read_spec(base)), d.exit_code, d.as_json())
+
+
+@pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
+def test_each_fixture_applies_on_top_of_each_other(first: Path, tmp_path: Path) -> None:
+    """Fixture B applied to fixture A's revised spec (every ordered pair, the spec edits only) gives a spec the
+    loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause taken
+    twice) and cbfgen diff of A's spec against it says what B states."""
+    a = drill.load_fixture(first)
+    base, a_here = _revised(a, SPEC, tmp_path / "a")
+    spec_a = load(base)
+    for other in FIXTURES:
+        if other == first:
+            continue
+        b = drill.load_fixture(other)
+        both, b_there = _revised(b, base, tmp_path / f"a_{other.stem}")
+        spec = load(both)  # the loader's checks (make check-spec)
+        assert len({c.code for c in spec.commands}) == len(spec.commands), (first.stem, other.stem)
+        assert not set(a_here.files) & set(b_there.files), f"{other.stem} adds a file {first.stem} added"
+        assert _judged(b, base, both) == [], (first.stem, other.stem)
+        assert {v.id for v in spec_a.versions} <= {v.id for v in spec.versions}
+
+
+def _layouts_moved(tmp_path: Path) -> Path:
+    """A real revision that gives every command its own layout for the newest version (the same bytes, under a
+    variant of its own), as a revision that changes one of them in that version does: the layout a fixture
+    edits for the newest version is no longer the first (a fixture that addresses layouts[0] edits the wrong
+    one)."""
+    doc = load_yaml(SPEC)
+    newest = max(load(SPEC).versions, key=lambda v: (v.major, v.minor or 0)).id
+    for c in doc["commands"]:
+        first = c["layouts"][0]
+        if newest in first["versions"] and len(first["versions"]) > 1:
+            own = copy.deepcopy(first)
+            first["versions"].remove(newest)
+            own.update(versions=[newest], variant=f"own_{newest.replace('.', '_')}")
+            c["layouts"].append(own)
+    path = tmp_path / "moved" / "cbf.yaml"
+    path.parent.mkdir()
+    path.write_text(drill._dump(doc), encoding="utf-8")
+    return path
+
+
+def test_the_fixtures_apply_after_a_real_revision(tmp_path: Path) -> None:
+    """A spec that already had a revision adding a version (the new_version fixture's result, as a format owner
+    would commit it), and one whose layouts moved, take every fixture, new_version again included: the next
+    free version, code and clause are chosen there, the loader accepts the result and cbfgen diff says what
+    each fixture states."""
+    adds_version = next(fx for fx in map(drill.load_fixture, FIXTURES)
+                        if any(w["kind"] == "version_added" for w in fx.expect))
+    real = drill.revised_spec(adds_version, SPEC, tmp_path / "real")
+    newest = max(load(real).versions, key=lambda v: (v.major, v.minor or 0)).id
+    assert newest not in {v.id for v in load(SPEC).versions}
+    for base in (real, _layouts_moved(tmp_path)):
+        for path in FIXTURES:
+            fx = drill.load_fixture(path)
+            revised, there = _revised(fx, base, tmp_path / base.parent.name / path.stem)
+            load(revised)
+            assert _judged(fx, base, revised) == [], (base, path.stem)
+            if base == real and fx.name == adds_version.name:
+                assert any(w.get("version") not in (None, newest) for w in there.expect
+                           if w["kind"] == "version_added")
+
+
+def test_fixture_ids_are_chosen_for_the_spec(tmp_path: Path) -> None:
+    """${...} names what the spec it renders for has free or holds: a version, code and clause no one uses,
+    the newest version, a command's code; and an unknown name is refused with the fixture's name."""
+    doc = load_yaml(SPEC)
+    v = drill.variables(doc)
+    model = load(SPEC)
+    assert v["new_version"] not in {x.id for x in model.versions}
+    assert int(v["new_major"]) > max(x.major for x in model.versions)
+    assert int(v["free_code"]) not in {c.code for c in model.commands} and 0 < int(v["free_code"]) < 256
+    assert v["free_clause"] not in {c.id for c in model.checks} | {str(c.clause) for c in model.checks}
+    assert v["newest_version"] == max(model.versions, key=lambda x: (x.major, x.minor or 0)).id
+    cmd = model.commands[-1]
+    assert drill.render(f"${{code:{cmd.name}}} ${{dec:{cmd.name}}}", doc, "t") == f"{cmd.code:02x} {cmd.code}"
+    assert drill.render(f"${{name:{cmd.name}}}", doc, "t") == f"{cmd.name}_2"
+    with pytest.raises(drill.FixtureError, match=r"t: \$\{code:NO_SUCH\} names nothing"):
+        drill.render("${code:NO_SUCH}", doc, "t")
+
+
+def test_cover_missing_names_checks_the_schema_takes(tmp_path: Path) -> None:
+    """conftest.cover_missing gives a version no availability check covers yet a check of its own, its id from
+    the version's ("3.0", "5.0", "1.x") in the schema's id pattern: a command in one version only loads."""
+    from conftest import cover_missing
+
+    doc = load_yaml(SPEC)
+    model = load(SPEC)
+    only = model.versions[-1].id
+    free = next(c for c in range(1, 256) if c not in {x.code for x in model.commands})
+    cmd = {"name": "ONE_VERSION_ONLY", "code": free, "clause": "9.9", "doc": "In one version.",
+           "layouts": [{"versions": [only], "size": 4, "args": [{"name": "value", "type": "f4", "doc": "A value."}]}]}
+    doc["commands"].append(cmd)
+    cover_missing(doc, cmd)
+    path = tmp_path / "cbf.yaml"
+    path.write_text(drill._dump(doc), encoding="utf-8")
+    spec = load(path)
+    ungated = [v.id for v in model.versions if not any(v.id in c.versions for c in model.checks
+                                                       if c.kind == "availability")]
+    made = {c.id for c in spec.checks} - {c.id for c in model.checks}
+    assert len(made) == len([v for v in ungated if v != only]) and all("." not in i for i in made), made
+    assert all(spec.availability_check("ONE_VERSION_ONLY", v.id) for v in spec.versions if v.id != only)
+
+
+def test_the_bench_file_of_every_writable_version_validates() -> None:
+    """bench's every-command file is made for the newest writable version, which a revision may give curves (3.0
+    has them today): for each writable version the file holds every command the version has and validates with
+    no finding (curves by their motion role, a full turn ending where they start)."""
+    import cbf
+    from bench.bench import _every_command_file
+    from cbf import tables as T
+
+    writable = [v for v in T.VERSIONS if v.writable]
+    assert any(any(c.motion and c.motion.get("kind") in ("circle", "helix") and c.layouts_for(v.id)
+                   for c in T.COMMANDS) for v in writable), "no writable version has a curve: this test proves less"
+    for v in writable:
+        data = _every_command_file(300, v.id)
+        assert cbf.validate(data) == [], v.id
+        codes = {r.code for r in cbf.decode(data).records}
+        assert codes == {c.code for c in T.COMMANDS if c.layouts_for(v.id)}, v.id

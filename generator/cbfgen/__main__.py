@@ -3,8 +3,9 @@
     python -m cbfgen [--spec spec/cbf.yaml] [--out generated] [--only EMITTER] [--check-spec]
     python -m cbfgen diff OLD.yaml NEW.yaml [--json]
 
-`diff` exits 0 when nothing is breaking, 1 when something is, 2 on bad input
-(a spec that does not load: the loader's one-line message).
+`diff` exits 0 when nothing is breaking, 1 when something is wire-breaking,
+3 when something is text-breaking only (a rename), 2 on bad input (a spec
+that does not load: the loader's one-line message); see cbfgen.diff.
 
 Each emitter is a subpackage of cbfgen.emit exposing
 ``emit(spec: Spec) -> dict[str, bytes]`` (paths relative to the output
@@ -24,7 +25,7 @@ import tempfile
 from pathlib import Path
 
 from . import emit as emit_pkg
-from .diff import diff, render
+from .diff import main as diff_cli
 from .loader import SpecError, load
 
 EXIT_OK, EXIT_BREAKING, EXIT_BAD_INPUT = 0, 1, 2
@@ -55,22 +56,7 @@ def write_atomic(path: Path, data: bytes) -> bool:
 
 
 def diff_main(argv: list[str]) -> int:
-    ap = argparse.ArgumentParser(prog="cbfgen diff", description=(
-        "List every change from OLD to NEW by version and command, and mark BREAKING each change to the wire "
-        "meaning of a version OLD already has. Exit 0: nothing breaking, 1: breaking, 2: bad input."))
-    ap.add_argument("old", help="the spec before the revision")
-    ap.add_argument("new", help="the spec after the revision")
-    ap.add_argument("--json", action="store_true", help="one JSON document for tools")
-    ap.add_argument("--old-name", help="name OLD by this in the output (default: its path)")
-    args = ap.parse_args(argv)
-    try:
-        old, new = load(args.old), load(args.new)
-    except SpecError as exc:
-        print(f"cbfgen diff: {exc}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    result = diff(old, new, args.old_name or args.old, args.new)
-    sys.stdout.write(render(result, args.json))
-    return EXIT_BREAKING if result.breaking else EXIT_OK
+    return diff_cli(argv)  # its exit codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): cbfgen.diff
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,13 +1,23 @@
 """`cbfgen diff OLD.yaml NEW.yaml`: what a format revision changes, and what it breaks.
 
 Both specs are loaded into the model (loader.load) and compared version by
-version and command by command. A change is BREAKING when it changes the
-wire meaning of a version that already exists in OLD: a file of that
-version, written or read by code generated from OLD, would mean something
-else (or be judged otherwise) under NEW. Adding a version, and anything
-inside a version that OLD does not have, is not breaking; those changes are
-listed relative to the version before it, so a reader sees what the new
-version changes.
+version and command by command. Each change is in one of three classes:
+
+- wire-breaking (BREAKING, `breaking`): it changes the wire meaning of a
+  version that already exists in OLD: a file of that version, written or
+  read by code generated from OLD, would mean something else (or be judged
+  otherwise) under NEW;
+- text-breaking (TEXT, `text_breaking`): every byte of OLD's versions keeps
+  its meaning, but a name a user or a program writes changes: a CUT keyword
+  or argument name, a JSON key, a C macro or struct member, a Python name
+  (a command renamed with the same code and layouts, an argument renamed
+  at the same offset with the same type, a layout variant renamed, a
+  check whose findings carry another id);
+- neither. Adding a version, and anything inside a version that OLD does
+  not have, is neither; those changes are listed relative to the version
+  before it, so a reader sees what the new version changes.
+
+`cbfgen diff` exits with the class of the worst change (EXIT_* below).
 
 The same comparison of two versions of one spec (`version_steps`) builds
 the docs' "Changes" page.
@@ -15,13 +25,21 @@ the docs' "Changes" page.
 
 from __future__ import annotations
 
+import argparse
 import dataclasses
 import json
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from .loader import SpecError, load
 from .model import Check, Coverage, Field, HeaderLayout, Layout, Spec
+
+# `cbfgen diff`'s exit codes: the class of its worst change, or bad input.
+EXIT_NONE, EXIT_WIRE, EXIT_BAD_INPUT, EXIT_TEXT = 0, 1, 2, 3
+EXIT_CODES = ((EXIT_NONE, "no change breaks anything"), (EXIT_WIRE, "wire-breaking (with or without text-breaking)"),
+              (EXIT_BAD_INPUT, "usage, or a spec that does not load"), (EXIT_TEXT, "text-breaking only"))
 
 # Attributes of a check that define what it judges (not its prose or line).
 _CHECK_IGNORED = frozenset({"id", "severity", "text", "fails", "line", "clause", "decision"})
@@ -39,10 +57,15 @@ class Change:
     version: str | None
     command: str | None
     detail: str
-    breaking: bool
+    breaking: bool  # wire-breaking
+    text_breaking: bool = False  # a name changes, every byte keeps its meaning
+
+    @property
+    def impact(self) -> str:
+        return "wire" if self.breaking else "text" if self.text_breaking else "none"
 
     def as_json(self) -> dict[str, Any]:
-        return dataclasses.asdict(self)
+        return {**dataclasses.asdict(self), "impact": self.impact}
 
 
 @dataclass(frozen=True)
@@ -53,21 +76,44 @@ class Diff:
 
     @property
     def breaking(self) -> tuple[Change, ...]:
+        """The wire-breaking changes."""
         return tuple(c for c in self.changes if c.breaking)
+
+    @property
+    def text_breaking(self) -> tuple[Change, ...]:
+        """The text-breaking changes (a change is in one class: wire-breaking ones are not among them)."""
+        return tuple(c for c in self.changes if c.impact == "text")
+
+    @property
+    def exit_code(self) -> int:
+        return EXIT_WIRE if self.breaking else EXIT_TEXT if self.text_breaking else EXIT_NONE
+
+    @property
+    def impact(self) -> str:
+        return "wire" if self.breaking else "text" if self.text_breaking else "none"
 
     def as_json(self) -> dict[str, Any]:
         return {"old": self.old, "new": self.new, "breaking": bool(self.breaking),
+                "text_breaking": bool(self.text_breaking), "impact": self.impact, "exit": self.exit_code,
                 "changes": [c.as_json() for c in self.changes]}
 
+    def footer(self) -> str:
+        if self.breaking:
+            return (f"wire-breaking (exit {EXIT_WIRE}): a file of a version in OLD changes meaning or judgement "
+                    "(BREAKING above)")
+        if self.text_breaking:
+            return (f"text-breaking only (exit {EXIT_TEXT}): every byte of OLD's versions keeps its meaning; names "
+                    "in the CUT and JSON forms or the C and Python bindings change (TEXT above)")
+        return (f"not breaking (exit {EXIT_NONE}): every version in OLD keeps its wire meaning and its names")
+
     def text(self) -> str:
-        n, b = len(self.changes), len(self.breaking)
-        lines = [f"cbfgen diff: {self.old} -> {self.new}: {n} change(s), {b} breaking"]
+        n, b, t = len(self.changes), len(self.breaking), len(self.text_breaking)
+        lines = [f"cbfgen diff: {self.old} -> {self.new}: {n} change(s), {b} wire-breaking, {t} text-breaking"]
         for c in self.changes:
-            mark = "BREAKING" if c.breaking else "        "
+            mark = {"wire": "BREAKING", "text": "TEXT"}.get(c.impact, "")
             where = f"{c.version or 'all'} {c.command or '-'}"
-            lines.append(f"  {mark}  {where:<22} {c.kind}: {c.detail}")
-        lines.append("breaking: the wire meaning of a version in OLD changes" if b
-                     else "not breaking: every version in OLD keeps its wire meaning")
+            lines.append(f"  {mark:<8}  {where:<22} {c.kind}: {c.detail}")
+        lines.append(self.footer())
         return "\n".join(lines) + "\n"
 
 
@@ -106,8 +152,10 @@ def compare_fields(old: Iterable[Field], new: Iterable[Field], version: str | No
     olds, news = list(old), list(new)
     out: list[Change] = []
 
-    def add(kind: str, detail: str) -> None:
-        out.append(Change(kind, version, command, f"{where}: {detail}", breaking))
+    def add(kind: str, detail: str, names_only: bool = False) -> None:
+        # A change of names only is text-breaking where a change of bytes would be wire-breaking.
+        out.append(Change(kind, version, command, f"{where}: {detail}", breaking and not names_only,
+                          breaking and names_only))
 
     new_by_name = {f.name: f for f in news}
     old_names = {f.name for f in olds}
@@ -138,7 +186,8 @@ def compare_fields(old: Iterable[Field], new: Iterable[Field], version: str | No
             continue
         matched.add(n.name)
         if (o.type, o.count, o.size) == (n.type, n.count, n.size):
-            add("field_renamed", f"{o.name} renamed to {n.name} at offset {o.offset} (the CUT and JSON forms change)")
+            add("field_renamed", f"{o.name} renamed to {n.name} at offset {o.offset}, the same bytes (the CUT and "
+                "JSON forms and the C and Python names change)", names_only=True)
         else:
             add("field_retyped", f"{describe_field(o)} replaced by {describe_field(n)}")
     for n in rest_new:
@@ -170,6 +219,11 @@ def _compare_layouts(old: tuple[Layout, ...], new: tuple[Layout, ...], version: 
     pairs, removed, added = _pair_layouts(old, new)
     for o, n in pairs:
         name = _pair_name(o, n)
+        if o.variant != n.variant and breaking:
+            # One version's layout under another variant name: its C and Python names change (between two
+            # versions, as on the docs' "Changes" page, each version has its own layout: not a rename).
+            out.append(Change("layout_variant_renamed", version, command,
+                              f"{_layout_name(o)} renamed to {_layout_name(n)}", False, breaking))
         if o.size != n.size:
             out.append(Change("layout_resized", version, command,
                               f"{name}: argument size {o.size} -> {n.size} byte(s)", breaking))
@@ -209,8 +263,8 @@ def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: 
                        and c.available_in(new_vid)]
             if renamed:
                 out.append(Change("command_renamed", new_vid, oc.name,
-                                  f"{oc.name} renamed to {renamed[0]} (code 0x{oc.code:02X}; the CUT and JSON forms "
-                                  "change)", breaking))
+                                  f"{oc.name} renamed to {renamed[0]}, the same code 0x{oc.code:02X} (the CUT "
+                                  "keyword, the JSON form and the C and Python names change)", False, breaking))
                 out += _compare_layouts(olays, new.command(renamed[0]).layouts_for(new_vid), new_vid, renamed[0],
                                         breaking)
             else:
@@ -254,17 +308,47 @@ def _previous(spec: Spec, vid: str) -> str | None:
     return ids[i - 1] if i > 0 else None
 
 
+def renames(old: Spec, new: Spec) -> dict[str, str]:
+    """The commands renamed from OLD to NEW: an old name NEW lacks -> the new name NEW gives its code."""
+    new_names, old_names = {c.name for c in new.commands}, {c.name for c in old.commands}
+    out: dict[str, str] = {}
+    for oc in old.commands:
+        if oc.name not in new_names:
+            nc = next((c for c in new.commands if c.code == oc.code and c.name not in old_names), None)
+            if nc is not None:
+                out[oc.name] = nc.name
+    return out
+
+
+def _renamed(value: Any, names: dict[str, str]) -> Any:
+    """A check attribute of OLD with its command names as NEW spells them."""
+    if isinstance(value, str):
+        return names.get(value, value)
+    if isinstance(value, tuple):
+        return tuple(_renamed(v, names) for v in value)
+    if dataclasses.is_dataclass(value) and not isinstance(value, type) and hasattr(value, "command"):
+        return dataclasses.replace(value, command=names.get(value.command, value.command))
+    return value
+
+
 def _checks(old: Spec, new: Spec) -> list[Change]:
     out: list[Change] = []
     old_ids = {v.id for v in old.versions}
     new_by_id = {c.id: c for c in new.checks}
+    names = renames(old, new)
 
     def applies_to_old(c: Check) -> bool:
         vs = getattr(c, "versions", ())
         return not vs or any(v in old_ids for v in vs)
 
+    moved = _check_renames(old, new, names)
     for oc in old.checks:
         nc = new_by_id.get(oc.id)
+        if nc is None and oc.id in moved:
+            # the same check under another id: every file is judged the same, but findings name the new id
+            out.append(Change("check_renamed", None, None, f"{oc.id} renamed to {moved[oc.id]} ({oc.kind}, "
+                              f"{oc.severity}; findings name the new id)", False, True))
+            continue
         if nc is None:
             out.append(Change("check_removed", None, None, f"{oc.id} ({oc.kind}, {oc.severity})",
                               oc.severity == "error"))
@@ -272,19 +356,22 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
         if oc.severity != nc.severity:
             out.append(Change("check_severity_changed", None, None, f"{oc.id}: {oc.severity} -> {nc.severity}",
                               applies_to_old(nc)))
-        for f in dataclasses.fields(oc):
-            if f.name in _CHECK_IGNORED:
-                continue
-            a, b = getattr(oc, f.name), getattr(nc, f.name)
+        for name in _judged_attrs(oc):
+            a, b = getattr(oc, name), getattr(nc, name)
             if a != b:
+                if _renamed(a, names) == b:  # the same check of a renamed command (reported as command_renamed)
+                    out.append(Change("check_changed", None, None, f"{oc.id}: {name} {_short(a)} -> {_short(b)} "
+                                      "(the renamed commands' new names)", False))
+                    continue
                 breaking = applies_to_old(nc) and "error" in (oc.severity, nc.severity)
-                if f.name in ("versions", "commands") and oc.kind == nc.kind == "availability":
-                    breaking = _covered(old, oc, old) != _covered(old, nc, new)  # new versions, commands: no
-                out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)}",
+                if name in ("versions", "commands") and oc.kind == nc.kind == "availability":
+                    # new versions, commands: no
+                    breaking = _covered(old, oc, old, {}) != _covered(old, nc, new, names)
+                out.append(Change("check_changed", None, None, f"{oc.id}: {name} {_short(a)} -> {_short(b)}",
                                   breaking))
     old_by_id = {c.id for c in old.checks}
     for nc in new.checks:
-        if nc.id not in old_by_id:
+        if nc.id not in old_by_id and nc.id not in moved.values():
             vs = getattr(nc, "versions", ())
             scope = f" for {', '.join(vs)}" if vs else ""
             out.append(Change("check_added", None, None, f"{nc.id} ({nc.kind}, {nc.severity}){scope}",
@@ -292,13 +379,39 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
     return out
 
 
-def _covered(old: Spec, check: Check, spec: Spec) -> set[tuple[str, str]]:
-    """The (version, command) pairs of OLD's versions and commands an availability check covers in spec."""
-    named = set(getattr(check, "commands", ()) or ())
+def _judged_attrs(c: Check) -> list[str]:
+    """The attributes of a check that define what it judges (not its id, severity, prose or line)."""
+    return [f.name for f in dataclasses.fields(c) if f.name not in _CHECK_IGNORED]
+
+
+def _judges(c: Check, names: dict[str, str]) -> tuple[Any, ...]:
+    """What a check judges, and how severely (its id and prose aside), its command names as NEW spells them."""
+    return (c.kind, c.severity, *(_renamed(getattr(c, name), names) for name in _judged_attrs(c)))
+
+
+def _check_renames(old: Spec, new: Spec, names: dict[str, str]) -> dict[str, str]:
+    """Old check id -> new id, for a check of OLD that NEW has under another id and nothing else changed."""
+    gone = [c for c in old.checks if c.id not in {n.id for n in new.checks}]
+    came = [c for c in new.checks if c.id not in {o.id for o in old.checks}]
+    out: dict[str, str] = {}
+    for oc in gone:
+        same = [nc for nc in came if nc.id not in out.values() and type(nc) is type(oc)
+                and _judges(nc, {}) == _judges(oc, names)]
+        if len(same) == 1:
+            out[oc.id] = same[0].id
+    return out
+
+
+def _covered(old: Spec, check: Check, spec: Spec, names: dict[str, str]) -> set[tuple[str, str]]:
+    """The (version, command) pairs of OLD's versions and commands an availability check covers in spec, each
+    command named as OLD names it (names: OLD's name -> spec's, for a renamed command)."""
+    back = {n: o for o, n in names.items()}
+    named = {back.get(x, x) for x in getattr(check, "commands", ()) or ()}
     old_ids = {v.id for v in old.versions}
     old_names = {c.name for c in old.commands}
-    return {(v, c.name) for v in check.versions if v in old_ids for c in spec.commands
-            if c.name in old_names and not c.available_in(v) and (not named or c.name in named)}
+    return {(v, back.get(c.name, c.name)) for v in check.versions if v in old_ids for c in spec.commands
+            if back.get(c.name, c.name) in old_names and not c.available_in(v)
+            and (not named or back.get(c.name, c.name) in named)}
 
 
 def _only_gates_new(old: Spec, new: Spec, check: Check) -> bool:
@@ -446,3 +559,30 @@ def version_steps(spec: Spec) -> list[tuple[str, str, list[Change]]]:
 
 def render(d: Diff, as_json: bool) -> str:
     return json.dumps(d.as_json(), indent=2) + "\n" if as_json else d.text()
+
+
+def main(argv: list[str]) -> int:
+    """`cbfgen diff OLD NEW [--json] [--old-name NAME]`: the diff on stdout, the exit code of its worst class."""
+    codes = "; ".join(f"{code} {what}" for code, what in sorted(EXIT_CODES))
+    ap = argparse.ArgumentParser(prog="cbfgen diff", description=(
+        "List every change from OLD to NEW by version and command, and mark each change BREAKING when it changes "
+        "the wire meaning of a version OLD already has (a file of that version means something else), or TEXT "
+        "when every byte keeps its meaning but a name changes (a CUT keyword, a JSON key, a C or Python name: a "
+        f"rename). Exit codes: {codes}."))
+    ap.add_argument("old", help="the spec before the revision")
+    ap.add_argument("new", help="the spec after the revision")
+    ap.add_argument("--json", action="store_true",
+                    help="one JSON document for tools (`impact` and `exit` say the class)")
+    ap.add_argument("--old-name", help="name OLD by this in the output (default: its path)")
+    try:
+        args = ap.parse_args(argv)
+    except SystemExit as exc:  # argparse: a usage error is bad input; --help is not
+        return EXIT_BAD_INPUT if exc.code else EXIT_NONE
+    try:
+        old, new = load(args.old), load(args.new)
+    except SpecError as exc:
+        print(f"cbfgen diff: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    result = diff(old, new, args.old_name or args.old, args.new)
+    sys.stdout.write(render(result, args.json))
+    return result.exit_code

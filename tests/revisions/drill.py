@@ -13,7 +13,9 @@ meaning changes), and what `cbfgen diff` must say about it.
 ones) into a temporary folder per fixture, applies the fixture there, and
 runs, in order: `cbfgen diff` (the classification the fixture states),
 `make generate`, `make golden` (the golden .cbf re-assembled from their
-.hex: the assembler follows the revised checksums), `make conformance`
+.hex: the assembler follows the revised checksums; then the docs made from
+them regenerated), a check that generated/ is fresh (the README's order
+leaves nothing to regenerate), `make conformance`
 (every binding) and the test suite. `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
 the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
@@ -28,11 +30,18 @@ item. Operations:
     merge    update the mapping at path with value
     append   append value to the list(s) at path
     extend_where   append value to every list at path that holds `contains`
-    remove   delete the item at path, or, with value, remove value from the list(s) at path
+    remove   delete the item at path, or, with value, remove value from every list at path
+             that holds it (at least one)
+    prune    drop the items of the list(s) at path whose `key` is empty
+    sub      replace the regular expression `pattern` by value in the text at path
     append_line    (no path) append the line value to the text `file:` (a known-failure list)
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
-expectation of a golden case, a binding's known-failure list).
-`files:` maps new paths to their text.
+expectation of a golden case, a binding's known-failure list; `optional:
+true` skips it when that file is missing). `files:` maps new paths to their
+text. Ids are never written by hand: `${...}` in a fixture is chosen for the
+spec it applies to (the next free version, command code and clause, the
+newest version, a command's code: `variables` and `render` below), so a
+fixture applies on top of any spec, another fixture's result included.
 """
 
 from __future__ import annotations
@@ -95,7 +104,8 @@ class Fixture:
     path: Path
     title: str
     adds: str
-    breaking: bool
+    breaking: bool  # wire-breaking
+    text_breaking: bool  # text-breaking (a name changes, every byte keeps its meaning)
     expect: tuple[dict[str, Any], ...]
     edits: tuple[dict[str, Any], ...]
     files: dict[str, str]
@@ -105,9 +115,12 @@ def fixtures() -> list[Path]:
     return sorted(HERE.glob("*.yaml"))
 
 
-def load_fixture(path: Path) -> Fixture:
+def load_fixture(path: Path, spec: dict[str, Any] | None = None) -> Fixture:
+    """The fixture at path, its ${...} ids chosen for spec (a parsed spec/cbf.yaml; default this tree's)."""
     try:
-        doc = yaml.load(path.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
+        text = path.read_text(encoding="utf-8")
+        base = spec if spec is not None else read_spec(REPO / SPEC)
+        doc = yaml.load(render(text, base, path.name), Loader=_YAML_LOADER)
     except (OSError, yaml.YAMLError) as exc:
         raise FixtureError(f"{path}: {' '.join(str(exc).split())}") from None
     if not isinstance(doc, dict):
@@ -116,7 +129,93 @@ def load_fixture(path: Path) -> Fixture:
     if missing:
         raise FixtureError(f"{path}: missing {', '.join(sorted(missing))}")
     return Fixture(path.stem, path, str(doc["title"]), " ".join(str(doc["adds"]).split()), bool(doc["breaking"]),
-                   tuple(doc["expect"]), tuple(doc["edits"]), dict(doc.get("files") or {}))
+                   bool(doc.get("text_breaking", False)), tuple(doc["expect"]), tuple(doc["edits"]),
+                   dict(doc.get("files") or {}))
+
+
+def read_spec(path: Path) -> Any:
+    return yaml.load(path.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
+
+
+# -- free ids -------------------------------------------------------------------
+# A fixture names what it adds through ${...}, chosen for the spec it applies to, so that it applies on top
+# of any spec: after a real revision, and after another fixture (the quick drill applies them one after the
+# other to one tree). ${code:NAME} and ${dec:NAME} are a command's code in hex (two digits) and decimal;
+# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name.
+_VAR = re.compile(r"\$\{([a-z][a-z0-9_]*)(?::([A-Za-z0-9_]+))?\}")
+_FIRST_FREE_CODE = 0x70  # where the search for a free command code starts (the drill's PROBE)
+
+
+def _key(v: dict[str, Any]) -> tuple[int, int]:
+    return int(v["major"]), int(v.get("minor") or 0)
+
+
+def _has(cmd: dict[str, Any], vid: str) -> bool:
+    return any(vid in lay.get("versions", ()) for lay in cmd.get("layouts", ()))
+
+
+def _flow(items: list[str]) -> str:
+    return json.dumps(items)
+
+
+def _prose(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def variables(doc: dict[str, Any]) -> dict[str, str]:
+    """The free ids and the facts a fixture may name, read from a parsed spec."""
+    versions = list(doc["versions"])
+    newest = max(versions, key=_key)
+    nid = str(newest["id"])
+    major = max(int(v["major"]) for v in versions) + 1
+    cmds = list(doc["commands"])
+    used_codes = {int(c["code"]) for c in cmds}
+    code = next(c for c in [*range(_FIRST_FREE_CODE, 256), *range(1, _FIRST_FREE_CODE)] if c not in used_codes)
+    ids = {str(x.get(k)) for group in ("checks", "versions", "commands") for x in doc.get(group, ())
+           for k in ("id", "clause")} | {str(lay.get("clause")) for c in cmds for lay in c.get("layouts", ())}
+    clause = next(f"9.{n}" for n in range(1, 1000) if f"9.{n}" not in ids)
+    # The command a new version drops: the first of the newest version whose arguments are all f4 in one layout.
+    drop = next((c for c in cmds for lay in c["layouts"] if nid in lay["versions"]
+                 and lay.get("args") and all(a.get("type") == "f4" for a in lay["args"])),
+                None)
+    drop_lay = next((lay for lay in drop["layouts"] if nid in lay["versions"]), {}) if drop else {}
+    drop_floats = sum(int(a.get("count", 1)) for a in drop_lay.get("args", ()))
+    lacks = [str(c["name"]) for c in cmds if not _has(c, nid) or c is drop]
+    writable = [str(v["id"]) for v in versions if v.get("writable")]
+    unwritable = [v for v in versions if not v.get("writable")]
+    out = {"newest_version": nid, "newest_major": str(newest["major"]), "newest_header": str(newest["header"]),
+           "new_version": f"{major}.0", "new_major": str(major), "free_clause": clause, "free_code": str(code),
+           "free_code_hex": f"{code:02x}", "writable": _flow(writable),
+           "writable_with_new": _prose([*writable, f"{major}.0"]),
+           "unwritable": _flow([str(v["id"]) for v in unwritable]),
+           "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
+           "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing"}
+    if drop is not None:
+        out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
+                    "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
+                    "drop_f32": " ".join(str(n) for n in range(1, drop_floats + 1))})
+    return out
+
+
+def render(text: str, doc: dict[str, Any], where: str) -> str:
+    """text with each ${...} replaced by its value for the spec doc (FixtureError for an unknown one)."""
+    values = variables(doc)
+    by_name = {str(c["name"]): int(c["code"]) for c in doc["commands"]}
+
+    def one(m: re.Match[str]) -> str:
+        var, arg = m.group(1), m.group(2)
+        if arg is None and var in values:
+            return values[var]
+        if var in ("code", "dec") and arg in by_name:
+            return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
+        if var == "name" and arg is not None:
+            return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
+        raise FixtureError(f"{where}: {m.group(0)} names nothing in this spec")
+
+    out = _VAR.sub(one, text)
+    if "${" in out:
+        raise FixtureError(f"{where}: {out[out.index('${'):].split(chr(10))[0]!r}: not a ${{name}} or ${{name:ARG}}")
+    return out
 
 
 # -- edits ----------------------------------------------------------------------
@@ -188,14 +287,24 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
         if not hits:
             raise FixtureError(f"{path}: no list holds {edit['contains']!r}")
     elif op == "remove":
-        if "value" in edit:
-            for c, k in slots:
-                if value not in c[k]:
-                    raise FixtureError(f"{path}: {value!r} is not there")
+        if "value" in edit:  # from every list at path that holds it (at least one)
+            held = [(c, k) for c, k in slots if value in c[k]]
+            if not held:
+                raise FixtureError(f"{path}: {value!r} is not there")
+            for c, k in held:
                 c[k].remove(value)
         else:
             for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
                 del c[k]
+    elif op == "prune":  # drop the items of the list(s) at path whose `key` is empty (a layout left no version)
+        for c, k in slots:
+            c[k][:] = [item for item in c[k] if not (isinstance(item, dict) and not item.get(edit["key"]))]
+    elif op == "sub":  # a regular-expression replacement in the text at path
+        for c, k in slots:
+            text, n = re.subn(str(edit["pattern"]), str(value), str(c[k]))
+            if not n:
+                raise FixtureError(f"{path}: {edit['pattern']!r} does not match")
+            c[k] = text
     else:
         raise FixtureError(f"{path}: unknown op {op!r}")
 
@@ -205,16 +314,21 @@ def _dump(doc: Any) -> str:
 
 
 def apply(fx: Fixture, root: Path) -> None:
-    """Apply fx to the tree at root: the spec, the YAML files it edits, the files it adds."""
+    """Apply fx, its ids chosen for the spec at root, to the tree at root: the spec, the YAML files it edits,
+    the files it adds. An edit of another file marked `optional: true` is skipped when that file is missing
+    (a golden case of a version the spec at root does not have)."""
+    fx = load_fixture(fx.path, read_spec(root / SPEC))
     docs: dict[str, Any] = {}
     for i, edit in enumerate(fx.edits):
         rel = str(edit.get("file", SPEC))
+        if rel != SPEC and edit.get("optional") and not (root / rel).exists():
+            continue
         if edit.get("op") == "append_line":  # a line of a text file (a binding's known-failure list)
             with (root / rel).open("a", encoding="utf-8") as fh:
                 fh.write(str(edit["value"]).rstrip("\n") + "\n")
             continue
         if rel not in docs:
-            docs[rel] = yaml.load((root / rel).read_text(encoding="utf-8"), Loader=_YAML_LOADER)
+            docs[rel] = read_spec(root / rel)
         try:
             apply_edit(docs[rel], edit)
         except FixtureError as exc:
@@ -228,8 +342,9 @@ def apply(fx: Fixture, root: Path) -> None:
 
 
 def revised_spec(fx: Fixture, base: Path, out: Path) -> Path:
-    """The spec at base, revised by fx, written to out/cbf.yaml (no other file)."""
-    doc = yaml.load(base.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
+    """The spec at base, revised by fx (its ids chosen for base), written to out/cbf.yaml (no other file)."""
+    doc = read_spec(base)
+    fx = load_fixture(fx.path, doc)
     for i, edit in enumerate(fx.edits):
         if str(edit.get("file", SPEC)) == SPEC:
             try:
@@ -244,19 +359,30 @@ def revised_spec(fx: Fixture, base: Path, out: Path) -> Path:
 
 def check_diff(fx: Fixture, base: Path, revised: Path, python: str = sys.executable) -> list[str]:
     """What is wrong with `cbfgen diff base revised --json` for fx; empty when it says what fx expects."""
+    fx = load_fixture(fx.path, read_spec(base))  # what it expects, its ids chosen for base
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "generator"), os.environ.get("PYTHONPATH", "")]))
     res = subprocess.run([python, "-m", "cbfgen", "diff", str(base), str(revised), "--json"], capture_output=True,
                          text=True, env=env, cwd=REPO)
-    if res.returncode not in (0, 1):
+    if res.returncode not in (0, 1, 3):
         return [f"cbfgen diff exit {res.returncode}: {res.stderr.strip()}"]
-    doc = json.loads(res.stdout)
+    return judge(fx, res.returncode, json.loads(res.stdout))
+
+
+def judge(fx: Fixture, code: int, doc: dict[str, Any]) -> list[str]:
+    """What is wrong with cbfgen diff's exit code and JSON document for fx (its ids chosen for the spec the
+    diff starts from); empty when they say what fx expects."""
     problems = []
-    if res.returncode != (1 if fx.breaking else 0) or doc["breaking"] != fx.breaking:
-        problems.append(f"expected {'breaking' if fx.breaking else 'not breaking'}, cbfgen diff exit {res.returncode}")
+    exit_code = 1 if fx.breaking else 3 if fx.text_breaking else 0
+    if code != exit_code or doc["breaking"] != fx.breaking or (fx.text_breaking and not doc["text_breaking"]):
+        problems.append(f"expected {_verdict(fx)} (exit {exit_code}), cbfgen diff exit {code}")
     for want in fx.expect:
         if not any(all(c.get(k) == v for k, v in want.items()) for c in doc["changes"]):
             problems.append(f"no change {want}")
     return problems
+
+
+def _verdict(fx: Fixture) -> str:
+    return "wire-breaking" if fx.breaking else "text-breaking" if fx.text_breaking else "not breaking"
 
 
 # -- the drill --------------------------------------------------------------------
@@ -308,8 +434,11 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str,
                         runner, env)]
     else:
         conformance = [("conformance (every binding)", [*make, "conformance"], {})]
+    # The README's walkthrough order (generate, then golden) leaves generated/ fresh: make has nothing to regenerate.
+    fresh = ("generated/ fresh after golden (`make -q`)", [*make, "-q", "build/stamps/generate-py"], {})
     return [("generate", [*make, "generate"], {}),
             ("golden", [*make, "golden"], {}),
+            fresh,
             *conformance,
             ("pytest" + (" (subset)" if quick else ""), pytest, env)]
 
@@ -333,7 +462,7 @@ def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
 
 def _said(fx: Fixture, problems: list[str], t0: float, what: str) -> None:
     print(f"{fx.name}: {fx.title}\n  adds: {fx.adds}")
-    verdict = "breaking" if fx.breaking else "not breaking"
+    verdict = _verdict(fx)
     print(f"  {'ok' if not problems else 'FAIL':<4} cbfgen diff says {verdict}{'' if not problems else ': '}"
           f"{'; '.join(problems)} ({time.monotonic() - t0:.1f} s {what})")
 
