@@ -22,7 +22,7 @@ import os
 import stat
 import sys
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -397,9 +397,8 @@ def _json_finding(d: dict[str, Any]) -> str:
     return "  {\n" + body + "\n  }"
 
 
-def cmd_validate(a: argparse.Namespace) -> int:
-    data = _read(a.file, _max_file_size())
-    _refuse_not_cbf(a.file, data)
+def _validate_options(a: argparse.Namespace) -> dict[str, Any]:
+    """The options every input is validated with, read (and refused) once for the batch."""
     cutters = None
     if a.cutters:
         from .cutters import load_cutter_table
@@ -417,15 +416,128 @@ def cmd_validate(a: argparse.Namespace) -> int:
             machine = load_machine(a.machine)
         except MachineError as exc:
             raise _Fail(exc.message) from None  # names the file and the JSON path already
-    # The engine (and numpy) is imported once every input has been read and checked: a refused
-    # file, cutter table or machine file costs no more than the refusal.
+    return {"profile": a.profile, "part_number": a.part_number, "cutters": cutters, "machine": machine}
+
+
+def _expand(paths: Sequence[str]) -> list[tuple[str, str | None]]:
+    """Each input as (path, why it is refused or None), in the order given: a folder is its
+    ``*.cbf`` files, recursively, sorted by path; a folder with none is refused."""
+    out: list[tuple[str, str | None]] = []
+    for path in paths:
+        if path != "-" and Path(path).is_dir():
+            try:
+                found = sorted(str(p) for p in Path(path).rglob("*.cbf") if not p.is_dir())
+            except OSError as exc:
+                out.append((path, _unreadable(path, exc).message))
+                continue
+            if not found:
+                out.append((path, f"{path}: is a directory holding no *.cbf file"))
+            out.extend((p, None) for p in found)
+        else:
+            out.append((path, None))
+    return out
+
+
+_BATCH_OPTIONS: dict[str, Any] = {}  # set before the process pool forks: its workers read it
+
+
+def _validate_one(item: tuple[str, str | None, bytes | None]) -> Any:
+    """One input's FileResult (cbf.report): its findings, or the one line that refuses it."""
+    from .report import FileResult
     from .validation import iter_findings
 
-    # Findings are printed as they are made, never all held: a file can give millions.
-    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters, machine=machine)
+    path, refused, data = item
+    if refused is not None:
+        return FileResult(path, refused=refused)
+    try:
+        if data is None:
+            data = _read(path, _max_file_size())
+        _refuse_not_cbf(path, data)
+    except _Fail as exc:
+        return FileResult(path, refused=exc.message)
+    return FileResult(path, tuple(iter_findings(data, **_BATCH_OPTIONS)))
+
+
+def _jobs(text: str) -> int:
+    n = _count(text)
+    return n or len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else n or (os.cpu_count() or 1)
+
+
+def _results(items: list[tuple[str, str | None, bytes | None]], jobs: int) -> Iterator[Any]:
+    """Each input's result, in input order. A process pool (forked after the engine and numpy are
+    imported, so no worker imports them again) only where it pays: several cores, many files."""
+    if jobs <= 1 or len(items) < 4 * jobs or not hasattr(os, "fork"):
+        yield from map(_validate_one, items)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
+        yield from pool.map(_validate_one, items, chunksize=max(1, min(64, len(items) // (8 * jobs))))
+
+
+def cmd_validate(a: argparse.Namespace) -> int:
+    fmt = "json" if a.json else a.format
+    if len(a.files) == 1 and fmt in ("text", "json") and (a.files[0] == "-" or not Path(a.files[0]).is_dir()):
+        return _validate_stream(a, a.files[0], fmt)
+    from . import report
+
+    if a.files.count("-") > 1:
+        raise _Fail("-: standard input given more than once")
+    expanded = _expand(a.files)
+    if len(expanded) == 1 and expanded[0][1] is not None:
+        raise _Fail(expanded[0][1])  # one input, refused: one line, nothing on stdout (as for one file)
+    items: list[tuple[str, str | None, bytes | None]] = []
+    for path, refused in expanded:
+        data = None
+        if path == "-" and refused is None:  # read here: a worker process cannot share stdin
+            try:
+                data = _read(path, _max_file_size())
+            except _Fail as exc:
+                refused = exc.message
+        items.append((path, refused, data))
+    _BATCH_OPTIONS.clear()
+    _BATCH_OPTIONS.update(_validate_options(a))
+    from . import validation  # noqa: F401  (the engine and numpy, imported once, before any fork)
+
+    results: list[Any] = []
+    for r in _results(items, a.jobs):
+        results.append(r)
+        if r.refused is not None and fmt in ("text", "github"):
+            sys.stderr.write(f"cbf: {r.refused}\n")
+        if fmt == "text" and r.refused is None:
+            _out(report.text(r, a.profile, a.max_findings))
+        elif fmt == "github":
+            _out(report.github(r))
+    if fmt == "text":
+        _out(report.summary_line(results))
+    elif fmt == "github":
+        sys.stderr.write(report.summary_line(results))
+    elif fmt == "json":
+        _out(report.as_json(results, a.profile))
+    elif fmt == "junit":
+        _out(report.junit(results, a.profile))
+    elif fmt == "sarif":
+        _out(report.sarif(results, a.profile))
+    else:
+        _out(report.gitlab(results))
+    return report.batch_status(results)
+
+
+def _validate_stream(a: argparse.Namespace, path: str, fmt: str) -> int:
+    """One file: its findings printed as they are made, never all held (a file can give millions)."""
+    data = _read(path, _max_file_size())
+    _refuse_not_cbf(path, data)
+    options = _validate_options(a)
+    # The engine (and numpy) is imported once every input has been read and checked: a refused
+    # file, cutter table or machine file costs no more than the refusal.
+    from .report import finding_line, more_line, verdict_line
+    from .validation import iter_findings
+
+    findings = iter_findings(data, **options)
     errors = total = 0
-    if a.json:
-        head = json.dumps({"file": a.file, "profile": a.profile}, indent=1)
+    if fmt == "json":
+        head = json.dumps({"file": path, "profile": a.profile}, indent=1)
         _out(head[:-2] + ',\n "findings": [')  # the same text as json.dumps of the whole document
         for f in findings:
             errors += f.severity == "error"
@@ -437,13 +549,10 @@ def cmd_validate(a: argparse.Namespace) -> int:
             errors += f.severity == "error"
             total += 1
             if a.max_findings == 0 or total <= a.max_findings:
-                where = f"record {f.record}" if f.record is not None else "header"
-                _out(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
+                _out(finding_line(path, f))
         if a.max_findings and total > a.max_findings:
-            _out(f"{a.file}: {total - a.max_findings} more finding(s) not shown "
-                 f"(--max-findings 0 prints all, --json lists all)\n")
-        verdict = "FAIL" if errors else "ok"
-        _out(f"{a.file}: {verdict}: {errors} error(s), {total - errors} warning(s) [profile {a.profile}]\n")
+            _out(more_line(path, total - a.max_findings))
+        _out(verdict_line(path, errors, total - errors, a.profile))
     return EXIT_FINDINGS if errors else EXIT_OK
 
 
@@ -665,6 +774,11 @@ def version_text() -> str:
     return f"cbf {__version__} (spec {SPEC_REVISION})"
 
 
+def _schema_path(name: str) -> str:
+    """Where the installed package keeps a JSON schema (shipped beside the code)."""
+    return str(Path(__file__).resolve().parent / f"{name}.schema.json")
+
+
 def parser() -> argparse.ArgumentParser:
     from . import tables as T
 
@@ -691,17 +805,26 @@ def parser() -> argparse.ArgumentParser:
                    help="JSON input only: write stored sequence numbers, count and checksums as given "
                         "(reproduce a faulty file); refused for CUT input, which stores none")
     e.set_defaults(func=cmd_encode)
-    v = sub.add_parser("validate", help="run every integrity check")
-    v.add_argument("file", help="CBF file, or - for stdin")
+    v = sub.add_parser("validate", help="run every integrity check on files and folders",
+                       description="Validate CBF files: each FILE, each folder's *.cbf files (recursively, "
+                                   "sorted), - for stdin; in one process, results in input order. Exit status: "
+                                   "the worst of the inputs (0 ok, 1 an error finding, 2 an input not validated).")
+    v.add_argument("files", nargs="+", metavar="file", help="CBF file, folder (its *.cbf files), or - for stdin")
     v.add_argument("--profile", choices=profiles, default=profiles[0])
     v.add_argument("--part-number", help="implant part number to compare (check 6.1.1)")
     v.add_argument("--cutters", help="cutter table, CSV or YAML: name, length, radius (check 6.1.2)")
     v.add_argument("--machine", metavar="FILE",
-                   help="machine limits, JSON or YAML (schema cbf/machine.schema.json): breaches become errors; "
-                        "without it the spec's default machine gives warnings (check machine_limits)")
-    v.add_argument("--json", action="store_true", help="print findings as JSON (always all of them)")
+                   help=f"machine limits, JSON or YAML (schema: {_schema_path('machine')}): breaches become "
+                        f"errors; without it the spec's default machine gives warnings (check machine_limits)")
+    v.add_argument("--format", choices=["text", "json", "junit", "sarif", "github", "gitlab"], default="text",
+                   help="text (default); json; junit (JUnit XML); sarif (SARIF 2.1.0); github (workflow "
+                        "annotation commands); gitlab (code quality report)")
+    v.add_argument("--json", action="store_true", help="the same as --format json")
     v.add_argument("--max-findings", type=_count, default=50, metavar="N",
-                   help="print at most N findings, then how many more there are; 0 prints all (default 50)")
+                   help="text: print at most N findings a file, then how many more there are; 0 prints all "
+                        "(default 50)")
+    v.add_argument("-j", "--jobs", type=_jobs, default=_jobs("0"), metavar="N",
+                   help="processes for many files (default 0: every core this process may use)")
     v.set_defaults(func=cmd_validate)
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
