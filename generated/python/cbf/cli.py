@@ -707,12 +707,24 @@ def cmd_stats(a: argparse.Namespace) -> int:
 
 
 def cmd_diff(a: argparse.Namespace) -> int:
+    import time
+
     from . import semdiff
     from . import tables as T
 
-    ma, mb = _load_any(a.a), _load_any(a.b)
+    start = time.monotonic()
+
+    def progress(message: str) -> None:  # a long run says what it is doing; a short one stays quiet
+        if time.monotonic() - start > 1.0:
+            sys.stderr.write(f"cbf diff: {message} ({time.monotonic() - start:.1f} s)\n")
+            sys.stderr.flush()
+
+    ma = _load_any(a.a)
+    progress(f"read {a.a}: {len(ma.records)} records")
+    mb = _load_any(a.b)
+    progress(f"read {a.b}: {len(mb.records)} records")
     tol = T.TOL["position_mm"] if a.tol is None else a.tol
-    d = semdiff.diff(ma, mb, tol)
+    d = semdiff.diff(ma, mb, tol, progress)
     if a.json:
         sys.stdout.write(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
     else:
