@@ -29,6 +29,14 @@ from typing import Any, NoReturn
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
 
+class _Usage(Exception):
+    """Bad usage found after parsing: the line argparse would print, exit 2."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.message = message
+
+
 class _Fail(Exception):
     def __init__(self, message: str) -> None:
         super().__init__(message)
@@ -336,10 +344,62 @@ def cmd_decode(a: argparse.Namespace) -> int:
 
 
 def cmd_encode(a: argparse.Namespace) -> int:
+    if a.check:
+        return _encode_check(a)
+    if a.output is None:
+        raise _Usage("cbf encode: the following arguments are required: -o/--output (see cbf encode --help)")
+    if len(a.files) > 1:
+        raise _Usage("cbf encode: one FILE with -o; several only with --check (see cbf encode --help)")
+    a.file = a.files[0]
+    _write(a.output, _encode_one(a))
+    return EXIT_OK
+
+
+def _cut_line_of(text: str, message: str) -> int | None:
+    """The CUT line of the record an encode error names ("record N: ..."), or None."""
+    import re
+
+    from . import tables as T
+
+    m = re.search(r"\brecord (\d+)\b", message)
+    if m is None:
+        return None
+    want = int(m.group(1))
+    ext = T.CUT["extensions"]
+    fold = str.lower if T.CUT["keyword_case"] == "lower" else str
+    not_records = {fold(T.CUT[k]) for k in ("header_keyword", "header_ext_keyword", "checksum_keyword")} | \
+        {fold(ext["version_keyword"]), fold(ext["field_keyword"])}
+    index = -1
+    for n, line in enumerate(text.splitlines(), 1):
+        word = line.strip(" ").split(" ", 1)[0]
+        if word and fold(word) not in not_records:
+            index += 1
+            if index == want:
+                return n
+    return None
+
+
+def _encode_check(a: argparse.Namespace) -> int:
+    """--check: encode each file in memory, write nothing; one line per file that does not encode."""
+    if a.output is not None:
+        raise _Usage("cbf encode: --check writes nothing: drop -o (see cbf encode --help)")
+    status = EXIT_OK
+    for path in a.files:
+        a.file = path
+        try:
+            _encode_one(a)
+        except _Fail as exc:
+            sys.stderr.write(f"cbf: {exc.message}\n")
+            status = EXIT_USAGE
+    return status
+
+
+def _encode_one(a: argparse.Namespace) -> bytes:
     from .errors import CbfError
     from .writer import encode
 
-    _check_output(a.output)
+    if a.output is not None:
+        _check_output(a.output)
     text = _read_text(a.file, 64 * _max_file_size())
     if not text.strip():
         raise _Fail(f"{a.file}: empty input: nothing to encode")
@@ -367,11 +427,13 @@ def cmd_encode(a: argparse.Namespace) -> int:
             from .cut import from_cut
 
             model = from_cut(text, version=a.version, profile=a.profile)
-        out = encode(model, keep_stored=a.keep_stored, profile=a.profile)
+        return encode(model, keep_stored=a.keep_stored, profile=a.profile)
     except CbfError as exc:
+        if kind == "cut" and exc.line is None:
+            line = _cut_line_of(text, str(exc))
+            if line is not None:  # CUT input: the line people edit, not an offset in bytes they never saw
+                raise _Fail(f"{a.file}: line {line}: {exc.message}") from None
         raise _Fail(f"{a.file}: {exc}") from None
-    _write(a.output, out)
-    return EXIT_OK
 
 
 def _refuse_not_cbf(path: str, data: bytes) -> None:
@@ -562,9 +624,18 @@ def cmd_info(a: argparse.Namespace) -> int:
     model = _decode(a.file)
     h = model.header
     vid = T.version_id(*model.version)
+    info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
+    counts = Counter(r.name or f"unknown 0x{r.code:02X}" for r in model.records)
+    by_count = sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))
+    if a.json:
+        header = {f.name: getattr(h, f.name).hex() if f.kind == "bytes" else getattr(h, f.name) for f in info.fields}
+        doc = {"schema": 1, "file": a.file, "version": f"{model.version[0]}.{model.version[1]}", "version_id": vid,
+               "read_as": model.version_id, "header": header, "records": len(model.records),
+               "commands": dict(by_count), "trailing_bytes": len(model.trailing)}
+        _out(json.dumps(doc, indent=1) + "\n")
+        return EXIT_OK
     out = [f"file: {a.file}",
            f"version: {model.version[0]}.{model.version[1]} ({vid or 'unknown; read as ' + T.FALLBACK_VERSION})"]
-    info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
     for f in info.fields:
         v = getattr(h, f.name)
         if f.kind == "bytes":
@@ -573,8 +644,7 @@ def cmd_info(a: argparse.Namespace) -> int:
             v = f"0x{v:0{2 * f.size}X}"
         out.append(f"{f.name}: {v}")
     out.append(f"records: {len(model.records)}")
-    counts = Counter(r.name or f"unknown 0x{r.code:02X}" for r in model.records)
-    for name, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
+    for name, n in by_count:
         out.append(f"  {name}: {n}")
     if model.trailing:
         out.append(f"trailing bytes: {len(model.trailing)}")
@@ -803,13 +873,19 @@ def parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
     d = sub.add_parser("decode", help="CBF to canonical JSON or CUT text")
     d.add_argument("file", help="CBF file, or - for stdin")
-    d.add_argument("--to", choices=["json", "cut"], default="json")
+    d.add_argument("--to", choices=["json", "cut"], default="json",
+                   help="canonical JSON (default; PROTOCOL.md's shape, schema: "
+                        f"{_schema_path('canonical')}) or CUT text (cbf encode reads both back)")
     d.add_argument("--profile", choices=profiles, default=profiles[0], help="for CUT output")
     d.add_argument("-o", "--output", default="-", help="output file (default: stdout)")
     d.set_defaults(func=cmd_decode)
     e = sub.add_parser("encode", help="CUT text or canonical JSON to CBF")
-    e.add_argument("file", help="FILE.cut or FILE.json, or - for stdin")
-    e.add_argument("-o", "--output", required=True, help="output CBF file, or - for stdout")
+    e.add_argument("files", nargs="+", metavar="file", help="FILE.cut or FILE.json, or - for stdin (several with "
+                                                             "--check)")
+    e.add_argument("-o", "--output", help="output CBF file, or - for stdout (required unless --check)")
+    e.add_argument("--check", action="store_true",
+                   help="only check that each file encodes (a pre-commit hook on *.cut): write nothing, one line "
+                        "per file that does not, exit 2 then")
     e.add_argument("--version", choices=writable, help=f"CBF version for CUT input (default {T.DEFAULT_VERSION})")
     e.add_argument("--profile", choices=profiles, default=profiles[0])
     e.add_argument("--input-format", choices=["cut", "json"], help="default: from the extension or content")
@@ -840,6 +916,7 @@ def parser() -> argparse.ArgumentParser:
     v.set_defaults(func=cmd_validate)
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
+    i.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('info')})")
     i.set_defaults(func=cmd_info)
     _tool_parsers(sub, profiles, writable)
     return p
@@ -887,15 +964,16 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
     s = sub.add_parser("stats", help="toolpath summary: bounding box, path length, time estimate, shapes, "
                                      "cutters, phases, checkpoints")
     s.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
-    s.add_argument("--json", action="store_true", help="print JSON (shape: schemas/stats.schema.json)")
+    s.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('stats')})")
     s.set_defaults(func=cmd_stats)
     f = sub.add_parser("diff", help="semantic diff of two files (CBF or CUT on either side); exit 0 equal "
                                     "within --tol, 1 differ, 2 bad input")
     f.add_argument("a", help="first file (CBF, CUT or JSON)")
     f.add_argument("b", help="second file (CBF, CUT or JSON)")
     f.add_argument("--tol", type=_mm, metavar="MM",
-                   help=f"numbers equal within this (default {T.TOL['position_mm']}, tolerances.position_mm)")
-    f.add_argument("--json", action="store_true", help="print JSON (shape: schemas/diff.schema.json)")
+                   help=f"every number (mm, m/s, ... in its own unit) is equal within this (default "
+                        f"{T.TOL['position_mm']}, tolerances.position_mm)")
+    f.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('diff')})")
     f.set_defaults(func=cmd_diff)
     g = sub.add_parser("plot", help="draw the toolpath: isometric view and three projections (needs matplotlib, "
                                     "the plot extra)")
@@ -919,6 +997,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return code
     except _Fail as exc:
         sys.stderr.write(f"cbf: {exc.message}\n")
+        return EXIT_USAGE
+    except _Usage as exc:
+        sys.stderr.write(f"{exc.message}\n")
         return EXIT_USAGE
     except _StdoutFailed as exc:
         _drop_stdout()

@@ -384,7 +384,8 @@ def render(d: Diff, a: Cbf, b: Cbf, path_a: str, path_b: str) -> str:
                 f"{x.name} {_fmt(x.a)} -> {_fmt(x.b)}" + (f" (delta {x.delta:g})" if x.delta is not None else "")
                 for x in o.deltas))
     verdict = "equal" if d.equal else "differ"
-    lines.append(f"{path_a} vs {path_b}: {verdict} within {d.tol} mm: {d.count('insert')} insertion(s), "
+    # one tolerance for every number (mm, m/s, percent alike): its unit is the number's own
+    lines.append(f"{path_a} vs {path_b}: {verdict}, every number within {d.tol:g}: {d.count('insert')} insertion(s), "
                  f"{d.count('delete')} deletion(s), {d.count('change')} change(s), "
                  f"{len(d.header)} header field(s) differ")
     return "\n".join(lines) + "\n"
