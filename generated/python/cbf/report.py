@@ -61,7 +61,7 @@ def finding_line(path: str, f: Finding) -> str:
 
 
 def more_line(path: str, hidden: int) -> str:
-    return f"{path}: {hidden} more finding(s) not shown (--max-findings 0 prints all, --json lists all)\n"
+    return f"{path}: {hidden} more finding(s) not shown (--max-findings 0 prints all)\n"  # as cbf-c says it
 
 
 def verdict_line(path: str, errors: int, warnings: int, profile: str) -> str:
