@@ -105,3 +105,38 @@ def test_encode_check_many_files(tmp_path: Path) -> None:
     assert [ln.split(": ")[1] for ln in res.stderr.splitlines()] == [str(bad), str(tmp_path / "missing.cut")]
     res = run("encode", str(good))
     assert res.returncode == 2 and "-o/--output" in res.stderr and res.stderr.count("\n") == 1
+
+
+def test_readme_counts_are_the_repository_s() -> None:
+    """The README's conformance counts: the golden cases, the bindings, the Kaitai failure lists' sizes."""
+    import yaml
+
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    m = re.search(r"Today: (\d+) cases and (\w+) bindings", text)
+    assert m, "the README states the counts"
+    words = {"four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+    bindings = yaml.safe_load((REPO / "conformance" / "bindings.yaml").read_text(encoding="utf-8"))["bindings"]
+    assert int(m.group(1)) == len(list(GOLDEN.glob("*.expect.yaml")))
+    assert words[m.group(2)] == len(bindings)
+    sizes = set()
+    for p in (REPO / "conformance" / "failures").glob("kaitai-*.txt"):
+        sizes.add(sum(1 for ln in p.read_text(encoding="utf-8").splitlines() if ln.strip() and not ln.startswith("#")))
+    lo, hi = re.search(r"(\d+) or (\d+) cases, each reason", text).groups()  # type: ignore[union-attr]
+    assert sizes <= {int(lo), int(hi)}, sizes
+
+
+def test_readme_c_snippet_compiles_with_wextra(tmp_path: Path) -> None:
+    import shutil
+
+    cc = shutil.which("gcc") or shutil.which("cc")
+    if cc is None:
+        import pytest
+
+        pytest.skip("no C compiler")
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    snippet = next(b for b in re.findall(r"```c\n(.*?)```", text, re.S) if "cut_file_ok" in b)
+    src = tmp_path / "snippet.c"
+    src.write_text(snippet, encoding="utf-8")
+    res = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-c", "-I", str(REPO / "generated" / "c"),
+                          "-o", str(tmp_path / "snippet.o"), str(src)], capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr[-2000:]
