@@ -156,3 +156,17 @@ def test_github_and_gitlab() -> None:
         assert i["location"]["path"] == str(bad) and i["location"]["lines"]["begin"] == 1
         assert i["severity"] in ("info", "minor", "major", "critical", "blocker")
     assert len({i["fingerprint"] for i in issues}) == len(issues)
+
+
+def test_the_bench_rows_run(tmp_path: Path) -> None:
+    """make bench's CI rows (bench/ci_rows.py) on a small scale: both are ratios of measured times."""
+    from bench.ci_rows import diff_rows, validate_rows
+
+    d = diff_rows(GOLDEN / "big.v3.65535.cbf", tmp_path / "diff", 1)
+    assert set(d) == {"identical", "one record changed"}
+    assert all(r["ratio"] == r["cbf_s"] / r["gnu_diff_s"] > 0 for r in d.values())
+    import os
+
+    v = validate_rows([sys.executable, "-m", "cbf"], dict(os.environ, PYTHONPATH=ENV_PATH), GOLDEN, tmp_path, 2)
+    assert v["files"] == 1000 and v["calls_timed"] == 2 and v["ratio"] == v["per_file_calls_s"] / v["one_call_s"]
+    assert len(list((tmp_path / "validate-1000").glob("*.cbf"))) == 1000

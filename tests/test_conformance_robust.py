@@ -180,3 +180,26 @@ def test_sigterm_kills_the_testee(tmp_path: Path) -> None:
     assert proc.wait(timeout=20) == 128 + signal.SIGTERM
     time.sleep(0.2)
     assert not _running(int(pids.read_text()))
+
+
+def test_each_reader_thread_feeds_only_its_own_testee(tmp_path: Path) -> None:
+    """A killed testee's reader thread keeps its own queue: its end of output (or a late line)
+    never reaches its successor's queue, whatever the timing."""
+    slow_eof = tmp_path / "late.py"
+    # answers, then keeps its stdout open a moment in a child (the old pipe's end comes late)
+    slow_eof.write_text("import json, subprocess, sys\nfor line in sys.stdin:\n"
+                        "    req = json.loads(line)\n"
+                        "    subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(1.5)'])\n"
+                        "    print(json.dumps({'skipped': True, 'late': True}), flush=True)\n", encoding="utf-8")
+    t = runner_testee.Testee(runner_testee.Binding("t", [sys.executable, str(slow_eof)], cwd=tmp_path), timeout=30)
+    try:
+        assert t.ask({"op": "x"}) == {"skipped": True, "late": True}
+        first = t.lines
+        t.kill()
+        t.start()
+        assert t.lines is not first
+        for _ in range(3):  # the old thread's end of output arrives while the new testee answers
+            assert t.ask({"op": "x"}) == {"skipped": True, "late": True}
+            time.sleep(0.6)
+    finally:
+        t.stop()
