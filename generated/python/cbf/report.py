@@ -10,9 +10,7 @@ GitLab's report, which requires a line, gives line 1 and the offset in the descr
 
 from __future__ import annotations
 
-import hashlib
 import json
-import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -106,6 +104,8 @@ def _tool_version() -> tuple[str, str]:
 def junit(results: Sequence[FileResult], profile: str) -> str:
     """A test case per file: <failure> for error findings, <error> for a file not validated,
     warnings in <system-out>."""
+    import xml.etree.ElementTree as ET  # here, not at the top: the text of one file needs no XML
+
     version, rev = _tool_version()
     failures = sum(r.status == 1 for r in results)
     errors = sum(r.status == 2 for r in results)
@@ -184,6 +184,8 @@ def github(r: FileResult) -> str:
 
 def gitlab(results: Sequence[FileResult]) -> str:
     """GitLab's code quality report (a Code Climate issue array)."""
+    import hashlib
+
     issues = []
     for r in results:
         items: list[tuple[str, str, Finding | None, str]] = [("blocker", "cbf validate", None, r.refused)] \
