@@ -85,6 +85,9 @@ def test_folder_recursive_stdin_and_jobs(tmp_path: Path) -> None:
     for f in doc["files"]:
         if f["status"] != 2:
             assert f["findings"] == [x.as_dict() for x in validate(Path(f["file"]).read_bytes())]
+    schema = json.loads((Path(validate.__code__.co_filename).parent / "validate.schema.json").read_text())
+    jsonschema.validate(doc, schema)
+    jsonschema.validate(json.loads(cbf("validate", "--json", str(CASES[0])).stdout), schema)  # one file alone
     pooled = cbf("validate", "--jobs", "2", "--format", "json", str(tmp_path))
     assert pooled.stdout == serial.stdout and pooled.returncode == serial.returncode
     small = GOLDEN / "valid.v3.small.cbf"

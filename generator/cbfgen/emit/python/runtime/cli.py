@@ -905,8 +905,8 @@ def parser() -> argparse.ArgumentParser:
                    help=f"machine limits, JSON or YAML (schema: {_schema_path('machine')}): breaches become "
                         f"errors; without it the spec's default machine gives warnings (check machine_limits)")
     v.add_argument("--format", choices=["text", "json", "junit", "sarif", "github", "gitlab"], default="text",
-                   help="text (default); json; junit (JUnit XML); sarif (SARIF 2.1.0); github (workflow "
-                        "annotation commands); gitlab (code quality report)")
+                   help=f"text (default); json (schema: {_schema_path('validate')}); junit (JUnit XML); sarif "
+                        f"(SARIF 2.1.0); github (workflow annotation commands); gitlab (code quality report)")
     v.add_argument("--json", action="store_true", help="the same as --format json")
     v.add_argument("--max-findings", type=_count, default=50, metavar="N",
                    help="text: print at most N findings a file, then how many more there are; 0 prints all "
