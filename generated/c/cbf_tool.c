@@ -739,7 +739,7 @@ static void hold_finding(void *user, const cbf_finding *f)
     (void)user;
     if (nheld == capheld) {
         size_t cap = capheld ? 2 * capheld : 64;
-        held_finding *grown = realloc(held, cap * sizeof *held);
+        held_finding *grown = (held_finding *)realloc(held, cap * sizeof *held);
         if (!grown) {
             out_of_memory = 1;
             return;
@@ -748,7 +748,7 @@ static void hold_finding(void *user, const cbf_finding *f)
         capheld = cap;
     }
     h = &held[nheld];
-    h->message = malloc(len);
+    h->message = (char *)malloc(len);
     if (!h->message) {
         out_of_memory = 1;
         return;
@@ -764,7 +764,7 @@ static void hold_finding(void *user, const cbf_finding *f)
 
 static int finding_cmp(const void *pa, const void *pb)
 {
-    const held_finding *a = pa, *b = pb;
+    const held_finding *a = (const held_finding *)pa, *b = (const held_finding *)pb;
     if (a->record != b->record)
         return a->record < b->record ? -1 : 1;
     if (a->order != b->order)
