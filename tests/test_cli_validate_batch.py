@@ -120,6 +120,8 @@ def test_sarif_passes_the_sarif_2_1_0_schema(tmp_path: Path) -> None:
     assert any(n["message"]["text"].endswith("no such file") for n in run["invocations"][0]
                ["toolExecutionNotifications"])
     assert run["invocations"][0]["executionSuccessful"] is False
+    prints = [r["partialFingerprints"]["cbfFinding/v1"] for r in run["results"]]
+    assert len(set(prints)) == len(prints)  # one per finding, the same on every run
     assert res.returncode == 2
     # a document that breaks the schema is caught: the test can fail
     doc["runs"][0]["results"][0]["level"] = "fatal"

@@ -132,6 +132,8 @@ def junit(results: Sequence[FileResult], profile: str) -> str:
 
 def sarif(results: Sequence[FileResult], profile: str) -> str:
     """SARIF 2.1.0: one run, a rule per spec check, a result per finding at its byte offset."""
+    import hashlib
+
     version, rev = _tool_version()
     rules = [{"id": c["id"], "shortDescription": {"text": f"spec check {c['id']} ({c['kind']})"},
               "defaultConfiguration": {"level": "error" if c["severity"] == "error" else "warning"}}
@@ -155,6 +157,9 @@ def sarif(results: Sequence[FileResult], profile: str) -> str:
                 phys["region"] = {"byteOffset": f.offset}
             res["locations"] = [{"physicalLocation": phys,
                                  "logicalLocations": [{"name": _where(f), "kind": "element"}]}]
+            # stable across runs (code scanning matches alerts by it): the file, check, record, offset, message
+            res["partialFingerprints"] = {"cbfFinding/v1": hashlib.sha256(
+                f"{r.path}\0{f.check}\0{f.record}\0{f.offset}\0{f.message}".encode()).hexdigest()}
             out.append(res)
     doc = {"$schema": SARIF_SCHEMA, "version": "2.1.0",
            "runs": [{"tool": {"driver": {"name": "cbf", "version": version, "semanticVersion": version,
