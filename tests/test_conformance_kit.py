@@ -112,6 +112,8 @@ def test_usage_errors_exit_2(kit: Path, tmp_path: Path) -> None:
     assert "unrecognized arguments" in _one_line_2(_run(kit, "--testee", testee, "--no-such-option", cwd=tmp_path,
                                                         check=False))
     assert "--timeout" in _one_line_2(_run(kit, "--testee", testee, "--timeout", "soon", cwd=tmp_path, check=False))
+    assert "does not exist" in _one_line_2(_run(kit, "--testee", testee, "--junit", "no/such/j.xml", cwd=tmp_path,
+                                                check=False))
 
 
 def test_help_version_and_what_ships(kit: Path, tmp_path: Path) -> None:

@@ -289,6 +289,10 @@ def main_run(args: argparse.Namespace) -> int:
         bindings = [_testee_binding(args)] if args.testee else load_bindings(args.bindings)
         if args.failure_list is not None and not (args.fix and not args.failure_list.exists()):
             read_failures(args.failure_list, required=True)
+        for option, path in (("--junit", args.junit), ("--report", args.report)):
+            if path is not None and (path.is_dir() or not path.resolve().parent.is_dir()):
+                why = "is a directory" if path.is_dir() else f"folder {str(path.resolve().parent)!r} does not exist"
+                raise FailureListError(f"{option} {path}: {why}")
     except FailureListError as exc:
         print(f"cbf-conformance: {exc}", file=sys.stderr)
         return 2
