@@ -63,7 +63,7 @@ GENERATE_FORCE = $(if $(filter-out $(wildcard $(GENERATED_TRACKED)),$(GENERATED_
 FORCE:
 generate-py: venv $(STAMPS)/generate-py  ## run every Python emitter (no ksc)
 $(STAMPS)/generate-py: $(GENERATE_INPUTS) $(VENV)/.stamp $(GENERATE_FORCE)
-	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated
+	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated --no-ksc
 	@mkdir -p $(@D) && touch $@
 
 # One make process runs the Python emitters once, then the later steps (ksc, ...).

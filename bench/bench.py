@@ -4,7 +4,9 @@ Rows: the Kaitai-generated Python parser (the 1x reference), the Python codec
 (decode, decode + full validate, encode, CBF -> CUT, CUT -> CBF), the C codec
 (decode and validate, in-process, and a plain byte sum of the same buffer as
 its yardstick), `cbf validate` as a whole process, and
-`make generate` without and with the ksc step. Targets are reported, never
+`make generate` without and with the ksc step; and two ratios (bench/ci_rows.py):
+`cbf diff` against GNU diff, and `cbf validate` on a folder in one call against a
+call per file. Targets are reported, never
 enforced: a slow machine does not fail CI.
 """
 
@@ -331,7 +333,7 @@ def run(reps: int) -> dict[str, Any]:
     result["cli_process"] = how
     genv = dict(os.environ, PYTHONPATH=str(REPO / "generator"))
     tmp = WORK / "gen"
-    gen = [_time(lambda: subprocess.run([PY, "-m", "cbfgen", "--out", str(tmp)], cwd=REPO, env=genv,
+    gen = [_time(lambda: subprocess.run([PY, "-m", "cbfgen", "--no-ksc", "--out", str(tmp)], cwd=REPO, env=genv,
                                         capture_output=True, check=True)) for _ in range(3)]
     result["rows"]["generate without ksc"] = {"spec": _stats(gen)}
     if (REPO / "node_modules" / "kaitai-struct-compiler").exists():
@@ -341,6 +343,11 @@ def run(reps: int) -> dict[str, Any]:
             for g in gen]
         result["rows"]["generate with ksc"] = {"spec": _stats(ksc)}
     _helix_convert_row(result, reps)
+    from .ci_rows import diff_rows, validate_rows  # issue 27: the CI users' ratios
+
+    result["diff_vs_gnu"] = diff_rows(files["65535 records"], WORK / "diff", max(reps, 5))
+    result["validate_folder"] = validate_rows(argv[:-2], env, REPO / "conformance" / "golden", WORK,
+                                              int(os.environ.get("BENCH_VALIDATE_CALLS", "100")))
     big = files["65535 records"]
     result["memory"] = {"python_decode_validate_peak_extra_bytes": _rss_decode_validate(big),
                         "file_bytes": big.stat().st_size}
@@ -422,6 +429,13 @@ def _targets(r: dict[str, Any]) -> dict[str, Any]:
     out["cbf validate small < 80 ms"] = {"value": round(cli * 1000, 1), "unit": "ms", "met": cli < 0.080}
     g = rows["generate without ksc"]["spec"]["median"]
     out["generate without ksc < 2 s"] = {"value": round(g, 2), "unit": "s", "met": g < 2.0}
+    for name, d in r.get("diff_vs_gnu", {}).items():
+        out[f"cbf diff 65535 records ({name}) <= 3x GNU diff of the CUT texts"] = {
+            "value": round(d["ratio"], 2), "unit": "x", "met": d["ratio"] <= 3.0}
+    v = r.get("validate_folder")
+    if v:
+        out[f"cbf validate: {v['files']} files in 1 call vs {v['files']} calls (timed {v['calls_timed']}, "
+            f"scaled)"] = {"value": round(v["ratio"], 1), "unit": "x faster", "met": v["ratio"] >= 10.0}
     mem = r["memory"]
     ratio = mem["python_decode_validate_peak_extra_bytes"] / mem["file_bytes"]
     out["python peak RSS of decode+validate <= 4x file"] = {"value": round(ratio, 1), "unit": "x file",

@@ -3,7 +3,8 @@
     python -m conformance.kit OUTDIR     # then: python -m build OUTDIR
 
 The package `cbf_conformance` is the runner's modules, the golden cases (.cbf, their
-expectations and the files they name) as package data, PROTOCOL.md, and the page
+expectations and the files they name) as package data, PROTOCOL.md with the JSON schemas
+it names, a stamp of the kit version and the spec revision (reports name both), and the page
 "Run the CBF conformance suite against your reader" as its README. Its one dependency
 is PyYAML (the expectations are YAML). `make dist` builds it next to `cbf` and `cbfgen`.
 """
@@ -18,6 +19,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent
 REPO = ROOT.parent
 PAGE = "RUN-AGAINST-YOUR-READER.md"
+SCHEMAS = ("machine.schema.json", "canonical.schema.json")
 
 
 def toolkit_version() -> str:
@@ -27,6 +29,16 @@ def toolkit_version() -> str:
     if match is None:
         raise SystemExit("conformance.kit: no __version__ in generator/cbfgen/__init__.py")
     return match.group(1)
+
+
+def spec_revision() -> str:
+    """The spec revision the golden cases come from (the runner's about.py reads it the same way)."""
+    text = (REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8")
+    part = re.search(r'^  part_number: "?([^"\n]+)"?', text, re.M)
+    rev = re.search(r'^  revision: "?([^"\n]+)"?', text, re.M)
+    if part is None or rev is None:
+        raise SystemExit("conformance.kit: no meta part_number / revision in spec/cbf.yaml")
+    return f"{part.group(1)} rev {rev.group(1)}"
 
 
 def golden_files(golden: Path) -> list[Path]:
@@ -49,6 +61,11 @@ def stage(dest: Path) -> Path:
     for src in golden_files(ROOT / "golden"):
         shutil.copy2(src, pkg / "golden" / src.name)
     shutil.copy2(ROOT / "PROTOCOL.md", pkg / "PROTOCOL.md")
+    for schema in SCHEMAS:  # the schemas PROTOCOL.md names ship beside it
+        shutil.copy2(REPO / "generated" / "python" / "cbf" / schema, pkg / schema)
+    (pkg / "_stamp.py").write_text(f'"""Written by conformance/kit.py when the kit was staged."""\n\n'
+                                   f'VERSION = {toolkit_version()!r}\nSPEC_REVISION = {spec_revision()!r}\n',
+                                   encoding="utf-8")
     shutil.copy2(ROOT / PAGE, dest / "README.md")
     (pkg / "py.typed").write_text("", encoding="utf-8")
     (dest / "pyproject.toml").write_text(f'''# Staged by `python -m conformance.kit`: the CBF conformance kit.
@@ -71,7 +88,7 @@ cbf-conformance = "cbf_conformance.__main__:main"
 packages = ["cbf_conformance"]
 
 [tool.setuptools.package-data]
-cbf_conformance = ["golden/*", "PROTOCOL.md", "py.typed"]
+cbf_conformance = ["golden/*", "PROTOCOL.md", "*.schema.json", "py.typed"]
 ''', encoding="utf-8")
     return dest
 

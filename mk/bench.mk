@@ -2,6 +2,9 @@
 # bench/TABLE.md only. The README (tracked) changes only on `make bench-readme`, which copies
 # the table of the last run into it.
 BENCH_REPS ?= 5
+# `cbf validate` per-file calls timed for the folder row (scaled to its 1,000 files): 1000 times them all.
+BENCH_VALIDATE_CALLS ?= 100
+export BENCH_VALIDATE_CALLS
 .PHONY: bench bench-readme
 bench: venv generate c-deps  ## benchmark table (Kaitai vs Python vs C); writes bench/results.json and bench/TABLE.md
 	$(PY) -m bench --reps $(BENCH_REPS)

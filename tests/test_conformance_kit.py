@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import json
 import os
+import re
+import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -90,6 +92,139 @@ def test_a_silent_testee_times_out_instead_of_hanging(kit: Path, tmp_path: Path)
     assert f"{first}: FAIL" in res.stdout and "gave no answer within 1 s" in res.stdout
 
 
+def _one_line_2(res: subprocess.CompletedProcess[str]) -> str:
+    assert res.returncode == 2, (res.returncode, res.stderr)
+    assert "Traceback" not in res.stderr and len(res.stderr.strip().splitlines()) == 1, res.stderr
+    return res.stderr.strip()
+
+
 def test_usage_errors_exit_2(kit: Path, tmp_path: Path) -> None:
-    res = _run(kit, cwd=tmp_path, check=False)  # outside the repository, no --testee
-    assert res.returncode == 2 and "--testee" in res.stderr
+    assert "--testee" in _one_line_2(_run(kit, cwd=tmp_path, check=False))  # outside the repository, no --testee
+    assert "no such program" in _one_line_2(_run(kit, "--testee", "no-such-reader-xyz", cwd=tmp_path, check=False))
+    assert "no such file" in _one_line_2(_run(kit, "--testee", "./missing-testee", cwd=tmp_path, check=False))
+    (tmp_path / "t.py").write_text(NO_FINDINGS, encoding="utf-8")
+    testee = f"{sys.executable} t.py"
+    line = _one_line_2(_run(kit, "--testee", testee, "--failure-list", "typo.txt", cwd=tmp_path, check=False))
+    assert "typo.txt: no such file" in line
+    (tmp_path / "locked.txt").write_bytes(b"\xff\xfe not text")
+    assert "cannot read" in _one_line_2(_run(kit, "--testee", testee, "--failure-list", "locked.txt", cwd=tmp_path,
+                                             check=False))
+    assert "unrecognized arguments" in _one_line_2(_run(kit, "--testee", testee, "--no-such-option", cwd=tmp_path,
+                                                        check=False))
+    assert "--timeout" in _one_line_2(_run(kit, "--testee", testee, "--timeout", "soon", cwd=tmp_path, check=False))
+    assert "does not exist" in _one_line_2(_run(kit, "--testee", testee, "--junit", "no/such/j.xml", cwd=tmp_path,
+                                                check=False))
+
+
+def test_help_version_and_what_ships(kit: Path, tmp_path: Path) -> None:
+    help_text = " ".join(_run(kit, "--help", cwd=tmp_path).stdout.split())
+    for internal in ("--bindings", "--python-path", "--report", "--failures ", "--binding ", "--golden"):
+        assert internal not in help_text
+    assert "--fix" in help_text and "cbf-conformance --testee CMD --failure-list" in help_text
+    version = _run(kit, "--version", cwd=tmp_path).stdout.strip()
+    import cbf.version as v
+
+    assert version == f"cbf-conformance {v.__version__} (spec {v.SPEC_REVISION})"
+    # PROTOCOL.md and every file it names ship in the package
+    pkg = Path(_run(kit.parent / "python", "-c", "import cbf_conformance, os; print(os.path.dirname("
+                    "cbf_conformance.__file__))", cwd=tmp_path).stdout.strip())
+    protocol = (pkg / "PROTOCOL.md").read_text(encoding="utf-8")
+    named = set(re.findall(r"[\w./-]+\.(?:json|yaml|md)\b", protocol)) - {"PROTOCOL.md"}
+    named = {n for n in named if not n.startswith(("golden/", ".")) and "*" not in n}
+    assert named >= {"machine.schema.json", "canonical.schema.json"}
+    for name in named:
+        assert (pkg / name).is_file(), name
+    assert "spec/cbf.yaml" not in protocol and "generated/" not in protocol
+
+
+# A third party's reader: the cbf wheel, with one check it does not implement (its findings dropped).
+THIRD_PARTY = """
+import json, sys
+import cbf
+DROP = sys.argv[1]
+for line in sys.stdin:
+    req = json.loads(line)
+    if req.get("op") == "quit":
+        break
+    if req.get("op") != "validate":
+        print(json.dumps({"skipped": True}), flush=True)
+        continue
+    data = open(req["file"], "rb").read()
+    cutters = cbf.load_cutter_table(req["cutters"]) if req.get("cutters") else None
+    try:
+        machine = cbf.load_machine(req["machine"]) if req.get("machine") else None
+    except cbf.CbfError as exc:
+        print(json.dumps({"ok": False, "error": {"kind": exc.kind, "offset": None, "message": str(exc)}}), flush=True)
+        continue
+    found = cbf.validate(data, profile=req["profile"], part_number=req.get("part_number"), cutters=cutters,
+                         machine=machine)
+    print(json.dumps({"ok": True, "id": req["id"], "findings": [f.as_dict() for f in found if f.check != DROP]}),
+          flush=True)
+"""
+
+
+def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """Only the wheels in a temporary folder: the kit judges a third-party testee with a failure
+    list, and text, JSON and JUnit give the same pass / fail / expected-failure counts."""
+    work = tmp_path_factory.mktemp("consumer")
+    _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
+         cwd=work)
+    shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "cbf-src",
+         cwd=work)
+    bin_ = clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
+    folder = work / "user"
+    folder.mkdir()
+    (folder / "reader.py").write_text(THIRD_PARTY, encoding="utf-8")
+    # the check to drop: the one whose findings the most cases expect (several cases then fail)
+    per_check: dict[str, set[str]] = {}
+    for exp in GOLDEN.glob("*.expect.yaml"):
+        for findings in (load_yaml(exp).get("validate") or {}).values():
+            for f in findings or []:
+                per_check.setdefault(str(f[0]), set()).add(exp.name[: -len(".expect.yaml")])
+    drop = max(sorted(per_check), key=lambda c: len(per_check[c]))
+    failing = sorted(per_check[drop])
+    assert len(failing) >= 2
+    testee = f"{bin_ / 'python'} reader.py {drop}"
+    base = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader"]
+    # --fix writes the list; then one listed case is dropped from it: that one fails, the rest are expected
+    fixed = _run(*base, "--failure-list", "known.txt", "--fix", cwd=folder, check=False)
+    assert "Traceback" not in fixed.stderr
+    listed = [ln for ln in (folder / "known.txt").read_text().splitlines() if ln and not ln.startswith("#")]
+    assert sorted(ln.split(" ")[0] for ln in listed) == failing
+    assert "Rewrite with: cbf-conformance --testee" in (folder / "known.txt").read_text()
+    (folder / "known.txt").write_text("# my reader's known failures\n" + "\n".join(listed[1:]) + "\n")
+    text = _run(*base, "--failure-list", "known.txt", "--junit", "j.xml", cwd=folder, check=False)
+    js = _run(*base, "--failure-list", "known.txt", "--json", cwd=folder, check=False)
+    assert text.returncode == js.returncode == 1, text.stdout[-2000:] + text.stderr[-2000:]
+    total = len(list(GOLDEN.glob("*.expect.yaml")))
+    m = re.search(r"conformance: (\d+) passed, (\d+) failed, (\d+) expected failure\(s\), (\d+) skipped",
+                  text.stdout)
+    assert m, text.stdout
+    from_text = tuple(int(x) for x in m.groups())
+    want_fail, want_xfail = 1, len(failing) - 1
+    assert from_text[1:3] == (want_fail, want_xfail)
+    report = json.loads(js.stdout)
+    summary = report["bindings"]["reader"]["summary"]
+    from_json = (summary["passed"], summary["failed"], summary["expected_failures"], summary["skipped"])
+    results = report["bindings"]["reader"]["results"]
+    assert sum(r["expected_failure"] for r in results.values()) == want_xfail
+    suite = ET.parse(folder / "j.xml").getroot().find("testsuite")
+    assert suite is not None
+    cases = suite.findall("testcase")
+    xfail = [c for c in cases if (s := c.find("skipped")) is not None and s.get("type") == "expected-failure"]
+    plain_skip = [c for c in cases if (s := c.find("skipped")) is not None and s.get("type") != "expected-failure"]
+    fails = [c for c in cases if c.find("failure") is not None]
+    from_junit = (len(cases) - len(xfail) - len(plain_skip) - len(fails), len(fails), len(xfail), len(plain_skip))
+    assert from_text == from_json == from_junit
+    assert sum(from_text) == total
+    assert suite.get("failures") == str(want_fail)
+    assert [c.get("name") for c in fails] == [listed[0].split(" ")[0]]
+    assert all("expected failure" in (c.find("skipped").get("message") or "") for c in xfail)  # type: ignore[union-attr]
+    # the kit's version and the spec revision in every report
+    props = {p.get("name"): p.get("value") for p in suite.iter("property")}
+    assert report["kit"]["version"] == props["kit.version"] and report["kit"]["spec_revision"] == props["spec.revision"]
+    assert f"cbf-conformance {props['kit.version']} (spec {props['spec.revision']})" in text.stdout
+    # the matrix counts expected failures apart
+    assert "(pass/fail/expected failure/skip)" in text.stdout

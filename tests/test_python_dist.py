@@ -94,16 +94,36 @@ def test_cbfgen_wheel_generates_from_a_spec_argument(outside: Path) -> None:
     missing = _run(bin_ / "cbfgen", "--out", "out", cwd=work, check=False)
     assert missing.returncode == 2 and len(missing.stderr.strip().splitlines()) == 1
     assert "Traceback" not in missing.stderr
-    # every target, as the README shows it: the wheel carries every file an emitter reads (a missing
-    # package-data file, such as the Kaitai Go module's go.sum, fails here and nowhere in the tree)
-    run = _run(bin_ / "cbfgen", "--spec", "format.yaml", "--out", "out", cwd=work, check=False)
-    assert run.returncode == 0 and "Traceback" not in run.stderr, run.stderr[-2000:]
+    # every binding or none: without the Kaitai compiler, one line naming it, exit 2, nothing written
+    no_ksc = {k: v for k, v in CLEAN_ENV.items() if k != "NODE_PATH"}
+    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", "out"], cwd=work, env=no_ksc,
+                         capture_output=True, text=True)
+    assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1, res.stderr
+    assert "kaitai-struct-compiler" in res.stderr and "Traceback" not in res.stderr
+    assert not (work / "out").exists()
+    # every target, as the README shows it, with the compiler found as cbfgen.ksc says (NODE_PATH), and the
+    # docs' inputs given: the wheel carries every file an emitter reads (a missing package-data file, such as
+    # the Kaitai Go module's go.sum, fails here and nowhere in the tree)
+    conf = REPO / "conformance"
+    env = dict(no_ksc, NODE_PATH=str(REPO / "node_modules"))
+    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", "out", "--golden",
+                          str(conf / "golden"), "--report", str(conf / "report.json")], cwd=work, env=env,
+                         capture_output=True, text=True)
+    assert res.returncode == 0 and "Traceback" not in res.stderr, res.stderr[-2000:]
+    assert "Kaitai parsers compiled" in res.stdout and res.stderr == ""
     written = {p.relative_to(work / "out").as_posix() for p in (work / "out").rglob("*") if p.is_file()}
     assert {rel.split("/", 1)[0] for rel in written} == {p.name for p in (REPO / "generated").iterdir() if p.is_dir()}
-    # the bindings are the checkout's bytes; the docs' golden-case pages and conformance evidence come from
-    # this checkout's conformance/ folder, which a user of the wheel does not have
-    bindings = sorted(rel for rel in written if not rel.startswith("docs/"))
-    assert bindings and all((work / "out" / rel).read_bytes() == (REPO / "generated" / rel).read_bytes()
-                            for rel in bindings), [r for r in bindings if (work / "out" / r).read_bytes()
-                                                   != (REPO / "generated" / r).read_bytes()]
-    assert (work / "out" / "docs" / "index.md").is_file()
+    # the Kaitai parsers are there (the package's __init__ imports a module that exists), and every file,
+    # the docs' golden pages and traceability included, is the checkout's byte for byte
+    assert "kaitai/python/cbf_kaitai/cbf.py" in written
+    tracked = set(subprocess.run(["git", "ls-files", "generated"], cwd=REPO, capture_output=True, text=True,
+                                 check=True).stdout.split()) or {f"generated/{r}" for r in written}
+    differ = sorted(rel for rel in written if f"generated/{rel}" in tracked
+                    and (work / "out" / rel).read_bytes() != (REPO / "generated" / rel).read_bytes())
+    assert not differ, differ
+    assert {f"generated/{r}" for r in written} >= {t for t in tracked if not t.startswith("generated/docs/site/")}
+    # without the docs' inputs the run says which sections stay empty (and still writes every binding)
+    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", "out2", "--only", "docs"], cwd=work,
+                         env=env, capture_output=True, text=True)
+    assert res.returncode == 0 and "--golden DIR" in res.stderr and "--report FILE" in res.stderr, res.stderr
+    assert _run(bin_ / "cbfgen", "--version", cwd=work).stdout.strip() == f"cbfgen {cbfgen.__version__}"

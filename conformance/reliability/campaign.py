@@ -9,7 +9,6 @@ scratch folder, all requests are sent, then all answers are read.
 from __future__ import annotations
 
 import base64
-import json
 import random
 import shutil
 import subprocess
@@ -23,7 +22,8 @@ from typing import Any
 import yaml
 
 from conformance.runner.compare import f32_bits, first_difference, is_nan_bits
-from conformance.runner.run import ROOT, Binding, Testee, load_bindings
+from conformance.runner.run import ROOT, load_bindings
+from conformance.runner.testee import Binding, Testee
 
 from .mutate import (
     Framing,
@@ -57,23 +57,11 @@ class Pool:
 
     def __init__(self, binding: Binding) -> None:
         self.binding = binding
-        self.testee = Testee(binding)
+        self.testee = Testee(binding, timeout=120, expand=lambda s: s.format(repo=REPO, python=sys.executable))
         self.testee.start()
 
     def many(self, requests: list[dict[str, Any]]) -> list[dict[str, Any]]:
-        t = self.testee
-        if t.proc is None or t.proc.poll() is not None:
-            t.start()
-        assert t.proc is not None and t.proc.stdin is not None
-        t.proc.stdin.write("".join(json.dumps(r) + "\n" for r in requests))
-        t.proc.stdin.flush()
-        out = []
-        for _ in requests:
-            line = t.lines.get(timeout=120)
-            if line is None:
-                raise RuntimeError(f"{self.binding.name}: testee exited")
-            out.append(json.loads(line))
-        return out
+        return self.testee.many(requests)
 
     def close(self) -> None:
         self.testee.stop()

@@ -1,11 +1,13 @@
-"""python -m conformance.runner [--binding NAME]... [--fix] [--report PATH]
-cbf-conformance --testee "CMD ARGS" [--failure-list FILE] [--junit FILE] [--json]
+"""cbf-conformance --testee "CMD ARGS" [--failure-list FILE [--fix]] [--junit FILE] [--json]
 
-Runs every golden case against every binding's testee (or against one outside
-testee that speaks PROTOCOL.md), prints the matrix binding x case group, writes
-conformance/report.json on a full in-repository run, and fails on an unlisted
-failure, a listed case that passes, or a listed case that fails with a different
-message. Exit 0 conformant, 1 failures, 2 bad usage.
+Runs the golden cases against a testee that speaks PROTOCOL.md, prints the matrix (case group x
+pass/fail/expected failure/skip), and fails on an unlisted failure, a listed case that passes, or
+a listed case that fails with a different message. Exit 0 conformant, 1 failures, 2 bad usage
+(a missing testee program, an unreadable failure list, a bad option: one line on stderr).
+
+In this repository, `python -m conformance.runner` runs every binding of bindings.yaml and writes
+conformance/report.json; the options for that (--binding, --bindings, --failures, --report,
+--python-path) are not shown by --help, as a kit user has no use for them.
 """
 
 from __future__ import annotations
@@ -13,33 +15,78 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import NoReturn
 
-from .run import DEFAULT_GOLDEN, ROOT, TIMEOUT, main_run
+from .about import version_line
+from .run import DEADLINE, DEFAULT_GOLDEN, ROOT, TIMEOUT, main_run
+from .testee import MAX_ANSWER
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> NoReturn:
+        sys.stderr.write(f"{self.prog}: {' '.join(message.split())} (see {self.prog} --help)\n")
+        raise SystemExit(2)
+
+
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
+    if not 0 < value < float("inf"):
+        raise argparse.ArgumentTypeError(f"not a positive number of seconds: {text!r}")
+    return value
+
+
+def parser() -> argparse.ArgumentParser:
+    ap = _Parser(prog="cbf-conformance", description="Run the CBF golden cases against your reader's testee "
+                 "(PROTOCOL.md, shipped in the package).",
+                 epilog="Exit codes: 0 every case passes or fails as listed, 1 a case does not, 2 bad usage.")
+    ap.add_argument("--version", action="version", version=version_line(),
+                    help="print the kit version and the spec revision, and exit")
+    ap.add_argument("--testee", help="your testee command, split like a shell command, run in this folder")
+    ap.add_argument("--name", default="testee", help="the testee's name in reports (default: %(default)s)")
+    ap.add_argument("--failure-list", type=Path, metavar="FILE",
+                    help="your known failures, `case message` lines (# comments); the file must exist")
+    ap.add_argument("--fix", action="store_true",
+                    help="rewrite --failure-list FILE to this run's failures (its # comment lines are kept), "
+                         "e.g. cbf-conformance --testee CMD --failure-list known.txt --fix")
+    ap.add_argument("--junit", type=Path, metavar="FILE",
+                    help="also write JUnit XML here (an expected failure is <skipped> with its reason)")
+    ap.add_argument("--json", action="store_true", help="print the report as JSON on stdout (the table to stderr)")
+    ap.add_argument("--case", action="append", metavar="PREFIX", help="run only cases whose name starts with this")
+    ap.add_argument("--timeout", type=_seconds, default=TIMEOUT,
+                    help=f"seconds one answer may take (default: %(default)s); after 3 timeouts in a row the "
+                         f"testee's run stops. An answer line may hold {MAX_ANSWER // (1 << 20)} MiB.")
+    ap.add_argument("--deadline", type=_seconds, default=DEADLINE,
+                    help="seconds the whole run may take (default: %(default)s); cases left are not run, and fail")
+    ap.add_argument("--golden", type=Path, default=DEFAULT_GOLDEN, help=argparse.SUPPRESS)
+    # this repository's own runs (bindings.yaml, conformance/failures, report.json): hidden from --help
+    ap.add_argument("--binding", action="append", help=argparse.SUPPRESS)
+    ap.add_argument("--bindings", type=Path, default=ROOT / "bindings.yaml", help=argparse.SUPPRESS)
+    ap.add_argument("--failures", type=Path, default=ROOT / "failures", help=argparse.SUPPRESS)
+    ap.add_argument("--report", type=Path, help=argparse.SUPPRESS)
+    ap.add_argument("--python-path", help=argparse.SUPPRESS)
+    return ap
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="cbf-conformance", description="Run the CBF golden cases against testees.")
-    ap.add_argument("--testee", help="run this one testee command (split like a shell) instead of bindings.yaml")
-    ap.add_argument("--name", default="testee", help="the --testee's name in reports (default: %(default)s)")
-    ap.add_argument("--failure-list", type=Path, help="the --testee's known failures: `case message` lines")
-    ap.add_argument("--junit", type=Path, help="also write JUnit XML here")
-    ap.add_argument("--json", action="store_true", help="print the report as JSON on stdout (the table to stderr)")
-    ap.add_argument("--timeout", type=float, default=TIMEOUT, help="seconds per request (default: %(default)s)")
-    ap.add_argument("--binding", action="append", help="run only this binding (repeatable)")
-    ap.add_argument("--bindings", type=Path, default=ROOT / "bindings.yaml", help="bindings file")
-    ap.add_argument("--golden", type=Path, default=DEFAULT_GOLDEN, help="golden cases (default: the shipped ones)")
-    ap.add_argument("--failures", type=Path, default=ROOT / "failures")
-    ap.add_argument("--report", type=Path,
-                    help="write the report here (default: conformance/report.json, on a full run only)")
-    ap.add_argument("--case", action="append", help="run only cases whose name starts with this")
-    ap.add_argument("--fix", action="store_true", help="rewrite the failure lists to the current result")
-    ap.add_argument("--python-path", help="PYTHONPATH for the python testee (test a scratch build)")
-    args = ap.parse_args(argv)
-    if args.testee is None and not args.bindings.exists():
-        ap.error("--testee is required outside the repository (no bindings file)")
-    if args.failure_list is not None and args.testee is None:
-        ap.error("--failure-list goes with --testee")
-    return main_run(args)
+    ap = parser()
+    try:
+        args = ap.parse_args(argv)
+        if args.testee is None and not args.bindings.exists():
+            ap.error("--testee is required (the command that starts your testee)")
+        if args.failure_list is not None and args.testee is None:
+            ap.error("--failure-list goes with --testee")
+        if args.fix and args.testee is not None and args.failure_list is None:
+            ap.error("--fix rewrites the --failure-list FILE: name one")
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else 0
+    try:
+        return main_run(args)
+    except KeyboardInterrupt:
+        sys.stderr.write("cbf-conformance: interrupted\n")
+        return 130
 
 
 if __name__ == "__main__":

@@ -4,7 +4,10 @@
  *
  * GENERATED from spec/cbf.yaml by cbfgen (generator/cbfgen/emit/c). Do not edit.
  *
- *   cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] FILE...
+ *   cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] FILE...
+ *
+ * validate prints what `cbf validate` prints, in its order (header first, then by record,
+ * check order, offset), at most --max-findings findings a file (default 50, 0 for all).
  *   cbf-c dump FILE
  *   cbf-c --version
  *
@@ -1472,23 +1475,85 @@ static int load_machine(const char *path)
     return 1;
 }
 
-static const char *current_file;
-static long current_warnings;
 static const char *const profile_names[] = { "default", "implib" };
+/* The spec's checks in their order: findings print in cbf's one order (header first, then by
+ * record, check order, offset, message), whatever order the engine reports them in. */
+static const char *const check_order[] = { "4.2", "4.3", "6.1.1", "part_number_first", "6.1.2", "6.2.1", "6.2.2", "6.3.1", "6.3.2", "6.4.1", "6.4.2", "6.4.3", "6.4.4", "6.4.5", "7.2.3.1", "7.2.2.4", "version_supported", "unknown_command", "trailing_bytes", "reserved_nonzero", "string_tail", "string_ascii", "non_finite", "speed_positive", "accel_positive", "cutter_positive", "normal_nonzero", "checkpoint_range", "checkpoint_falling", "fcparms_order", "orientation_jump", "machine_limits", "shape" };
+
+typedef struct held_finding {
+    long record;   /* -1: the header and the file */
+    int order;     /* index in check_order */
+    int error;
+    unsigned long offset;
+    const char *check;
+    char *message; /* a copy: the engine's is valid during the callback only */
+} held_finding;
+
+static held_finding *held;
+static size_t nheld, capheld;
+static int out_of_memory;
+
+static int check_rank(const char *id)
+{
+    int i;
+    for (i = 0; i < (int)(sizeof check_order / sizeof check_order[0]); i++)
+        if (strcmp(check_order[i], id) == 0)
+            return i;
+    return 0; /* as cbf's finding_order: an id the spec lacks sorts first */
+}
+
+/* Keep each finding; they print sorted, after the file is validated. */
+static void hold_finding(void *user, const cbf_finding *f)
+{
+    held_finding *h;
+    size_t len = strlen(f->message) + 1;
+    (void)user;
+    if (nheld == capheld) {
+        size_t cap = capheld ? 2 * capheld : 64;
+        held_finding *grown = (held_finding *)realloc(held, cap * sizeof *held);
+        if (!grown) {
+            out_of_memory = 1;
+            return;
+        }
+        held = grown;
+        capheld = cap;
+    }
+    h = &held[nheld];
+    h->message = (char *)malloc(len);
+    if (!h->message) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(h->message, f->message, len);
+    h->record = f->record;
+    h->order = check_rank(f->check);
+    h->error = f->severity == CBF_SEVERITY_ERROR;
+    h->offset = (unsigned long)f->offset;
+    h->check = f->check;
+    nheld++;
+}
+
+static int finding_cmp(const void *pa, const void *pb)
+{
+    const held_finding *a = (const held_finding *)pa, *b = (const held_finding *)pb;
+    if (a->record != b->record)
+        return a->record < b->record ? -1 : 1;
+    if (a->order != b->order)
+        return a->order < b->order ? -1 : 1;
+    if (a->offset != b->offset)
+        return a->offset < b->offset ? -1 : 1;
+    return strcmp(a->message, b->message);
+}
 
 /* One line per finding, as cbf prints it (README): file:offset: severity check (record N): message */
-static void print_finding(void *user, const cbf_finding *f)
+static void print_finding(const char *file, const held_finding *f)
 {
-    (void)user;
-    printf("%s:%lu: %s %s (", current_file, (unsigned long)f->offset,
-           f->severity == CBF_SEVERITY_ERROR ? "error" : "warning", f->check);
+    printf("%s:%lu: %s %s (", file, f->offset, f->error ? "error" : "warning", f->check);
     if (f->record >= 0)
         printf("record %ld", f->record);
     else
         printf("header");
     printf("): %s\n", f->message);
-    if (f->severity != CBF_SEVERITY_ERROR)
-        current_warnings++;
 }
 
 /* Read path into file_buf; 0 and one line on stderr when it cannot be read, is
@@ -1542,7 +1607,8 @@ static int read_cbf(const char *path, size_t *size)
 
 static void usage(void)
 {
-    fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] FILE...\n"
+    fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
+          "FILE...\n"
           "       cbf-c dump FILE\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
@@ -1554,10 +1620,25 @@ static void usage(void)
     fputs("\n", stderr);
 }
 
+/* A count for --max-findings: digits only; -1 when it is not one. */
+static long parse_count(const char *s)
+{
+    char *end;
+    unsigned long v;
+    if (!*s || strspn(s, "0123456789") != strlen(s))
+        return -1;
+    errno = 0;
+    v = strtoul(s, &end, 10);
+    if (errno || v > 1000000000ul)
+        return -1;
+    return (long)v;
+}
+
 static int cmd_validate(int argc, char **argv)
 {
     cbf_options opt;
     int i, status = 0, files = 0;
+    size_t k, max_findings = 50;
     memset(&opt, 0, sizeof opt);
     opt.profile = CBF_PROFILE_DEFAULT;
     for (i = 0; i < argc; i++) {
@@ -1582,6 +1663,13 @@ static int cmd_validate(int argc, char **argv)
                 return EXIT_USAGE;
             }
             opt.machine = &machine_file;
+        } else if (strcmp(argv[i], "--max-findings") == 0 && i + 1 < argc) {
+            long v = parse_count(argv[++i]);
+            if (v < 0) {
+                fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", argv[i]);
+                return EXIT_USAGE;
+            }
+            max_findings = (size_t)v;
         } else if (argv[i][0] == '-' && argv[i][1]) {
             usage();
             return EXIT_USAGE;
@@ -1591,22 +1679,35 @@ static int cmd_validate(int argc, char **argv)
         size_t n;
         long errors;
         if (strcmp(argv[i], "--profile") == 0 || strcmp(argv[i], "--part-number") == 0
-            || strcmp(argv[i], "--cutters") == 0 || strcmp(argv[i], "--machine") == 0) {
+            || strcmp(argv[i], "--cutters") == 0 || strcmp(argv[i], "--machine") == 0
+            || strcmp(argv[i], "--max-findings") == 0) {
             i++;
             continue;
         }
         files++;
-        current_file = argv[i];
         if (!read_cbf(argv[i], &n)) {
             status = EXIT_USAGE;
             continue;
         }
-        current_warnings = 0;
-        errors = cbf_validate(file_buf, n, &opt, print_finding, NULL);
+        nheld = 0;
+        errors = cbf_validate(file_buf, n, &opt, hold_finding, NULL);
+        if (out_of_memory) {
+            fprintf(stderr, "cbf-c: %s: out of memory holding its findings\n", argv[i]);
+            return EXIT_USAGE;
+        }
         if (errors > 0 && status < EXIT_FINDINGS)
             status = EXIT_FINDINGS;
+        qsort(held, nheld, sizeof *held, finding_cmp);
+        for (k = 0; k < nheld; k++) {
+            if (max_findings == 0 || k < max_findings)
+                print_finding(argv[i], &held[k]);
+            free(held[k].message);
+        }
+        if (max_findings && nheld > max_findings)
+            printf("%s: %lu more finding(s) not shown (--max-findings 0 prints all)\n", argv[i],
+                   (unsigned long)(nheld - max_findings));
         printf("%s: %s: %ld error(s), %ld warning(s) [profile %s]\n", argv[i], errors > 0 ? "FAIL" : "ok", errors,
-               current_warnings, profile_names[opt.profile]);
+               (long)nheld - errors, profile_names[opt.profile]);
     }
     if (!files) {
         usage();

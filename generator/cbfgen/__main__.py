@@ -1,7 +1,17 @@
 """`python -m cbfgen`: load the spec and run every emitter; `cbfgen diff` compares two specs.
 
     python -m cbfgen [--spec spec/cbf.yaml] [--out generated] [--only EMITTER] [--check-spec]
+                     [--no-ksc] [--golden DIR] [--report FILE]
     python -m cbfgen diff OLD.yaml NEW.yaml [--json]
+    python -m cbfgen --version
+
+Every binding or none: with the kaitai emitter, the Kaitai parsers are compiled too (cbfgen.ksc
+says how the compiler is found); when it is not found, cbfgen says what is missing in one line
+and exits 2 before writing anything. --no-ksc writes the .ksy without its parsers (this
+repository's `make` compiles them in a later step). The docs' golden-case pages, the command
+pages' CUT examples and the traceability matrix need the golden cases (--golden DIR) and the
+conformance report (--report FILE, with the failure lists in failures/ beside it); without them
+those sections say that no case or report is present, and cbfgen says so on stderr.
 
 `diff` exits 0 when nothing is breaking, 1 when something is wire-breaking,
 3 when something is text-breaking only (a rename), 2 on bad input (a spec
@@ -24,7 +34,9 @@ import sys
 import tempfile
 from pathlib import Path
 
+from . import __version__
 from . import emit as emit_pkg
+from . import ksc as ksc_mod
 from .diff import main as diff_cli
 from .loader import SpecError, load
 
@@ -66,11 +78,22 @@ def main(argv: list[str] | None = None) -> int:
             return diff_main(argv[1:])
         except SystemExit as exc:  # argparse: usage errors are bad input
             return EXIT_BAD_INPUT if exc.code else EXIT_OK
-    ap = argparse.ArgumentParser(prog="cbfgen", description="Generate every CBF binding from the spec.")
+    ap = argparse.ArgumentParser(prog="cbfgen", description="Generate every CBF binding from the spec.",
+                                 epilog="Exit codes: 0 written, 2 a spec that does not load or a tool that is "
+                                        "missing (nothing written).")
+    ap.add_argument("--version", action="version", version=f"cbfgen {__version__}")
     ap.add_argument("--spec", default="spec/cbf.yaml", help="the format spec (default: %(default)s)")
     ap.add_argument("--out", default="generated", help="output folder (default: %(default)s)")
     ap.add_argument("--only", action="append", choices=emitters(), help="run only this emitter (repeatable)")
     ap.add_argument("--check-spec", action="store_true", help="only load and check the spec")
+    ap.add_argument("--no-ksc", action="store_true",
+                    help="write the .ksy but not the Kaitai parsers (by default they are compiled, and a missing "
+                         f"kaitai-struct-compiler {ksc_mod.VERSION} is an error)")
+    ap.add_argument("--golden", type=Path, metavar="DIR",
+                    help="golden cases (*.cbf, *.expect.yaml) for the docs' golden pages and CUT examples")
+    ap.add_argument("--report", type=Path, metavar="FILE",
+                    help="conformance report.json (failure lists in failures/ beside it) for the docs' "
+                         "traceability matrix")
     args = ap.parse_args(argv)
     try:
         spec = load(args.spec)
@@ -80,9 +103,23 @@ def main(argv: list[str] | None = None) -> int:
     if args.check_spec:
         print(f"{args.spec}: ok ({len(spec.commands)} commands, {len(spec.checks)} checks)")
         return 0
+    selected = args.only or emitters()
+    compiler = None
+    if "kaitai" in selected and not args.no_ksc:
+        try:  # before anything is written: every binding or none
+            compiler = ksc_mod.find()
+        except ksc_mod.KscMissing as exc:
+            print(f"cbfgen: {exc}", file=sys.stderr)
+            return 2
+    for opt, path, want in ((args.golden, args.golden, "dir"), (args.report, args.report, "file")):
+        if opt is not None and not (path.is_dir() if want == "dir" else path.is_file()):
+            print(f"cbfgen: {path}: no such {'folder' if want == 'dir' else 'file'}", file=sys.stderr)
+            return 2
+    if "docs" in selected:
+        _docs_inputs(args.golden, args.report)
     out = Path(args.out)
     changed = 0
-    for name in args.only or emitters():
+    for name in selected:
         module = importlib.import_module(f"{emit_pkg.__name__}.{name}")
         files: dict[str, bytes] = module.emit(spec)
         owned = {Path(p).parts[0] for p in files}
@@ -98,8 +135,34 @@ def main(argv: list[str] | None = None) -> int:
                 if p.is_file() and rel not in files and not rel.startswith(keep) and "__pycache__" not in rel:
                     p.unlink()
                     changed += 1
-    print(f"cbfgen: {args.spec} -> {out}/ ({changed} file(s) changed)")
+    if compiler is not None:
+        try:
+            ksc_mod.compile_parsers(compiler, out)
+        except ksc_mod.KscMissing as exc:
+            print(f"cbfgen: {exc}", file=sys.stderr)
+            return 2
+    print(f"cbfgen: {args.spec} -> {out}/ ({changed} file(s) changed"
+          f"{', Kaitai parsers compiled' if compiler is not None else ''})")
     return 0
+
+
+def _docs_inputs(golden: Path | None, report: Path | None) -> None:
+    """Point the docs emitter at the golden cases and the conformance report (its module's paths,
+    read when it runs); say on stderr which sections stay empty without them."""
+    from .emit import docs
+
+    if golden is not None:
+        docs.GOLDEN = golden.resolve()
+    if report is not None:
+        docs.REPORT = report.resolve()
+        docs.FAILURES = report.resolve().parent / "failures"
+        docs.RELIABILITY = report.resolve().parent / "reliability.json"
+    if not docs.GOLDEN.is_dir():
+        print("cbfgen: docs: no golden cases (--golden DIR): the golden-case pages and the command pages' CUT "
+              "examples say none is present", file=sys.stderr)
+    if not docs.REPORT.is_file():
+        print("cbfgen: docs: no conformance report (--report FILE): the traceability matrix shows no status",
+              file=sys.stderr)
 
 
 if __name__ == "__main__":

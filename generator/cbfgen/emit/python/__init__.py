@@ -164,6 +164,6 @@ def emit(spec: Spec) -> dict[str, bytes]:
     out[f"{PKG}/machine.schema.json"] = (json.dumps(machine_schema(spec), indent=1) + "\n").encode()
     out[f"{PKG}/option_files.json"] = (json.dumps(option_rules(spec), indent=1) + "\n").encode()  # issue 28
     out[f"{PKG}/py.typed"] = b""
-    for src in sorted((HERE / "runtime").glob("*.py")):
-        out[f"{PKG}/{src.name}"] = src.read_bytes()
+    for src in sorted([*(HERE / "runtime").glob("*.py"), *(HERE / "runtime").glob("*.schema.json")]):
+        out[f"{PKG}/{src.name}"] = src.read_bytes()  # the JSON schemas of the CLI's outputs ship too
     return out

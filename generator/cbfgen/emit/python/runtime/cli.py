@@ -22,11 +22,19 @@ import os
 import stat
 import sys
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
+
+
+class _Usage(Exception):
+    """Bad usage found after parsing: the line argparse would print, exit 2."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.message = message
 
 
 class _Fail(Exception):
@@ -336,10 +344,62 @@ def cmd_decode(a: argparse.Namespace) -> int:
 
 
 def cmd_encode(a: argparse.Namespace) -> int:
+    if a.check:
+        return _encode_check(a)
+    if a.output is None:
+        raise _Usage("cbf encode: the following arguments are required: -o/--output (see cbf encode --help)")
+    if len(a.files) > 1:
+        raise _Usage("cbf encode: one FILE with -o; several only with --check (see cbf encode --help)")
+    a.file = a.files[0]
+    _write(a.output, _encode_one(a))
+    return EXIT_OK
+
+
+def _cut_line_of(text: str, message: str) -> int | None:
+    """The CUT line of the record an encode error names ("record N: ..."), or None."""
+    import re
+
+    from . import tables as T
+
+    m = re.search(r"\brecord (\d+)\b", message)
+    if m is None:
+        return None
+    want = int(m.group(1))
+    ext = T.CUT["extensions"]
+    fold = str.lower if T.CUT["keyword_case"] == "lower" else str
+    not_records = {fold(T.CUT[k]) for k in ("header_keyword", "header_ext_keyword", "checksum_keyword")} | \
+        {fold(ext["version_keyword"]), fold(ext["field_keyword"])}
+    index = -1
+    for n, line in enumerate(text.splitlines(), 1):
+        word = line.strip(" ").split(" ", 1)[0]
+        if word and fold(word) not in not_records:
+            index += 1
+            if index == want:
+                return n
+    return None
+
+
+def _encode_check(a: argparse.Namespace) -> int:
+    """--check: encode each file in memory, write nothing; one line per file that does not encode."""
+    if a.output is not None:
+        raise _Usage("cbf encode: --check writes nothing: drop -o (see cbf encode --help)")
+    status = EXIT_OK
+    for path in a.files:
+        a.file = path
+        try:
+            _encode_one(a)
+        except _Fail as exc:
+            sys.stderr.write(f"cbf: {exc.message}\n")
+            status = EXIT_USAGE
+    return status
+
+
+def _encode_one(a: argparse.Namespace) -> bytes:
     from .errors import CbfError
     from .writer import encode
 
-    _check_output(a.output)
+    if a.output is not None:
+        _check_output(a.output)
     text = _read_text(a.file, 64 * _max_file_size())
     if not text.strip():
         raise _Fail(f"{a.file}: empty input: nothing to encode")
@@ -367,11 +427,13 @@ def cmd_encode(a: argparse.Namespace) -> int:
             from .cut import from_cut
 
             model = from_cut(text, version=a.version, profile=a.profile)
-        out = encode(model, keep_stored=a.keep_stored, profile=a.profile)
+        return encode(model, keep_stored=a.keep_stored, profile=a.profile)
     except CbfError as exc:
+        if kind == "cut" and exc.line is None:
+            line = _cut_line_of(text, str(exc))
+            if line is not None:  # CUT input: the line people edit, not an offset in bytes they never saw
+                raise _Fail(f"{a.file}: line {line}: {exc.message}") from None
         raise _Fail(f"{a.file}: {exc}") from None
-    _write(a.output, out)
-    return EXIT_OK
 
 
 def _refuse_not_cbf(path: str, data: bytes) -> None:
@@ -397,9 +459,8 @@ def _json_finding(d: dict[str, Any]) -> str:
     return "  {\n" + body + "\n  }"
 
 
-def cmd_validate(a: argparse.Namespace) -> int:
-    data = _read(a.file, _max_file_size())
-    _refuse_not_cbf(a.file, data)
+def _validate_options(a: argparse.Namespace) -> dict[str, Any]:
+    """The options every input is validated with, read (and refused) once for the batch."""
     cutters = None
     if a.cutters:
         from .cutters import load_cutter_table
@@ -417,15 +478,128 @@ def cmd_validate(a: argparse.Namespace) -> int:
             machine = load_machine(a.machine)
         except MachineError as exc:
             raise _Fail(exc.message) from None  # names the file and the JSON path already
-    # The engine (and numpy) is imported once every input has been read and checked: a refused
-    # file, cutter table or machine file costs no more than the refusal.
+    return {"profile": a.profile, "part_number": a.part_number, "cutters": cutters, "machine": machine}
+
+
+def _expand(paths: Sequence[str]) -> list[tuple[str, str | None]]:
+    """Each input as (path, why it is refused or None), in the order given: a folder is its
+    ``*.cbf`` files, recursively, sorted by path; a folder with none is refused."""
+    out: list[tuple[str, str | None]] = []
+    for path in paths:
+        if path != "-" and Path(path).is_dir():
+            try:
+                found = sorted(str(p) for p in Path(path).rglob("*.cbf") if not p.is_dir())
+            except OSError as exc:
+                out.append((path, _unreadable(path, exc).message))
+                continue
+            if not found:
+                out.append((path, f"{path}: is a directory holding no *.cbf file"))
+            out.extend((p, None) for p in found)
+        else:
+            out.append((path, None))
+    return out
+
+
+_BATCH_OPTIONS: dict[str, Any] = {}  # set before the process pool forks: its workers read it
+
+
+def _validate_one(item: tuple[str, str | None, bytes | None]) -> Any:
+    """One input's FileResult (cbf.report): its findings, or the one line that refuses it."""
+    from .report import FileResult
     from .validation import iter_findings
 
-    # Findings are printed as they are made, never all held: a file can give millions.
-    findings = iter_findings(data, profile=a.profile, part_number=a.part_number, cutters=cutters, machine=machine)
+    path, refused, data = item
+    if refused is not None:
+        return FileResult(path, refused=refused)
+    try:
+        if data is None:
+            data = _read(path, _max_file_size())
+        _refuse_not_cbf(path, data)
+    except _Fail as exc:
+        return FileResult(path, refused=exc.message)
+    return FileResult(path, tuple(iter_findings(data, **_BATCH_OPTIONS)))
+
+
+def _jobs(text: str) -> int:
+    n = _count(text)
+    return n or len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else n or (os.cpu_count() or 1)
+
+
+def _results(items: list[tuple[str, str | None, bytes | None]], jobs: int) -> Iterator[Any]:
+    """Each input's result, in input order. A process pool (forked after the engine and numpy are
+    imported, so no worker imports them again) only where it pays: several cores, many files."""
+    if jobs <= 1 or len(items) < 4 * jobs or not hasattr(os, "fork"):
+        yield from map(_validate_one, items)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork")) as pool:
+        yield from pool.map(_validate_one, items, chunksize=max(1, min(64, len(items) // (8 * jobs))))
+
+
+def cmd_validate(a: argparse.Namespace) -> int:
+    fmt = "json" if a.json else a.format
+    if len(a.files) == 1 and fmt in ("text", "json") and (a.files[0] == "-" or not Path(a.files[0]).is_dir()):
+        return _validate_stream(a, a.files[0], fmt)
+    from . import report
+
+    if a.files.count("-") > 1:
+        raise _Fail("-: standard input given more than once")
+    expanded = _expand(a.files)
+    if len(expanded) == 1 and expanded[0][1] is not None:
+        raise _Fail(expanded[0][1])  # one input, refused: one line, nothing on stdout (as for one file)
+    items: list[tuple[str, str | None, bytes | None]] = []
+    for path, refused in expanded:
+        data = None
+        if path == "-" and refused is None:  # read here: a worker process cannot share stdin
+            try:
+                data = _read(path, _max_file_size())
+            except _Fail as exc:
+                refused = exc.message
+        items.append((path, refused, data))
+    _BATCH_OPTIONS.clear()
+    _BATCH_OPTIONS.update(_validate_options(a))
+    from . import validation  # noqa: F401  (the engine and numpy, imported once, before any fork)
+
+    results: list[Any] = []
+    for r in _results(items, a.jobs):
+        results.append(r)
+        if r.refused is not None and fmt in ("text", "github"):
+            sys.stderr.write(f"cbf: {r.refused}\n")
+        if fmt == "text" and r.refused is None:
+            _out(report.text(r, a.profile, a.max_findings))
+        elif fmt == "github":
+            _out(report.github(r))
+    if fmt == "text":
+        _out(report.summary_line(results))
+    elif fmt == "github":
+        sys.stderr.write(report.summary_line(results))
+    elif fmt == "json":
+        _out(report.as_json(results, a.profile))
+    elif fmt == "junit":
+        _out(report.junit(results, a.profile))
+    elif fmt == "sarif":
+        _out(report.sarif(results, a.profile))
+    else:
+        _out(report.gitlab(results))
+    return report.batch_status(results)
+
+
+def _validate_stream(a: argparse.Namespace, path: str, fmt: str) -> int:
+    """One file: its findings printed as they are made, never all held (a file can give millions)."""
+    data = _read(path, _max_file_size())
+    _refuse_not_cbf(path, data)
+    options = _validate_options(a)
+    # The engine (and numpy) is imported once every input has been read and checked: a refused
+    # file, cutter table or machine file costs no more than the refusal.
+    from .report import finding_line, more_line, verdict_line
+    from .validation import iter_findings
+
+    findings = iter_findings(data, **options)
     errors = total = 0
-    if a.json:
-        head = json.dumps({"file": a.file, "profile": a.profile}, indent=1)
+    if fmt == "json":
+        head = json.dumps({"file": path, "profile": a.profile}, indent=1)
         _out(head[:-2] + ',\n "findings": [')  # the same text as json.dumps of the whole document
         for f in findings:
             errors += f.severity == "error"
@@ -437,13 +611,10 @@ def cmd_validate(a: argparse.Namespace) -> int:
             errors += f.severity == "error"
             total += 1
             if a.max_findings == 0 or total <= a.max_findings:
-                where = f"record {f.record}" if f.record is not None else "header"
-                _out(f"{a.file}:{f.offset}: {f.severity} {f.check} ({where}): {f.message}\n")
+                _out(finding_line(path, f))
         if a.max_findings and total > a.max_findings:
-            _out(f"{a.file}: {total - a.max_findings} more finding(s) not shown "
-                 f"(--max-findings 0 prints all, --json lists all)\n")
-        verdict = "FAIL" if errors else "ok"
-        _out(f"{a.file}: {verdict}: {errors} error(s), {total - errors} warning(s) [profile {a.profile}]\n")
+            _out(more_line(path, total - a.max_findings))
+        _out(verdict_line(path, errors, total - errors, a.profile))
     return EXIT_FINDINGS if errors else EXIT_OK
 
 
@@ -453,9 +624,18 @@ def cmd_info(a: argparse.Namespace) -> int:
     model = _decode(a.file)
     h = model.header
     vid = T.version_id(*model.version)
+    info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
+    counts = Counter(r.name or f"unknown 0x{r.code:02X}" for r in model.records)
+    by_count = sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))
+    if a.json:
+        header = {f.name: getattr(h, f.name).hex() if f.kind == "bytes" else getattr(h, f.name) for f in info.fields}
+        doc = {"schema": 1, "file": a.file, "version": f"{model.version[0]}.{model.version[1]}", "version_id": vid,
+               "read_as": model.version_id, "header": header, "records": len(model.records),
+               "commands": dict(by_count), "trailing_bytes": len(model.trailing)}
+        _out(json.dumps(doc, indent=1) + "\n")
+        return EXIT_OK
     out = [f"file: {a.file}",
            f"version: {model.version[0]}.{model.version[1]} ({vid or 'unknown; read as ' + T.FALLBACK_VERSION})"]
-    info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
     for f in info.fields:
         v = getattr(h, f.name)
         if f.kind == "bytes":
@@ -464,8 +644,7 @@ def cmd_info(a: argparse.Namespace) -> int:
             v = f"0x{v:0{2 * f.size}X}"
         out.append(f"{f.name}: {v}")
     out.append(f"records: {len(model.records)}")
-    counts = Counter(r.name or f"unknown 0x{r.code:02X}" for r in model.records)
-    for name, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
+    for name, n in by_count:
         out.append(f"  {name}: {n}")
     if model.trailing:
         out.append(f"trailing bytes: {len(model.trailing)}")
@@ -598,12 +777,24 @@ def cmd_stats(a: argparse.Namespace) -> int:
 
 
 def cmd_diff(a: argparse.Namespace) -> int:
+    import time
+
     from . import semdiff
     from . import tables as T
 
-    ma, mb = _load_any(a.a), _load_any(a.b)
+    start = time.monotonic()
+
+    def progress(message: str) -> None:  # a long run says what it is doing; a short one stays quiet
+        if time.monotonic() - start > 1.0:
+            sys.stderr.write(f"cbf diff: {message} ({time.monotonic() - start:.1f} s)\n")
+            sys.stderr.flush()
+
+    ma = _load_any(a.a)
+    progress(f"read {a.a}: {len(ma.records)} records")
+    mb = _load_any(a.b)
+    progress(f"read {a.b}: {len(mb.records)} records")
     tol = T.TOL["position_mm"] if a.tol is None else a.tol
-    d = semdiff.diff(ma, mb, tol)
+    d = semdiff.diff(ma, mb, tol, progress)
     if a.json:
         sys.stdout.write(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
     else:
@@ -665,6 +856,11 @@ def version_text() -> str:
     return f"cbf {__version__} (spec {SPEC_REVISION})"
 
 
+def _schema_path(name: str) -> str:
+    """Where the installed package keeps a JSON schema (shipped beside the code)."""
+    return str(Path(__file__).resolve().parent / f"{name}.schema.json")
+
+
 def parser() -> argparse.ArgumentParser:
     from . import tables as T
 
@@ -677,13 +873,19 @@ def parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
     d = sub.add_parser("decode", help="CBF to canonical JSON or CUT text")
     d.add_argument("file", help="CBF file, or - for stdin")
-    d.add_argument("--to", choices=["json", "cut"], default="json")
+    d.add_argument("--to", choices=["json", "cut"], default="json",
+                   help="canonical JSON (default; PROTOCOL.md's shape, schema: "
+                        f"{_schema_path('canonical')}) or CUT text (cbf encode reads both back)")
     d.add_argument("--profile", choices=profiles, default=profiles[0], help="for CUT output")
     d.add_argument("-o", "--output", default="-", help="output file (default: stdout)")
     d.set_defaults(func=cmd_decode)
     e = sub.add_parser("encode", help="CUT text or canonical JSON to CBF")
-    e.add_argument("file", help="FILE.cut or FILE.json, or - for stdin")
-    e.add_argument("-o", "--output", required=True, help="output CBF file, or - for stdout")
+    e.add_argument("files", nargs="+", metavar="file", help="FILE.cut or FILE.json, or - for stdin (several with "
+                                                             "--check)")
+    e.add_argument("-o", "--output", help="output CBF file, or - for stdout (required unless --check)")
+    e.add_argument("--check", action="store_true",
+                   help="only check that each file encodes (a pre-commit hook on *.cut): write nothing, one line "
+                        "per file that does not, exit 2 then")
     e.add_argument("--version", choices=writable, help=f"CBF version for CUT input (default {T.DEFAULT_VERSION})")
     e.add_argument("--profile", choices=profiles, default=profiles[0])
     e.add_argument("--input-format", choices=["cut", "json"], help="default: from the extension or content")
@@ -691,20 +893,30 @@ def parser() -> argparse.ArgumentParser:
                    help="JSON input only: write stored sequence numbers, count and checksums as given "
                         "(reproduce a faulty file); refused for CUT input, which stores none")
     e.set_defaults(func=cmd_encode)
-    v = sub.add_parser("validate", help="run every integrity check")
-    v.add_argument("file", help="CBF file, or - for stdin")
+    v = sub.add_parser("validate", help="run every integrity check on files and folders",
+                       description="Validate CBF files: each FILE, each folder's *.cbf files (recursively, "
+                                   "sorted), - for stdin; in one process, results in input order. Exit status: "
+                                   "the worst of the inputs (0 ok, 1 an error finding, 2 an input not validated).")
+    v.add_argument("files", nargs="+", metavar="file", help="CBF file, folder (its *.cbf files), or - for stdin")
     v.add_argument("--profile", choices=profiles, default=profiles[0])
     v.add_argument("--part-number", help="implant part number to compare (check 6.1.1)")
     v.add_argument("--cutters", help="cutter table, CSV or YAML: name, length, radius (check 6.1.2)")
     v.add_argument("--machine", metavar="FILE",
-                   help="machine limits, JSON or YAML (schema cbf/machine.schema.json): breaches become errors; "
-                        "without it the spec's default machine gives warnings (check machine_limits)")
-    v.add_argument("--json", action="store_true", help="print findings as JSON (always all of them)")
+                   help=f"machine limits, JSON or YAML (schema: {_schema_path('machine')}): breaches become "
+                        f"errors; without it the spec's default machine gives warnings (check machine_limits)")
+    v.add_argument("--format", choices=["text", "json", "junit", "sarif", "github", "gitlab"], default="text",
+                   help=f"text (default); json (schema: {_schema_path('validate')}); junit (JUnit XML); sarif "
+                        f"(SARIF 2.1.0); github (workflow annotation commands); gitlab (code quality report)")
+    v.add_argument("--json", action="store_true", help="the same as --format json")
     v.add_argument("--max-findings", type=_count, default=50, metavar="N",
-                   help="print at most N findings, then how many more there are; 0 prints all (default 50)")
+                   help="text: print at most N findings a file, then how many more there are; 0 prints all "
+                        "(default 50)")
+    v.add_argument("-j", "--jobs", type=_jobs, default=_jobs("0"), metavar="N",
+                   help="processes for many files (default 0: every core this process may use)")
     v.set_defaults(func=cmd_validate)
     i = sub.add_parser("info", help="header summary and counts by command")
     i.add_argument("file", help="CBF file, or - for stdin")
+    i.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('info')})")
     i.set_defaults(func=cmd_info)
     _tool_parsers(sub, profiles, writable)
     return p
@@ -752,15 +964,16 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
     s = sub.add_parser("stats", help="toolpath summary: bounding box, path length, time estimate, shapes, "
                                      "cutters, phases, checkpoints")
     s.add_argument("file", help="CBF file (or CUT / JSON text), or - for stdin")
-    s.add_argument("--json", action="store_true", help="print JSON (shape: schemas/stats.schema.json)")
+    s.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('stats')})")
     s.set_defaults(func=cmd_stats)
     f = sub.add_parser("diff", help="semantic diff of two files (CBF or CUT on either side); exit 0 equal "
                                     "within --tol, 1 differ, 2 bad input")
     f.add_argument("a", help="first file (CBF, CUT or JSON)")
     f.add_argument("b", help="second file (CBF, CUT or JSON)")
     f.add_argument("--tol", type=_mm, metavar="MM",
-                   help=f"numbers equal within this (default {T.TOL['position_mm']}, tolerances.position_mm)")
-    f.add_argument("--json", action="store_true", help="print JSON (shape: schemas/diff.schema.json)")
+                   help=f"every number (mm, m/s, ... in its own unit) is equal within this (default "
+                        f"{T.TOL['position_mm']}, tolerances.position_mm)")
+    f.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('diff')})")
     f.set_defaults(func=cmd_diff)
     g = sub.add_parser("plot", help="draw the toolpath: isometric view and three projections (needs matplotlib, "
                                     "the plot extra)")
@@ -784,6 +997,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return code
     except _Fail as exc:
         sys.stderr.write(f"cbf: {exc.message}\n")
+        return EXIT_USAGE
+    except _Usage as exc:
+        sys.stderr.write(f"{exc.message}\n")
         return EXIT_USAGE
     except _StdoutFailed as exc:
         _drop_stdout()

@@ -310,7 +310,8 @@ class _Cursor:
         m = _FLOAT.match(self.text, self.pos)
         if not m or m.end() == self.pos:
             got = self.text[self.pos:].split(maxsplit=1)
-            raise self.fail(f"{name}: {_show(got[0]) if got else 'nothing'} is not a number")
+            label = "" if name.lower() == self.what.lower() else f"{name}: "  # not "speed: speed: ..."
+            raise self.fail(f"{label}{_show(got[0])} is not a number" if got else f"{label}a number is missing")
         self.pos = m.end()
         try:
             return parse_float(m.group(0))
