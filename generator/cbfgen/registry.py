@@ -120,7 +120,8 @@ class FieldType:
 
 def _ints() -> dict[str, FieldType]:
     out: dict[str, FieldType] = {}
-    kinds: tuple[tuple[FieldKind, str, str], ...] = (("uint", "u", "unsigned"), ("sint", "s", "signed, two's complement"))
+    kinds: tuple[tuple[FieldKind, str, str], ...] = (
+        ("uint", "u", "unsigned"), ("sint", "s", "signed, two's complement"))
     for kind, prefix, what in kinds:
         for size in (1, 2, 4, 8):
             out[f"{prefix}{size}"] = FieldType(f"{prefix}{size}", kind, size, f"{what} {8 * size}-bit integer")
