@@ -579,10 +579,9 @@ def _checks_pass(ctx: _Ctx, st: _State) -> None:
         for v in ch.get("versions", []):
             if v not in st.vids:
                 ctx.fail(ch, f"check {cid}: unknown version {v!r}", "versions")
-        if ck.targeted and not targets and not ch.get("targets"):
-            ctx.fail(ch, f"check {cid}: kind {kname} needs targets", "kind")
-        if ck.versioned and not ch.get("versions"):
-            ctx.fail(ch, f"check {cid}: {kname} needs versions", "kind")
+        missing = [k for k in ck.required if not ch.get(k)]
+        for k in missing:
+            ctx.fail(ch, f"check {cid}: kind {kname} needs {k}", "kind")
         for cname in ch.get("commands", []):
             if cname not in cmd_by_name:
                 ctx.fail(ch, f"check {cid}: unknown command {cname}", "commands")
@@ -593,6 +592,8 @@ def _checks_pass(ctx: _Ctx, st: _State) -> None:
                 ctx.fail(ch, f"check {cid}: min {ch['min']} exceeds max {ch['max']}", "min")
         if ch.get("decision") and ch["decision"] not in known_notes:
             ctx.fail(ch, f"check {cid}: unknown decision {ch['decision']!r}", "decision")
+        if missing:
+            continue
         values: dict[str, Any] = {k: ch[k] for k in ck.keys if k in ch}
         if "targets" in ck.keys:
             values["targets"] = tuple(targets)

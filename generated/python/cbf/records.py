@@ -160,12 +160,12 @@ def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
 def _make_dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
     fields: list[Any] = []
     for f in lay.args:
-        if f.kind == "float":
-            fields.append((f.name, np.dtype(T.BO + "f4"), (f.count,)) if f.count > 1 else (f.name, T.BO + "f4"))
-        elif f.kind == "uint":
-            fields.append((f.name, T.BO + {1: "u1", 2: "u2", 4: "u4"}[f.elem_size]))
-        else:
+        if f.numpy is None:  # str, bytes: rows of bytes
             fields.append((f.name, np.uint8, (f.size,)))
+        elif f.count > 1:
+            fields.append((f.name, np.dtype(T.BO + f.numpy), (f.count,)))
+        else:
+            fields.append((f.name, T.BO + f.numpy))
     return np.dtype(fields)
 
 
