@@ -34,7 +34,6 @@ EXEMPT = {
     "cannot read: {}": "a path, not a spec: test_cli_bad_input reads a missing spec",
     "check {}: a second check of kind {} (first: {}, line {}); the kind takes one":
         "every kind of the registry is repeatable today (registry.CheckKind.repeatable)",
-    "{} {}: {}": "the names pass: branch escape's keyword_clash is not merged yet (loader._names_pass)",
 }
 
 

@@ -37,16 +37,15 @@ EXAMPLES = 80 if LONG else 12
 Doc = dict[str, Any]
 Edit = Callable[[st.DrawFn, Doc], str]
 
-# Text a binding carries verbatim into comments and docstrings. Hook: once branch escape's escaping
-# is merged (cbfgen.escape), HOSTILE joins the alphabet: every emitter must then escape it.
+# Text a binding carries into comments, docstrings and strings: every emitter escapes it for its
+# target (cbfgen.escape), so hostile text must generate, compile and agree like any other.
+# Names reserved in a binding's language are refused (escape.keyword_clash).
+RESERVED = ("class", "new", "default", "None", "int", "switch")
 SAFE_TEXT = string.ascii_letters + string.digits + " .,;:()[]-+='&%<>!?"
 HOSTILE = ('"""', "\\x", "/*", "*/", "\\", "{{", "}}", "{%", "#")
-try:
-    from cbfgen import escape as _escape  # type: ignore[attr-defined,unused-ignore]  # noqa: F401
-    TEXTS = st.one_of(st.text(SAFE_TEXT, min_size=1, max_size=30),
-                      st.lists(st.sampled_from(HOSTILE + tuple(SAFE_TEXT)), min_size=1, max_size=12).map("".join))
-except ImportError:
-    TEXTS = st.text(SAFE_TEXT, min_size=1, max_size=30).filter(lambda s: s.strip() != "")
+TEXTS = st.one_of(st.text(SAFE_TEXT, min_size=1, max_size=30).filter(lambda s: s.strip() != ""),
+                  st.lists(st.sampled_from(HOSTILE + tuple(SAFE_TEXT)), min_size=1, max_size=12).map("".join)
+                  .filter(lambda s: s.strip() != ""))
 
 
 def _pick(draw: st.DrawFn, items: list[Any]) -> Any:
@@ -155,7 +154,7 @@ def names(draw: st.DrawFn, doc: Doc) -> str:
     if not args:
         return "no argument"
     a = _pick(draw, args)
-    a["name"] = draw(st.sampled_from(["value", "x_1", "a" * 31, a["name"] + "_2"]))
+    a["name"] = draw(st.sampled_from(["value", "x_1", "a" * 31, a["name"] + "_2", *RESERVED]))
     return f"{cmd['name']} argument {a['name']}"
 
 
