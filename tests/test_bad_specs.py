@@ -176,6 +176,6 @@ def test_check_spec_prints_every_problem_and_exits_2(tmp_path: Path) -> None:
                           text=True, check=False)
     assert done.returncode == 2, done
     lines = done.stderr.splitlines()
-    assert len(lines) >= 3 and all(re.match(rf"(cbfgen: )?{re.escape(str(spec))}:\d+: ", ln) for ln in lines), lines
+    assert len(lines) >= 3 and all(re.match(rf"cbfgen: {re.escape(str(spec))}:\d+: ", ln) for ln in lines), lines
     for what in ("arguments sum to", "versions on a check of kind", "is not in the registry"):
         assert any(what in ln for ln in lines), (what, lines)
