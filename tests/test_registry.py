@@ -113,15 +113,26 @@ import cbf
 from cbf import tables as T
 from cbf.layouts import Probe
 from cbf.model import Cbf, Record, new_header
-value = ast.literal_eval(sys.argv[1])
-model = Cbf(new_header(T.DEFAULT_VERSION, implant_descriptor="PN-1"), (Record.of(Probe(value=value)),))
+values = ast.literal_eval(sys.argv[1])
+model = Cbf(new_header(T.DEFAULT_VERSION, implant_descriptor="PN-1"), tuple(Record.of(Probe(value=v)) for v in values))
 data = cbf.encode(model)
 back = cbf.decode(data)
-assert back.records[0].decode_args() == Probe(value=value), back.records[0].decode_args()
+assert [r.decode_args() for r in back.records] == [Probe(value=v) for v in values], back.records
 assert cbf.validate(data) == [], cbf.validate(data)
 assert cbf.encode(cbf.from_cut(cbf.to_cut(back))) == data, cbf.to_cut(back)
 assert cbf.encode(cbf.from_canonical(cbf.to_canonical(back))) == data
 open(sys.argv[2], "wb").write(data)
+# cbf.testing draws valid files that hold the type too
+from hypothesis import given, settings
+from cbf.testing import cutfiles
+seen = []
+@settings(max_examples=200, derandomize=True, database=None, deadline=None)
+@given(cutfiles(max_records=8))
+def drawn(d):
+    assert cbf.validate(d) == [], cbf.validate(d)
+    seen.extend(r for r in cbf.decode(d).records if r.code == Probe.CODE)
+drawn()
+assert seen, "no PROBE record drawn"
 """
 
 
@@ -133,7 +144,8 @@ def _types_of(binding: str) -> list[str]:
 def test_python_carries_each_type_it_claims(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     t = TYPES[name]
     out = _generate(t, tmp_path, "python", monkeypatch)
-    done = subprocess.run([sys.executable, "-c", PYTHON_SCRIPT, repr(_value(t)), str(tmp_path / "f.cbf")],
+    values = [t.min, -1, 0, 1, t.max] if t.kind == "sint" else [0, t.max] if t.kind == "uint" else [_value(t)]
+    done = subprocess.run([sys.executable, "-c", PYTHON_SCRIPT, repr(values), str(tmp_path / "f.cbf")],
                           env={"PYTHONPATH": str(out / "python"), "PATH": "/usr/bin:/bin"}, capture_output=True,
                           text=True, check=False)
     assert done.returncode == 0, done.stderr[-3000:]

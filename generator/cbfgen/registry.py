@@ -141,8 +141,7 @@ TYPES: dict[str, FieldType] = {
 # type's codes from this registry; what a binding cannot carry yet is refused at load (the
 # binding-capabilities pass), with the field's line, before any emitter runs:
 #   c       the engine of rev 03: unsigned 1, 2 and 4 bytes, binary32 (branch cruntime widens it)
-#   python  unsigned integers of every width; no signed integers yet (the CUT text, convert and the
-#           command line read integers as unsigned), no binary64 (canonical JSON carries binary32)
+#   python  every integer; no binary64 (canonical JSON and the CUT text carry binary32)
 #   kaitai  every integer; no binary64 (its conformance testees report floats as binary32)
 # Vectors (count > 1) are float vectors only (x, y, z) in every binding.
 BINDINGS = ("python", "kaitai", "c")
@@ -152,9 +151,7 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
     When a binding learns a type, its rule here changes, and nothing else in the loader."""
     gaps: set[str] = set()
-    if t.kind == "sint":
-        gaps |= {"python", "c"}
-    if t.kind == "uint" and t.size not in (1, 2, 4):
+    if t.is_integer and (t.kind == "sint" or t.size not in (1, 2, 4)):
         gaps.add("c")
     if t.kind == "float" and t.size != 4:
         gaps |= {"python", "kaitai", "c"}

@@ -44,6 +44,20 @@ class FieldInfo:
     code: str | None = None  # struct code of one element (the spec's type, cbfgen/registry.py); None: str, bytes
     bits_code: str | None = None  # struct code of an element's bit pattern (a float as the unsigned of its width)
     numpy: str | None = None  # numpy dtype code without byte order ("u2", "f4"); None: str, bytes
+    lo: int | None = None  # an integer's least and greatest value (unsigned or two's complement)
+    hi: int | None = None
+
+    @property
+    def is_int(self) -> bool:
+        return self.lo is not None
+
+    @property
+    def int_name(self) -> str:
+        """"an unsigned 16-bit integer", "a signed 8-bit integer" (for messages)."""
+        return f"{'an unsigned' if self.kind == 'uint' else 'a signed'} {8 * self.elem_size}-bit integer"
+
+    def holds(self, value: int) -> bool:
+        return self.lo is not None and self.hi is not None and self.lo <= value <= self.hi
 
     @property
     def size(self) -> int:
@@ -68,7 +82,7 @@ class FieldInfo:
 
 def _field(d: dict[str, Any]) -> FieldInfo:
     return FieldInfo(d["name"], d["kind"], d["offset"], d["elem_size"], d["count"], d["role"], d["magic"],
-                     d["checksum"], d["reserved"], d["text"], d["code"], d["bits_code"], d["numpy"])
+                     d["checksum"], d["reserved"], d["text"], d["code"], d["bits_code"], d["numpy"], d["min"], d["max"])
 
 
 def _struct(fields: tuple[FieldInfo, ...], bits: bool = False) -> struct.Struct:

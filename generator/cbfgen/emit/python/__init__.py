@@ -38,7 +38,7 @@ def _field_data(f: Field) -> dict[str, Any]:
         "name": f.name, "type": f.type, "kind": f.kind, "offset": f.offset, "elem_size": f.elem_size,
         "count": f.count, "role": f.role, "magic": f.magic, "checksum": f.checksum,
         "reserved": f.reserved, "text": f.text, "unit": f.unit,
-        "code": t.struct_code, "bits_code": t.bits_code, "numpy": t.numpy,
+        "code": t.struct_code, "bits_code": t.bits_code, "numpy": t.numpy, "min": t.min, "max": t.max,
     }
 
 
