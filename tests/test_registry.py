@@ -203,3 +203,13 @@ def _file_with(t: FieldType, value: Any) -> bytes:
         v = {"code": code, "code_copy": code, "arg_size": len(args)}.get(f.role or "", 0)
         rec[f.offset:f.end] = v.to_bytes(f.size, "little" if T.BO == "<" else "big")
     return bytes(head) + bytes(rec) + args
+
+
+@pytest.mark.parametrize("name", [n for n, t in TYPES.items() if set(unsupported(t)) != set(registry.BINDINGS)])
+def test_the_docs_emitter_writes_every_type_a_binding_carries(name: str, tmp_path: Path,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """The reference pages (field tables, layout pictures, golden pages) of a spec using the type."""
+    monkeypatch.setattr(loader, "unsupported", lambda ft, count=1: ())
+    spec = load(_spec_using(TYPES[name], tmp_path))
+    files = importlib.import_module("cbfgen.emit.docs").emit(spec)
+    assert any(b"PROBE" in data for rel, data in files.items() if rel.endswith(".md"))
