@@ -124,6 +124,17 @@ def header_diverges(draw: st.DrawFn, doc: Doc) -> str:
     return f"header {hid} field {f['name']}"
 
 
+def header_renamed(draw: st.DrawFn, doc: Doc) -> str:
+    """A header field renamed alike in every layout (the .ksy names fields by the spec's names)."""
+    name = _pick(draw, [f["name"] for f in next(iter(doc["headers"].values()))["fields"]])
+    new = draw(st.sampled_from(["vmaj", "field_x", name + "_2"]))
+    for h in doc["headers"].values():
+        for f in h["fields"]:
+            if f["name"] == name:
+                f["name"] = new
+    return f"header field {name} as {new}"
+
+
 def range_bounds(draw: st.DrawFn, doc: Doc) -> str:
     """A range check losing a bound, or both."""
     ranges = [c for c in doc["checks"] if c["kind"] == "range"]
@@ -166,8 +177,8 @@ def severity(draw: st.DrawFn, doc: Doc) -> str:
 
 
 _EXAMPLE = itertools.count()
-EDITS: tuple[Edit, ...] = (second_check, versions_on_check, new_type, header_diverges, range_bounds, texts, names,
-                           severity)
+EDITS: tuple[Edit, ...] = (second_check, versions_on_check, new_type, header_diverges, header_renamed, range_bounds,
+                           texts, names, severity)
 
 
 @st.composite
@@ -187,6 +198,17 @@ def test_a_near_miss_spec_is_refused_with_a_line_or_works_in_every_binding(tmp_p
 
 
 # -- each edit kind, once, with the outcome it must have -------------------------------------
+def test_header_version_fields_renamed_in_every_layout_work_everywhere(tmp_path: Path) -> None:
+    """The .ksy's version switch names the version fields by their names (it wrote version_major
+    whatever the spec called it, so ksc failed on a spec --check-spec accepted)."""
+    doc = spec_doc()
+    for h in doc["headers"].values():
+        for f in h["fields"]:
+            if f.get("role") in ("version_major", "version_minor"):
+                f["name"] = "v_" + f["role"]
+    assert not judge(doc, tmp_path).refused
+
+
 def test_a_second_check_of_a_record_kind_runs_in_python_and_c(tmp_path: Path) -> None:
     """A second finite check (a warning): both bindings report both (records.py ran only the first)."""
     doc = spec_doc()

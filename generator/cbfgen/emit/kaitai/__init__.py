@@ -85,7 +85,8 @@ def _version_index(spec: Spec) -> str:
     fallback = [v.id for v in spec.versions].index(spec.fallback_version) + 1
     expr = str(fallback)
     for i, v in reversed(list(enumerate(spec.versions, 1))):
-        cond = f"version_major == {v.major}" + (f" and version_minor == {v.minor}" if v.minor is not None else "")
+        major, minor = (spec.common_header_field(r).name for r in ("version_major", "version_minor"))
+        cond = f"{major} == {v.major}" + (f" and {minor} == {v.minor}" if v.minor is not None else "")
         expr = f"({cond} ? {i} : {expr})"
     return expr
 
