@@ -127,7 +127,7 @@ def header_diverges(draw: st.DrawFn, doc: Doc) -> str:
 def header_renamed(draw: st.DrawFn, doc: Doc) -> str:
     """A header field renamed alike in every layout (the .ksy names fields by the spec's names)."""
     name = _pick(draw, [f["name"] for f in next(iter(doc["headers"].values()))["fields"]])
-    new = draw(st.sampled_from(["vmaj", "field_x", name + "_2"]))
+    new = draw(st.sampled_from(["vmaj", "field_x", name + "_2", "layout", "version_index"]))
     for h in doc["headers"].values():
         for f in h["fields"]:
             if f["name"] == name:

@@ -44,6 +44,20 @@ def test_every_kind_of_the_registry_has_one_python_implementation() -> None:
     assert not set(records.KERNELS) & set(validation.FILE_KINDS)
 
 
+def test_the_ksy_names_no_member_of_its_own_beyond_the_registry_generated_names() -> None:
+    """The .ksy's header and record types hold the spec's fields and only the members that
+    registry.GENERATED_NAMES reserves (the loader refuses a field of those names)."""
+    spec = load(REPO / "spec" / "cbf.yaml")
+    ksy = importlib.import_module("cbfgen.emit.kaitai").build(spec)
+    fields = {"header": {f.name for h in spec.headers.values() for f in h.fields},
+              "record": {f.name for f in spec.record.fields}}
+    for part, names in fields.items():
+        t = ksy["types"][part]
+        own = {a["id"] for a in t["seq"]} | set(t.get("instances", {})) - names
+        assert own - names <= set(registry.GENERATED_NAMES[part]), (part, own - names)
+        assert own - names, part  # the check sees the members it guards
+
+
 def test_every_kind_takes_the_parameters_its_dataclass_declares() -> None:
     spec = load(REPO / "spec" / "cbf.yaml")
     for ch in spec.checks:

@@ -43,6 +43,7 @@ from .registry import (
     CHECK_KINDS,
     COMMON_CHECK_KEYS,
     FIELD_KINDS,
+    GENERATED_NAMES,
     SEVERITIES,
     TYPES,
     FieldType,
@@ -754,6 +755,12 @@ def _names_pass(ctx: _Ctx, st: _State) -> None:
         if why and (name, line) not in seen:
             seen.add((name, line))
             ctx.at(line, f"{what}: the name {why}")
+    own = [(f, "header", f"header {h.id} field") for h in st.headers.values() for f in h.fields]
+    own += [(f, "record", "record field") for f in (st.record.fields if st.record else ())]
+    for f, part, what in own:
+        if f.name in GENERATED_NAMES[part]:
+            ctx.at(f.line, f"{what} {f.name}: the generated code names a member of the {part} so "
+                           f"({', '.join(GENERATED_NAMES[part])} are taken)")
 
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (

@@ -160,6 +160,12 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     return tuple(b for b in BINDINGS if b in gaps)
 
 
+# Names the generated code gives members of its own beside the spec's fields: the .ksy's header
+# type switches on `version_index` into `layout`, its record type holds `args` and the `command`
+# enum. A header or record field of the spec may not take them (the loader's names pass).
+GENERATED_NAMES: dict[str, tuple[str, ...]] = {"header": ("layout", "version_index"), "record": ("args", "command")}
+
+
 # -- check kinds ------------------------------------------------------------------------------
 
 Severity = Literal["error", "warning"]
