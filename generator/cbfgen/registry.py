@@ -162,8 +162,12 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
 
 # Names the generated code gives members of its own beside the spec's fields: the .ksy's header
 # type switches on `version_index` into `layout`, its record type holds `args` and the `command`
-# enum. A header or record field of the spec may not take them (the loader's names pass).
-GENERATED_NAMES: dict[str, tuple[str, ...]] = {"header": ("layout", "version_index"), "record": ("args", "command")}
+# enum; a record of the canonical JSON (conformance/PROTOCOL.md) adds `offset`, `command`, `args`
+# and `raw_args` to its head fields. A header or record field may not take them (names pass).
+GENERATED_NAMES: dict[str, tuple[str, ...]] = {
+    "header": ("layout", "version_index"),
+    "record": ("args", "command", "offset", "raw_args"),
+}
 
 
 # -- check kinds ------------------------------------------------------------------------------
