@@ -170,6 +170,21 @@ def names(draw: st.DrawFn, doc: Doc) -> str:
     return f"{cmd['name']} argument {a['name']}"
 
 
+def roles(draw: st.DrawFn, doc: Doc) -> str:
+    """A role (motion, orientation, shape, cutter, sets, progress) naming another argument of its
+    command: refused unless it has the shape the role reads."""
+    cmds = [c for c in doc["commands"] if any(k in c for k in ("motion", "orientation", "shape", "cutter", "sets"))]
+    cmd = _pick(draw, cmds)
+    role = _pick(draw, [k for k in ("motion", "orientation", "shape", "cutter", "sets") if k in cmd])
+    keys = [k for k, v in cmd[role].items() if k != "kind" and isinstance(v, str)]
+    args = sorted({a["name"] for lay in cmd["layouts"] for a in lay["args"]})
+    if not keys or not args:
+        return "no role to move"
+    key = _pick(draw, keys)
+    cmd[role][key] = _pick(draw, args)
+    return f"{cmd['name']} {role}.{key} as {cmd[role][key]}"
+
+
 def severity(draw: st.DrawFn, doc: Doc) -> str:
     ch = _pick(draw, doc["checks"])
     ch["severity"] = "warning" if ch["severity"] == "error" else "error"
@@ -178,7 +193,7 @@ def severity(draw: st.DrawFn, doc: Doc) -> str:
 
 _EXAMPLE = itertools.count()
 EDITS: tuple[Edit, ...] = (second_check, versions_on_check, new_type, header_diverges, header_renamed, range_bounds,
-                           texts, names, severity)
+                           texts, names, roles, severity)
 
 
 @st.composite

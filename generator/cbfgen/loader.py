@@ -44,10 +44,13 @@ from .registry import (
     COMMON_CHECK_KEYS,
     FIELD_KINDS,
     GENERATED_NAMES,
+    ROLE_ARGS,
     SEVERITIES,
     TYPES,
     FieldType,
+    RoleArg,
     Target,
+    role_arg_fits,
     unsupported,
 )
 
@@ -488,12 +491,12 @@ def _commands_pass(ctx: _Ctx, st: _State) -> None:
         for role in ("motion", "orientation", "shape", "cutter"):
             for key, argname in (getattr(cmd, role) or {}).items():
                 if key != "kind":
-                    _require_arg(ctx, c, cmd, argname, f"{role}.{key}")
+                    _require_arg(ctx, c, cmd, argname, f"{role}.{key}", ROLE_ARGS[role].get(key))
         for key, value in (cmd.sets or {}).items():
             if isinstance(value, str):
-                _require_arg(ctx, c, cmd, value, f"sets.{key}")
+                _require_arg(ctx, c, cmd, value, f"sets.{key}", ROLE_ARGS["sets"].get(key))
         if cmd.progress:
-            _require_arg(ctx, c, cmd, cmd.progress, "progress")
+            _require_arg(ctx, c, cmd, cmd.progress, "progress", ROLE_ARGS["progress"][""])
         _check_roles(ctx, c, cmd)
         st.commands.append(cmd)
 
@@ -811,9 +814,18 @@ def _check_machine_coverage(ctx: _Ctx, st: _State) -> None:
                                          f"machine_limits target bounds by limit {lim.name}")
 
 
-def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str) -> None:
-    if not any(lay.arg(argname) for lay in cmd.layouts):
+def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str, want: RoleArg | None = None) -> None:
+    """An argument a role or a check names: some layout has it, and (``want``) each layout that has it
+    gives it the shape the role reads (registry.ROLE_ARGS)."""
+    args = [a for lay in cmd.layouts if (a := lay.arg(argname)) is not None]
+    if not args:
         ctx.fail(node, f"{cmd.name}: {what} names {argname!r}, which no layout has")
+    for a in args:
+        if want is not None and not role_arg_fits(want, TYPES[a.type], a.count):
+            shape = {"float": "a float" if want[1] == 1 else f"a vector of {want[1]} floats", "string": "a string",
+                     "integer": "an integer"}[want[0]]
+            ctx.at(a.line, f"{cmd.name}: {what} names {argname} ({a.type} x{a.count}), which must be {shape}")
+            break
 
 
 _MOTION_NEEDS = {"point": ("end",), "line": ("start", "end"), "circle": ("start", "center", "normal", "degrees"),

@@ -160,6 +160,30 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     return tuple(b for b in BINDINGS if b in gaps)
 
 
+# What the argument a role names must be, by role and key: ("float", 3) a vector of three floats
+# (the runtimes' geometry is 3-D), ("float", 1) one float, ("string", 1) a string, ("integer", 1)
+# an integer. The loader refuses a role naming another argument (the kernels read these shapes).
+RoleArg = tuple[Literal["float", "string", "integer"], int]
+_VEC: RoleArg = ("float", 3)
+_NUM: RoleArg = ("float", 1)
+_STR: RoleArg = ("string", 1)
+ROLE_ARGS: dict[str, dict[str, RoleArg]] = {
+    "motion": {"start": _VEC, "end": _VEC, "center": _VEC, "normal": _VEC, "through": _VEC, "degrees": _NUM,
+               "length": _NUM},
+    "orientation": {"start": _VEC, "end": _VEC},
+    "shape": {"name": _STR, "count": ("integer", 1)},
+    "cutter": {"name": _STR, "length": _NUM, "radius": _NUM},
+    "sets": {"speed": _NUM, "accel": _NUM, "decel": _NUM, "phase": _STR, "format_version": _STR},
+    "progress": {"": _NUM},
+}
+
+
+def role_arg_fits(want: RoleArg, t: FieldType, count: int) -> bool:
+    kind, n = want
+    ok = t.kind == "float" if kind == "float" else t.kind == "string" if kind == "string" else t.is_integer
+    return ok and count == n
+
+
 # Names the generated code gives members of its own beside the spec's fields: the .ksy's header
 # type switches on `version_index` into `layout`, its record type holds `args` and the `command`
 # enum; a record of the canonical JSON (conformance/PROTOCOL.md) adds `offset`, `command`, `args`
