@@ -185,6 +185,18 @@ def roles(draw: st.DrawFn, doc: Doc) -> str:
     return f"{cmd['name']} {role}.{key} as {cmd[role][key]}"
 
 
+def retarget(draw: st.DrawFn, doc: Doc) -> str:
+    """A targeted check aimed at another command's argument, whatever its shape."""
+    checks = [c for c in doc["checks"] if c.get("targets") and c["kind"] != "machine_limits"]
+    cmd = _pick(draw, doc["commands"])
+    args = sorted({a["name"] for lay in cmd["layouts"] for a in lay["args"]})
+    if not checks or not args:
+        return "nothing to retarget"
+    ch = _pick(draw, checks)
+    ch["targets"] = [{"command": cmd["name"], "args": [_pick(draw, args)]}]
+    return f"{ch['id']} on {cmd['name']}.{ch['targets'][0]['args'][0]}"
+
+
 def severity(draw: st.DrawFn, doc: Doc) -> str:
     ch = _pick(draw, doc["checks"])
     ch["severity"] = "warning" if ch["severity"] == "error" else "error"
@@ -193,7 +205,7 @@ def severity(draw: st.DrawFn, doc: Doc) -> str:
 
 _EXAMPLE = itertools.count()
 EDITS: tuple[Edit, ...] = (second_check, versions_on_check, new_type, header_diverges, header_renamed, range_bounds,
-                           texts, names, roles, severity)
+                           texts, names, roles, retarget, severity)
 
 
 @st.composite

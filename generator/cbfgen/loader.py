@@ -673,11 +673,12 @@ def _targets(ctx: _Ctx, st: _State, ch: _Map, cid: str, kname: str, cmd_by_name:
             continue
         for argname in t["args"]:
             _require_arg(ctx, t, tcmd, argname, f"check {cid}")
+            want = CHECK_KINDS[kname].target_shape
             for lay in tcmd.layouts:
                 a = lay.arg(argname)
-                if a is not None and a.kind != "float":
-                    ctx.fail(t, f"check {cid}: {tcmd.name}.{argname} is {a.type}; kind {kname} reads float "
-                                f"arguments", "args")
+                if a is not None and want is not None and not role_arg_fits(want, TYPES[a.type], a.count):
+                    ctx.fail(t, f"check {cid}: {tcmd.name}.{argname} is {a.type} x{a.count}; kind {kname} reads "
+                                + ("one float" if want[1] == 1 else f"vectors of {want[1]} floats"), "args")
                     break
         if ("limit" in t) != (kname == "machine_limits"):
             ctx.fail(t, f"check {cid}: a target names a limit exactly when its kind is machine_limits",

@@ -266,6 +266,7 @@ class CheckKind:
     doc: str
     repeatable: bool = True
     kaitai: bool = False
+    target_shape: RoleArg | None = None  # what each target argument must be (None: the kind checks it itself)
 
     @property
     def keys(self) -> tuple[str, ...]:
@@ -287,8 +288,9 @@ class CheckKind:
         return "targets" in self.keys
 
 
-def _k(name: str, params: type[Params], scope: Scope, doc: str, **kw: bool) -> CheckKind:
-    return CheckKind(name, params, scope, doc, **kw)
+def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = False,
+       target: RoleArg | None = None) -> CheckKind:
+    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target)
 
 
 # In the order of the C engine's kind enum (and of the schema's list).
@@ -315,11 +317,11 @@ _KINDS = (
     _k("string_tail", NoParams, "record", "only NULs follow a string's first NUL"),
     _k("string_ascii", NoParams, "record", "strings are printable ASCII"),
     _k("finite", NoParams, "record", "float arguments are finite"),
-    _k("positive", TargetParams, "record", "target arguments are > 0"),
-    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero"),
-    _k("range", RangeParams, "record", "target arguments lie within min..max"),
-    _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record"),
-    _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order"),
+    _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM),
+    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC),
+    _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM),
+    _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record", target=_NUM),
+    _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
     _k("orientation", NoParams, "record", "a 5-axis command starts at the current orientation"),
     _k("shape", NoParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
     _k("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits"),
