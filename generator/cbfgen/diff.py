@@ -34,7 +34,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .loader import SpecError, load
-from .model import Check, Coverage, Field, HeaderLayout, Layout, Spec
+from .model import CHECK_ATTRS, Check, Coverage, Field, HeaderLayout, Layout, Spec
 
 # `cbfgen diff`'s exit codes: the class of its worst change, or bad input.
 EXIT_NONE, EXIT_WIRE, EXIT_BAD_INPUT, EXIT_TEXT = 0, 1, 2, 3
@@ -380,8 +380,9 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
 
 
 def _judged_attrs(c: Check) -> list[str]:
-    """The attributes of a check that define what it judges (not its id, severity, prose or line)."""
-    return [f.name for f in dataclasses.fields(c) if f.name not in _CHECK_IGNORED]
+    """The attributes of a check that define what it judges (not its id, severity, prose or line):
+    its own and its kind's parameters, flat (model.CHECK_ATTRS)."""
+    return [name for name in CHECK_ATTRS if name not in _CHECK_IGNORED]
 
 
 def _judges(c: Check, names: dict[str, str]) -> tuple[Any, ...]:

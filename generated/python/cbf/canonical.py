@@ -207,6 +207,10 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
             vals.extend(float_bits(x, f"{w}[{k}]" if f.count > 1 else w) for k, x in enumerate(items))
         elif f.kind == "uint":
             vals.append(_uint(v, w, f.elem_size))
+        elif f.is_int:  # signed
+            if isinstance(v, bool) or not isinstance(v, int) or not f.holds(v):
+                raise JsonShapeError(f"{w}: expected {f.int_name}, got {_show(v)}")
+            vals.append(int(v))
         elif f.kind == "string":
             vals.append(_str(v, w, f.size))
         else:

@@ -111,7 +111,7 @@ def _record_line(r: Record, version: str, profile: str) -> str:
                 text = [format_float(b) for b in v]
                 parts.append(f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text)} {C['vector_close']}"
                              if f.count > 1 else text[0])
-            elif f.kind == "uint":
+            elif f.is_int:
                 parts.append(str(v[0]))
             elif f.kind == "bytes":
                 if any(v[0]):
@@ -351,6 +351,13 @@ def _parse_args(cur: _Cursor, lay: T.LayoutInfo) -> bytes:
             if (not (w.isascii() and w.isdigit()) or len(w.lstrip("0")) > len(str((1 << (8 * f.elem_size)) - 1))
                     or int(w) >= 1 << (8 * f.elem_size)):
                 raise cur.fail(f"{name}: {_show(w)} is not an unsigned {8 * f.elem_size}-bit integer")
+            vals.append(int(w))
+        elif f.is_int:  # signed: an optional minus, then ASCII digits, within the field's range
+            w = cur.word(name)
+            digits = w[1:] if w.startswith("-") else w
+            if (not (digits.isascii() and digits.isdigit()) or len(digits.lstrip("0")) > len(str(-(f.lo or 0)))
+                    or not f.holds(int(w))):
+                raise cur.fail(f"{name}: {_show(w)} is not {f.int_name}")
             vals.append(int(w))
         elif f.kind == "bytes":
             vals.append(bytes(f.size))
@@ -652,7 +659,8 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
                 raise cur.fail(f"{name}: {len(raw)} bytes, the field holds {f.size}")
             cur.end()
             fields[f.name] = (raw.rstrip(T.PAD).decode("latin-1") if f.kind == "string"
-                              else int.from_bytes(raw, "little" if T.BO == "<" else "big") if f.kind == "uint"
+                              else int.from_bytes(raw, "little" if T.BO == "<" else "big", signed=f.kind == "sint")
+                              if f.is_int
                               else raw)
         elif kw == rkw:
             code = _hex(cur, "code")

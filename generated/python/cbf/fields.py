@@ -34,9 +34,9 @@ def unpack_args(lay: T.LayoutInfo, raw: Buffer) -> Any:
 
 
 def pack_value(f: T.FieldInfo, value: Any, where: str) -> list[Any]:
-    if f.kind == "uint":
-        if not isinstance(value, int) or isinstance(value, bool) or not 0 <= value < 1 << (8 * f.elem_size):
-            raise EncodeError(f"{where}: {value!r} is not an unsigned {8 * f.elem_size}-bit integer")
+    if f.is_int:
+        if not isinstance(value, int) or isinstance(value, bool) or not f.holds(value):
+            raise EncodeError(f"{where}: {value!r} is not {f.int_name}")
         return [value]
     if f.kind == "float":
         vals = list(value) if f.count > 1 else [value]

@@ -88,8 +88,8 @@ def cut_line(spec: Spec, cmd: Command, lay: Layout, raw: bytes) -> str:
             vals = [hexdump.shortest_float(w) for w in struct.unpack(order + "I" * f.count, chunk)]
             sep = cut["vector_separator"] + " "
             parts.append(f"{cut['vector_open']} {sep.join(vals)} {cut['vector_close']}" if f.count > 1 else vals[0])
-        elif f.kind == "uint":
-            parts.append(str(int.from_bytes(chunk, spec.meta["byte_order"])))
+        elif f.ftype.is_integer:
+            parts.append(str(int.from_bytes(chunk, spec.meta["byte_order"], signed=f.kind == "sint")))
         elif f.kind == "string" and _word(spec, chunk):
             parts.append(_word(spec, chunk))
     return str(cut["arg_separator"]).join(parts)

@@ -67,8 +67,8 @@ def value_text(spec: Spec, f: Field, raw: bytes) -> str:
         words = struct.unpack(_fmt(spec) + "I" * f.count, raw)
         vals = [shortest_float(w) for w in words]
         return vals[0] if f.count == 1 else "<" + ", ".join(vals) + ">"
-    if f.kind == "uint":
-        code = {1: "B", 2: "H", 4: "I", 8: "Q"}[f.elem_size]
+    if f.ftype.is_integer:
+        code = f.ftype.struct_code or ""
         vals_u = struct.unpack(_fmt(spec) + code * f.count, raw)
         hexa = f.magic is not None or f.role in ("code", "code_copy")
         return ", ".join(f"0x{u:0{2 * f.elem_size}X}" if hexa else str(u) for u in vals_u)

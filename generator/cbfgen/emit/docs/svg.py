@@ -31,6 +31,7 @@ FILL = {
     "bytes": "#ececec",
     "float": "#d3efcd",
     "uint": "#e4daf5",
+    "sint": "#e4daf5",  # every integer alike (registry.FIELD_KINDS)
 }
 
 

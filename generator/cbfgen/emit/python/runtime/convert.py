@@ -316,7 +316,7 @@ def _fill_value(f: T.FieldInfo, text: str, pos: G.Vec | None, where: str) -> Any
         raise ConvertError(f"{where}: --fill {f.name}={text!r} is neither a number nor 'position'") from None
     if f.kind == "float":
         return (x,) * f.count if f.count > 1 else x
-    if f.kind == "uint" and x.is_integer() and 0 <= x < (1 << (8 * f.elem_size)):
+    if f.is_int and x.is_integer() and f.holds(int(x)):
         return int(x)
     raise ConvertError(f"{where}: --fill {f.name}={text!r} does not fit a {f.kind} argument")
 

@@ -237,6 +237,8 @@ class _Draw:
         if f.kind == "uint":
             ulim = self.rules.limits.get((cmd.name, f.name))
             return draw(st.integers(1 if ulim is not None and ulim.positive else 0, (1 << (8 * f.elem_size)) - 1))
+        if f.is_int:  # signed: its whole range
+            return draw(st.integers(f.lo, f.hi))
         lim = self.rules.limits.get((cmd.name, f.name)) or _Limits()
         lo: float = -self.bound
         hi: float = self.bound
