@@ -1076,25 +1076,6 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
 #ifndef CBF_IMPLEMENTATION_DONE
 #define CBF_IMPLEMENTATION_DONE
 
-#include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
-#include <string.h>
-
-#ifdef __cplusplus
-extern "C" {
-#endif
-
-/* binary32 goes through uint32_t with memcpy: the sizes must agree. */
-typedef char cbf__assert_float_size[(sizeof(float) == sizeof(uint32_t)) ? 1 : -1];
-typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
-
-#if defined(__GNUC__) || defined(__clang__)
-#define CBF__PRINTF(f, a) __attribute__((format(printf, f, a)))
-#else
-#define CBF__PRINTF(f, a)
-#endif
-
 /* ---- the model's vocabulary, numbered --------------------------------- */
 enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C, CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32 };
@@ -1139,6 +1120,58 @@ enum {
     CBF__KIND_SHAPE,
     CBF__KIND_MACHINE_LIMITS
 };
+#define CBF__PAD 0u
+#define CBF__NVERSIONS 4
+#define CBF__NCOMMANDS 27
+#define CBF__NCHECKS 33
+#define CBF__NTARGETS 25
+#define CBF__MAX_CANDIDATES 2
+#define CBF__MAX_COVERAGES 1
+
+#define CBF__LITTLE_ENDIAN 1
+#define CBF__DEFAULT_PROFILE CBF_PROFILE_DEFAULT
+#define CBF__VERSION_MAJOR_OFFSET 16u
+
+/* The record head's fields by role, read with their offsets and widths as constants
+ * (0 when the model has no such field), for cbf_validate (runtime/validate.c). */
+#define CBF__HEAD_ARG_SIZE(p) cbf__get_u((p) + 4u, 1u)
+#define CBF__HEAD_OFF_ARG_SIZE 4u
+#define CBF__HEAD_CODE(p) cbf__get_u((p) + 2u, 1u)
+#define CBF__HEAD_OFF_CODE 2u
+#define CBF__HEAD_CODE_COPY(p) cbf__get_u((p) + 3u, 1u)
+#define CBF__HEAD_OFF_CODE_COPY 3u
+#define CBF__HEAD_SEQUENCE(p) cbf__get_u((p) + 0u, 2u)
+#define CBF__HEAD_OFF_SEQUENCE 0u
+#define CBF__HEAD_RESERVED(p) cbf__get_u((p) + 5u, 1u)
+#define CBF__HEAD_OFF_RESERVED 5u
+#define CBF__SEQUENCE_MASK 0xFFFFu
+/* the record head's argument checksum (CBF__HEAD_CK_ELEM 0: the model has none) */
+#define CBF__HEAD_CK_ELEM 2u
+#define CBF__HEAD_CK_OFFSET 6u
+#define CBF__HEAD_CK_MASK 0xFFFFu
+#define CBF__HEAD_SUM(p) cbf__sum_fixed((p), CBF_RECORD_HEAD_SIZE)
+/* ==== BEGIN runtime/prologue.h: verbatim from generator/cbfgen/emit/c/runtime/prologue.h, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/prologue.h"
+/* ---- the implementation's prologue: headers, compiler shims, short names -- */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* binary32 goes through uint32_t with memcpy: the sizes must agree. */
+typedef char cbf__assert_float_size[(sizeof(float) == sizeof(uint32_t)) ? 1 : -1];
+typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define CBF__PRINTF(f, a)
+#endif
+
 #define CBF__F_RESERVED CBF_FIELD_RESERVED
 #define CBF__F_TEXT CBF_FIELD_TEXT
 #define CBF__F_MAGIC CBF_FIELD_MAGIC
@@ -1148,15 +1181,9 @@ enum {
 #define CBF__K_BYTES CBF_KIND_BYTES
 #define CBF__VBIT(v) CBF_VERSION_BIT(v)
 #define CBF__PBIT(p) (1u << (p))
-#define CBF__PAD 0u
-#define CBF__NVERSIONS 4
-#define CBF__NCOMMANDS 27
-#define CBF__NCHECKS 33
-#define CBF__NTARGETS 25
-#define CBF__MAX_CANDIDATES 2
-#define CBF__MAX_COVERAGES 1
 #define CBF__PI 3.14159265358979323846
-
+/* ==== END runtime/prologue.h ==== */
+#line 1187 "cbf.h"
 /* ---- the spec as tables ------------------------------------------------- */
 typedef struct cbf__version {
     const char *id;
@@ -1932,20 +1959,52 @@ const char *const cbf_command_names[256] = {
     NULL, /* 0xFF */
 };
 
+/* Command table index by code, -1 for codes that are not commands. */
+static const short cbf__index_by_code[256] = {
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, 23, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, 4, 5, -1, -1, -1, -1, -1, -1, -1, -1, 8, -1, -1, -1, -1,
+    -1, -1, -1, 10, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, 20, -1, -1, -1, -1, -1, -1, 9, -1,
+    -1, -1, -1, -1, -1, 25, -1, -1, 2, 3, 26, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, 7, 22, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 15, 16, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 19, -1, -1, -1, -1,
+    -1, -1, -1, -1, 13, 14, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, 11, 12, -1, -1, -1, 21, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, 6, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, 17, 18, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 24, -1, -1, -1,
+};
+/* ==== BEGIN runtime/bytes.c: verbatim from generator/cbfgen/emit/c/runtime/bytes.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/bytes.c"
 /* ---- bytes -------------------------------------------------------------- */
 static inline uint32_t cbf__get_u(const uint8_t *p, unsigned n)
 {
     uint32_t v = 0;
     unsigned i;
     /* the widths the format uses, unrolled (the validator reads several a record) */
+#if CBF__LITTLE_ENDIAN
     if (n == 4u)
         return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) | ((uint32_t)p[3] << 24);
     if (n == 2u)
         return (uint32_t)p[0] | ((uint32_t)p[1] << 8);
+#else
+    if (n == 4u)
+        return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | (uint32_t)p[3];
+    if (n == 2u)
+        return ((uint32_t)p[0] << 8) | (uint32_t)p[1];
+#endif
     if (n == 1u)
         return p[0];
     for (i = 0; i < n; i++) {
+#if CBF__LITTLE_ENDIAN
         v |= (uint32_t)p[i] << (8u * i);
+#else
+        v = (v << 8) | (uint32_t)p[i];
+#endif
     }
     return v;
 }
@@ -1954,7 +2013,11 @@ static void cbf__put_u(uint8_t *p, uint32_t v, unsigned n)
 {
     unsigned i;
     for (i = 0; i < n; i++) {
+#if CBF__LITTLE_ENDIAN
         p[i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
+#else
+        p[n - 1u - i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
+#endif
     }
 }
 
@@ -2088,28 +2151,11 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else if (f->elem == 2) { uint16_t x = (uint16_t)v; memcpy(m, &x, 2); }
     else memcpy(m, &v, 4);
 }
-
+/* ==== END runtime/bytes.c ==== */
+#line 2156 "cbf.h"
+/* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
-/* Command table index by code, -1 for codes that are not commands. */
-static const short cbf__index_by_code[256] = {
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, 23, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, 4, 5, -1, -1, -1, -1, -1, -1, -1, -1, 8, -1, -1, -1, -1,
-    -1, -1, -1, 10, -1, -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, 20, -1, -1, -1, -1, -1, -1, 9, -1,
-    -1, -1, -1, -1, -1, 25, -1, -1, 2, 3, 26, -1, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, 7, 22, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 15, 16, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 19, -1, -1, -1, -1,
-    -1, -1, -1, -1, 13, 14, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, -1, -1, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, 11, 12, -1, -1, -1, 21, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, 6, -1, -1, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, -1, 17, 18, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 24, -1, -1, -1,
-};
-
 static inline int cbf__cmd_index(int code)
 {
     return (code < 0 || code > 0xFF) ? -1 : cbf__index_by_code[code];
@@ -2330,7 +2376,10 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     }
     return n;
 }
-
+/* ==== END runtime/lookups.c ==== */
+#line 2381 "cbf.h"
+/* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
  * Every algorithm kind of the model, implemented once here (parameters as in
  * spec/cbf.yaml checksums.algorithms and the CRC catalogue):
@@ -2498,7 +2547,10 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
         return 0u;
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
-
+/* ==== END runtime/checksums.c ==== */
+#line 2552 "cbf.h"
+/* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
 long cbf_header_decode(const uint8_t *buf, size_t len, cbf_header *out)
 {
@@ -2656,7 +2708,10 @@ whole:
     r->index++;
     return 1;
 }
-
+/* ==== END runtime/reader.c ==== */
+#line 2713 "cbf.h"
+/* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
 static int cbf__wfail(cbf_writer *w, int err)
 {
@@ -2906,7 +2961,9 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     }
     return (long)w->len;
 }
-
+/* ==== END runtime/writer.c ==== */
+#line 2966 "cbf.h"
+/* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
     uint8_t bytes[32];
@@ -3357,6 +3414,8 @@ int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args)
     return cbf_encode_record(w, CBF_CMD_COMMENT, bytes, (size_t)n);
 }
 
+/* ==== BEGIN runtime/validator.c: verbatim from generator/cbfgen/emit/c/runtime/validator.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/validator.c"
 /* ---- validation ------------------------------------------------------------ */
 typedef struct cbf__vctx {
     const uint8_t *buf;
@@ -3814,6 +3873,50 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
         cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
 }
 
+/* cbf__sum for a short n (at most 1024 bytes: the 16-bit lanes cannot overflow), inlined
+ * where n is a constant: a record's head, a layout's arguments. With n constant the tests
+ * below fold away. */
+CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
+{
+    const uint64_t lo = 0x00FF00FF00FF00FFull;
+    uint64_t lanes = 0, x, y;
+    uint32_t acc = 0, w;
+    size_t i = 0;
+    if (n < 32u) { /* written out: gcc -O2 keeps a loop of 2 or 3 trips */
+        if (n >= 16u) {
+            memcpy(&x, p, sizeof x);
+            memcpy(&y, p + 8u, sizeof y);
+            lanes += (x & lo) + ((x >> 8) & lo) + (y & lo) + ((y >> 8) & lo);
+            i = 16u;
+        }
+        if (n - i >= 8u) {
+            memcpy(&x, p + i, sizeof x);
+            lanes += (x & lo) + ((x >> 8) & lo);
+            i += 8u;
+        }
+    } else { /* longer: a loop, which gcc vectorises */
+        for (; n - i >= 8u; i += 8u) {
+            memcpy(&x, p + i, sizeof x);
+            lanes += (x & lo) + ((x >> 8) & lo);
+        }
+    }
+    if (n - i >= 4u) { /* a 4-byte rest (a float argument) in the low lanes, not byte by byte */
+        memcpy(&w, p + i, sizeof w);
+        lanes += (uint64_t)((w & 0x00FF00FFu) + ((w >> 8) & 0x00FF00FFu));
+        i += 4u;
+    }
+    if (n <= 256u) { /* the four lanes total at most 255 * 256 < 2^16: one multiply adds them in the top lane */
+        acc = (uint32_t)((lanes * 0x0001000100010001ull) >> 48);
+    } else {
+        lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
+        acc = (uint32_t)(lanes & 0xFFFFFFFFull) + (uint32_t)(lanes >> 32);
+    }
+    for (; i < n; i++)
+        acc += p[i];
+    return acc;
+}
+/* ==== END runtime/validator.c ==== */
+#line 3920 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4504,49 +4607,6 @@ static void cbf__decoded_checks(cbf__vctx *v, int layout, const uint8_t *args, l
     }
 }
 
-/* cbf__sum for a short n (at most 1024 bytes: the 16-bit lanes cannot overflow), inlined
- * where n is a constant: a record's head, a layout's arguments. With n constant the tests
- * below fold away. */
-CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
-{
-    const uint64_t lo = 0x00FF00FF00FF00FFull;
-    uint64_t lanes = 0, x, y;
-    uint32_t acc = 0, w;
-    size_t i = 0;
-    if (n < 32u) { /* written out: gcc -O2 keeps a loop of 2 or 3 trips */
-        if (n >= 16u) {
-            memcpy(&x, p, sizeof x);
-            memcpy(&y, p + 8u, sizeof y);
-            lanes += (x & lo) + ((x >> 8) & lo) + (y & lo) + ((y >> 8) & lo);
-            i = 16u;
-        }
-        if (n - i >= 8u) {
-            memcpy(&x, p + i, sizeof x);
-            lanes += (x & lo) + ((x >> 8) & lo);
-            i += 8u;
-        }
-    } else { /* longer: a loop, which gcc vectorises */
-        for (; n - i >= 8u; i += 8u) {
-            memcpy(&x, p + i, sizeof x);
-            lanes += (x & lo) + ((x >> 8) & lo);
-        }
-    }
-    if (n - i >= 4u) { /* a 4-byte rest (a float argument) in the low lanes, not byte by byte */
-        memcpy(&w, p + i, sizeof w);
-        lanes += (uint64_t)((w & 0x00FF00FFu) + ((w >> 8) & 0x00FF00FFu));
-        i += 4u;
-    }
-    if (n <= 256u) { /* the four lanes total at most 255 * 256 < 2^16: one multiply adds them in the top lane */
-        acc = (uint32_t)((lanes * 0x0001000100010001ull) >> 48);
-    } else {
-        lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
-        acc = (uint32_t)(lanes & 0xFFFFFFFFull) + (uint32_t)(lanes >> 32);
-    }
-    for (; i < n; i++)
-        acc += p[i];
-    return acc;
-}
-
 /* The byte sum of a record's arguments, with the layout's size as a constant
  * (nb when the arguments have no layout). */
 static uint32_t cbf__args_sum(int layout, const uint8_t *args, size_t nb)
@@ -4585,7 +4645,9 @@ static uint32_t cbf__args_sum(int layout, const uint8_t *args, size_t nb)
     default: return cbf__sum(args, nb);
     }
 }
-
+/* ==== BEGIN runtime/validate.c: verbatim from generator/cbfgen/emit/c/runtime/validate.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/validate.c"
+/* ---- cbf_validate: the header, the record pass, the end of the file -------- */
 /* Whether the profile's file checksum is the plain sum of every byte from a
  * start inside the header to the end of the file: the record pass then adds it
  * up as it goes (each record's head and argument sums), with no second pass. */
@@ -4613,7 +4675,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     size_t pos, i, fold_start = 0;
     unsigned long nrec = 0;
     uint32_t fold = 0u;
-    int profile = opt ? opt->profile : CBF_PROFILE_DEFAULT, folds;
+    int profile = opt ? opt->profile : CBF__DEFAULT_PROFILE, folds;
     if ((!buf && len) || profile < 0 || profile >= CBF_PROFILE__COUNT)
         return CBF_ERR_ARGUMENT;
     memset(&v, 0, sizeof v);
@@ -4636,7 +4698,7 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     v.eff = cbf__eff_version(h.version);
     v.hlayout = h.layout;
     if (v.version < 0)
-        cbf__each(&v, CBF__KIND_VERSION, -1, CBF_HEADER_V2_VERSION_MAJOR_OFFSET,
+        cbf__each(&v, CBF__KIND_VERSION, -1, CBF__VERSION_MAJOR_OFFSET,
                   "version %u.%u is not a version of this spec; read as %s", h.major, h.minor,
                   cbf__versions[v.eff].id);
     /* header fields: magic numbers, strings */
@@ -4679,16 +4741,16 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         seen[i].nb = -1;
     while (len - pos >= CBF_RECORD_HEAD_SIZE) {
         const uint8_t *p = buf + pos, *args = p + CBF_RECORD_HEAD_SIZE;
-        size_t nb = cbf__get_u(p + 4u, 1u);
+        size_t nb = CBF__HEAD_ARG_SIZE(p);
         long rec = (long)nrec;
         uint32_t code, copy, seq, res, asum = 0u;
         int cmd, layout = CBF_LAYOUT__NONE;
         if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
             break;
-        code = cbf__get_u(p + 2u, 1u);
-        copy = cbf__get_u(p + 3u, 1u);
-        seq = cbf__get_u(p + 0u, 2u);
-        res = cbf__get_u(p + 5u, 1u);
+        code = CBF__HEAD_CODE(p);
+        copy = CBF__HEAD_CODE_COPY(p);
+        seq = CBF__HEAD_SEQUENCE(p);
+        res = CBF__HEAD_RESERVED(p);
         cmd = cbf__cmd_index((int)code);
         if (cmd >= 0 && seen[cmd].nb != (long)nb) { /* a new size for the command: look its layout up */
             int k;
@@ -4711,34 +4773,36 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
         if (args_sum)
             asum = cbf__args_sum(layout, args, nb);
         if (folds)
-            fold += cbf__sum_fixed(p, CBF_RECORD_HEAD_SIZE) + asum;
-        if (seq != (uint32_t)(nrec & 0xFFFFu))
-            cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + 0u, "sequence number %lu, expected %lu",
-                      (unsigned long)seq, (unsigned long)(nrec & 0xFFFFu));
+            fold += CBF__HEAD_SUM(p) + asum;
+        if (seq != (uint32_t)(nrec & CBF__SEQUENCE_MASK))
+            cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
+                      (unsigned long)seq, (unsigned long)(nrec & CBF__SEQUENCE_MASK));
         if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + 3u, "code 0x%02lx, backup copy 0x%02lx",
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code 0x%02lx, backup copy 0x%02lx",
                       (unsigned long)code, (unsigned long)copy);
+#if CBF__HEAD_CK_ELEM
         {
-            uint32_t want = args_sum ? (asum & 0xFFFFu)
-                            : kck ? cbf__cover(kck->coverage, kck->alg, 2u, NULL, 0, 0, args, nb)
+            uint32_t want = args_sum ? (asum & CBF__HEAD_CK_MASK)
+                            : kck ? cbf__cover(kck->coverage, kck->alg, CBF__HEAD_CK_ELEM, NULL, 0, 0, args, nb)
                                   : 0u;
-            uint32_t got = cbf__get_u(p + 6u, 2u);
+            uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
             if (got != want)
-                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + 6u,
+                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + CBF__HEAD_CK_OFFSET,
                           "stored argument checksum %lu, computed %lu", (unsigned long)got, (unsigned long)want);
         }
+#endif
         if (res != 0u)
-            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + 5u, "reserved byte is 0x%02lx",
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lx",
                       (unsigned long)res);
         if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + 2u, "unknown command code 0x%02lx",
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lx",
                       (unsigned long)code);
         } else {
             if (seen[cmd].avail >= 0)
-                cbf__say(&v, seen[cmd].avail, rec, pos + 2u, "%s is not available in version %s",
+                cbf__say(&v, seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (!seen[cmd].accepted)
-                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + 4u,
+                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + CBF__HEAD_OFF_ARG_SIZE,
                           "%s has %lu argument bytes, no layout of %s has that size",
                           cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
             if (layout != CBF_LAYOUT__NONE)
@@ -4810,7 +4874,8 @@ long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_fi
     }
     return v.errors;
 }
-
+/* ==== END runtime/validate.c ==== */
+#line 4879 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -5,9 +5,11 @@ per layout (the offsets as constants); plus the conformance testee, the
 `cbf-c` tool and a libFuzzer harness, all from templates beside this file.
 
 Nothing here names a command, field, offset or check: every identifier and
-number comes from the model. The C engine in templates/cbf.h.j2 (one template
-a section, in templates/cbf/) knows only the model's vocabulary (field kinds
-and roles, check kinds, motion kinds, coverage regions, algorithm kinds).
+number comes from the model. The hand-written C engine lives as real C files in
+runtime/ (compiled and linted on their own by mk/c.mk) and goes verbatim into
+cbf.h beside the generated sections of templates/cbf/ (tables, enums, structs,
+per-layout code); it knows only the model's vocabulary (field kinds and roles,
+check kinds, motion kinds, coverage regions, algorithm kinds).
 """
 
 from __future__ import annotations
@@ -380,7 +382,7 @@ def context(spec: Spec) -> dict[str, Any]:
                 if targets[ti]["command"] == crow["index"]:
                     ctargets.append({"check": ci, "target": ti, "text": f"{chrow['id']}: {targets[ti]['text']}"})
         crow["n_ct"] = len(ctargets) - crow["first_ct"]
-    # The straight-line validator (templates/cbf/validator.c.j2): per layout, the
+    # The straight-line validator (runtime/validator.c, templates/cbf/validator_layouts.c.j2): per layout, the
     # constants its checks read, so that each record runs a dozen loads and
     # compares instead of walking the field tables.
     for row in layouts:
@@ -396,11 +398,16 @@ def context(spec: Spec) -> dict[str, Any]:
         if dup:
             raise ValueError(f"C binding: two {what}s map to the same C name {dup[0]}")
     head = {f["role"][len("ROLE_"):]: f for f in rec_fields if f["role"] != "ROLE_NONE"}
+    first_header = next(iter(spec.headers.values()))
+    major = [f for f in first_header.fields if f.role == "version_major"]
+    if not major:
+        raise ValueError("C binding: the first header layout has no version_major field")
     ck_head = next((f for f in rec_fields if f["checksum"] == "CK_ARGS"), None)
     return {
         "spec": spec,
         "head": head,
         "head_checksum": ck_head,
+        "version_major_offset": major[0].offset,
         "meta": spec.meta,
         "toolkit_version": TOOLKIT_VERSION,
         "toolkit_license": TOOLKIT_LICENSE,
@@ -454,8 +461,33 @@ def context(spec: Spec) -> dict[str, Any]:
     }
 
 
+RUNTIME = HERE / "runtime"
+RUNTIME_REL = "generator/cbfgen/emit/c/runtime"  # as a compiler names it from the repository's root
+_RESUME = '#line @@NEXT@@ "cbf.h"'
+
+
+def runtime_section(name: str) -> str:
+    """A hand-written runtime file (runtime/<name>), verbatim, between markers that name it (mk/c.mk
+    compiles the files themselves in their place) and #line directives, so that a compiler's message
+    about it names runtime/<name> and its line; after it, the lines are cbf.h's again."""
+    text = (RUNTIME / name).read_text(encoding="utf-8")
+    return (f"/* ==== BEGIN runtime/{name}: verbatim from {RUNTIME_REL}/{name}, edit it there ==== */\n"
+            f'#line 1 "{RUNTIME_REL}/{name}"\n{text.rstrip(chr(10))}\n'
+            f"/* ==== END runtime/{name} ==== */\n{_RESUME}")
+
+
+def _resume_lines(text: str) -> str:
+    """Number each #line that resumes cbf.h after a runtime section with the line that follows it."""
+    lines = text.split("\n")
+    for i, line in enumerate(lines):
+        if line == _RESUME:
+            lines[i] = f'#line {i + 2} "cbf.h"'
+    return "\n".join(lines)
+
+
 def emit(spec: Spec) -> dict[str, bytes]:
     env = environment(HERE / "templates")
+    env.globals["runtime"] = runtime_section
     env.filters["cstr"] = cstr
     env.filters["comment"] = comment
     env.filters["cname"] = cname
@@ -465,5 +497,6 @@ def emit(spec: Spec) -> dict[str, bytes]:
     ctx.update(machine_context(spec, ctx["layouts"], cfloat, macro))  # machine.h.j2 (L1)
     out: dict[str, bytes] = {}
     for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
-        out[f"{OUT}/{name}"] = env.get_template(name + ".j2").render(**ctx).encode()
+        text = env.get_template(name + ".j2").render(**ctx)
+        out[f"{OUT}/{name}"] = (_resume_lines(text) if name == "cbf.h" else text).encode()
     return out

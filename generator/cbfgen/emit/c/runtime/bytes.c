@@ -4,25 +4,25 @@ static inline uint32_t cbf__get_u(const uint8_t *p, unsigned n)
     uint32_t v = 0;
     unsigned i;
     /* the widths the format uses, unrolled (the validator reads several a record) */
-{% if little %}
+#if CBF__LITTLE_ENDIAN
     if (n == 4u)
         return (uint32_t)p[0] | ((uint32_t)p[1] << 8) | ((uint32_t)p[2] << 16) | ((uint32_t)p[3] << 24);
     if (n == 2u)
         return (uint32_t)p[0] | ((uint32_t)p[1] << 8);
-{% else %}
+#else
     if (n == 4u)
         return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | (uint32_t)p[3];
     if (n == 2u)
         return ((uint32_t)p[0] << 8) | (uint32_t)p[1];
-{% endif %}
+#endif
     if (n == 1u)
         return p[0];
     for (i = 0; i < n; i++) {
-{% if little %}
+#if CBF__LITTLE_ENDIAN
         v |= (uint32_t)p[i] << (8u * i);
-{% else %}
+#else
         v = (v << 8) | (uint32_t)p[i];
-{% endif %}
+#endif
     }
     return v;
 }
@@ -31,11 +31,11 @@ static void cbf__put_u(uint8_t *p, uint32_t v, unsigned n)
 {
     unsigned i;
     for (i = 0; i < n; i++) {
-{% if little %}
+#if CBF__LITTLE_ENDIAN
         p[i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
-{% else %}
+#else
         p[n - 1u - i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
-{% endif %}
+#endif
     }
 }
 
