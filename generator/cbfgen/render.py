@@ -7,7 +7,23 @@ from typing import Any
 
 import jinja2
 
+from . import escape
 from .model import camel, ident
+
+# Spec text into target code: one filter per target language (escape.py says what each guarantees).
+ESCAPE_FILTERS = {
+    "c_comment": escape.c_comment,
+    "c_str": escape.c_string,
+    "py_doc": escape.py_docstring,
+    "py_str": escape.py_string,
+    "ksy_doc": escape.kaitai_doc,
+    "yaml_str": escape.yaml_scalar,
+    "toml_str": escape.toml_string,
+    "md": escape.markdown_inline,
+    "md_cell": escape.markdown_cell,
+    "html": escape.html_text,
+    "one_line": escape.one_line,
+}
 
 
 def environment(folder: Path, **options: Any) -> jinja2.Environment:
@@ -24,4 +40,5 @@ def environment(folder: Path, **options: Any) -> jinja2.Environment:
     env.filters["ident"] = ident
     env.filters["hex2"] = lambda n: f"0x{int(n):02X}"
     env.filters["hex8"] = lambda n: f"0x{int(n):08X}"
+    env.filters.update(ESCAPE_FILTERS)
     return env

@@ -16,6 +16,7 @@ import yaml
 
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
+from ...escape import kaitai_doc
 from ...model import Command, Field, Layout, Spec, camel, ident
 from ...render import environment
 
@@ -224,7 +225,19 @@ def build(spec: Spec) -> dict[str, Any]:
     }
     if not ksy["meta"]["xref"]:  # optional in the spec: no empty mapping in the .ksy
         del ksy["meta"]["xref"]
-    return ksy
+    escaped: dict[str, Any] = _escape_docs(ksy)
+    return escaped
+
+
+def _escape_docs(node: Any) -> Any:
+    """Every `doc` and `doc-ref` of the .ksy, escaped once, whole, for every ksc target (ksc copies
+    them verbatim into Python docstrings and JavaScript/Java/Go comments: escape.kaitai_doc)."""
+    if isinstance(node, dict):
+        return {k: kaitai_doc(v) if k in ("doc", "doc-ref") and isinstance(v, str) else _escape_docs(v)
+                for k, v in node.items()}
+    if isinstance(node, list):
+        return [_escape_docs(v) for v in node]
+    return node
 
 
 class _Dumper(yaml.SafeDumper):
