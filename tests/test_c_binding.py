@@ -220,7 +220,7 @@ def test_templates_and_emitter_name_no_format_detail() -> None:
     doc = spec_doc()
     folder = ROOT / "generator" / "cbfgen" / "emit" / "c"
     text = "\n".join(p.read_text(encoding="utf-8") for p in sorted(folder.rglob("*"))
-                     if p.is_file() and p.suffix in (".py", ".j2"))
+                     if p.is_file() and p.suffix in (".py", ".j2", ".c", ".h"))
     for cmd in doc["commands"]:
         assert not re.search(rf"\b{cmd['name']}\b", text), cmd["name"]
         assert not re.search(rf"\b0x{cmd['code']:02X}\b", text, re.IGNORECASE), cmd["name"]
@@ -235,3 +235,66 @@ def test_generated_header_compiles_strictly(tmp_path: Path) -> None:
     src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\nint main(void) { return 0; }\n', encoding="utf-8")
     subprocess.run([cc, *STRICT, "-I", str(ROOT / "generated" / "c"), "-o", str(tmp_path / "one"), str(src), "-lm"],
                    check=True, capture_output=True)
+
+
+# Spec text that ends a C comment, opens one inside another (-Werror=comment), is a trigraph that
+# splices lines (??/), ends a line comment in a backslash, closes a string literal, or holds a newline.
+HOSTILE = 'x /* a */ b "q" \\d ??/ ??= @param <b &amp; \n2nd line */ \\'
+
+
+def _hostile_spec(doc: dict[str, object]) -> None:
+    """Every free text of the spec that the C binding writes into a comment or a string literal."""
+    d: dict[str, list[dict[str, object]]] = doc  # type: ignore[assignment]
+    meta: dict[str, object] = doc["meta"]  # type: ignore[assignment]
+    meta["title"] = HOSTILE
+    for v in d["versions"]:
+        v["doc"] = HOSTILE
+    for p in d["profiles"]:
+        p["doc"] = HOSTILE
+    for unit in doc["units"].values():  # type: ignore[attr-defined]
+        unit["doc"] = HOSTILE
+    for h in doc["headers"].values():  # type: ignore[attr-defined]
+        h["doc"] = HOSTILE
+        for f in h["fields"]:
+            f["doc"] = HOSTILE
+    rec: dict[str, list[dict[str, object]]] = doc["record"]  # type: ignore[assignment]
+    rec["doc"] = HOSTILE  # type: ignore[assignment]
+    for f in rec["fields"]:
+        f["doc"] = HOSTILE
+    for c in d["commands"]:
+        c["doc"] = HOSTILE
+        for lay in c["layouts"]:  # type: ignore[attr-defined]
+            lay["doc"] = HOSTILE
+            for a in lay["args"]:
+                a["doc"] = HOSTILE
+    for ch in d["checks"]:
+        ch["text"] = HOSTILE
+        ch["fails"] = HOSTILE
+    machine: dict[str, object] = doc["machine"]  # type: ignore[assignment]
+    machine["doc"] = HOSTILE
+    for lim in machine["limits"].values():  # type: ignore[attr-defined]
+        lim["doc"] = HOSTILE
+
+
+def test_hostile_spec_text_compiles_strictly(tmp_path: Path) -> None:
+    """Spec text lands in cbf.h (comments, string literals) through escape.py's C functions only:
+    a doc holding /*, */, a quote, backslashes, trigraphs and newlines gives a cbf.h that every
+    strict compiler of mk/c.mk accepts, with the text's string values intact."""
+    cc, clang = _need("gcc"), _need("clang")
+    doc = spec_doc()
+    _hostile_spec(doc)
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    out = tmp_path / "gen"
+    _generate(spec, out)
+    header = (out / "c" / "cbf.h").read_text(encoding="utf-8")
+    assert "/* a */" not in header and "??/" not in header  # the text is there, escaped
+    src = tmp_path / "one.c"
+    src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\n#include <string.h>\n'
+                   "int main(void) { return strcmp(cbf_machine_limit_names[0], \"\") == 0; }\n", encoding="utf-8")
+    for argv in ([cc, *STRICT], [clang, "-std=c99", "-Weverything", "-Werror", "-Wno-padded",
+                                 "-Wno-unknown-warning-option", "-Wno-declaration-after-statement"]):
+        done = subprocess.run([*argv, "-I", str(out / "c"), "-o", str(tmp_path / "one"), str(src), "-lm"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr[-3000:]
+    assert subprocess.run([str(tmp_path / "one")]).returncode == 0

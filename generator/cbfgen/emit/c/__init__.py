@@ -21,20 +21,13 @@ from typing import Any
 
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
+from ...escape import RESERVED, c_comment, c_string, keyword_clash, one_line
 from ...model import ALGORITHM_KINDS, Field, Layout, Spec
 from ...render import environment
 from .machine import machine_context
 
 HERE = Path(__file__).parent
 OUT = "c"
-
-# C and C++ keywords a spec name could collide with (a trailing _ is added).
-_KEYWORDS = frozenset(
-    """auto break case char const continue default do double else enum extern float for goto if inline int long
-    register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while
-    bool true false class delete new template this throw try catch namespace operator private protected public
-    virtual friend mutable explicit typename using export asm and or not xor""".split()
-)
 
 # The model's vocabulary the engine understands (loader.py, spec comments).
 FIELD_KINDS = ("uint", "float", "string", "bytes")
@@ -59,35 +52,36 @@ CHECK_KINDS = (
 
 
 def cname(name: str) -> str:
-    """A C identifier for a spec name (lower case, keywords suffixed)."""
-    s = re.sub(r"\W+", "_", name).strip("_").lower()
+    """A C identifier for a spec name: lower case, ASCII. A name that is reserved in C or C++ is
+    refused (the loader refuses it first, escape.keyword_clash: one spelling in every binding)."""
+    s = re.sub(r"\W+", "_", name, flags=re.ASCII).strip("_").lower()
     if not s or s[0].isdigit():
         s = "x" + s
-    return s + "_" if s in _KEYWORDS else s
+    if s in RESERVED["C++"]:
+        raise ValueError(f"C binding: the name {name!r} is reserved in C or C++ ({keyword_clash(name)})")
+    return s
 
 
 def macro(name: str) -> str:
-    """An upper-case macro fragment for a spec id ("9.8.7" -> 9_8_7, "1.x" -> 1_X)."""
-    return re.sub(r"\W+", "_", name).strip("_").upper()
+    """An upper-case macro fragment for a spec id ("9.8.7" -> 9_8_7, "1.x" -> 1_X), ASCII only."""
+    return re.sub(r"\W+", "_", name, flags=re.ASCII).strip("_").upper()
 
 
 def cstr(text: str) -> str:
-    """A C string literal."""
-    out = []
-    for ch in text:
-        o = ord(ch)
-        if ch in '"\\':
-            out.append("\\" + ch)
-        elif 0x20 <= o < 0x7F and ch != "?":
-            out.append(ch)
-        else:
-            out.append(f"\\{o:03o}" if o < 0x100 else "?")
-    return '"' + "".join(out) + '"'
+    """A C string literal (escape.c_string: quotes, backslashes, trigraphs, every other byte octal)."""
+    return c_string(text)
+
+
+# What starts a Doxygen command, an HTML tag or an entity in a /** */ comment (clang -Wdocumentation
+# warns on an unknown \cmd, a lone <b, a \b without its word): escaped the Doxygen way, \x.
+_DOXYGEN = re.compile(r"([\\@]|<(?=[A-Za-z/!?])|&(?=[A-Za-z#]))")
 
 
 def comment(text: str) -> str:
-    """Text safe inside /* */."""
-    return " ".join(text.replace("*/", "* /").split())
+    """Spec text on one line, safe inside /* */, /** */ and after // (escape.c_comment: no comment
+    delimiters, no trigraphs, no line splice), then Doxygen's escapes: \\ and @, and < or & where
+    a tag or an entity would start."""
+    return _DOXYGEN.sub(r"\\\1", c_comment(one_line(text)))
 
 
 def cfloat(x: float) -> str:
