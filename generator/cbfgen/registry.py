@@ -1,0 +1,297 @@
+"""The spec language's vocabulary: every field type and every check kind, declared once.
+
+The schema (its enums are filled from here when the loader reads it), the loader (what it accepts
+and refuses), every emitter and the tests read this module. Nothing else lists a type or a kind.
+
+Field types
+    A ``FieldType`` says what a field's bytes are (kind, size, signedness). Every binding derives
+    what it needs from those properties: the struct code, the numpy dtype, the Kaitai type, the C
+    type. A revision picks the types it uses in spec/cbf.yaml ``types:``; each must be registered
+    here with the same kind and size.
+
+Check kinds
+    A ``CheckKind`` names one rule every binding implements once (a Python kernel, a C kernel) and
+    the parameters a check of that kind takes, as a frozen dataclass (``params``): the loader
+    builds it from the YAML and refuses any key the kind does not take. ``versions`` is a
+    parameter of ``availability`` only, the one kind whose runtimes scope by version.
+
+Binding capabilities
+    ``unsupported(t)`` names the bindings that cannot yet carry a field of type ``t`` (the loader
+    refuses such a field with its line, before any emitter runs).
+
+See generator/README.md, "Extending the spec language".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Literal
+
+# -- field types ------------------------------------------------------------------------------
+
+FieldKind = Literal["uint", "sint", "float", "string", "bytes"]
+FIELD_KINDS: tuple[FieldKind, ...] = ("uint", "sint", "float", "string", "bytes")
+NUMERIC_KINDS: tuple[FieldKind, ...] = ("uint", "sint", "float")
+INTEGER_KINDS: tuple[FieldKind, ...] = ("uint", "sint")
+
+# struct (and array) codes by kind and size: the one place a width maps to a code
+_STRUCT_CODES: dict[tuple[str, int], str] = {
+    ("uint", 1): "B", ("uint", 2): "H", ("uint", 4): "I", ("uint", 8): "Q",
+    ("sint", 1): "b", ("sint", 2): "h", ("sint", 4): "i", ("sint", 8): "q",
+    ("float", 4): "f", ("float", 8): "d",
+}
+_FLOAT_FORMATS = {4: "IEEE-754 binary32", 8: "IEEE-754 binary64"}
+
+
+@dataclass(frozen=True)
+class FieldType:
+    """One type a field may have. ``size`` is None for str and bytes (the field gives it)."""
+
+    name: str
+    kind: FieldKind
+    size: int | None
+    doc: str
+
+    @property
+    def signed(self) -> bool:
+        return self.kind in ("sint", "float")
+
+    @property
+    def is_integer(self) -> bool:
+        return self.kind in INTEGER_KINDS
+
+    @property
+    def bits(self) -> int | None:
+        return None if self.size is None else 8 * self.size
+
+    @property
+    def struct_code(self) -> str | None:
+        """The Python struct code of one element (None: str and bytes, packed as ``Ns``)."""
+        return None if self.size is None else _STRUCT_CODES[(self.kind, self.size)]
+
+    @property
+    def bits_code(self) -> str | None:
+        """The struct code of the element's bit pattern: a float as the unsigned integer of its
+        width (exact for NaN payloads), any other type as itself."""
+        if self.kind == "float" and self.size is not None:
+            return _STRUCT_CODES[("uint", self.size)]
+        return self.struct_code
+
+    @property
+    def numpy(self) -> str | None:
+        """The numpy dtype code without byte order ("u2", "i8", "f4"); None for str and bytes."""
+        if self.size is None:
+            return None
+        return {"uint": "u", "sint": "i", "float": "f"}[self.kind] + str(self.size)
+
+    @property
+    def kaitai(self) -> str | None:
+        """The Kaitai Struct type ("u2", "s8", "f4"); None for str and bytes (size-based)."""
+        if self.size is None:
+            return None
+        return {"uint": "u", "sint": "s", "float": "f"}[self.kind] + str(self.size)
+
+    @property
+    def c_type(self) -> str | None:
+        """The C type of one element; None for str and bytes (arrays of char / uint8_t)."""
+        if self.size is None:
+            return None
+        if self.kind == "float":
+            return {4: "float", 8: "double"}[self.size]
+        return f"{'u' if self.kind == 'uint' else ''}int{8 * self.size}_t"
+
+    @property
+    def min(self) -> int | None:
+        """The least integer value (None for other kinds)."""
+        if not self.is_integer or self.size is None:
+            return None
+        return -(1 << (8 * self.size - 1)) if self.kind == "sint" else 0
+
+    @property
+    def max(self) -> int | None:
+        if not self.is_integer or self.size is None:
+            return None
+        return (1 << (8 * self.size - (1 if self.kind == "sint" else 0))) - 1
+
+    @property
+    def float_format(self) -> str | None:
+        return _FLOAT_FORMATS.get(self.size or 0) if self.kind == "float" else None
+
+
+def _ints() -> dict[str, FieldType]:
+    out: dict[str, FieldType] = {}
+    kinds: tuple[tuple[FieldKind, str, str], ...] = (("uint", "u", "unsigned"), ("sint", "s", "signed, two's complement"))
+    for kind, prefix, what in kinds:
+        for size in (1, 2, 4, 8):
+            out[f"{prefix}{size}"] = FieldType(f"{prefix}{size}", kind, size, f"{what} {8 * size}-bit integer")
+    return out
+
+
+# Every type a revision may pick, by the name spec/cbf.yaml `types:` and the fields use.
+TYPES: dict[str, FieldType] = {
+    **_ints(),
+    "f4": FieldType("f4", "float", 4, _FLOAT_FORMATS[4]),
+    "f8": FieldType("f8", "float", 8, _FLOAT_FORMATS[8]),
+    "str": FieldType("str", "string", None, "string(N): N bytes, NUL-padded"),
+    "bytes": FieldType("bytes", "bytes", None, "raw bytes, kept verbatim"),
+}
+
+# The bindings the loader answers for. Python and Kaitai read every type from this registry; the
+# C engine and the CUT text (cut.py) carry the types of rev 03 (unsigned 1/2/4 bytes, binary32).
+BINDINGS = ("python", "kaitai", "c")
+
+
+def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
+    """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
+    When a binding learns a type, its rule here changes (and nothing else in the loader)."""
+    out: list[str] = []
+    if t.kind == "sint" or (t.kind == "uint" and t.size == 8) or (t.kind == "float" and t.size != 4):
+        out.extend(("python", "c"))  # the Python runtime's CUT text and validator, C's engine: rev 03 types
+    if count != 1 and t.kind != "float":
+        out.extend(b for b in ("python", "c", "kaitai") if b not in out)  # only float vectors (x, y, z)
+    return tuple(out)
+
+
+# -- check kinds ------------------------------------------------------------------------------
+
+Severity = Literal["error", "warning"]
+
+
+@dataclass(frozen=True)
+class Target:
+    """Arguments a check reads in one command's records (``limit``: machine_limits' limit)."""
+
+    command: str
+    args: tuple[str, ...]
+    limit: str | None = None
+
+
+@dataclass(frozen=True)
+class NoParams:
+    """A kind that takes nothing but its id, severity and texts."""
+
+
+@dataclass(frozen=True)
+class PartNumberParams:
+    input: Literal["part_number"] | None = None  # the run's input the check compares (cbf validate --part-number)
+
+
+@dataclass(frozen=True)
+class CutterTableParams:
+    input: Literal["cutters"] | None = None  # cbf validate --cutters FILE
+
+
+@dataclass(frozen=True)
+class AvailabilityParams:
+    versions: tuple[str, ...]  # the versions it covers
+    commands: tuple[str, ...]  # the commands missing from them
+
+
+@dataclass(frozen=True)
+class TargetParams:
+    targets: tuple[Target, ...]
+
+
+@dataclass(frozen=True)
+class RangeParams:
+    targets: tuple[Target, ...]
+    min: float | None = None  # at least one bound (the loader refuses a range without one)
+    max: float | None = None
+
+
+@dataclass(frozen=True)
+class MachineLimitsParams:
+    targets: tuple[Target, ...]  # each names a limit of machine.limits
+    input: Literal["machine"] | None = None  # cbf validate --machine FILE
+    input_severity: Severity | None = None  # the severity when a machine file is given
+
+
+Params = (NoParams | PartNumberParams | CutterTableParams | AvailabilityParams | TargetParams | RangeParams
+          | MachineLimitsParams)
+
+Scope = Literal["file", "record"]
+
+
+@dataclass(frozen=True)
+class CheckKind:
+    """A check kind. ``scope``: file (judged once a file) or record (a kernel over records).
+    ``repeatable``: several checks of the kind may exist, and every binding runs each one.
+    ``kaitai``: the .ksy expresses it as a ``valid:`` expression (the rest is said in its doc)."""
+
+    name: str
+    params: type[Params]
+    scope: Scope
+    doc: str
+    repeatable: bool = True
+    kaitai: bool = False
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        """The YAML keys a check of this kind may carry beyond the common ones."""
+        return tuple(f.name for f in fields(self.params))
+
+    @property
+    def versioned(self) -> bool:
+        """Whether ``versions:`` scopes the check in every runtime (only then may a check carry it)."""
+        return "versions" in self.keys
+
+    @property
+    def targeted(self) -> bool:
+        return "targets" in self.keys
+
+
+def _k(name: str, params: type[Params], scope: Scope, doc: str, **kw: bool) -> CheckKind:
+    return CheckKind(name, params, scope, doc, **kw)
+
+
+# In the order of the C engine's kind enum (and of the schema's list).
+_KINDS = (
+    _k("truncated_header", NoParams, "file", "the file is shorter than the header"),
+    _k("truncated_record", NoParams, "file", "the file ends inside a record"),
+    _k("part_number", PartNumberParams, "file", "the implant descriptor's first word is the given part number"),
+    _k("descriptor_word", NoParams, "file", "the implant descriptor holds a word"),
+    _k("cutter_table", CutterTableParams, "record", "cutters agree with the given cutter table"),
+    _k("file_checksum", NoParams, "file", "the file checksum matches a coverage of the profile"),
+    _k("command_count", NoParams, "file", "the header's count is the number of records"),
+    _k("header_checksum", NoParams, "file", "the header checksum matches"),
+    _k("magic", NoParams, "file", "the start and end patterns hold their values", kaitai=True),
+    _k("sequence", NoParams, "record", "record i carries sequence number i"),
+    _k("code_copy", NoParams, "record", "the code copy equals the code", kaitai=True),
+    _k("arg_size", NoParams, "record", "nb is the size of a layout of the version", kaitai=True),
+    _k("arg_checksum", NoParams, "record", "the argument checksum matches"),
+    _k("continuity", NoParams, "record", "a motion starts where the last one ended"),
+    _k("availability", AvailabilityParams, "record", "the version has the command", kaitai=True),
+    _k("version", NoParams, "file", "the header's version is a version of the spec"),
+    _k("unknown_code", NoParams, "record", "the command code is in the table"),
+    _k("trailing", NoParams, "file", "no byte follows the last record"),
+    _k("reserved_byte", NoParams, "record", "the record's reserved byte is 0"),
+    _k("string_tail", NoParams, "record", "only NULs follow a string's first NUL"),
+    _k("string_ascii", NoParams, "record", "strings are printable ASCII"),
+    _k("finite", NoParams, "record", "float arguments are finite"),
+    _k("positive", TargetParams, "record", "target arguments are > 0"),
+    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero"),
+    _k("range", RangeParams, "record", "target arguments lie within min..max"),
+    _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record"),
+    _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order"),
+    _k("orientation", NoParams, "record", "a 5-axis command starts at the current orientation"),
+    _k("shape", NoParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
+    _k("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits"),
+)
+
+CHECK_KINDS: dict[str, CheckKind] = {k.name: k for k in _KINDS}
+
+# Keys every check has, whatever its kind (the schema's `checks` items).
+COMMON_CHECK_KEYS = ("id", "kind", "severity", "clause", "decision", "text", "fails")
+SEVERITIES: tuple[Severity, ...] = ("error", "warning")
+
+
+def kind(name: str) -> CheckKind:
+    return CHECK_KINDS[name]
+
+
+def kinds_with(scope: Scope) -> tuple[str, ...]:
+    return tuple(k.name for k in _KINDS if k.scope == scope)
+
+
+def targeted_kinds() -> tuple[str, ...]:
+    return tuple(k.name for k in _KINDS if k.targeted)
