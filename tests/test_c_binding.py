@@ -23,7 +23,9 @@ from cbfgen.model import Spec
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion", "-Wdouble-promotion",
-          "-Werror"]
+          "-Wswitch-enum", "-Werror"]  # mk/c.mk's C_WARN
+EVERYTHING = ["-std=c99", "-Weverything", "-Werror", "-Wno-padded", "-Wno-unknown-warning-option",
+              "-Wno-declaration-after-statement"]  # mk/c.mk's C_EVERYTHING
 
 DWELL = {
     "name": "DWELL", "code": 0x44, "clause": "5.1", "doc": "Dwell.",
@@ -292,9 +294,137 @@ def test_hostile_spec_text_compiles_strictly(tmp_path: Path) -> None:
     src = tmp_path / "one.c"
     src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\n#include <string.h>\n'
                    "int main(void) { return strcmp(cbf_machine_limit_names[0], \"\") == 0; }\n", encoding="utf-8")
-    for argv in ([cc, *STRICT], [clang, "-std=c99", "-Weverything", "-Werror", "-Wno-padded",
-                                 "-Wno-unknown-warning-option", "-Wno-declaration-after-statement"]):
+    for argv in ([cc, *STRICT], [clang, *EVERYTHING]):
         done = subprocess.run([*argv, "-I", str(out / "c"), "-o", str(tmp_path / "one"), str(src), "-lm"],
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr[-3000:]
     assert subprocess.run([str(tmp_path / "one")]).returncode == 0
+
+
+# -- the registry's vocabulary in the C engine (issue #24 pt 2) ---------------------------------
+
+RUNTIME = ROOT / "generator" / "cbfgen" / "emit" / "c" / "runtime"
+
+
+def _switch_body(text: str, head: str) -> str:
+    """The body of the switch that starts at ``head`` (braces matched)."""
+    start = text.index(head) + len(head)
+    depth, i = 1, start
+    while depth:
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    return text[start:i - 1]
+
+
+def test_c_engine_places_every_registered_kind_and_field_kind() -> None:
+    """Each check kind of the registry has its case in the engine's kind switch, and each field kind
+    its case in the codec's load and store; none of these switches has a default (the kinds come
+    from cbfgen.registry, never from a list here)."""
+    from cbfgen.emit.c import macro
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
+
+    validator = (RUNTIME / "validator.c").read_text(encoding="utf-8")
+    body = _switch_body(validator, "switch ((enum cbf__kind)ch->kind) {")
+    assert "default:" not in body
+    missing = [k for k in CHECK_KINDS if f"case CBF__KIND_{macro(k)}:" not in body]
+    assert not missing, f"check kinds the C engine lacks: {missing}"
+    codec = (RUNTIME / "bytes.c").read_text(encoding="utf-8")
+    for fn in ("static void cbf__load(", "static void cbf__store("):
+        body = _switch_body(codec[codec.index(fn):], "switch ((enum cbf_field_kind)f->kind) {")
+        assert "default:" not in body, fn
+        missing = [k for k in FIELD_KINDS if f"case CBF_KIND_{macro(k)}:" not in body]
+        assert not missing, f"{fn} lacks field kinds {missing}"
+
+
+@pytest.mark.parametrize("what", ["check kind", "field kind"])
+def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """A kind added to the registry and to no C switch: the header of today's spec no longer
+    compiles under mk/c.mk's flags (-Wswitch-enum -Werror), and the error names the kind."""
+    cc = _need("gcc")
+    import cbfgen.emit.c as emitter
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS, CheckKind, NoParams
+
+    if what == "check kind":
+        extra = dict(CHECK_KINDS, zz_new_rule=CheckKind("zz_new_rule", NoParams, "record", "a new rule"))
+        monkeypatch.setattr(emitter, "CHECK_KINDS", extra)
+        name = "CBF__KIND_ZZ_NEW_RULE"
+    else:
+        monkeypatch.setattr(emitter, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
+        name = "CBF_KIND_ZZ_NEW_TYPE"
+    out = emitter.emit(_model())
+    (tmp_path / "cbf.h").write_bytes(out["c/cbf.h"])
+    src = tmp_path / "one.c"
+    src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\nint main(void) { return 0; }\n', encoding="utf-8")
+    argv = [cc, *STRICT, "-I", str(tmp_path), "-c", str(src), "-o", str(tmp_path / "one.o")]
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode != 0 and name in done.stderr, done.stderr[-2000:]
+    # and without the extra kind the same build passes (the failure is the kind's, not the flags')
+    monkeypatch.undo()
+    (tmp_path / "cbf.h").write_bytes(emitter.emit(_model())["c/cbf.h"])
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr[-2000:]
+
+
+TYPES_PROGRAM = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#include <string.h>
+
+/* One field of each registered numeric type, at offset 0 of its own buffer. */
+%(rows)s
+
+int main(void)
+{
+    static const uint8_t in[8] = { 0x81, 0x92, 0xA3, 0xB4, 0xC5, 0xD6, 0xE7, 0x78 };
+    uint8_t back[8];
+%(checks)s
+    return 0;
+}
+"""
+
+
+def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_order(tmp_path: Path) -> None:
+    """Every numeric type of the registry: its C struct member type is the registry's c_type, and the
+    codec (cbf__load, cbf__store) reads its bytes as the spec's byte order says and writes them back
+    unchanged. Expected values come from Python's struct with the registry's struct code."""
+    import struct
+
+    from cbfgen.emit.c import _ctype
+    from cbfgen.model import Field
+    from cbfgen.registry import TYPES
+
+    cc = _need("gcc")
+    order = "<" if _model().meta["byte_order"] == "little" else ">"
+    data = bytes([0x81, 0x92, 0xA3, 0xB4, 0xC5, 0xD6, 0xE7, 0x78])
+    kinds = {"uint": "CBF_KIND_UINT", "sint": "CBF_KIND_SINT", "float": "CBF_KIND_FLOAT"}
+    rows, checks = [], []
+    numeric = [t for t in TYPES.values() if t.size is not None]
+    assert {t.kind for t in numeric} == set(kinds), "a numeric kind this test does not know"
+    for i, t in enumerate(numeric):
+        assert t.size is not None and t.c_type is not None and t.struct_code is not None
+        f = Field(name=t.name, type=t.name, kind=t.kind, offset=0, elem_size=t.size, count=1, doc="x", line=0)
+        assert _ctype(f) == (t.c_type, "")
+        rows.append(f"static const cbf_field_info f{i} = {{ \"{t.name}\", NULL, {kinds[t.kind]}, 0, 0, 0, 0, "
+                    f"{t.size}, 1, 0, 0u }};")
+        want = struct.unpack(order + t.struct_code, data[:t.size])[0]
+        # the value as a C constant: a double for a float (exact), else a long long one (INT64_MIN safe)
+        lit = (repr(float(want)) if t.kind == "float" else f"{want}ULL" if t.kind == "uint"
+               else f"{want}LL" if want >= 0 else f"(-{-want - 1}LL - 1)")
+        checks.append(f"""    {{
+        {t.c_type} x;
+        cbf__load(&f{i}, 1, in, (unsigned char *)&x);
+        if (x != ({t.c_type})({lit})) {{ printf("{t.name} read wrong\\n"); return 1; }}
+        memset(back, 0, sizeof back);
+        cbf__store(&f{i}, 1, (const unsigned char *)&x, back);
+        if (memcmp(back, in, {t.size}) != 0) {{ printf("{t.name} written wrong\\n"); return 2; }}
+    }}""")
+    src = tmp_path / "types.c"
+    src.write_text(TYPES_PROGRAM % {"rows": "\n".join(rows), "checks": "\n".join(checks)}, encoding="utf-8")
+    exe = tmp_path / "types"
+    done = subprocess.run([cc, *STRICT, "-Wno-float-equal", "-I", str(ROOT / "generated" / "c"), "-o", str(exe),
+                           str(src), "-lm"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr[-3000:]
+    run = subprocess.run([str(exe)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout

@@ -23,14 +23,15 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...escape import RESERVED, c_comment, c_string, keyword_clash, one_line
 from ...model import ALGORITHM_KINDS, Field, Layout, Spec
+from ...registry import CHECK_KINDS, FIELD_KINDS, TYPES, FieldType
 from ...render import environment
 from .machine import machine_context
 
 HERE = Path(__file__).parent
 OUT = "c"
 
-# The model's vocabulary the engine understands (loader.py, spec comments).
-FIELD_KINDS = ("uint", "float", "string", "bytes")
+# The model's vocabulary the engine understands (loader.py, spec comments); the field types and
+# check kinds come from the registry (cbfgen/registry.py), never from a list here.
 MOTION_KINDS = ("point", "line", "circle", "helix")
 MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length")
 ORIENT_KINDS = ("set", "path")
@@ -41,14 +42,9 @@ CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in the template's checksum section
 CHECKSUM_TAGS = ("args", "header", "file")
-CHECK_KINDS = (
-    "truncated_header", "truncated_record", "part_number", "descriptor_word", "cutter_table", "file_checksum",
-    "command_count",
-    "header_checksum", "magic", "sequence", "code_copy", "arg_size", "arg_checksum", "continuity", "availability",
-    "version", "unknown_code", "trailing", "reserved_byte", "string_tail", "string_ascii", "finite", "positive",
-    "nonzero_vector", "range", "nondecreasing", "ordered", "orientation", "shape",
-    "machine_limits",  # machine.h.j2
-)
+# Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
+# targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
+_OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
 
 
 def cname(name: str) -> str:
@@ -89,26 +85,32 @@ def cfloat(x: float) -> str:
     return r if any(c in r for c in ".eE") else r + ".0"
 
 
+def field_type(f: Field) -> FieldType:
+    """The registry's type of a field: the one of its kind and element size."""
+    for t in TYPES.values():
+        if t.kind == f.kind and t.size in (None, f.elem_size):
+            return t
+    raise ValueError(f"C binding: {f.name}: no registered type of kind {f.kind!r} and {f.elem_size} bytes")
+
+
 def _ctype(f: Field) -> tuple[str, str]:
-    """(type, array suffix) of a struct member for a field."""
-    if f.kind == "uint":
-        if f.elem_size not in (1, 2, 4) or f.count != 1:
-            raise ValueError(f"C binding: {f.name}: unsigned of {f.elem_size} bytes x {f.count} is not supported")
-        return f"uint{8 * f.elem_size}_t", ""
-    if f.kind == "float":
-        if f.elem_size != 4:
-            raise ValueError(f"C binding: {f.name}: only 4-byte floats are supported")
-        return "float", (f"[{f.count}]" if f.count > 1 else "")
-    if f.kind == "string":
+    """(type, array suffix) of a struct member for a field: the registry type's C type, an array
+    of them for a vector; a string is char[N + 1] (NUL-terminated copy), bytes uint8_t[N]."""
+    t = field_type(f)
+    if t.c_type is not None:
+        return t.c_type, (f"[{f.count}]" if f.count > 1 else "")
+    if t.kind == "string":
         return "char", f"[{f.size} + 1]"
     return "uint8_t", f"[{f.size}]"
 
 
 def _member_doc(f: Field, units: dict[str, str]) -> str:
     parts = [f.doc.rstrip(".") + "."]
-    what = {"uint": f"u{8 * f.elem_size}", "float": "binary32", "string": f"string({f.size}), NUL-terminated copy",
-            "bytes": f"{f.size} raw bytes"}[f.kind]
-    if f.kind == "float" and f.count > 1:
+    t = field_type(f)
+    what = (f"string({f.size}), NUL-terminated copy" if t.kind == "string" else f"{f.size} raw bytes"
+            if t.kind == "bytes" else t.float_format.removeprefix("IEEE-754 ") if t.float_format
+            else f"{t.kind[0]}{t.bits}")  # u32, s16
+    if t.size is not None and f.count > 1:
         what += f" x {f.count}"
     extra = [what, f"offset {f.offset}"]
     if f.unit:
@@ -184,12 +186,13 @@ def _plan_layout(lay: dict[str, Any], cmd: dict[str, Any], checks: list[dict[str
         tg = targets[ct["target"]]
         rows = [tindex[tg["first"] + a][lay["index"]] for a in range(tg["n"])]
         floats = [lay["first_arg"] + i for i in rows if i >= 0 and args[i]["kind"] == "FLOAT"]
-        kind = checks[ct["check"]]["kind"]
-        if kind == "KIND_MACHINE_LIMITS":
-            continue  # cbf__machine_checks (cbf/machine.h.j2) with its own rules, machine.py
+        kind = checks[ct["check"]]["kind_name"]
+        kernel = _OWN_KERNEL.get(kind, "cbf__target_at")
+        if kernel == "cbf__machine_at":
+            continue  # its own rules (machine.py), called from the layout function too
         # a check finds nothing in a layout without its float arguments (ordered: without all of them)
-        if floats if kind != "KIND_ORDERED" else len(floats) == len(rows):
-            lay["plan"]["targets"].append({"check": ct["check"], "target": ct["target"], "kind": kind,
+        if floats if kernel == "cbf__target_at" else len(floats) == len(rows):
+            lay["plan"]["targets"].append({"check": ct["check"], "target": ct["target"], "kernel": kernel,
                                            "text": ct["text"], "args": floats})
 
 
@@ -238,6 +241,10 @@ def context(spec: Spec) -> dict[str, Any]:
             suffix = ("_" + cname(lay.variant)) if lay.variant else ""
             struct = f"cbf_{cname(c.name)}{suffix}_args"
             args = [dict(_field_row(a, struct, roles, []), doc=_member_doc(a, units)) for a in lay.args]
+            for a in lay.args:
+                if a.kind == "float" and a.elem_size != 4:  # the codec carries it; the checks read binary32
+                    raise ValueError(f"C binding: {c.name} {a.name}: the C validator reads binary32 arguments only "
+                                     "(registry.unsupported says so; the loader refuses it first)")
 
             def idx(name: str | None, lay: Layout = lay) -> int:
                 if name is None:
@@ -347,7 +354,7 @@ def context(spec: Spec) -> dict[str, Any]:
     tindex: list[list[int]] = []
     for ch in spec.checks:
         if ch.kind not in CHECK_KINDS:
-            raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not implemented by the C engine")
+            raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not in the registry")
         first = len(targets)
         for t in ch.targets:
             targets.append({"command": cmd_index[t.command], "first": len(tnames), "n": len(t.args),
@@ -357,7 +364,8 @@ def context(spec: Spec) -> dict[str, Any]:
                 tindex.append([next((i for i, a in enumerate(lay["args"]) if a["name"] == name), -1)
                                if lay["cmd_name"] == t.command else -1 for lay in layouts])
         checks.append({
-            "id": ch.id, "macro": macro(ch.id), "kind": "KIND_" + macro(ch.kind), "severity": ch.severity,
+            "id": ch.id, "macro": macro(ch.id), "kind": "KIND_" + macro(ch.kind), "kind_name": ch.kind,
+            "severity": ch.severity,
             "error": int(ch.severity == "error"),
             "vmask": " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in ch.versions) or "0",
             "first": first, "n": len(ch.targets),
@@ -448,7 +456,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "regions": [macro(k) for k in REGIONS],
         "algorithms": [macro(k) for k in ALGORITHMS],
         "tags": [macro(k) for k in CHECKSUM_TAGS],
-        "check_kinds": [macro(k) for k in CHECK_KINDS],
+        "check_kinds": [macro(k) for k in CHECK_KINDS],  # the registry's, in its order
         "field_kinds": [macro(k) for k in FIELD_KINDS],
         "decisions": spec.decisions,
         "errata": spec.errata,

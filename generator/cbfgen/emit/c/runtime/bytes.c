@@ -73,7 +73,54 @@ static int cbf__ffirst(const uint8_t *base, const cbf_field_info *f, double *fir
     return finite;
 }
 
-/* Load fields from bytes into a struct (byte-wise through memcpy). */
+/* An element of 8 bytes: the bit pattern of a u8, s8 or f8. */
+static uint64_t cbf__get_u64(const uint8_t *p)
+{
+    uint64_t v = 0;
+    unsigned i;
+    for (i = 0; i < 8u; i++) {
+#if CBF__LITTLE_ENDIAN
+        v |= (uint64_t)p[i] << (8u * i);
+#else
+        v = (v << 8) | (uint64_t)p[i];
+#endif
+    }
+    return v;
+}
+
+static void cbf__put_u64(uint8_t *p, uint64_t v)
+{
+    unsigned i;
+    for (i = 0; i < 8u; i++) {
+#if CBF__LITTLE_ENDIAN
+        p[i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
+#else
+        p[7u - i] = (uint8_t)((v >> (8u * i)) & 0xFFu);
+#endif
+    }
+}
+
+/* One element of an integer or float field between its n bytes and its struct member (the C type
+ * of the registry's type: uintN_t, intN_t, float, double). A signed integer is the unsigned one's
+ * bits (intN_t is two's complement), and a float its IEEE-754 bits, so each width has one path. */
+static void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
+{
+    if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
+    else if (n == 2u) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
+    else if (n == 1u) { uint8_t v = s[0]; memcpy(m, &v, sizeof v); }
+    else { uint64_t v = cbf__get_u64(s); memcpy(m, &v, sizeof v); }
+}
+
+static void cbf__store_elem(uint8_t *d, const unsigned char *m, unsigned n)
+{
+    if (n == 4u) { uint32_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 4); }
+    else if (n == 2u) { uint16_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 2); }
+    else if (n == 1u) { d[0] = m[0]; }
+    else { uint64_t v; memcpy(&v, m, sizeof v); cbf__put_u64(d, v); }
+}
+
+/* Load fields from bytes into a struct (byte-wise through memcpy). One case a field kind of the
+ * registry, no default: a kind the engine lacks fails the build (-Wswitch-enum). */
 static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src, unsigned char *dst)
 {
     size_t k;
@@ -83,23 +130,18 @@ static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src
         const uint8_t *s = src + f->offset;
         size_t size = (size_t)f->elem * f->count;
         unsigned i;
-        switch (f->kind) {
-        case CBF__K_UINT:
-            if (f->elem == 1) { uint8_t v = (uint8_t)cbf__get_u(s, 1); memcpy(m, &v, sizeof v); }
-            else if (f->elem == 2) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
-            else { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
+        switch ((enum cbf_field_kind)f->kind) {
+        case CBF_KIND_UINT:
+        case CBF_KIND_SINT:
+        case CBF_KIND_FLOAT:
+            for (i = 0; i < f->count; i++)
+                cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;
-        case CBF__K_FLOAT:
-            for (i = 0; i < f->count; i++) {
-                float v = cbf__get_f4(s + 4u * i);
-                memcpy(m + sizeof(float) * i, &v, sizeof v);
-            }
-            break;
-        case CBF__K_STRING:
+        case CBF_KIND_STRING:
             memcpy(m, s, size);
             m[size] = 0;
             break;
-        default:
+        case CBF_KIND_BYTES:
             memcpy(m, s, size);
             break;
         }
@@ -116,20 +158,15 @@ static void cbf__store(const cbf_field_info *fields, size_t n, const unsigned ch
         uint8_t *d = dst + f->offset;
         size_t size = (size_t)f->elem * f->count;
         unsigned i;
-        switch (f->kind) {
-        case CBF__K_UINT:
-            if (f->elem == 1) { uint8_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 1); }
-            else if (f->elem == 2) { uint16_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 2); }
-            else { uint32_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 4); }
+        switch ((enum cbf_field_kind)f->kind) {
+        case CBF_KIND_UINT:
+        case CBF_KIND_SINT:
+        case CBF_KIND_FLOAT:
+            for (i = 0; i < f->count; i++)
+                cbf__store_elem(d + (size_t)f->elem * i, m + (size_t)f->elem * i, f->elem);
             break;
-        case CBF__K_FLOAT:
-            for (i = 0; i < f->count; i++) {
-                float v;
-                memcpy(&v, m + sizeof(float) * i, sizeof v);
-                cbf__put_u(d + 4u * i, cbf__f4_bits(v), 4);
-            }
-            break;
-        default:
+        case CBF_KIND_STRING:
+        case CBF_KIND_BYTES:
             memcpy(d, m, size);
             break;
         }
@@ -138,12 +175,12 @@ static void cbf__store(const cbf_field_info *fields, size_t n, const unsigned ch
 
 uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base)
 {
-    return (f && base && f->kind == CBF__K_UINT) ? cbf__get_u(base + f->offset, f->elem) : 0u;
+    return (f && base && f->kind == CBF__K_UINT && f->elem <= 4u) ? cbf__get_u(base + f->offset, f->elem) : 0u;
 }
 
 float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i)
 {
-    return (f && base && f->kind == CBF__K_FLOAT && i < f->count) ? cbf__get_f4(base + f->offset + 4u * i) : 0.0f;
+    return (f && base && f->kind == CBF__K_FLOAT && f->elem == 4u && i < f->count) ? cbf__get_f4(base + f->offset + 4u * i) : 0.0f;
 }
 
 uint32_t cbf_float_bits(float f) { return cbf__f4_bits(f); }
@@ -151,7 +188,7 @@ uint32_t cbf_float_bits(float f) { return cbf__f4_bits(f); }
 uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj)
 {
     const unsigned char *m;
-    if (!f || !obj || f->kind != CBF__K_UINT)
+    if (!f || !obj || f->kind != CBF__K_UINT || f->elem > 4u)
         return 0u;
     m = (const unsigned char *)obj + f->member;
     if (f->elem == 1) { uint8_t x; memcpy(&x, m, 1); return x; }
@@ -162,7 +199,7 @@ uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj)
 void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
 {
     unsigned char *m;
-    if (!f || !obj || f->kind != CBF__K_UINT)
+    if (!f || !obj || f->kind != CBF__K_UINT || f->elem > 4u)
         return;
     m = (unsigned char *)obj + f->member;
     if (f->elem == 1) { uint8_t x = (uint8_t)v; memcpy(m, &x, 1); }

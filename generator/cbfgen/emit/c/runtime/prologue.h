@@ -22,6 +22,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__F_TEXT CBF_FIELD_TEXT
 #define CBF__F_MAGIC CBF_FIELD_MAGIC
 #define CBF__K_UINT CBF_KIND_UINT
+#define CBF__K_SINT CBF_KIND_SINT
 #define CBF__K_FLOAT CBF_KIND_FLOAT
 #define CBF__K_STRING CBF_KIND_STRING
 #define CBF__K_BYTES CBF_KIND_BYTES
