@@ -103,7 +103,7 @@ static void cbf__put_u64(uint8_t *p, uint64_t v)
 /* One element of an integer or float field between its n bytes and its struct member (the C type
  * of the registry's type: uintN_t, intN_t, float, double). A signed integer is the unsigned one's
  * bits (intN_t is two's complement), and a float its IEEE-754 bits, so each width has one path. */
-static void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
+static inline void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
 {
     if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
     else if (n == 2u) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
@@ -111,7 +111,7 @@ static void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
     else { uint64_t v = cbf__get_u64(s); memcpy(m, &v, sizeof v); }
 }
 
-static void cbf__store_elem(uint8_t *d, const unsigned char *m, unsigned n)
+static inline void cbf__store_elem(uint8_t *d, const unsigned char *m, unsigned n)
 {
     if (n == 4u) { uint32_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 4); }
     else if (n == 2u) { uint16_t v; memcpy(&v, m, sizeof v); cbf__put_u(d, v, 2); }
@@ -131,9 +131,19 @@ static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src
         size_t size = (size_t)f->elem * f->count;
         unsigned i;
         switch ((enum cbf_field_kind)f->kind) {
+        case CBF_KIND_FLOAT:
+            if (f->elem == 4u) { /* binary32, the common case: its own loop (the decoder's hot path) */
+                for (i = 0; i < f->count; i++) {
+                    uint32_t v = cbf__get_u(s + 4u * i, 4);
+                    memcpy(m + 4u * i, &v, sizeof v);
+                }
+                break;
+            }
+            for (i = 0; i < f->count; i++)
+                cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
+            break;
         case CBF_KIND_UINT:
         case CBF_KIND_SINT:
-        case CBF_KIND_FLOAT:
             for (i = 0; i < f->count; i++)
                 cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;

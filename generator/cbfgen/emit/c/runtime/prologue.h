@@ -14,8 +14,12 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 
 #if defined(__GNUC__) || defined(__clang__)
 #define CBF__PRINTF(f, a) __attribute__((format(printf, f, a)))
+/* The record loops' functions start on a cache line: their speed then no longer depends on where
+ * the rest of the header happens to put them (measured: up to 8 % either way without it). */
+#define CBF__HOT __attribute__((aligned(64)))
 #else
 #define CBF__PRINTF(f, a)
+#define CBF__HOT
 #endif
 
 #define CBF__F_RESERVED CBF_FIELD_RESERVED

@@ -19,7 +19,8 @@ static int cbf__file_sum_folds(int profile, size_t *start)
  * command almost always share one size). */
 typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
 
-long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user)
+CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn,
+                          void *user)
 {
     cbf__vctx v;
     cbf_header h;
