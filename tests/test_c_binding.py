@@ -343,14 +343,15 @@ def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
     compiles under mk/c.mk's flags (-Wswitch-enum -Werror), and the error names the kind."""
     cc = _need("gcc")
     import cbfgen.emit.c as emitter
+    from cbfgen import registry
     from cbfgen.registry import CHECK_KINDS, FIELD_KINDS, CheckKind, NoParams
 
     if what == "check kind":
         extra = dict(CHECK_KINDS, zz_new_rule=CheckKind("zz_new_rule", NoParams, "record", "a new rule"))
-        monkeypatch.setattr(emitter, "CHECK_KINDS", extra)
+        monkeypatch.setattr(registry, "CHECK_KINDS", extra)
         name = "CBF__KIND_ZZ_NEW_RULE"
     else:
-        monkeypatch.setattr(emitter, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
+        monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
         name = "CBF_KIND_ZZ_NEW_TYPE"
     out = emitter.emit(_model())
     (tmp_path / "cbf.h").write_bytes(out["c/cbf.h"])
@@ -391,7 +392,7 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
     unchanged. Expected values come from Python's struct with the registry's struct code."""
     import struct
 
-    from cbfgen.emit.c import _ctype
+    from cbfgen.emit.c import ctype
     from cbfgen.model import Field
     from cbfgen.registry import TYPES
 
@@ -405,7 +406,7 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
     for i, t in enumerate(numeric):
         assert t.size is not None and t.c_type is not None and t.struct_code is not None
         f = Field(name=t.name, type=t.name, kind=t.kind, offset=0, elem_size=t.size, count=1, doc="x", line=0)
-        assert _ctype(f) == (t.c_type, "")
+        assert ctype(f) == (t.c_type, "")
         rows.append(f"static const cbf_field_info f{i} = {{ \"{t.name}\", NULL, {kinds[t.kind]}, 0, 0, 0, 0, "
                     f"{t.size}, 1, 0, 0u }};")
         want = struct.unpack(order + t.struct_code, data[:t.size])[0]
