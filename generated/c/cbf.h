@@ -4064,6 +4064,18 @@ static const cbf__mrule cbf__mrules[30] = {
 };
 static const unsigned short cbf__mrule_first[CBF_LAYOUT__COUNT + 1] = { 0, 1, 1, 3, 5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 8, 10, 13, 16, 18, 20, 22, 24, 25, 27, 27, 27, 27, 30, 30, 30, 30 };
 
+/* out |= whether any of x's n components (n a constant) lies outside lo..hi: branch-free, written
+ * out for each of the 3 axes so that it folds to n pairs of compares
+ * (runtime/machine.c, cbf__machine_at). */
+#define CBF__MACHINE_OUT(out, x, lo, hi, n) do { \
+    if ((n) > 0u) (out) |= ((x)[0] < (lo)[0]) | ((x)[0] > (hi)[0]); \
+    if ((n) > 1u) (out) |= ((x)[1] < (lo)[1]) | ((x)[1] > (hi)[1]); \
+    if ((n) > 2u) (out) |= ((x)[2] < (lo)[2]) | ((x)[2] > (hi)[2]); \
+} while (0)
+
+/* ==== BEGIN runtime/machine.c: verbatim from generator/cbfgen/emit/c/runtime/machine.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/machine.c"
+/* ---- machine limits: the kernel of check kind machine_limits (decision L1) ----- */
 /* A bound as the values it limits are stored: rounded to binary32, beyond its range infinite
  * (a value equal to a bound written in decimal is inside); the same rule in every binding. */
 static double cbf__bound32(double b)
@@ -4132,22 +4144,19 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
 
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
  * function, finite: whether all are), called with j and n as constants: one branch-free
- * test of the box or range (written out for each of the 3 axes, so that it
- * folds to n pairs of compares), the exact finding only when a value is out. */
+ * test of the box or range (CBF__MACHINE_OUT, written out per axis by machine.h.j2), the
+ * exact finding only when a value is out. */
 CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n, int finite,
                                  long rec, size_t off)
 {
     const float *lo = v->mlo[cbf__mrules[j].limit], *hi = v->mhi[cbf__mrules[j].limit];
     int out = 0;
-    if (n > 0u)
-        out |= (x[0] < lo[0]) | (x[0] > hi[0]);
-    if (n > 1u)
-        out |= (x[1] < lo[1]) | (x[1] > hi[1]);
-    if (n > 2u)
-        out |= (x[2] < lo[2]) | (x[2] > hi[2]);
+    CBF__MACHINE_OUT(out, x, lo, hi, n);
     if (out)
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
+/* ==== END runtime/machine.c ==== */
+#line 4160 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4966,7 +4975,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 4970 "cbf.h"
+#line 4979 "cbf.h"
 #ifdef __cplusplus
 }
 #endif
