@@ -848,6 +848,39 @@ typedef union cbf_args {
     struct cbf_comment_args comment;
 } cbf_args;
 
+/* ---- machine limits (decision L1, check kind machine_limits; machine.h.j2) ----
+ * A machine bounds every position argument by a box and speeds, accelerations and
+ * cutter sizes by ranges, in the units of the arguments. cbf_options.machine NULL:
+ * the spec's default machine (cbf_machine_default), whose breaches are warnings;
+ * a machine of your own (e.g. read from a machine file): its breaches are errors. */
+#define CBF_MACHINE_MAX_AXES 3
+enum cbf_machine_limit {
+    CBF_MACHINE_WORKSPACE = 0, /**< Every position (a point, a start, end, middle or centre, a recovery point) lies in this box. (mm, axes x y z) */
+    CBF_MACHINE_SPEED = 1, /**< Path speeds (SPEED, and the FCPARMS speeds). (m/s) */
+    CBF_MACHINE_ACCELERATION = 2, /**< Acceleration and deceleration (ACCEL). (m/s^2) */
+    CBF_MACHINE_CUTTER_LENGTH = 3, /**< Cutter length (CUTTER). (mm) */
+    CBF_MACHINE_CUTTER_RADIUS = 4, /**< Cutter radius (CUTTER). (mm) */
+    CBF_MACHINE__COUNT = 5
+};
+/** One limit: min[0]..max[0] for a range; min[i]..max[i] on axis i for a box. */
+typedef struct cbf_machine_range {
+    double min[CBF_MACHINE_MAX_AXES];
+    double max[CBF_MACHINE_MAX_AXES];
+} cbf_machine_range;
+typedef struct cbf_machine {
+    cbf_machine_range limit[CBF_MACHINE__COUNT]; /**< by enum cbf_machine_limit */
+} cbf_machine;
+/** Each limit's name (as in a machine file), unit, and number of axes (0: a range). */
+extern const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT];
+extern const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT];
+extern const int cbf_machine_limit_axes[CBF_MACHINE__COUNT];
+/** The axis names of each box limit (NULL past its axes). */
+extern const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
+/** The spec's default machine (L1): conservative; its breaches are warnings. */
+extern const cbf_machine cbf_machine_default;
+/* ==== BEGIN runtime/types.h: verbatim from generator/cbfgen/emit/c/runtime/types.h, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/types.h"
+/* ---- the API's types: records, reader, writer, field descriptions, findings, options ---- */
 /** One record, as cbf_next_record gives it. */
 typedef struct cbf_record {
     size_t index;          /**< 0-based record index */
@@ -920,37 +953,6 @@ typedef struct cbf_cutter {
     double radius;
 } cbf_cutter;
 
-/* ---- machine limits (decision L1, check kind machine_limits; machine.h.j2) ----
- * A machine bounds every position argument by a box and speeds, accelerations and
- * cutter sizes by ranges, in the units of the arguments. cbf_options.machine NULL:
- * the spec's default machine (cbf_machine_default), whose breaches are warnings;
- * a machine of your own (e.g. read from a machine file): its breaches are errors. */
-#define CBF_MACHINE_MAX_AXES 3
-enum cbf_machine_limit {
-    CBF_MACHINE_WORKSPACE = 0, /**< Every position (a point, a start, end, middle or centre, a recovery point) lies in this box. (mm, axes x y z) */
-    CBF_MACHINE_SPEED = 1, /**< Path speeds (SPEED, and the FCPARMS speeds). (m/s) */
-    CBF_MACHINE_ACCELERATION = 2, /**< Acceleration and deceleration (ACCEL). (m/s^2) */
-    CBF_MACHINE_CUTTER_LENGTH = 3, /**< Cutter length (CUTTER). (mm) */
-    CBF_MACHINE_CUTTER_RADIUS = 4, /**< Cutter radius (CUTTER). (mm) */
-    CBF_MACHINE__COUNT = 5
-};
-/** One limit: min[0]..max[0] for a range; min[i]..max[i] on axis i for a box. */
-typedef struct cbf_machine_range {
-    double min[CBF_MACHINE_MAX_AXES];
-    double max[CBF_MACHINE_MAX_AXES];
-} cbf_machine_range;
-typedef struct cbf_machine {
-    cbf_machine_range limit[CBF_MACHINE__COUNT]; /**< by enum cbf_machine_limit */
-} cbf_machine;
-/** Each limit's name (as in a machine file), unit, and number of axes (0: a range). */
-extern const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT];
-extern const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT];
-extern const int cbf_machine_limit_axes[CBF_MACHINE__COUNT];
-/** The axis names of each box limit (NULL past its axes). */
-extern const char *const cbf_machine_limit_axis_names[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
-/** The spec's default machine (L1): conservative; its breaches are warnings. */
-extern const cbf_machine cbf_machine_default;
-
 typedef struct cbf_options {
     int profile;               /**< enum cbf_profile */
     const char *part_number;   /**< 6.1.1 input, or NULL */
@@ -958,7 +960,10 @@ typedef struct cbf_options {
     size_t ncutters;
     const cbf_machine *machine; /**< machine_limits input (L1), or NULL: the default machine, warnings */
 } cbf_options;
-
+/* ==== END runtime/types.h ==== */
+#line 965 "cbf.h"
+/* ==== BEGIN runtime/api.h: verbatim from generator/cbfgen/emit/c/runtime/api.h, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/api.h"
 /* ================================================================ prototypes */
 
 /** Command names by code (NULL for codes that are not commands). */
@@ -1038,6 +1043,13 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
  *  kept as given (a faulty file reproduced). Returns the file size or the
  *  writer's first error (errors are sticky: a refused record fails the end). */
 long cbf_encode_end(cbf_writer *w, int profile, int fill);
+
+/** Run every check of the spec; each finding goes to fn. Returns the number
+ *  of error-severity findings, or CBF_ERR_ARGUMENT. */
+long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
+/* ==== END runtime/api.h ==== */
+#line 1052 "cbf.h"
+/** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
 int cbf_encode_cutter(cbf_writer *w, const struct cbf_cutter_args *args);
@@ -1068,11 +1080,6 @@ int cbf_encode_fcparms(cbf_writer *w, const struct cbf_fcparms_args *args);
 int cbf_encode_version(cbf_writer *w, const struct cbf_version_args *args);
 int cbf_encode_version_implib(cbf_writer *w, const struct cbf_version_implib_args *args);
 int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args);
-
-/** Run every check of the spec; each finding goes to fn. Returns the number
- *  of error-severity findings, or CBF_ERR_ARGUMENT. */
-long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
-
 #ifdef __cplusplus
 }
 #endif
@@ -1197,14 +1204,85 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1201 "cbf.h"
-/* ---- the spec as tables ------------------------------------------------- */
+#line 1208 "cbf.h"
+/* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/tables.h"
+/* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
 typedef struct cbf__version {
     const char *id;
     int major, minor; /* minor -1: any */
     int header;
     int writable;
 } cbf__version;
+
+typedef struct cbf__header_layout {
+    const cbf_field_info *fields;
+    size_t nfields;
+    size_t size;
+    size_t member; /* offsetof in cbf_header */
+} cbf__header_layout;
+
+typedef struct cbf__layout {
+    int command;        /* index into cbf__commands */
+    const char *variant;
+    unsigned versions;  /* CBF__VBIT mask */
+    unsigned profiles;  /* CBF__PBIT mask; 0: every profile */
+    size_t size;
+    size_t first_arg, nargs;
+    size_t member;      /* offsetof in cbf_args (always 0: a union) */
+    signed char motion[CBF__M__COUNT];
+    signed char orient[CBF__O__COUNT];
+    signed char shape[CBF__S__COUNT];
+    signed char cutter[CBF__C__COUNT];
+    signed char progress;
+} cbf__layout;
+
+typedef struct cbf__command {
+    int code;
+    const char *name;
+    int first_layout, nlayouts;
+    unsigned versions;
+    int motion, orient, shape, cutter;
+    signed char candidates[CBF__NVERSIONS][CBF__MAX_CANDIDATES]; /* decode order per version, -1 ends */
+} cbf__command;
+
+typedef struct cbf__segment {
+    int region;
+    size_t start;
+    long end;          /* -1: none */
+    unsigned exclude;  /* record head fields left out (bit = index in cbf__record_fields) */
+} cbf__segment;
+
+typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
+
+typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+
+typedef struct cbf__profile {
+    const char *id;
+    int file[CBF__MAX_COVERAGES]; /* coverages accepted for the file checksum, -1 ends */
+    int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
+    int file_alg;                 /* the file checksum's algorithm under this profile */
+    int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
+} cbf__profile;
+
+typedef struct cbf__target { int command; size_t first, n; } cbf__target;
+
+typedef struct cbf__check {
+    const char *id;
+    int kind;
+    int severity;
+    unsigned versions;
+    size_t first_target, ntargets;
+    int has_min; double min;
+    int has_max; double max;
+} cbf__check;
+
+static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
+static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
+static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
+/* ==== END runtime/tables.h ==== */
+#line 1285 "cbf.h"
+/* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
     { "1.x", 1, -1, 1, 0 },
@@ -1237,13 +1315,6 @@ static const cbf_field_info cbf__header_v1_fields[10] = {
     { "command_count", NULL, CBF__K_UINT, CBF_ROLE_COMMAND_COUNT, 0, CBF__CK_NONE, 122, 2, 1, offsetof(struct cbf_header_v1, command_count), 0u },
     { "end_pattern", NULL, CBF__K_UINT, CBF_ROLE_END_PATTERN, CBF__F_MAGIC, CBF__CK_NONE, 124, 4, 1, offsetof(struct cbf_header_v1, end_pattern), 0xAC5E486Du },
 };
-
-typedef struct cbf__header_layout {
-    const cbf_field_info *fields;
-    size_t nfields;
-    size_t size;
-    size_t member; /* offsetof in cbf_header */
-} cbf__header_layout;
 
 static const cbf__header_layout cbf__headers[2] = {
     { cbf__header_v2_fields, 10, 128, offsetof(cbf_header, u.v2) },
@@ -1337,21 +1408,6 @@ static const cbf_field_info cbf__args[74] = {
     { "text", NULL, CBF__K_STRING, CBF_ROLE_NONE, CBF__F_TEXT, CBF__CK_NONE, 0, 40, 1, offsetof(struct cbf_comment_args, text), 0u },
 };
 
-typedef struct cbf__layout {
-    int command;        /* index into cbf__commands */
-    const char *variant;
-    unsigned versions;  /* CBF__VBIT mask */
-    unsigned profiles;  /* CBF__PBIT mask; 0: every profile */
-    size_t size;
-    size_t first_arg, nargs;
-    size_t member;      /* offsetof in cbf_args (always 0: a union) */
-    signed char motion[CBF__M__COUNT];
-    signed char orient[CBF__O__COUNT];
-    signed char shape[CBF__S__COUNT];
-    signed char cutter[CBF__C__COUNT];
-    signed char progress;
-} cbf__layout;
-
 static const cbf__layout cbf__layouts[30] = {
     { 0, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 0, 3, offsetof(cbf_args, checkpoint),
       { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2 }, /* CHECKPOINT */
@@ -1415,15 +1471,6 @@ static const cbf__layout cbf__layouts[30] = {
       { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* COMMENT */
 };
 
-typedef struct cbf__command {
-    int code;
-    const char *name;
-    int first_layout, nlayouts;
-    unsigned versions;
-    int motion, orient, shape, cutter;
-    signed char candidates[CBF__NVERSIONS][CBF__MAX_CANDIDATES]; /* decode order per version, -1 ends */
-} cbf__command;
-
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
     { 0x3C, "CHECKPOINT", 0, 2, CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0) | CBF__VBIT(CBF_V1_X), CBF__MOTION_NONE, CBF__ORIENT_NONE, CBF__SHAPE_NONE, 0,
       { { 1, -1 }, { 0, -1 }, { 0, -1 }, { 0, -1 } } },
@@ -1481,13 +1528,6 @@ static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
       { { 29, -1 }, { 29, -1 }, { 29, -1 }, { 29, -1 } } },
 };
 
-typedef struct cbf__segment {
-    int region;
-    size_t start;
-    long end;          /* -1: none */
-    unsigned exclude;  /* record head fields left out (bit = index in cbf__record_fields) */
-} cbf__segment;
-
 static const cbf__segment cbf__segments[5] = {
     { CBF__REGION_ARGS, 0, -1, 0u },
     { CBF__REGION_HEADER, 10, 128, 0u },
@@ -1496,7 +1536,6 @@ static const cbf__segment cbf__segments[5] = {
     { CBF__REGION_RECORDS, 0, -1, (1u << 0) },
 };
 
-typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 static const cbf__coverage cbf__coverages[4] = {
     { "args", 0, 1 }, /* The record's argument bytes; 0 when there are none. */
     { "header", 1, 1 }, /* Header bytes 10..127. */
@@ -1504,7 +1543,6 @@ static const cbf__coverage cbf__coverages[4] = {
     { "file_implib", 3, 2 }, /* implib's writer, header bytes 8..127 plus every record without its two sequence-number bytes. */
 };
 
-typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
 static const cbf__ckfield cbf__ckfields[3] = {
     { CBF__CK_ARGS, CBF__ALG_SUM, 0 },
     { CBF__CK_HEADER, CBF__ALG_SUM, 1 },
@@ -1512,13 +1550,6 @@ static const cbf__ckfield cbf__ckfields[3] = {
 };
 static const int cbf__fill_order[3] = { CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 
-typedef struct cbf__profile {
-    const char *id;
-    int file[CBF__MAX_COVERAGES]; /* coverages accepted for the file checksum, -1 ends */
-    int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
-    int file_alg;                 /* the file checksum's algorithm under this profile */
-    int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
-} cbf__profile;
 static const cbf__profile cbf__profiles[2] = {
     { "default", { 2 }, { 3 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
     { "implib", { 3 }, { 2 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
@@ -1556,7 +1587,6 @@ static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
     { -1, -1, -1, -1 }, /* COMMENT */
 };
 
-typedef struct cbf__target { int command; size_t first, n; } cbf__target;
 static const cbf__target cbf__targets[25] = {
     { 19, 0, 1 }, /* SPEED speed */
     { 20, 1, 2 }, /* ACCEL accel decel */
@@ -1631,16 +1661,6 @@ static const signed char cbf__target_arg_at[42][CBF_LAYOUT__COUNT] = {
     { -1, -1, 2, 2, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 }, /* radius */
 };
 
-typedef struct cbf__check {
-    const char *id;
-    int kind;
-    int severity;
-    unsigned versions;
-    size_t first_target, ntargets;
-    int has_min; double min;
-    int has_max; double max;
-} cbf__check;
-
 static const cbf__check cbf__checks[CBF__NCHECKS] = {
     /* 4.2 (clause 4.2): The file is shorter than the header. No other check runs. */
     { CBF_CHECK_4_2, CBF__KIND_TRUNCATED_HEADER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
@@ -1709,10 +1729,6 @@ static const cbf__check cbf__checks[CBF__NCHECKS] = {
     /* shape (X2): A STARTSHAPE inside an open shape, an ENDSHAPE without an open shape, an ENDSHAPE whose name or count differs from its STARTSHAPE, a shape whose number of motion commands differs from its count (at most one finding per ENDSHAPE, reported there), or a shape still open at the end of the file (reported at its STARTSHAPE). A STARTSHAPE inside an open shape opens a new shape. Motion commands are the records of commands with a motion role (POINT included). */
     { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 25, 0, 0, 0.0, 0, 0.0 },
 };
-
-static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
-static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
-static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 
 const char *const cbf_command_names[256] = {
     NULL, /* 0x00 */
@@ -2101,9 +2117,9 @@ static void cbf__put_u64(uint8_t *p, uint64_t v)
  * bits (intN_t is two's complement), and a float its IEEE-754 bits, so each width has one path. */
 static inline void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
 {
-    if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
+    if (n == 1u) { uint8_t v = s[0]; memcpy(m, &v, sizeof v); }
     else if (n == 2u) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
-    else if (n == 1u) { uint8_t v = s[0]; memcpy(m, &v, sizeof v); }
+    else if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
     else { uint64_t v = cbf__get_u64(s); memcpy(m, &v, sizeof v); }
 }
 
@@ -2139,8 +2155,9 @@ static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src
                 cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;
         case CBF_KIND_UINT:
-        case CBF_KIND_SINT:
-            for (i = 0; i < f->count; i++)
+        case CBF_KIND_SINT: /* one element, in practice (registry.unsupported refuses integer vectors) */
+            cbf__load_elem(m, s, f->elem);
+            for (i = 1; i < f->count; i++)
                 cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;
         case CBF_KIND_STRING:
@@ -2213,7 +2230,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2217 "cbf.h"
+#line 2234 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2438,7 +2455,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2442 "cbf.h"
+#line 2459 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2609,7 +2626,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2613 "cbf.h"
+#line 2630 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2770,7 +2787,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2774 "cbf.h"
+#line 2791 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3023,7 +3040,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3027 "cbf.h"
+#line 3044 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4006,7 +4023,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4010 "cbf.h"
+#line 4027 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4156,7 +4173,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4160 "cbf.h"
+#line 4177 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4975,7 +4992,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 4979 "cbf.h"
+#line 4996 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

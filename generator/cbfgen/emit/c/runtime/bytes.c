@@ -105,9 +105,9 @@ static void cbf__put_u64(uint8_t *p, uint64_t v)
  * bits (intN_t is two's complement), and a float its IEEE-754 bits, so each width has one path. */
 static inline void cbf__load_elem(unsigned char *m, const uint8_t *s, unsigned n)
 {
-    if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
+    if (n == 1u) { uint8_t v = s[0]; memcpy(m, &v, sizeof v); }
     else if (n == 2u) { uint16_t v = (uint16_t)cbf__get_u(s, 2); memcpy(m, &v, sizeof v); }
-    else if (n == 1u) { uint8_t v = s[0]; memcpy(m, &v, sizeof v); }
+    else if (n == 4u) { uint32_t v = cbf__get_u(s, 4); memcpy(m, &v, sizeof v); }
     else { uint64_t v = cbf__get_u64(s); memcpy(m, &v, sizeof v); }
 }
 
@@ -143,8 +143,9 @@ static void cbf__load(const cbf_field_info *fields, size_t n, const uint8_t *src
                 cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;
         case CBF_KIND_UINT:
-        case CBF_KIND_SINT:
-            for (i = 0; i < f->count; i++)
+        case CBF_KIND_SINT: /* one element, in practice (registry.unsupported refuses integer vectors) */
+            cbf__load_elem(m, s, f->elem);
+            for (i = 1; i < f->count; i++)
                 cbf__load_elem(m + (size_t)f->elem * i, s + (size_t)f->elem * i, f->elem);
             break;
         case CBF_KIND_STRING:
