@@ -15,6 +15,9 @@ no other character. Registered as jinja filters in render.py (the name in bracke
   Python docstrings, JavaScript/Java/Go ``/** */`` comments and Java ``@see "..."``.
 - `yaml_scalar` [yaml_str]: a complete YAML flow scalar (double-quoted), one line.
 - `toml_string` [toml_str]: a complete TOML basic string, quotes included.
+- `json_string` [json_str]: a complete JSON string, quotes included (also a JavaScript literal).
+- `line_comment` [line_comment]: text after ``#`` or ``//`` (Python, TOML, YAML, Go, go.mod).
+- `xml_comment` [xml_comment]: text inside ``<!-- ... -->``.
 - `markdown_inline` [md]: Markdown (CommonMark/GFM) inline text, one line.
 - `markdown_cell` [md_cell]: a GFM table cell.
 - `html_text` [html]: HTML text or a quoted attribute value.
@@ -24,6 +27,7 @@ no other character. Registered as jinja filters in render.py (the name in bracke
 from __future__ import annotations
 
 import html
+import json
 import keyword
 import re
 import unicodedata
@@ -35,14 +39,17 @@ __all__ = [
     "c_comment",
     "c_string",
     "html_text",
+    "json_string",
     "kaitai_doc",
     "keyword_clash",
+    "line_comment",
     "markdown_cell",
     "markdown_inline",
     "one_line",
     "py_docstring",
     "py_string",
     "toml_string",
+    "xml_comment",
     "yaml_scalar",
 ]
 
@@ -167,22 +174,27 @@ def kaitai_doc(text: str) -> str:
       cannot start a ``\\uXXXX`` escape (which javac applies inside comments too);
     - ``*/`` is written ``*\\x2f``: it ends no comment, and the Python docstring reads ``*/``;
     - a ``"`` that would close the Python docstring is ``\\"``;
-    - controls become ``\\xNN`` (the Python docstring reads them back); a lone surrogate, which
-      neither UTF-8 nor JSON carries, becomes U+FFFD.
+    - controls (NUL, which Python and Go refuse, ...) become ``\\xNN``, and format characters (a
+      BOM, which Go refuses mid-file; bidi controls) ``\\N{NAME}``: the Python docstring reads them
+      back; a lone surrogate, which neither UTF-8 nor JSON carries, becomes U+FFFD.
 
     The Python parser's docstrings therefore hold the original text; the comments of the other
     targets show it with doubled backslashes.
     """
     out = []
     for ch in one_line(text):
+        category = unicodedata.category(ch)
         if ch == "\\":
             out.append("\\\\")
-        elif unicodedata.category(ch) == "Cs":
+        elif category == "Cs":
             out.append("\ufffd")
-        elif _is_plain(ch):
+        elif category == "Cc":
+            out.append(f"\\x{ord(ch):02x}")
+        elif category == "Cf":  # never \uXXXX, which javac would read; \N{NAME} is Python's own
+            name = unicodedata.name(ch, "")
+            out.append(f"\\N{{{name}}}" if name else "\ufffd")
+        else:  # printable, or unassigned / private use: UTF-8 carries it into every target
             out.append(ch)
-        else:
-            out.append(f"\\x{ord(ch):02x}" if ord(ch) < 0x100 else "\ufffd")
     body = "".join(out).replace("*/", "*\\x2f")
     return re.sub(r'"(?=")|"$', r'\\"', body)
 
@@ -210,6 +222,27 @@ def toml_string(text: str) -> str:
             out.append(f"\\u{n:04X}" if n < 0x10000 else f"\\U{n:08X}")
     out.append('"')
     return "".join(out)
+
+
+def json_string(text: str) -> str:
+    """A JSON string (quotes included) whose value is the text; ASCII only, so that it is also a
+    JavaScript string literal whatever the engine (U+2028) and whatever the file's encoding."""
+    return json.dumps(_no_surrogates(text), ensure_ascii=True)
+
+
+def line_comment(text: str) -> str:
+    """Text for a line comment (``#``, ``//``): one line, whitespace collapsed, no control or
+    format character (a NUL or a BOM, which Go and TOML refuse): U+FFFD instead."""
+    return "".join(ch if _is_plain(ch) else "\ufffd" for ch in _no_surrogates(one_line(text)))
+
+
+def xml_comment(text: str) -> str:
+    """Text inside ``<!-- ... -->``: one line, no ``--`` (XML forbids it in a comment), no ``-``
+    last, no character XML 1.0 refuses."""
+    body = line_comment(text)
+    while "--" in body:
+        body = body.replace("--", "- -")
+    return body + " " if body.endswith("-") else body
 
 
 # The ASCII punctuation that starts inline markup anywhere in a line (CommonMark and GFM: escapes,
