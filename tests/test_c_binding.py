@@ -429,3 +429,31 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
     assert done.returncode == 0, done.stderr[-3000:]
     run = subprocess.run([str(exe)], capture_output=True, text=True)
     assert run.returncode == 0, run.stdout
+
+
+def test_runtime_files_are_in_the_header_verbatim() -> None:
+    """Every hand-written runtime file (generator/cbfgen/emit/c/runtime/) sits in generated/c/cbf.h
+    exactly once, byte for byte, between the markers that name it and after a #line directive that
+    points a compiler at the file; and the templates hold no runtime file's code."""
+    header = (ROOT / "generated" / "c" / "cbf.h").read_text(encoding="utf-8")
+    files = sorted(p for p in RUNTIME.iterdir() if p.suffix in (".c", ".h"))
+    assert files
+    for p in files:
+        text = p.read_text(encoding="utf-8").rstrip("\n")
+        begin = f"/* ==== BEGIN runtime/{p.name}: verbatim from generator/cbfgen/emit/c/runtime/{p.name}"
+        assert header.count(begin) == 1, p.name
+        start = header.index(begin)
+        line = header.index("\n", start) + 1
+        assert header[line:].startswith(f'#line 1 "generator/cbfgen/emit/c/runtime/{p.name}"\n'), p.name
+        body = header[header.index("\n", line) + 1:header.index(f"/* ==== END runtime/{p.name} ==== */")]
+        assert body == text + "\n", f"{p.name} is not in cbf.h verbatim"
+    # no template defines what a runtime file defines (one home for each function)
+    templates = "\n".join(t.read_text(encoding="utf-8") for t in (RUNTIME.parent / "templates").rglob("*.j2"))
+    for p in files:
+        for head in re.findall(r"^(?:static |CBF__INLINE |CBF__HOT |CBF__COLD )*[a-z_][\w ]*\*?\b(cbf_\w+)\(",
+                               p.read_text(encoding="utf-8"), re.M):
+            assert not re.search(rf"^(?!#)[^\n;]*\b{head}\([^;{{}}]*\)\s*\n\{{", templates, re.M), head
+    # after each section, #line gives cbf.h's own line numbers back
+    for i, line in enumerate(header.split("\n"), start=1):
+        if line.startswith('#line ') and line.endswith('"cbf.h"'):
+            assert line == f'#line {i + 1} "cbf.h"'
