@@ -299,6 +299,10 @@ def test_hostile_spec_text_compiles_strictly(tmp_path: Path) -> None:
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr[-3000:]
     assert subprocess.run([str(tmp_path / "one")]).returncode == 0
+    for name in ("cbf_testee.c", "cbf_tool.c"):  # the programs built on the header, too
+        done = subprocess.run([cc, *STRICT, "-c", str(out / "c" / name), "-o", str(tmp_path / (name + ".o"))],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr[-3000:]
 
 
 # -- the registry's vocabulary in the C engine (issue #24 pt 2) ---------------------------------
