@@ -78,7 +78,7 @@ def test_arguments_must_add_up(tmp_path: Path) -> None:
     line = _key_line(text, "commands", ci, "layouts", li, "size")
     vtext = "/".join("v" + v for v in lay.versions)
     want = f"{cmd.name} {vtext} arguments sum to {lay.size - 4} bytes, declared {lay.size}"
-    assert str(err.value) == f"{p}:{line}: {want}"
+    assert str(err.value).splitlines()[0] == f"{p}:{line}: {want}"  # the first of every problem found
     assert err.value.line == line
 
 

@@ -21,7 +21,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
-from .model import Check, Coverage, Field, HeaderLayout, Layout, Spec
+from .model import CHECK_ATTRS, Check, Coverage, Field, HeaderLayout, Layout, Spec
 
 # Attributes of a check that define what it judges (not its prose or line).
 _CHECK_IGNORED = frozenset({"id", "severity", "text", "fails", "line", "clause", "decision"})
@@ -272,15 +272,15 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
         if oc.severity != nc.severity:
             out.append(Change("check_severity_changed", None, None, f"{oc.id}: {oc.severity} -> {nc.severity}",
                               applies_to_old(nc)))
-        for f in dataclasses.fields(oc):
-            if f.name in _CHECK_IGNORED:
+        for name in CHECK_ATTRS:  # the check's own attributes and its kind's parameters, flat
+            if name in _CHECK_IGNORED:
                 continue
-            a, b = getattr(oc, f.name), getattr(nc, f.name)
+            a, b = getattr(oc, name), getattr(nc, name)
             if a != b:
                 breaking = applies_to_old(nc) and "error" in (oc.severity, nc.severity)
-                if f.name in ("versions", "commands") and oc.kind == nc.kind == "availability":
+                if name in ("versions", "commands") and oc.kind == nc.kind == "availability":
                     breaking = _covered(old, oc, old) != _covered(old, nc, new)  # new versions, commands: no
-                out.append(Change("check_changed", None, None, f"{oc.id}: {f.name} {_short(a)} -> {_short(b)}",
+                out.append(Change("check_changed", None, None, f"{oc.id}: {name} {_short(a)} -> {_short(b)}",
                                   breaking))
     old_by_id = {c.id for c in old.checks}
     for nc in new.checks:

@@ -8,7 +8,9 @@ line and the rule: ``spec/cbf.yaml:212: LINE v3.0 arguments sum to 20 bytes, dec
 from __future__ import annotations
 
 import json
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from dataclasses import field as dataclass_field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -30,13 +32,22 @@ from .model import (
     Machine,
     MachineLimit,
     Note,
-    PrimitiveType,
     Profile,
     RecordLayout,
     Segment,
     Spec,
-    Target,
     Version,
+    common_header_prefix,
+)
+from .registry import (
+    CHECK_KINDS,
+    COMMON_CHECK_KEYS,
+    FIELD_KINDS,
+    SEVERITIES,
+    TYPES,
+    FieldType,
+    Target,
+    unsupported,
 )
 
 SCHEMA_PATH = Path(__file__).with_name("spec.schema.json")
@@ -167,74 +178,48 @@ def _line_of_path(root: Any, path: Iterable[Any]) -> int:
     return line
 
 
+class SpecErrors(SpecError):
+    """Every problem of a spec, found in one run. str() is one `file:line: message` a line;
+    ``line`` and ``message`` are the first problem's (in pass order)."""
+
+    def __init__(self, path: str, problems: list[tuple[int, str]]) -> None:
+        line, message = problems[0]
+        super().__init__(path, line, message)
+        self.problems = tuple(problems)
+        self.args = ("\n".join(f"{path}:{ln}: {msg}" for ln, msg in problems),)
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
 class _Ctx:
+    """The problems found so far (every pass adds to them; none stops the run)."""
+
     def __init__(self, path: str) -> None:
         self.path = path
+        self.problems: list[tuple[int, str]] = []
 
-    def fail(self, node: Any, message: str, key: Any = None) -> SpecError:
-        return SpecError(self.path, _line(node, key), message)
+    def fail(self, node: Any, message: str, key: Any = None) -> None:
+        self.problems.append((_line(node, key), message))
 
-
-def _field(ctx: _Ctx, raw: _Map, types: dict[str, PrimitiveType], offset: int, where: str) -> Field:
-    if clash := keyword_clash(raw["name"]):  # escape.py; vocab's names pass may take this over
-        raise ctx.fail(raw, f"{where}: the name {clash}", "name")
-    ptype = types.get(raw["type"])
-    if ptype is None:
-        raise ctx.fail(raw, f"{where}: unknown type {raw['type']!r}", "type")
-    count = int(raw.get("count", 1))
-    if ptype.size is not None:
-        elem = ptype.size
-        if "size" in raw and raw["size"] != ptype.size * count:
-            raise ctx.fail(raw, f"{where}: size {raw['size']} contradicts type {ptype.name} x {count}", "size")
-    else:
-        if "size" not in raw:
-            raise ctx.fail(raw, f"{where}: type {ptype.name} needs a size", "type")
-        if count != 1:
-            raise ctx.fail(raw, f"{where}: type {ptype.name} takes no count", "count")
-        elem = int(raw["size"])
-    if "offset" in raw and raw["offset"] != offset:
-        raise ctx.fail(raw, f"{where}: offset {raw['offset']} but the fields before end at {offset}", "offset")
-    if raw.get("text") and ptype.kind != "string":
-        raise ctx.fail(raw, f"{where}: text applies to strings only", "text")
-    if "magic" in raw and ptype.kind != "uint":
-        raise ctx.fail(raw, f"{where}: magic needs an integer type", "magic")
-    if "magic" in raw and raw["magic"] >= 1 << (8 * elem):
-        raise ctx.fail(raw, f"{where}: magic 0x{raw['magic']:X} does not fit {ptype.name}", "magic")
-    return Field(
-        name=raw["name"],
-        type=ptype.name,
-        kind=ptype.kind,
-        offset=offset,
-        elem_size=elem,
-        count=count,
-        doc=str(raw["doc"]).strip(),
-        line=raw.line,
-        clause=raw.get("clause"),
-        unit=raw.get("unit"),
-        role=raw.get("role"),
-        magic=raw.get("magic"),
-        checksum=raw.get("checksum"),
-        reserved=bool(raw.get("reserved", False)),
-        text=bool(raw.get("text", False)),
-    )
+    def at(self, line: int, message: str) -> None:
+        self.problems.append((line, message))
 
 
-def _fields(ctx: _Ctx, raws: _Seq, types: dict[str, PrimitiveType], where: str) -> tuple[tuple[Field, ...], int]:
-    out: list[Field] = []
-    offset = 0
-    names: set[str] = set()
-    for raw in raws:
-        f = _field(ctx, raw, types, offset, f"{where} field {raw['name']}")
-        if f.name in names:
-            raise ctx.fail(raw, f"{where}: duplicate field name {f.name!r}", "name")
-        names.add(f.name)
-        out.append(f)
-        offset = f.end
-    return tuple(out), offset
+def _schema() -> dict[str, Any]:
+    """spec.schema.json with its vocabulary enums filled from the registry (field types, type
+    kinds, check kinds, severities): the schema names no type and no kind itself."""
+    schema: dict[str, Any] = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
+    schema["$defs"]["field"]["properties"]["type"] = {"enum": list(TYPES)}
+    schema["properties"]["types"]["additionalProperties"]["properties"]["kind"] = {"enum": list(FIELD_KINDS)}
+    check = schema["properties"]["checks"]["items"]["properties"]
+    check["kind"] = {"enum": list(CHECK_KINDS)}
+    check["severity"] = check["input_severity"] = {"enum": list(SEVERITIES)}
+    return schema
 
 
 def load(path: str | Path) -> Spec:
-    """Load, check and return the spec model. Raises SpecError."""
+    """Load, check and return the spec model. Raises SpecError (SpecErrors: every problem found)."""
     spath = str(path)
     ctx = _Ctx(spath)
     try:
@@ -254,122 +239,241 @@ def load(path: str | Path) -> Spec:
     if not isinstance(raw, _Map):
         raise SpecError(spath, 1, "the spec must be a mapping")
 
-    schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
-    validator = jsonschema.Draft202012Validator(schema)
+    validator = jsonschema.Draft202012Validator(_schema())
     errors = sorted(validator.iter_errors(raw), key=lambda e: (_line_of_path(raw, e.absolute_path), str(e.message)))
-    if errors:
-        e = errors[0]
+    for e in errors:  # every shape problem; the semantic passes need the shape, so they wait for it
         where = "/".join(str(p) for p in e.absolute_path) or "(top)"
-        raise SpecError(spath, _line_of_path(raw, e.absolute_path), f"schema: {where}: {e.message}")
-    return _build(ctx, raw)
+        ctx.at(_line_of_path(raw, e.absolute_path), f"schema: {where}: {e.message}")
+    if ctx.problems:
+        raise SpecErrors(spath, ctx.problems)
+    spec = _build(ctx, raw)
+    if ctx.problems or spec is None:
+        raise SpecErrors(spath, ctx.problems or [(1, "the spec could not be built")])
+    return spec
 
 
-def _build(ctx: _Ctx, raw: _Map) -> Spec:
-    types = {
-        name: PrimitiveType(name, t["kind"], t.get("size"), str(t["doc"]))
-        for name, t in raw["types"].items()
-    }
+# -- the passes ---------------------------------------------------------------------------------
+# Each pass checks one part of the spec and adds every problem it finds to ctx; it builds what it
+# can, so the passes after it still run and report their own problems in the same run.
 
-    # -- versions ------------------------------------------------------------
-    versions: list[Version] = []
+@dataclass
+class _State:
+    raw: _Map
+    types: dict[str, FieldType] = dataclass_field(default_factory=dict)
+    versions: list[Version] = dataclass_field(default_factory=list)
+    headers: dict[str, HeaderLayout] = dataclass_field(default_factory=dict)
+    record: RecordLayout | None = None
+    commands: list[Command] = dataclass_field(default_factory=list)
+    checksums: Checksums | None = None
+    profiles: list[Profile] = dataclass_field(default_factory=list)
+    machine: Machine | None = None
+    checks: list[Check] = dataclass_field(default_factory=list)
+    raw_checks: dict[str, _Map] = dataclass_field(default_factory=dict)
+    decisions: tuple[Note, ...] = ()
+
+    @property
+    def vids(self) -> list[str]:
+        return [v.id for v in self.versions]
+
+
+def _build(ctx: _Ctx, raw: _Map) -> Spec | None:
+    st = _State(raw)
+    for p in PASSES:
+        p(ctx, st)
+    if ctx.problems or st.record is None or st.checksums is None or st.machine is None:
+        return None
+    errata = tuple(Note(e["id"], e["clause"], str(e["text"]), clause=e["clause"]) for e in raw["errata"])
+    history = tuple(Note(h["version"], h["version"], str(h["text"]), clause=h["clause"], date=str(h["date"]))
+                    for h in raw["history"])
+    return Spec(
+        path=ctx.path, meta=_plain(raw["meta"]), types=st.types,
+        units={k: str(v["doc"]) for k, v in raw["units"].items()},
+        versions=tuple(st.versions), default_version=raw["default_version"],
+        fallback_version=raw["fallback_version"], headers=st.headers, record=st.record,
+        commands=tuple(st.commands), checksums=st.checksums, profiles=tuple(st.profiles),
+        tolerances={k: float(v) for k, v in raw["tolerances"].items()},
+        limits={k: int(v) for k, v in raw["limits"].items()}, machine=st.machine, checks=tuple(st.checks),
+        cut=_plain(raw["cut"]), decisions=st.decisions, errata=errata, history=history, raw=_plain(raw),
+    )
+
+
+def _types_pass(ctx: _Ctx, st: _State) -> None:
+    """Each type of `types:` is a type of the registry, with its kind and size."""
+    for name, t in st.raw["types"].items():
+        node = st.raw["types"][name]
+        known = TYPES.get(name)
+        if known is None:
+            ctx.fail(st.raw["types"], f"type {name} is not in the registry (generator/cbfgen/registry.py); "
+                                      f"known: {', '.join(TYPES)}", name)
+            continue
+        if (t["kind"], t.get("size")) != (known.kind, known.size):
+            ctx.fail(node, f"type {name}: kind {t['kind']} size {t.get('size')} contradicts the registry's "
+                           f"{known.kind} size {known.size}", "kind")
+            continue
+        st.types[name] = FieldType(name, known.kind, known.size, str(t["doc"]))
+
+
+def _versions_pass(ctx: _Ctx, st: _State) -> None:
+    raw = st.raw
     for v in raw["versions"]:
-        if any(o.id == str(v["id"]) for o in versions):
-            raise ctx.fail(v, f"duplicate version id {v['id']!r}", "id")
+        if any(o.id == str(v["id"]) for o in st.versions):
+            ctx.fail(v, f"duplicate version id {v['id']!r}", "id")
+            continue
         if v["header"] not in raw["headers"]:
-            raise ctx.fail(v, f"version {v['id']}: unknown header layout {v['header']!r}", "header")
-        versions.append(
-            Version(str(v["id"]), v["major"], v.get("minor"), v["header"], v["clause"], v["writable"],
-                    str(v["doc"]).strip(), v.line, v.get("since"))
-        )
-    for a in versions:
-        for b in versions:
-            if a is not b and a.major == b.major and (a.minor is None or b.minor is None or a.minor == b.minor):
-                raise ctx.fail(raw["versions"], f"versions {a.id} and {b.id} both match major {a.major}")
-    vids = [v.id for v in versions]
+            ctx.fail(v, f"version {v['id']}: unknown header layout {v['header']!r}", "header")
+        st.versions.append(Version(str(v["id"]), v["major"], v.get("minor"), v["header"], v["clause"], v["writable"],
+                                   str(v["doc"]).strip(), v.line, v.get("since")))
+    for i, a in enumerate(st.versions):
+        for b in st.versions[i + 1:]:
+            if a.major == b.major and (a.minor is None or b.minor is None or a.minor == b.minor):
+                ctx.at(b.line, f"versions {a.id} and {b.id} both match major {a.major}")
     for key in ("default_version", "fallback_version"):
-        if raw[key] not in vids:
-            raise ctx.fail(raw, f"{key} {raw[key]!r} is not a version", key)
+        if raw[key] not in st.vids:
+            ctx.fail(raw, f"{key} {raw[key]!r} is not a version", key)
 
-    # -- header layouts: tile the size, shared fields in shared places ------
-    headers: dict[str, HeaderLayout] = {}
+
+def _field(ctx: _Ctx, raw: _Map, types: dict[str, FieldType], offset: int, where: str) -> Field | None:
+    ptype = types.get(raw["type"])
+    if ptype is None:
+        ctx.fail(raw, f"{where}: unknown type {raw['type']!r} (not in the spec's types)", "type")
+        return None
+    count = int(raw.get("count", 1))
+    if ptype.size is not None:
+        elem = ptype.size
+        if "size" in raw and raw["size"] != ptype.size * count:
+            ctx.fail(raw, f"{where}: size {raw['size']} contradicts type {ptype.name} x {count}", "size")
+    else:
+        if "size" not in raw:
+            ctx.fail(raw, f"{where}: type {ptype.name} needs a size", "type")
+            return None
+        if count != 1:
+            ctx.fail(raw, f"{where}: type {ptype.name} takes no count", "count")
+        elem, count = int(raw["size"]), 1
+    if "offset" in raw and raw["offset"] != offset:
+        ctx.fail(raw, f"{where}: offset {raw['offset']} but the fields before end at {offset}", "offset")
+    if raw.get("text") and ptype.kind != "string":
+        ctx.fail(raw, f"{where}: text applies to strings only", "text")
+    if "magic" in raw and ptype.kind != "uint":
+        ctx.fail(raw, f"{where}: magic needs an unsigned integer type", "magic")
+    elif "magic" in raw and raw["magic"] >= 1 << (8 * elem):
+        ctx.fail(raw, f"{where}: magic 0x{raw['magic']:X} does not fit {ptype.name}", "magic")
+    return Field(
+        name=raw["name"], type=ptype.name, kind=ptype.kind, offset=offset, elem_size=elem, count=count,
+        doc=str(raw["doc"]).strip(), line=raw.line, clause=raw.get("clause"), unit=raw.get("unit"),
+        role=raw.get("role"), magic=raw.get("magic"), checksum=raw.get("checksum"),
+        reserved=bool(raw.get("reserved", False)), text=bool(raw.get("text", False)),
+    )
+
+
+def _fields(ctx: _Ctx, raws: _Seq, types: dict[str, FieldType], where: str) -> tuple[tuple[Field, ...], int, bool]:
+    """The fields, where they end, and whether every one was understood (else the end is unknown)."""
+    out: list[Field] = []
+    offset, whole = 0, True
+    names: set[str] = set()
+    for raw in raws:
+        if raw["name"] in names:
+            ctx.fail(raw, f"{where}: duplicate field name {raw['name']!r}", "name")
+        names.add(raw["name"])
+        f = _field(ctx, raw, types, offset, f"{where} field {raw['name']}")
+        if f is None:
+            whole = False
+            continue
+        out.append(f)
+        offset = f.end
+    return tuple(out), offset, whole
+
+
+_SHARED_ROLES = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count", "checksum")
+_HEADER_ROLES = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count")
+
+
+def _headers_pass(ctx: _Ctx, st: _State) -> None:
+    """Each header layout tiles its size; all have one size; the shared fields sit in shared places."""
+    raw = st.raw
     for hid, h in raw["headers"].items():
-        fields, end = _fields(ctx, h["fields"], types, f"header {hid}")
-        if end != h["size"]:
-            raise ctx.fail(h, f"header {hid} fields tile {end} bytes, declared {h['size']}", "size")
-        headers[hid] = HeaderLayout(hid, h["size"], h["clause"], str(h["doc"]).strip(), fields, h.line)
-    first = next(iter(headers.values()))
-    shared_roles = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count", "checksum")
-    for h in headers.values():
+        fields, end, whole = _fields(ctx, h["fields"], st.types, f"header {hid}")
+        if whole and end != h["size"]:
+            ctx.fail(h, f"header {hid} fields tile {end} bytes, declared {h['size']}", "size")
+        st.headers[hid] = HeaderLayout(hid, h["size"], h["clause"], str(h["doc"]).strip(), fields, h.line)
+    first = next(iter(st.headers.values()))
+    for h in st.headers.values():
         if h.size != first.size:
-            raise ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}",
-                           "size")
+            ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}", "size")
         for f in h.fields:
-            if f.role in shared_roles:
-                twin = next((g for g in first.fields if g.name == f.name), None)
+            if f.role in _SHARED_ROLES:
+                twin = first.field(f.name)
                 if twin is None or (twin.offset, twin.type, twin.role, twin.magic, twin.checksum) != (
-                    f.offset, f.type, f.role, f.magic, f.checksum):
-                    raise SpecError(ctx.path, f.line, f"header {h.id} field {f.name} must match header {first.id}")
-        for role in ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count"):
-            if h.by_role(role) is None:
-                raise ctx.fail(raw["headers"][h.id], f"header {h.id} has no field with role {role}")
+                        f.offset, f.type, f.role, f.magic, f.checksum):
+                    ctx.at(f.line, f"header {h.id} field {f.name} must match header {first.id}")
+        for role in _HEADER_ROLES:
+            rf = h.by_role(role)
+            if rf is None:
+                ctx.fail(raw["headers"][h.id], f"header {h.id} has no field with role {role}")
+            elif rf.kind != "uint":
+                ctx.at(rf.line, f"header {h.id}: the {role} field needs an unsigned integer type")
 
-    # -- record layout -------------------------------------------------------
+
+def _record_pass(ctx: _Ctx, st: _State) -> None:
+    raw = st.raw
     r = raw["record"]
-    rfields, rend = _fields(ctx, r["fields"], types, "record")
-    if rend != r["head_size"]:
-        raise ctx.fail(r, f"record head fields tile {rend} bytes, declared {r['head_size']}", "head_size")
+    rfields, rend, whole = _fields(ctx, r["fields"], st.types, "record")
+    if whole and rend != r["head_size"]:
+        ctx.fail(r, f"record head fields tile {rend} bytes, declared {r['head_size']}", "head_size")
     record = RecordLayout(r["head_size"], r["clause"], str(r["doc"]).strip(), rfields)
+    missing = False
     for role in ("sequence", "code", "code_copy", "arg_size", "reserved"):
-        try:
-            record.by_role(role)
-        except KeyError:
-            raise ctx.fail(r, f"record has no field with role {role}") from None
-    if record.by_role("arg_size").type != "u1" and raw["limits"]["max_arg_size"] > 255:
-        raise ctx.fail(r, "arg_size field too small for limits.max_arg_size")
+        f = next((x for x in rfields if x.role == role), None)
+        if f is None:
+            ctx.fail(r, f"record has no field with role {role}")
+            missing = True
+        elif f.kind != "uint":
+            ctx.at(f.line, f"record field {f.name}: role {role} needs an unsigned integer type")
+    if not missing and 1 << (8 * record.by_role("arg_size").size) <= raw["limits"]["max_arg_size"]:
+        ctx.fail(r, "arg_size field too small for limits.max_arg_size")
+    st.record = record
 
-    # -- commands ------------------------------------------------------------
-    commands: list[Command] = []
+
+def _commands_pass(ctx: _Ctx, st: _State) -> None:
+    raw = st.raw
     names: dict[str, int] = {}
     codes: dict[int, str] = {}
+    profile_ids = [q["id"] for q in raw["profiles"]]
     for c in raw["commands"]:
         name, code = c["name"], c["code"]
         if name in names:
-            raise ctx.fail(c, f"duplicate command name {name} (also line {names[name]})", "name")
-        if clash := keyword_clash(name):  # escape.py; vocab's names pass may take this over
-            raise ctx.fail(c, f"command name {clash}", "name")
+            ctx.fail(c, f"duplicate command name {name} (also line {names[name]})", "name")
         if code in codes:
-            raise ctx.fail(c, f"{name}: duplicate code 0x{code:02X}, already {codes[code]}", "code")
-        names[name] = c.line
-        codes[code] = name
+            ctx.fail(c, f"{name}: duplicate code 0x{code:02X}, already {codes[code]}", "code")
+        names.setdefault(name, c.line)
+        codes.setdefault(code, name)
         layouts: list[Layout] = []
         for i, lay in enumerate(c["layouts"]):
             variant = lay.get("variant", "")
             if i == 0 and variant:
-                raise ctx.fail(lay, f"{name}: the first layout is the primary one and takes no variant", "variant")
+                ctx.fail(lay, f"{name}: the first layout is the primary one and takes no variant", "variant")
             if i > 0 and not variant:
-                raise ctx.fail(lay, f"{name}: layout {i + 1} needs a variant name")
+                ctx.fail(lay, f"{name}: layout {i + 1} needs a variant name")
             if any(o.variant == variant for o in layouts):
-                raise ctx.fail(lay, f"{name}: duplicate variant {variant!r}", "variant")
+                ctx.fail(lay, f"{name}: duplicate variant {variant!r}", "variant")
             for v in lay["versions"]:
-                if v not in vids:
-                    raise ctx.fail(lay, f"{name}: unknown version {v!r}", "versions")
+                if v not in st.vids:
+                    ctx.fail(lay, f"{name}: unknown version {v!r}", "versions")
             for p in lay.get("profiles", []):
-                if p not in [q["id"] for q in raw["profiles"]]:
-                    raise ctx.fail(lay, f"{name}: unknown profile {p!r}", "profiles")
-            args, total = _fields(ctx, lay["args"], types, f"{name}")
+                if p not in profile_ids:
+                    ctx.fail(lay, f"{name}: unknown profile {p!r}", "profiles")
+            args, total, whole = _fields(ctx, lay["args"], st.types, f"{name}")
             vtext = "/".join("v" + v for v in lay["versions"])
-            if total != lay["size"]:
-                raise ctx.fail(lay, f"{name} {vtext} arguments sum to {total} bytes, declared {lay['size']}", "size")
+            if whole and total != lay["size"]:
+                ctx.fail(lay, f"{name} {vtext} arguments sum to {total} bytes, declared {lay['size']}", "size")
             if lay["size"] > raw["limits"]["max_arg_size"]:
-                raise ctx.fail(lay, f"{name}: size {lay['size']} exceeds limits.max_arg_size", "size")
-            layouts.append(
-                Layout(name, variant, tuple(str(v) for v in lay["versions"]), lay["size"], args,
-                       tuple(lay.get("profiles", [])), str(lay.get("doc", "")).strip(), lay.get("clause"), lay.line)
-            )
-        for v in vids:
+                ctx.fail(lay, f"{name}: size {lay['size']} exceeds limits.max_arg_size", "size")
+            layouts.append(Layout(name, variant, tuple(str(v) for v in lay["versions"]), lay["size"], args,
+                                  tuple(lay.get("profiles", [])), str(lay.get("doc", "")).strip(), lay.get("clause"),
+                                  lay.line))
+        for v in st.vids:
             sizes = [lay.size for lay in layouts if v in lay.versions]
             if len(sizes) != len(set(sizes)):
-                raise ctx.fail(c, f"{name}: two layouts of version {v} have the same size", "layouts")
+                ctx.fail(c, f"{name}: two layouts of version {v} have the same size", "layouts")
         cmd = Command(
             name=name, code=code, doc=str(c["doc"]).strip(), clause=c["clause"], layouts=tuple(layouts), line=c.line,
             motion=dict(c["motion"]) if "motion" in c else None,
@@ -381,21 +485,24 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
             declared_size=c.get("declared_size"), listed_size=c.get("listed_size"), erratum=c.get("erratum"),
         )
         for role in ("motion", "orientation", "shape", "cutter"):
-            refs = getattr(cmd, role) or {}
-            for key, argname in refs.items():
-                if key == "kind":
-                    continue
-                _require_arg(ctx, c, cmd, argname, f"{role}.{key}")
+            for key, argname in (getattr(cmd, role) or {}).items():
+                if key != "kind":
+                    _require_arg(ctx, c, cmd, argname, f"{role}.{key}")
         for key, value in (cmd.sets or {}).items():
             if isinstance(value, str):
                 _require_arg(ctx, c, cmd, value, f"sets.{key}")
         if cmd.progress:
             _require_arg(ctx, c, cmd, cmd.progress, "progress")
         _check_roles(ctx, c, cmd)
-        commands.append(cmd)
+        st.commands.append(cmd)
 
-    # -- checksums and profiles --------------------------------------------
+
+def _checksums_pass(ctx: _Ctx, st: _State) -> None:
+    """Algorithms, coverages and the checksum fields; the profiles that choose among them."""
+    raw = st.raw
     cs = raw["checksums"]
+    first = next(iter(st.headers.values()))
+    rfields = st.record.fields if st.record else ()
     algorithms = {k: Algorithm(k, a["kind"], str(a["doc"]).strip()) for k, a in cs["algorithms"].items()}
     coverages: dict[str, Coverage] = {}
     rnames = {f.name for f in rfields}
@@ -405,192 +512,254 @@ def _build(ctx: _Ctx, raw: _Map) -> Spec:
             seg = Segment(s["region"], s.get("start"), s.get("end"), tuple(s.get("exclude", [])))
             if seg.region == "header" and (seg.start is None or seg.end is None or seg.end > first.size
                                            or seg.start >= seg.end):
-                raise ctx.fail(s, f"coverage {k}: header segment needs 0 <= start < end <= {first.size}")
+                ctx.fail(s, f"coverage {k}: header segment needs 0 <= start < end <= {first.size}")
             if seg.region == "file" and seg.start is None:
-                raise ctx.fail(s, f"coverage {k}: file segment needs a start")
+                ctx.fail(s, f"coverage {k}: file segment needs a start")
             for ex in seg.exclude:
                 if ex not in rnames:
-                    raise ctx.fail(s, f"coverage {k}: unknown record field {ex!r}", "exclude")
+                    ctx.fail(s, f"coverage {k}: unknown record field {ex!r}", "exclude")
             segs.append(seg)
         coverages[k] = Coverage(k, str(cov["doc"]).strip(), tuple(segs))
     # the stored field of each checksum tag: its width bounds the algorithm's result
-    widths = {f.checksum: f.size for h in headers.values() for f in h.fields if f.checksum}
+    widths = {f.checksum: f.size for h in st.headers.values() for f in h.fields if f.checksum}
     widths.update({f.checksum: f.size for f in rfields if f.checksum})
 
     def fits(node: _Map, key: str, tag: str, alg_name: str, what: str) -> None:
         bits = ALGORITHM_KINDS[algorithms[alg_name].kind]
         if tag in widths and bits is not None and bits > 8 * widths[tag]:
-            raise ctx.fail(node, f"{what}: algorithm {alg_name} gives {bits} bits, the {tag} checksum field "
-                                 f"holds {8 * widths[tag]}", key)
+            ctx.fail(node, f"{what}: algorithm {alg_name} gives {bits} bits, the {tag} checksum field "
+                           f"holds {8 * widths[tag]}", key)
 
     cfields: list[ChecksumField] = []
     for f in cs["fields"]:
+        ok = True
         if f["algorithm"] not in algorithms:
-            raise ctx.fail(f, f"checksum {f['field']}: unknown algorithm {f['algorithm']!r}", "algorithm")
+            ctx.fail(f, f"checksum {f['field']}: unknown algorithm {f['algorithm']!r}", "algorithm")
+            ok = False
         if f["coverage"] not in coverages:
-            raise ctx.fail(f, f"checksum {f['field']}: unknown coverage {f['coverage']!r}", "coverage")
+            ctx.fail(f, f"checksum {f['field']}: unknown coverage {f['coverage']!r}", "coverage")
         if any(o.field == f["field"] for o in cfields):
-            raise ctx.fail(f, f"checksum {f['field']}: defined twice", "field")
-        fits(f, "algorithm", f["field"], f["algorithm"], f"checksum {f['field']}")
+            ctx.fail(f, f"checksum {f['field']}: defined twice", "field")
+            continue
+        if ok:
+            fits(f, "algorithm", f["field"], f["algorithm"], f"checksum {f['field']}")
         cfields.append(ChecksumField(f["field"], f["algorithm"], f["coverage"], f["clause"]))
     tags = {f.field for f in cfields}
     for tag in ("args", "header", "file"):
         if tag not in tags:
-            raise ctx.fail(cs, f"checksums: no definition for the {tag} checksum", "fields")
-    for h in headers.values():
-        for f in h.fields:
-            if f.checksum and f.checksum not in tags:
-                raise SpecError(ctx.path, f.line, f"field {f.name}: checksum {f.checksum} is not defined")
+            ctx.fail(cs, f"checksums: no definition for the {tag} checksum", "fields")
+    for h in st.headers.values():
+        for hf in h.fields:
+            if hf.checksum and hf.checksum not in tags:
+                ctx.at(hf.line, f"field {hf.name}: checksum {hf.checksum} is not defined")
     if sorted(cs["fill_order"]) != sorted(tags):
-        raise ctx.fail(cs, "checksums.fill_order must name every checksum once", "fill_order")
-    checksums = Checksums(algorithms, coverages, tuple(cfields), tuple(cs["fill_order"]))
-    profiles: list[Profile] = []
+        ctx.fail(cs, "checksums.fill_order must name every checksum once", "fill_order")
+    st.checksums = Checksums(algorithms, coverages, tuple(cfields), tuple(cs["fill_order"]))
     for p in raw["profiles"]:
         for cov_name in list(p["file_coverages"]) + list(p["hint_coverages"]):
             if cov_name not in coverages:
-                raise ctx.fail(p, f"profile {p['id']}: unknown coverage {cov_name!r}")
+                ctx.fail(p, f"profile {p['id']}: unknown coverage {cov_name!r}")
         if "file_algorithm" in p:
             if p["file_algorithm"] not in algorithms:
-                raise ctx.fail(p, f"profile {p['id']}: unknown algorithm {p['file_algorithm']!r}", "file_algorithm")
-            fits(p, "file_algorithm", "file", p["file_algorithm"], f"profile {p['id']}")
-        profiles.append(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]), tuple(p["hint_coverages"]),
-                                p.get("file_algorithm")))
-    if profiles[0].id != "default":
-        raise ctx.fail(raw["profiles"], "the first profile must be 'default'")
-
-    machine = _machine(ctx, raw["machine"], raw["units"])
-
-    # -- checks --------------------------------------------------------------
-    checks: list[Check] = []
-    cmd_by_name = {c.name: c for c in commands}
-    for ch in raw["checks"]:
-        if any(o.id == str(ch["id"]) for o in checks):
-            raise ctx.fail(ch, f"duplicate check id {ch['id']!r}", "id")
-        targets = []
-        for t in ch.get("targets", []):
-            tcmd = cmd_by_name.get(t["command"])
-            if tcmd is None:
-                raise ctx.fail(t, f"check {ch['id']}: unknown command {t['command']}", "command")
-            for argname in t["args"]:
-                _require_arg(ctx, t, tcmd, argname, f"check {ch['id']}")
-            if ("limit" in t) != (ch["kind"] == "machine_limits"):
-                raise ctx.fail(t, f"check {ch['id']}: a target names a limit exactly when its kind is "
-                                  f"machine_limits", "limit" if "limit" in t else "command")
-            if "limit" in t:
-                _machine_target(ctx, t, tcmd, machine, ch["id"])
-            targets.append(Target(t["command"], tuple(t["args"]), t.get("limit")))
-        for v in ch.get("versions", []):
-            if v not in vids:
-                raise ctx.fail(ch, f"check {ch['id']}: unknown version {v!r}", "versions")
-        if ch["kind"] in ("positive", "nonzero_vector", "range", "nondecreasing", "ordered",
-                          "machine_limits") and not targets:
-            raise ctx.fail(ch, f"check {ch['id']}: kind {ch['kind']} needs targets", "kind")
-        if ch["kind"] == "availability" and not ch.get("versions"):
-            raise ctx.fail(ch, f"check {ch['id']}: availability needs versions", "kind")
-        for cname in ch.get("commands", []):
-            if cname not in cmd_by_name:
-                raise ctx.fail(ch, f"check {ch['id']}: unknown command {cname}", "commands")
-        checks.append(
-            Check(id=str(ch["id"]), kind=ch["kind"], severity=ch["severity"], text=str(ch["text"]).strip(),
-                  fails=" ".join(str(ch["fails"]).split()), line=ch.line, clause=ch.get("clause"),
-                  decision=ch.get("decision"), input=ch.get("input"), input_severity=ch.get("input_severity"),
-                  versions=tuple(ch.get("versions", [])),
-                  commands=tuple(ch.get("commands", [])), targets=tuple(targets), min=ch.get("min"),
-                  max=ch.get("max"))
-        )
-    _check_availability(ctx, raw["checks"], checks, commands, vids)
-    _check_machine_coverage(ctx, raw["checks"], checks, commands, machine)
-
-    for c in commands:
-        if not any(c.available_in(v.id) for v in versions):
-            raise SpecError(ctx.path, c.line, f"{c.name} is available in no version")
-
-    decisions = tuple(Note(d["id"], d["topic"], " ".join(str(d["decision"]).split()), str(d["evidence"]))
-                      for d in raw["decisions"])
-    known_notes = {d.id for d in decisions}
-    for ch in checks:
-        if ch.decision and ch.decision not in known_notes:
-            raise SpecError(ctx.path, ch.line, f"check {ch.id}: unknown decision {ch.decision!r}")
-    if machine.decision not in known_notes:
-        raise ctx.fail(raw["machine"], f"machine: unknown decision {machine.decision!r}", "decision")
-    errata = tuple(Note(e["id"], e["clause"], str(e["text"]), clause=e["clause"]) for e in raw["errata"])
-    history = tuple(Note(h["version"], h["version"], str(h["text"]), clause=h["clause"], date=str(h["date"]))
-                    for h in raw["history"])
-    return Spec(
-        path=ctx.path,
-        meta=_plain(raw["meta"]),
-        types=types,
-        units={k: str(v["doc"]) for k, v in raw["units"].items()},
-        versions=tuple(versions),
-        default_version=raw["default_version"],
-        fallback_version=raw["fallback_version"],
-        headers=headers,
-        record=record,
-        commands=tuple(commands),
-        checksums=checksums,
-        profiles=tuple(profiles),
-        tolerances={k: float(v) for k, v in raw["tolerances"].items()},
-        limits={k: int(v) for k, v in raw["limits"].items()},
-        machine=machine,
-        checks=tuple(checks),
-        cut=_plain(raw["cut"]),
-        decisions=decisions,
-        errata=errata,
-        history=history,
-        raw=_plain(raw),
-    )
+                ctx.fail(p, f"profile {p['id']}: unknown algorithm {p['file_algorithm']!r}", "file_algorithm")
+            else:
+                fits(p, "file_algorithm", "file", p["file_algorithm"], f"profile {p['id']}")
+        st.profiles.append(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]),
+                                   tuple(p["hint_coverages"]), p.get("file_algorithm")))
+    if st.profiles[0].id != "default":
+        ctx.fail(raw["profiles"], "the first profile must be 'default'")
 
 
-def _check_availability(ctx: _Ctx, raws: _Seq, checks: list[Check], commands: list[Command],
-                        vids: list[str]) -> None:
-    """Every (version, command) pair where the command has no layout is covered by exactly one
-    availability check, and a check covers only such pairs: its findings name the right clause."""
-    raw_of = {str(r["id"]): r for r in raws}
-    covered: dict[tuple[str, str], Check] = {}
-    for ch in checks:
-        if ch.kind != "availability":
-            continue
-        node = raw_of[ch.id]
-        for v in ch.versions:
-            for name in ch.commands:
-                cmd = next(c for c in commands if c.name == name)
-                if cmd.available_in(v):
-                    raise ctx.fail(node, f"check {ch.id}: {name} has a layout in version {v}, nothing to cover",
-                                   "commands")
-                other = covered.get((v, name))
-                if other is not None:
-                    raise ctx.fail(node, f"check {ch.id}: {name} in version {v} is already covered by check "
-                                         f"{other.id} (line {other.line}); one check per command and version",
-                                   "commands")
-                covered[(v, name)] = ch
-    for v in vids:
-        for cmd in commands:
-            if not cmd.available_in(v) and (v, cmd.name) not in covered:
-                raise SpecError(ctx.path, cmd.line, f"{cmd.name} has no layout in version {v} and no availability "
-                                                    f"check covers it (name it in a check's commands)")
-
-
-def _machine(ctx: _Ctx, m: _Map, units: _Map) -> Machine:
+def _machine_pass(ctx: _Ctx, st: _State) -> None:
     """The default machine (L1): each limit's unit is a unit of the spec, min <= max, a box has
     one bound per axis."""
+    m, units = st.raw["machine"], st.raw["units"]
     limits: list[MachineLimit] = []
     for name, lim in m["limits"].items():
         node = m["limits"][name]
         if lim["unit"] not in units:
-            raise ctx.fail(node, f"machine limit {name}: unknown unit {lim['unit']!r}", "unit")
+            ctx.fail(node, f"machine limit {name}: unknown unit {lim['unit']!r}", "unit")
         axes = tuple(str(a) for a in lim.get("axes", []))
         lo, hi = lim["min"], lim["max"]
         want = len(axes) if axes else None
+        shaped = True
         for key, v in (("min", lo), ("max", hi)):
             if (want is None) != (not isinstance(v, list)) or (want is not None and len(v) != want):
-                raise ctx.fail(node, f"machine limit {name}: {key} must be "
-                                     + (f"a list of {want} numbers (one per axis)" if want else "a number"), key)
+                ctx.fail(node, f"machine limit {name}: {key} must be "
+                               + (f"a list of {want} numbers (one per axis)" if want else "a number"), key)
+                shaped = False
+        if not shaped:
+            continue
         los = tuple(float(x) for x in (lo if isinstance(lo, list) else [lo]))
         his = tuple(float(x) for x in (hi if isinstance(hi, list) else [hi]))
         if any(a > b for a, b in zip(los, his, strict=True)):
-            raise ctx.fail(node, f"machine limit {name}: min exceeds max", "min")
+            ctx.fail(node, f"machine limit {name}: min exceeds max", "min")
         limits.append(MachineLimit(str(name), str(lim["unit"]), los, his, axes, str(lim["doc"]).strip()))
-    return Machine(str(m["decision"]), str(m["doc"]).strip(), tuple(limits))
+    st.machine = Machine(str(m["decision"]), str(m["doc"]).strip(), tuple(limits))
+    st.decisions = tuple(Note(d["id"], d["topic"], " ".join(str(d["decision"]).split()), str(d["evidence"]))
+                         for d in st.raw["decisions"])
+    if st.machine.decision not in {d.id for d in st.decisions}:
+        ctx.fail(m, f"machine: unknown decision {st.machine.decision!r}", "decision")
+
+
+def _checks_pass(ctx: _Ctx, st: _State) -> None:
+    """Each check: a known kind with the parameters that kind takes (registry.CHECK_KINDS), and
+    nothing a runtime would ignore: ``versions:`` only where every runtime scopes by it."""
+    cmd_by_name = {c.name: c for c in st.commands}
+    known_notes = {d.id for d in st.decisions}
+    seen_kinds: dict[str, Check] = {}
+    for ch in st.raw["checks"]:
+        cid, kname = str(ch["id"]), ch["kind"]
+        ck = CHECK_KINDS[kname]
+        if any(o.id == cid for o in st.checks) or cid in st.raw_checks:
+            ctx.fail(ch, f"duplicate check id {cid!r}", "id")
+            continue
+        st.raw_checks[cid] = ch
+        for key in ch:
+            if key in COMMON_CHECK_KEYS or key in ck.keys:
+                continue
+            if key == "versions":
+                ctx.fail(ch, f"check {cid}: versions on a check of kind {kname}, which no runtime scopes by "
+                             f"version (only {', '.join(k.name for k in CHECK_KINDS.values() if k.versioned)} does)",
+                         key)
+            else:
+                ctx.fail(ch, f"check {cid}: kind {kname} takes no {key!r} (it takes "
+                             f"{', '.join(ck.keys) or 'no parameters'})", key)
+        if kname in seen_kinds and not ck.repeatable:
+            ctx.fail(ch, f"check {cid}: a second check of kind {kname} (first: {seen_kinds[kname].id}, line "
+                         f"{seen_kinds[kname].line}); the kind takes one", "kind")
+        targets = _targets(ctx, st, ch, cid, kname, cmd_by_name)
+        for v in ch.get("versions", []):
+            if v not in st.vids:
+                ctx.fail(ch, f"check {cid}: unknown version {v!r}", "versions")
+        missing = [k for k in ck.required if not ch.get(k)]
+        for k in missing:
+            ctx.fail(ch, f"check {cid}: kind {kname} needs {k}", "kind")
+        for cname in ch.get("commands", []):
+            if cname not in cmd_by_name:
+                ctx.fail(ch, f"check {cid}: unknown command {cname}", "commands")
+        if kname == "range":
+            if ch.get("min") is None and ch.get("max") is None:
+                ctx.fail(ch, f"check {cid}: a range check needs min, max or both", "kind")
+            elif ch.get("min") is not None and ch.get("max") is not None and ch["min"] > ch["max"]:
+                ctx.fail(ch, f"check {cid}: min {ch['min']} exceeds max {ch['max']}", "min")
+        if ch.get("decision") and ch["decision"] not in known_notes:
+            ctx.fail(ch, f"check {cid}: unknown decision {ch['decision']!r}", "decision")
+        if missing:
+            continue
+        values: dict[str, Any] = {k: ch[k] for k in ck.keys if k in ch}
+        if "targets" in ck.keys:
+            values["targets"] = tuple(targets)
+        for k in ("versions", "commands"):
+            if k in values:
+                values[k] = tuple(str(x) for x in values[k])
+        check = Check(id=cid, kind=kname, severity=ch["severity"], text=str(ch["text"]).strip(),
+                      fails=" ".join(str(ch["fails"]).split()), line=ch.line, params=ck.params(**values),
+                      clause=ch.get("clause"), decision=ch.get("decision"))
+        seen_kinds.setdefault(kname, check)
+        st.checks.append(check)
+
+
+def _targets(ctx: _Ctx, st: _State, ch: _Map, cid: str, kname: str, cmd_by_name: dict[str, Command]) -> list[Target]:
+    out: list[Target] = []
+    for t in ch.get("targets", []):
+        tcmd = cmd_by_name.get(t["command"])
+        if tcmd is None:
+            ctx.fail(t, f"check {cid}: unknown command {t['command']}", "command")
+            continue
+        for argname in t["args"]:
+            _require_arg(ctx, t, tcmd, argname, f"check {cid}")
+            for lay in tcmd.layouts:
+                a = lay.arg(argname)
+                if a is not None and a.kind != "float":
+                    ctx.fail(t, f"check {cid}: {tcmd.name}.{argname} is {a.type}; kind {kname} reads float "
+                                f"arguments", "args")
+                    break
+        if ("limit" in t) != (kname == "machine_limits"):
+            ctx.fail(t, f"check {cid}: a target names a limit exactly when its kind is machine_limits",
+                     "limit" if "limit" in t else "command")
+        elif "limit" in t and st.machine is not None:
+            _machine_target(ctx, t, tcmd, st.machine, cid)
+        out.append(Target(t["command"], tuple(t["args"]), t.get("limit")))
+    return out
+
+
+def _availability_pass(ctx: _Ctx, st: _State) -> None:
+    """Every (version, command) pair where the command has no layout is covered by exactly one
+    availability check, and a check covers only such pairs: its findings name the right clause."""
+    covered: dict[tuple[str, str], Check] = {}
+    by_name = {c.name: c for c in st.commands}
+    for ch in st.checks:
+        if not CHECK_KINDS[ch.kind].versioned:
+            continue
+        node = st.raw_checks[ch.id]
+        for v in ch.versions:
+            for name in ch.commands:
+                cmd = by_name.get(name)
+                if cmd is None:
+                    continue
+                if cmd.available_in(v):
+                    ctx.fail(node, f"check {ch.id}: {name} has a layout in version {v}, nothing to cover", "commands")
+                    continue
+                other = covered.get((v, name))
+                if other is not None:
+                    ctx.fail(node, f"check {ch.id}: {name} in version {v} is already covered by check "
+                                   f"{other.id} (line {other.line}); one check per command and version", "commands")
+                covered[(v, name)] = ch
+    for cmd in st.commands:
+        if not any(cmd.available_in(v) for v in st.vids):
+            ctx.at(cmd.line, f"{cmd.name} is available in no version")
+            continue
+        for v in st.vids:
+            if not cmd.available_in(v) and (v, cmd.name) not in covered:
+                ctx.at(cmd.line, f"{cmd.name} has no layout in version {v} and no availability check covers it "
+                                 f"(name it in a check's commands)")
+    _check_machine_coverage(ctx, st)
+
+
+def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
+    """What every binding can implement: each field's type in each binding (registry.unsupported),
+    and a header every reader can pick a layout for: Kaitai reads the version in the fields all
+    header layouts share from offset 0 (its `header` type) before it switches to a layout."""
+    fields = [f for h in st.headers.values() for f in h.fields]
+    fields += list(st.record.fields if st.record else ())
+    fields += [a for c in st.commands for lay in c.layouts for a in lay.args]
+    for f in fields:
+        gaps = unsupported(TYPES[f.type], f.count)
+        if gaps:
+            what = f"{f.type} x {f.count}" if f.count != 1 else f.type
+            ctx.at(f.line, f"field {f.name}: type {what} is not implemented by the "
+                           f"{', '.join(gaps)} binding{'s' if len(gaps) > 1 else ''} (generator/cbfgen/registry.py)")
+    headers = tuple(st.headers.values())
+    shared = {f.name for f in common_header_prefix(headers)}
+    for h in headers:
+        for role in ("version_major", "version_minor"):
+            vf = h.by_role(role)
+            if vf is not None and vf.name not in shared:
+                ctx.at(vf.line, f"header {h.id}: field {vf.name} ({role}) is not among the leading fields every header "
+                               f"layout shares ({', '.join(sorted(shared)) or 'none'}): a reader must read the version "
+                               f"before it knows the layout")
+
+
+def _names_pass(ctx: _Ctx, st: _State) -> None:
+    """Names every binding can use as identifiers, as the spec spells them: a command, argument or
+    field name reserved in a binding's language (escape.keyword_clash) is refused, never renamed."""
+    named: list[tuple[str, int, str]] = [(c.name, c.line, "command name") for c in st.commands]
+    named += [(a.name, a.line, f"{c.name} argument") for c in st.commands for lay in c.layouts for a in lay.args]
+    named += [(f.name, f.line, f"header {h.id} field") for h in st.headers.values() for f in h.fields]
+    named += [(f.name, f.line, "record field") for f in (st.record.fields if st.record else ())]
+    seen: set[tuple[str, int]] = set()
+    for name, line, what in named:
+        why = keyword_clash(name)
+        if why and (name, line) not in seen:
+            seen.add((name, line))
+            ctx.at(line, f"{what}: the name {why}")
+
+
+PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
+    _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
+    _checks_pass, _availability_pass, _capabilities_pass, _names_pass,
+)
 
 
 def _machine_target(ctx: _Ctx, t: _Map, cmd: Command, machine: Machine, cid: str) -> None:
@@ -599,7 +768,8 @@ def _machine_target(ctx: _Ctx, t: _Map, cmd: Command, machine: Machine, cid: str
     try:
         lim = machine.limit(str(t["limit"]))
     except KeyError:
-        raise ctx.fail(t, f"check {cid}: unknown machine limit {t['limit']!r}", "limit") from None
+        ctx.fail(t, f"check {cid}: unknown machine limit {t['limit']!r}", "limit")
+        return
     for lay in cmd.layouts:
         for name in t["args"]:
             a = lay.arg(name)
@@ -607,46 +777,49 @@ def _machine_target(ctx: _Ctx, t: _Map, cmd: Command, machine: Machine, cid: str
                 continue
             shape_ok = a.kind == "float" and a.count == (len(lim.axes) if lim.axes else 1)
             if a.unit != lim.unit or not shape_ok:
-                raise ctx.fail(t, f"check {cid}: {cmd.name}.{name} ({a.type} x{a.count}, unit {a.unit}) does not "
-                                  f"fit machine limit {lim.name} (unit {lim.unit}"
-                                  + (f", {len(lim.axes)} axes)" if lim.axes else ", a scalar)"), "args")
+                ctx.fail(t, f"check {cid}: {cmd.name}.{name} ({a.type} x{a.count}, unit {a.unit}) does not "
+                            f"fit machine limit {lim.name} (unit {lim.unit}"
+                            + (f", {len(lim.axes)} axes)" if lim.axes else ", a scalar)"), "args")
+                return
 
 
-def _check_machine_coverage(ctx: _Ctx, raws: _Seq, checks: list[Check], commands: list[Command],
-                            machine: Machine) -> None:
+def _check_machine_coverage(ctx: _Ctx, st: _State) -> None:
     """Which arguments are positions comes from the model: every float vector argument whose unit is a
     box limit's unit (mm: points, starts, ends, centres) is targeted by that limit."""
-    covered = {(t.command, a) for ch in checks if ch.kind == "machine_limits" for t in ch.targets
-               if t.limit and machine.limit(t.limit).is_vector for a in t.args}
-    if not any(ch.kind == "machine_limits" for ch in checks):
+    machine = st.machine
+    if machine is None or not any(ch.kind == "machine_limits" for ch in st.checks):
         return
+    names = {lim.name for lim in machine.limits}
+    covered = {(t.command, a) for ch in st.checks if ch.kind == "machine_limits" for t in ch.targets
+               if t.limit in names and machine.limit(t.limit).is_vector for a in t.args}
     for lim in machine.limits:
         if not lim.is_vector:
             continue
-        for cmd in commands:
+        for cmd in st.commands:
             for lay in cmd.layouts:
                 for a in lay.args:
                     if a.kind == "float" and a.count == len(lim.axes) and a.unit == lim.unit \
                             and (cmd.name, a.name) not in covered:
-                        raise SpecError(ctx.path, lay.line, f"{cmd.name}.{a.name} is a position ({a.count} x "
-                                                            f"{a.unit}) that no machine_limits target bounds by "
-                                                            f"limit {lim.name}")
+                        ctx.at(lay.line, f"{cmd.name}.{a.name} is a position ({a.count} x {a.unit}) that no "
+                                         f"machine_limits target bounds by limit {lim.name}")
 
 
 def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str) -> None:
     if not any(lay.arg(argname) for lay in cmd.layouts):
-        raise ctx.fail(node, f"{cmd.name}: {what} names {argname!r}, which no layout has")
+        ctx.fail(node, f"{cmd.name}: {what} names {argname!r}, which no layout has")
+
+
+_MOTION_NEEDS = {"point": ("end",), "line": ("start", "end"), "circle": ("start", "center", "normal", "degrees"),
+                 "helix": ("start", "center", "normal", "degrees", "length")}
 
 
 def _check_roles(ctx: _Ctx, node: Any, cmd: Command) -> None:
-    needs = {"point": ("end",), "line": ("start", "end"), "circle": ("start", "center", "normal", "degrees"),
-             "helix": ("start", "center", "normal", "degrees", "length")}
     if cmd.motion:
-        for key in needs[cmd.motion["kind"]]:
+        for key in _MOTION_NEEDS[cmd.motion["kind"]]:
             if key not in cmd.motion:
-                raise ctx.fail(node, f"{cmd.name}: motion kind {cmd.motion['kind']} needs {key}", "motion")
+                ctx.fail(node, f"{cmd.name}: motion kind {cmd.motion['kind']} needs {key}", "motion")
     if cmd.orientation and cmd.orientation["kind"] == "path" and "start" not in cmd.orientation:
-        raise ctx.fail(node, f"{cmd.name}: orientation path needs start", "orientation")
+        ctx.fail(node, f"{cmd.name}: orientation path needs start", "orientation")
 
 
 def _plain(x: Any) -> Any:

@@ -11,6 +11,10 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from .registry import TYPES, FieldType, Params, Target
+
+__all__ = ["FieldType", "PrimitiveType", "Target"]
+
 
 def camel(name: str) -> str:
     """LINE5B -> Line5b, CUTTER_ON -> CutterOn, v1 -> V1."""
@@ -23,12 +27,8 @@ def ident(name: str) -> str:
     return s if s and not s[0].isdigit() else "c" + s
 
 
-@dataclass(frozen=True)
-class PrimitiveType:
-    name: str
-    kind: str  # uint | float | string | bytes
-    size: int | None
-    doc: str
+# A type of the spec's `types:`: the registry's entry (registry.TYPES) of that name.
+PrimitiveType = FieldType
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class Field:
 
     name: str
     type: str
-    kind: str  # uint | float | string | bytes
+    kind: str  # registry.FIELD_KINDS: uint | sint | float | string | bytes
     offset: int
     elem_size: int
     count: int
@@ -62,6 +62,11 @@ class Field:
     @property
     def is_vector(self) -> bool:
         return self.kind == "float" and self.count > 1
+
+    @property
+    def ftype(self) -> FieldType:
+        """The field's type, from the registry (struct code, numpy, Kaitai and C types)."""
+        return TYPES[self.type]
 
 
 @dataclass(frozen=True)
@@ -171,6 +176,22 @@ class HeaderLayout:
         return None
 
 
+def common_header_prefix(headers: tuple[HeaderLayout, ...]) -> tuple[Field, ...]:
+    """The fields every header layout shares from offset 0, in order (same name, offset, type,
+    size and magic): what a reader knows before it knows the version (the .ksy's header type)."""
+    if not headers:
+        return ()
+    out: list[Field] = []
+    for f in headers[0].fields:
+        key = (f.name, f.offset, f.type, f.size, f.magic)
+        twins = [h.field(f.name) for h in headers]
+        if all(t is not None and (t.name, t.offset, t.type, t.size, t.magic) == key for t in twins):
+            out.append(f)
+        else:
+            break
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class RecordLayout:
     head_size: int
@@ -267,13 +288,6 @@ class Profile:
 
 
 @dataclass(frozen=True)
-class Target:
-    command: str
-    args: tuple[str, ...]
-    limit: str | None = None  # machine_limits: the key of machine.limits that bounds the args
-
-
-@dataclass(frozen=True)
 class MachineLimit:
     """One limit of a machine (decision L1): a range, or with ``axes`` a box (per component)."""
 
@@ -312,25 +326,61 @@ class Machine:
 
 @dataclass(frozen=True)
 class Check:
+    """A check of the spec: its kind (registry.CHECK_KINDS) and that kind's typed parameters.
+    The parameter properties below read ``params`` (None / empty where the kind takes none)."""
+
     id: str
     kind: str
     severity: str
     text: str
     fails: str
     line: int
+    params: Params
     clause: str | None = None
     decision: str | None = None
-    input: str | None = None
-    input_severity: str | None = None  # the severity when the input is given (machine_limits: a machine file)
-    versions: tuple[str, ...] = ()
-    commands: tuple[str, ...] = ()  # availability: the commands it covers in its versions
-    targets: tuple[Target, ...] = ()
-    min: float | None = None
-    max: float | None = None
+
+    def _param(self, name: str, default: Any) -> Any:
+        return getattr(self.params, name, default)
+
+    @property
+    def input(self) -> str | None:
+        return self._param("input", None)  # type: ignore[no-any-return]
+
+    @property
+    def input_severity(self) -> str | None:
+        """The severity when the input is given (machine_limits: a machine file)."""
+        return self._param("input_severity", None)  # type: ignore[no-any-return]
+
+    @property
+    def versions(self) -> tuple[str, ...]:
+        """availability: the versions it covers (no other kind takes versions)."""
+        return self._param("versions", ())  # type: ignore[no-any-return]
+
+    @property
+    def commands(self) -> tuple[str, ...]:
+        """availability: the commands it covers in its versions."""
+        return self._param("commands", ())  # type: ignore[no-any-return]
+
+    @property
+    def targets(self) -> tuple[Target, ...]:
+        return self._param("targets", ())  # type: ignore[no-any-return]
+
+    @property
+    def min(self) -> float | None:
+        return self._param("min", None)  # type: ignore[no-any-return]
+
+    @property
+    def max(self) -> float | None:
+        return self._param("max", None)  # type: ignore[no-any-return]
 
     @property
     def anchor(self) -> str:
         return "check-" + ident(self.id).replace("_", "-")
+
+
+# A check's attributes as one flat list: its own, then its kind's parameters (registry.py).
+CHECK_ATTRS = ("id", "kind", "severity", "text", "fails", "line", "clause", "decision", "input", "input_severity",
+               "versions", "commands", "targets", "min", "max")
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,7 @@ See generator/README.md, "Extending the spec language".
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import MISSING, dataclass, fields
 from typing import Literal
 
 # -- field types ------------------------------------------------------------------------------
@@ -120,7 +120,8 @@ class FieldType:
 
 def _ints() -> dict[str, FieldType]:
     out: dict[str, FieldType] = {}
-    kinds: tuple[tuple[FieldKind, str, str], ...] = (("uint", "u", "unsigned"), ("sint", "s", "signed, two's complement"))
+    kinds: tuple[tuple[FieldKind, str, str], ...] = (
+        ("uint", "u", "unsigned"), ("sint", "s", "signed, two's complement"))
     for kind, prefix, what in kinds:
         for size in (1, 2, 4, 8):
             out[f"{prefix}{size}"] = FieldType(f"{prefix}{size}", kind, size, f"{what} {8 * size}-bit integer")
@@ -136,20 +137,30 @@ TYPES: dict[str, FieldType] = {
     "bytes": FieldType("bytes", "bytes", None, "raw bytes, kept verbatim"),
 }
 
-# The bindings the loader answers for. Python and Kaitai read every type from this registry; the
-# C engine and the CUT text (cut.py) carry the types of rev 03 (unsigned 1/2/4 bytes, binary32).
+# The bindings the loader answers for, and what each carries today. Python and Kaitai read every
+# type's codes from this registry; what a binding cannot carry yet is refused at load (the
+# binding-capabilities pass), with the field's line, before any emitter runs:
+#   c       the engine of rev 03: unsigned 1, 2 and 4 bytes, binary32 (branch cruntime widens it)
+#   python  unsigned integers of every width; no signed integers yet (the CUT text, convert and the
+#           command line read integers as unsigned), no binary64 (canonical JSON carries binary32)
+#   kaitai  every integer; no binary64 (its conformance testees report floats as binary32)
+# Vectors (count > 1) are float vectors only (x, y, z) in every binding.
 BINDINGS = ("python", "kaitai", "c")
 
 
 def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
-    When a binding learns a type, its rule here changes (and nothing else in the loader)."""
-    out: list[str] = []
-    if t.kind == "sint" or (t.kind == "uint" and t.size == 8) or (t.kind == "float" and t.size != 4):
-        out.extend(("python", "c"))  # the Python runtime's CUT text and validator, C's engine: rev 03 types
+    When a binding learns a type, its rule here changes, and nothing else in the loader."""
+    gaps: set[str] = set()
+    if t.kind == "sint":
+        gaps |= {"python", "c"}
+    if t.kind == "uint" and t.size not in (1, 2, 4):
+        gaps.add("c")
+    if t.kind == "float" and t.size != 4:
+        gaps |= {"python", "kaitai", "c"}
     if count != 1 and t.kind != "float":
-        out.extend(b for b in ("python", "c", "kaitai") if b not in out)  # only float vectors (x, y, z)
-    return tuple(out)
+        gaps |= set(BINDINGS)
+    return tuple(b for b in BINDINGS if b in gaps)
 
 
 # -- check kinds ------------------------------------------------------------------------------
@@ -229,6 +240,11 @@ class CheckKind:
     def keys(self) -> tuple[str, ...]:
         """The YAML keys a check of this kind may carry beyond the common ones."""
         return tuple(f.name for f in fields(self.params))
+
+    @property
+    def required(self) -> tuple[str, ...]:
+        """The parameters a check of this kind must give (not empty)."""
+        return tuple(f.name for f in fields(self.params) if f.default is MISSING and f.default_factory is MISSING)
 
     @property
     def versioned(self) -> bool:

@@ -27,7 +27,6 @@ def _layouts_class(registry: str, key: Any) -> type:
 
 BO = "<" if SPEC["byte_order"] == "little" else ">"
 PAD = bytes([SPEC["string_padding"]])
-_UINT = {1: "B", 2: "H", 4: "I"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,6 +41,9 @@ class FieldInfo:
     checksum: str | None
     reserved: bool
     text: bool
+    code: str | None = None  # struct code of one element (the spec's type, cbfgen/registry.py); None: str, bytes
+    bits_code: str | None = None  # struct code of an element's bit pattern (a float as the unsigned of its width)
+    numpy: str | None = None  # numpy dtype code without byte order ("u2", "f4"); None: str, bytes
 
     @property
     def size(self) -> int:
@@ -53,22 +55,20 @@ class FieldInfo:
 
     @property
     def fmt(self) -> str:
-        if self.kind == "uint":
-            return _UINT[self.elem_size]
-        if self.kind == "float":
-            return f"{self.count}f" if self.count > 1 else "f"
-        return f"{self.size}s"
+        if self.code is None:
+            return f"{self.size}s"
+        return f"{self.count}{self.code}" if self.count > 1 else self.code
 
     @property
     def bits_fmt(self) -> str:
-        if self.kind == "float":
-            return f"{self.count}I" if self.count > 1 else "I"
-        return self.fmt
+        if self.bits_code is None:
+            return self.fmt
+        return f"{self.count}{self.bits_code}" if self.count > 1 else self.bits_code
 
 
 def _field(d: dict[str, Any]) -> FieldInfo:
     return FieldInfo(d["name"], d["kind"], d["offset"], d["elem_size"], d["count"], d["role"], d["magic"],
-                     d["checksum"], d["reserved"], d["text"])
+                     d["checksum"], d["reserved"], d["text"], d["code"], d["bits_code"], d["numpy"])
 
 
 def _struct(fields: tuple[FieldInfo, ...], bits: bool = False) -> struct.Struct:

@@ -17,7 +17,8 @@ import yaml
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...escape import kaitai_doc
-from ...model import Command, Field, Layout, Spec, camel, ident
+from ...model import Command, Field, Layout, Spec, camel, common_header_prefix, ident
+from ...registry import CHECK_KINDS
 from ...render import environment
 
 HERE = Path(__file__).parent
@@ -58,15 +59,13 @@ def _layout_type(lay: Layout) -> str:
     return "args_" + ident(lay.command) + (("_" + ident(lay.variant)) if lay.variant else "")
 
 
-def _field_attr(f: Field, encoding: str, clause: str | None) -> dict[str, Any]:
+def _field_attr(f: Field, encoding: str, clause: str | None, revision: str) -> dict[str, Any]:
     attr: dict[str, Any] = {"id": f.name}
-    if f.kind == "float":
-        attr["type"] = "f4"
+    if f.ftype.kaitai is not None:  # every fixed-size type of the registry: u1..u8, s1..s8, f4, f8
+        attr["type"] = f.ftype.kaitai
         if f.count > 1:
             attr["repeat"] = "expr"
             attr["repeat-expr"] = f.count
-    elif f.kind == "uint":
-        attr["type"] = {1: "u1", 2: "u2", 4: "u4"}[f.elem_size]
     elif f.kind == "string":
         attr.update({"type": "str", "size": f.size, "encoding": encoding, "pad-right": 0})
     else:
@@ -77,7 +76,7 @@ def _field_attr(f: Field, encoding: str, clause: str | None) -> dict[str, Any]:
     attr["doc"] = _doc(doc)
     ref = f.clause or clause
     if ref:
-        attr["doc-ref"] = f"300071 rev 03, {ref}"
+        attr["doc-ref"] = f"{revision}, {ref}"
     return attr
 
 
@@ -101,22 +100,14 @@ def build(spec: Spec) -> dict[str, Any]:
     enc = "ISO-8859-1"  # strings are ASCII (N4); bytes map 1:1 so that nothing is lost
     vids = [v.id for v in spec.versions]
     first = next(iter(spec.headers.values()))
-    # Header: the fields every layout shares from offset 0, then the rest per layout.
-    common: list[Field] = []
-    def same(a: Field | None, b: Field) -> bool:
-        key = (b.name, b.offset, b.type, b.size, b.magic)
-        return a is not None and (a.name, a.offset, a.type, a.size, a.magic) == key
-
-    for f in first.fields:
-        if all(same(h.field(f.name), f) for h in spec.headers.values()):
-            common.append(f)
-        else:
-            break
+    # Header: the fields every layout shares from offset 0 (the loader makes sure the version fields
+    # are among them: version_index reads them), then the rest per layout.
+    common: list[Field] = list(common_header_prefix(tuple(spec.headers.values())))
     common_names = {f.name for f in common}
     tails = {h.id: [f for f in h.fields if f.name not in common_names] for h in spec.headers.values()}
     header_type = {
         "doc": f"File header ({first.clause}); after the version field its layout depends on the version.",
-        "seq": [_field_attr(f, enc, first.clause) for f in common] + [{
+        "seq": [_field_attr(f, enc, first.clause, spec.revision) for f in common] + [{
             "id": "layout",
             "type": {"switch-on": "version_index",
                      "cases": {i: f"header_{ident(spec.version(v).header)}" for i, v in enumerate(vids, 1)}},
@@ -133,7 +124,7 @@ def build(spec: Spec) -> dict[str, Any]:
     for hid, fields in tails.items():
         types[f"header_{ident(hid)}"] = {
             "doc": _doc(spec.headers[hid].doc),
-            "seq": [_field_attr(f, enc, spec.headers[hid].clause) for f in fields],
+            "seq": [_field_attr(f, enc, spec.headers[hid].clause, spec.revision) for f in fields],
         }
     # Record head, with the code copy, version gating and argument sizes as valid: expressions.
     rec = spec.record
@@ -156,7 +147,7 @@ def build(spec: Spec) -> dict[str, Any]:
                 gates.append(f"not (_root.header.version_index == {i} and (" +
                              " or ".join(f"_ == {c}" for c in missing) + "))")
     for f in rec.fields:
-        attr = _field_attr(f, enc, rec.clause)
+        attr = _field_attr(f, enc, rec.clause, spec.revision)
         if f.role == "code" and gates:
             attr["valid"] = {"expr": " and ".join(gates)}
             attr["doc"] += " Version gating (" + ", ".join(c.id for c in spec.checks_of_kind("availability")) + \
@@ -197,14 +188,14 @@ def build(spec: Spec) -> dict[str, Any]:
                 "doc": _doc(f"{cmd.name}: {cmd.doc} Versions {', '.join(lay.versions)}; {lay.size} bytes."
                             + (f" Accepted under profile {', '.join(lay.profiles)}." if lay.profiles else "")
                             + (f" {lay.doc}" if lay.doc else "")),
-                "doc-ref": f"300071 rev 03, {lay.clause or cmd.clause}",
-                "seq": [_field_attr(a, enc, None) for a in lay.args],
+                "doc-ref": f"{spec.revision}, {lay.clause or cmd.clause}",
+                "seq": [_field_attr(a, enc, None, spec.revision) for a in lay.args],
             }
-    not_here = [c for c in spec.checks if c.kind not in ("magic", "code_copy", "arg_size", "availability")]
+    not_here = [c for c in spec.checks if not CHECK_KINDS[c.kind].kaitai]
     ksy: dict[str, Any] = {
         "meta": {
             "id": m["id"],
-            "title": f"{m['title']} ({m['part_number']} rev {m['revision']})",
+            "title": f"{m['title']} ({spec.revision})",
             "file-extension": m["file_extension"],
             "xref": {k: v[0] if len(v) == 1 else list(v) for k, v in m.get("xref", {}).items()},
             "license": m["license"],

@@ -28,14 +28,17 @@ EXTRAS: dict[str, tuple[str, ...]] = {
 def _py_type(f: Field) -> str:
     if f.kind == "float":
         return "float" if f.count == 1 else "tuple[" + ", ".join(["float"] * f.count) + "]"
-    return {"uint": "int", "string": "str", "bytes": "bytes"}[f.kind]
+    return {"uint": "int", "sint": "int", "string": "str", "bytes": "bytes"}[f.kind]
 
 
 def _field_data(f: Field) -> dict[str, Any]:
+    """A field as the runtime reads it; its codes (struct, numpy) come from the registry's type."""
+    t = f.ftype
     return {
         "name": f.name, "type": f.type, "kind": f.kind, "offset": f.offset, "elem_size": f.elem_size,
         "count": f.count, "role": f.role, "magic": f.magic, "checksum": f.checksum,
         "reserved": f.reserved, "text": f.text, "unit": f.unit,
+        "code": t.struct_code, "bits_code": t.bits_code, "numpy": t.numpy,
     }
 
 
@@ -103,8 +106,8 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
     def value(f: Field) -> dict[str, Any]:
         if f.kind == "float":
             return f32 if f.count == 1 else {"type": "array", "items": f32, "minItems": f.count, "maxItems": f.count}
-        if f.kind == "uint":
-            return {"type": "integer", "minimum": 0, "maximum": (1 << (8 * f.elem_size)) - 1}
+        if f.ftype.is_integer:
+            return {"type": "integer", "minimum": f.ftype.min, "maximum": f.ftype.max}
         if f.kind == "string":
             return {"type": "string", "maxLength": f.size, "description": f.doc}
         return {"type": "string", "pattern": "^([0-9a-f]{2}){" + str(f.size) + "}$", "description": f.doc}
@@ -130,7 +133,7 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
     })
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
-        "title": f"{spec.meta['title']} ({spec.meta['part_number']} rev {spec.meta['revision']}), canonical JSON",
+        "title": f"{spec.meta['title']} ({spec.revision}), canonical JSON",
         "type": "object",
         "additionalProperties": False,
         "required": ["header", "records"],

@@ -1,4 +1,5 @@
-"""CBF codec: the Cutfile Binary Format (spec 300071 rev 03), generated from spec/cbf.yaml.
+"""CBF codec: the Cutfile Binary Format, generated from spec/cbf.yaml (the spec's part number and
+revision, from its `meta`: ``cbf.SPEC_REVISION``).
 
     import cbf
     model = cbf.decode(open("part.cbf", "rb").read())   # raises cbf.CbfError on broken framing

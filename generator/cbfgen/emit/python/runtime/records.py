@@ -29,7 +29,6 @@ from .findings import (
     Cutters,
     Finding,
     availability_checks,
-    check_of,
     finding,
     finding_order,
     range_text,
@@ -161,12 +160,12 @@ def _dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
 def _make_dtype(lay: T.LayoutInfo) -> np.dtype[Any]:
     fields: list[Any] = []
     for f in lay.args:
-        if f.kind == "float":
-            fields.append((f.name, np.dtype(T.BO + "f4"), (f.count,)) if f.count > 1 else (f.name, T.BO + "f4"))
-        elif f.kind == "uint":
-            fields.append((f.name, T.BO + {1: "u1", 2: "u2", 4: "u4"}[f.elem_size]))
-        else:
+        if f.numpy is None:  # str, bytes: rows of bytes
             fields.append((f.name, np.uint8, (f.size,)))
+        elif f.count > 1:
+            fields.append((f.name, np.dtype(T.BO + f.numpy), (f.count,)))
+        else:
+            fields.append((f.name, T.BO + f.numpy))
     return np.dtype(fields)
 
 
@@ -839,21 +838,14 @@ KERNELS: dict[str, Kernel] = {
     "machine_limits": Kernel(batch=_machine_limits, applies=_has_rules),
 }
 
-# the kinds a kernel checks only once (the first check of the kind); the others run every check of their kind
-_FIRST_ONLY = {"sequence", "reserved_byte", "code_copy", "arg_checksum", "unknown_code", "arg_size", "finite",
-               "string_tail", "string_ascii", "cutter_table", "continuity", "orientation", "shape"}
-
-
 @lru_cache(maxsize=2)
 def _active(with_cutters: bool) -> tuple[tuple[Check, Kernel], ...]:
     out: list[tuple[Check, Kernel]] = []
     for kind, kernel in KERNELS.items():
         if kind == "cutter_table" and not with_cutters:
             continue
-        checks: Sequence[Check] = T.checks_of(kind)
-        if kind in _FIRST_ONLY:
-            checks = checks[:1]
-        out.extend((c, kernel) for c in checks)
+        # every check of the kind runs (its own id, severity, parameters), as in the C engine
+        out.extend((c, kernel) for c in T.checks_of(kind))
     return tuple(out)
 
 
@@ -910,6 +902,6 @@ def header_string_findings(raw: bytes, offset: int, name: str) -> list[Finding]:
     col = np.frombuffer(raw, dtype=np.uint8).reshape(1, -1)
     first = first_nul(col)
     for kind, kernel in (("string_tail", string_tail), ("string_ascii", string_ascii)):
-        kernel(add, check_of(kind), col, np.zeros(1, dtype=np.int64), np.full(1, offset, dtype=np.int64), name,
-               first)
+        for check in T.checks_of(kind):
+            kernel(add, check, col, np.zeros(1, dtype=np.int64), np.full(1, offset, dtype=np.int64), name, first)
     return out

@@ -17,7 +17,7 @@ from typing import Any
 from . import tables as T
 from .codec import decode_header, field_checksum, file_algorithm, frame, header_info, pack_file
 from .fields import Buffer
-from .findings import Cutters, Finding, check_of, finding, finding_order, string_value
+from .findings import Cutters, Finding, finding, finding_order, string_value
 from .machine import Machine
 from .model import Cbf, RecordList
 from .records import header_string_findings, record_findings
@@ -33,8 +33,9 @@ class _Out:
     def __init__(self) -> None:
         self.findings: list[Finding] = []
 
-    def add(self, check: Mapping[str, Any] | None, record: int | None, offset: int | None, message: str) -> None:
-        if check is not None:
+    def add(self, kind: str, record: int | None, offset: int | None, message: str) -> None:
+        """A finding for every check of ``kind`` (none when the spec has none), as the C engine."""
+        for check in T.checks_of(kind):
             self.findings.append(finding(check, record, offset, message))
 
 
@@ -65,24 +66,24 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     out = _Out()
     n = len(buf)
     if n < T.HEADER_SIZE:
-        out.add(check_of("truncated_header"), None, 0, f"file is {n} bytes, the header needs {T.HEADER_SIZE}")
+        out.add("truncated_header", None, 0, f"file is {n} bytes, the header needs {T.HEADER_SIZE}")
         return iter(out.findings)
     vid, info = header_info(buf)
     hvals = info.struct.unpack_from(buf, 0)
     header = {f.name: v for f, v in zip(info.fields, hvals, strict=True)}
     if vid is None:
-        out.add(check_of("version"), None, T.VMAJOR.offset,
+        out.add("version", None, T.VMAJOR.offset,
                 f"version {buf[T.VMAJOR.offset]}.{buf[T.VMINOR.offset]} is not a version of this spec; "
                 f"read as {T.FALLBACK_VERSION}")
     version = vid or T.FALLBACK_VERSION
     for f in (T.START, T.END):
         if header[f.name] != f.magic:
-            out.add(check_of("magic"), None, f.offset, f"{f.name} is 0x{header[f.name]:08X}, expected 0x{f.magic:08X}")
+            out.add("magic", None, f.offset, f"{f.name} is 0x{header[f.name]:08X}, expected 0x{f.magic:08X}")
     hsum = T.HEADER_CHECKSUM_FIELDS.get("header")
     if hsum is not None:
         want = _field_sum("header", buf, [])
         if header[hsum.name] != want:
-            out.add(check_of("header_checksum"), None, hsum.offset,
+            out.add("header_checksum", None, hsum.offset,
                     f"stored header checksum {header[hsum.name]}, computed {want}")
     for f in info.fields:
         if f.kind == "string":
@@ -94,12 +95,12 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     if end < n:
         if len(offsets) < count:
             truncated = True
-            out.add(check_of("truncated_record"), len(offsets), end,
+            out.add("truncated_record", len(offsets), end,
                     f"the file ends inside record {len(offsets)} ({n - end} byte(s) left)")
         else:
-            out.add(check_of("trailing"), None, end, f"{n - end} byte(s) after the last record")
+            out.add("trailing", None, end, f"{n - end} byte(s) after the last record")
     if not truncated and len(offsets) != count:
-        out.add(check_of("command_count"), None, T.COUNT.offset,
+        out.add("command_count", None, T.COUNT.offset,
                 f"header count {count}, the file holds {len(offsets)} records")
 
     fsum = T.HEADER_CHECKSUM_FIELDS.get("file")
@@ -116,7 +117,7 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
                 hint_alg = file_algorithm(owner) if owner in T.PROFILES else alg
                 if _field_sum("file", buf, offsets, cov, algorithm=hint_alg) == stored:
                     msg += f"; it matches coverage {cov} (use profile {owner})"
-            out.add(check_of("file_checksum"), None, fsum.offset, msg)
+            out.add("file_checksum", None, fsum.offset, msg)
 
     stream = record_findings(buf, offsets, version, profile, cutters, machine)
     if part_number is not None:
@@ -155,7 +156,7 @@ def _part_number(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any], part_
     words = string_value(header[f.name]).split()
     first = words[0] if words else ""
     if first != part_number:
-        out.add(check_of("part_number"), None, f.offset,
+        out.add("part_number", None, f.offset,
                 f"implant descriptor starts with {first!r}, expected {part_number!r}")
 
 
@@ -163,5 +164,5 @@ def _descriptor_word(out: _Out, info: T.HeaderInfo, header: Mapping[str, Any]) -
     """4.2: the implant descriptor begins with the part number, so it holds a word."""
     f = info.by_role("implant_descriptor")
     if f is not None and not string_value(header[f.name]).split():
-        out.add(check_of("descriptor_word"), None, f.offset,
+        out.add("descriptor_word", None, f.offset,
                 "implant descriptor holds no word: no part number comes first")

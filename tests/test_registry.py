@@ -1,0 +1,193 @@
+"""The vocabulary registry (generator/cbfgen/registry.py) is the one list of field types and check
+kinds: the schema's enums are filled from it, every binding implements each registered kind, and
+each binding carries every type the registry says it carries, end to end.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import shutil
+import struct
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from conftest import REPO, dump_yaml, spec_doc
+
+from cbfgen import loader, registry
+from cbfgen.loader import load
+from cbfgen.registry import CHECK_KINDS, TYPES, FieldType, kinds_with, unsupported
+
+
+def test_the_schema_names_no_type_and_no_kind_itself() -> None:
+    on_disk = (REPO / "generator" / "cbfgen" / "spec.schema.json").read_text(encoding="utf-8")
+    for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"'):
+        assert word not in on_disk, word
+    schema = loader._schema()
+    assert schema["$defs"]["field"]["properties"]["type"]["enum"] == list(TYPES)
+    assert schema["properties"]["checks"]["items"]["properties"]["kind"]["enum"] == list(CHECK_KINDS)
+    assert schema["properties"]["types"]["additionalProperties"]["properties"]["kind"]["enum"] == list(
+        registry.FIELD_KINDS)
+
+
+def test_every_kind_of_the_registry_has_one_python_implementation() -> None:
+    """records.KERNELS holds the record kinds, validation.FILE_KINDS the file kinds: together the
+    registry's kinds, each once (a registered kind without a kernel fails here)."""
+    records = importlib.import_module("cbf.records")
+    validation = importlib.import_module("cbf.validation")
+    assert set(records.KERNELS) == set(kinds_with("record"))
+    assert set(validation.FILE_KINDS) == set(kinds_with("file"))
+    assert not set(records.KERNELS) & set(validation.FILE_KINDS)
+
+
+def test_every_kind_takes_the_parameters_its_dataclass_declares() -> None:
+    spec = load(REPO / "spec" / "cbf.yaml")
+    for ch in spec.checks:
+        assert isinstance(ch.params, CHECK_KINDS[ch.kind].params), ch.id
+    assert [k.name for k in CHECK_KINDS.values() if k.versioned] == ["availability"]
+
+
+def test_type_codes_follow_from_kind_and_size() -> None:
+    for t in TYPES.values():
+        if t.size is None:
+            assert (t.struct_code, t.numpy, t.kaitai, t.c_type) == (None, None, None, None)
+            continue
+        assert struct.calcsize("<" + (t.struct_code or "")) == t.size, t
+        assert np.dtype("<" + (t.numpy or "")).itemsize == t.size, t
+        assert (t.kaitai or "")[1:] == str(t.size)
+        if t.is_integer:
+            assert t.min is not None and t.max is not None and t.max - t.min == (1 << (8 * t.size)) - 1
+
+
+# -- each type, end to end, in each binding that claims it -----------------------------------
+def _value(t: FieldType) -> Any:
+    if t.kind == "uint":
+        return t.max
+    if t.kind == "sint":
+        return t.min
+    if t.kind == "float":
+        return 1.5
+    return "abc" if t.kind == "string" else b"\x01\x02\x03"
+
+
+def _spec_using(t: FieldType, tmp: Path) -> Path:
+    """The real spec plus PROBE, one argument of type t, in every version."""
+    doc = spec_doc()
+    entry: dict[str, Any] = {"kind": t.kind, "doc": t.doc}
+    if t.size is not None:
+        entry["size"] = t.size
+    doc["types"][t.name] = entry
+    used = {c["code"] for c in doc["commands"]}
+    arg: dict[str, Any] = {"name": "value", "type": t.name, "doc": "The value."}
+    if t.size is None:
+        arg["size"] = 3
+    doc["commands"].append({
+        "name": "PROBE", "code": next(c for c in range(1, 256) if c not in used), "clause": "5.1",
+        "doc": "A command with one argument of the type under test.",
+        "layouts": [{"versions": [v["id"] for v in doc["versions"]], "size": t.size or 3, "args": [arg]}],
+    })
+    path = tmp / "cbf.yaml"
+    path.write_text(dump_yaml(doc, sort_keys=False, width=1000), encoding="utf-8")
+    return path
+
+
+def _generate(t: FieldType, tmp: Path, binding: str, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """Generate one binding for a spec that uses t: the loader answers for that binding alone."""
+    monkeypatch.setattr(loader, "unsupported",
+                        lambda ft, count=1: tuple(b for b in unsupported(ft, count) if b == binding))
+    spec = load(_spec_using(t, tmp))
+    out = tmp / "out"
+    for rel, data in importlib.import_module(f"cbfgen.emit.{binding}").emit(spec).items():
+        (out / rel).parent.mkdir(parents=True, exist_ok=True)
+        (out / rel).write_bytes(data)
+    return out
+
+
+PYTHON_SCRIPT = r"""
+import ast, sys
+import cbf
+from cbf import tables as T
+from cbf.layouts import Probe
+from cbf.model import Cbf, Record, new_header
+value = ast.literal_eval(sys.argv[1])
+model = Cbf(new_header(T.DEFAULT_VERSION, implant_descriptor="PN-1"), (Record.of(Probe(value=value)),))
+data = cbf.encode(model)
+back = cbf.decode(data)
+assert back.records[0].decode_args() == Probe(value=value), back.records[0].decode_args()
+assert cbf.validate(data) == [], cbf.validate(data)
+assert cbf.encode(cbf.from_cut(cbf.to_cut(back))) == data, cbf.to_cut(back)
+assert cbf.encode(cbf.from_canonical(cbf.to_canonical(back))) == data
+open(sys.argv[2], "wb").write(data)
+"""
+
+
+def _types_of(binding: str) -> list[str]:
+    return [n for n, t in TYPES.items() if binding not in unsupported(t)]
+
+
+@pytest.mark.parametrize("name", _types_of("python"))
+def test_python_carries_each_type_it_claims(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    t = TYPES[name]
+    out = _generate(t, tmp_path, "python", monkeypatch)
+    done = subprocess.run([sys.executable, "-c", PYTHON_SCRIPT, repr(_value(t)), str(tmp_path / "f.cbf")],
+                          env={"PYTHONPATH": str(out / "python"), "PATH": "/usr/bin:/bin"}, capture_output=True,
+                          text=True, check=False)
+    assert done.returncode == 0, done.stderr[-3000:]
+
+
+KAITAI_SCRIPT = r"""
+import ast, sys
+from cbf_kaitai.cbf import Cbf
+value = ast.literal_eval(sys.argv[1])
+parsed = Cbf.from_bytes(bytes.fromhex(sys.argv[2]))
+got = parsed.records[-1].args.value
+print(repr(got))
+assert got == value or (isinstance(value, str) and got == value), (got, value)
+"""
+
+
+@pytest.mark.parametrize("name", [n for n in _types_of("kaitai") if TYPES[n].size is not None])
+def test_kaitai_carries_each_type_it_claims(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """ksc compiles the .ksy of a spec using the type, and its parser reads the value back (the file
+    written by hand from the registry's struct code: no other binding is asked)."""
+    node = shutil.which("node")
+    if node is None or not (REPO / "node_modules" / "kaitai-struct-compiler").exists():
+        pytest.skip("node or the Kaitai compiler is not installed")
+    t = TYPES[name]
+    out = _generate(t, tmp_path, "kaitai", monkeypatch)
+    subprocess.run([node, str(REPO / "generator" / "cbfgen" / "emit" / "kaitai" / "ksc_driver.js"),
+                    str(out / "kaitai" / "cbf.ksy.json"), str(out / "kaitai"), "python"], cwd=REPO, check=True,
+                   capture_output=True)
+    ksy = json.loads((out / "kaitai" / "cbf.ksy.json").read_text(encoding="utf-8"))
+    probe = next(k for k, v in ksy["types"].items() if k.startswith("args_probe"))
+    assert ksy["types"][probe]["seq"][0]["type"] == t.kaitai
+    data = _file_with(t, _value(t))
+    done = subprocess.run([sys.executable, "-c", KAITAI_SCRIPT, repr(_value(t)), data.hex()],
+                          env={"PYTHONPATH": f"{out / 'kaitai' / 'python'}:{':'.join(sys.path)}"},
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr[-3000:]
+
+
+def _file_with(t: FieldType, value: Any) -> bytes:
+    """A CBF file holding one PROBE record, packed with the current Python binding's header and
+    the registry's struct code for the argument (Kaitai checks no checksum)."""
+    from cbf import tables as T  # noqa: PLC0415  (the binding under generated/, imported when asked)
+    spec = load(REPO / "spec" / "cbf.yaml")
+    code = 1
+    while any(c.code == code for c in spec.commands):
+        code += 1
+    cbf = importlib.import_module("cbf")
+    model = importlib.import_module("cbf.model")
+    head = bytearray(cbf.encode(model.Cbf(model.new_header(T.DEFAULT_VERSION, implant_descriptor="PN-1"), ())))
+    count = T.COUNT
+    head[count.offset:count.end] = (1).to_bytes(count.size, "little" if T.BO == "<" else "big")
+    args = struct.pack(T.BO + (t.struct_code or ""), value)
+    rec = bytearray(T.HEAD_SIZE)
+    for f in T.RECORD_FIELDS:
+        v = {"code": code, "code_copy": code, "arg_size": len(args)}.get(f.role or "", 0)
+        rec[f.offset:f.end] = v.to_bytes(f.size, "little" if T.BO == "<" else "big")
+    return bytes(head) + bytes(rec) + args
