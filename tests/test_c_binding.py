@@ -393,7 +393,8 @@ int main(void)
 def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_order(tmp_path: Path) -> None:
     """Every numeric type of the registry: its C struct member type is the registry's c_type, and the
     codec (cbf__load, cbf__store) reads its bytes as the spec's byte order says and writes them back
-    unchanged. Expected values come from Python's struct with the registry's struct code."""
+    unchanged; cbf_field_bits and cbf_field_number read it in place. Expected values come from
+    Python's struct with the registry's struct code."""
     import struct
 
     from cbfgen.emit.c import ctype
@@ -414,6 +415,7 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
         rows.append(f"static const cbf_field_info f{i} = {{ \"{t.name}\", NULL, {kinds[t.kind]}, 0, 0, 0, 0, "
                     f"{t.size}, 1, 0, 0u }};")
         want = struct.unpack(order + t.struct_code, data[:t.size])[0]
+        bits = int.from_bytes(data[:t.size], "little" if order == "<" else "big")
         # the value as a C constant: a double for a float (exact), else a long long one (INT64_MIN safe)
         lit = (repr(float(want)) if t.kind == "float" else f"{want}ULL" if t.kind == "uint"
                else f"{want}LL" if want >= 0 else f"(-{-want - 1}LL - 1)")
@@ -424,6 +426,8 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
         memset(back, 0, sizeof back);
         cbf__store(&f{i}, 1, (const unsigned char *)&x, back);
         if (memcmp(back, in, {t.size}) != 0) {{ printf("{t.name} written wrong\\n"); return 2; }}
+        if (cbf_field_bits(&f{i}, in, 0) != {bits}ULL) {{ printf("{t.name} bits wrong\\n"); return 3; }}
+        if (cbf_field_number(&f{i}, in, 0) != (double)({lit})) {{ printf("{t.name} number wrong\\n"); return 4; }}
     }}""")
     src = tmp_path / "types.c"
     src.write_text(TYPES_PROGRAM % {"rows": "\n".join(rows), "checks": "\n".join(checks)}, encoding="utf-8")

@@ -989,9 +989,16 @@ size_t cbf_layout_fields(int layout, const cbf_field_info **out);
 size_t cbf_header_fields(int header_layout, const cbf_field_info **out);
 size_t cbf_record_fields(const cbf_field_info **out);
 /** Field values in a byte image (header, record head or argument bytes): */
-uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);
-float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i);
+uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);     /**< u1, u2, u4; else 0 */
+float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i); /**< binary32; else 0 */
 uint32_t cbf_float_bits(float f);
+/** Element i of an integer or float field of any registered width, as its bits (an unsigned
+ *  integer as itself, a signed one in two's complement, a float as its IEEE-754 bits); 0 for
+ *  other fields. */
+uint64_t cbf_field_bits(const cbf_field_info *f, const uint8_t *base, unsigned i);
+/** Element i of an integer or float field of any registered width, as a double (exact up to
+ *  2^53 for integers); 0.0 for other fields. */
+double cbf_field_number(const cbf_field_info *f, const uint8_t *base, unsigned i);
 /** Field values in a struct (cbf_record_head, header or argument struct) by member offset. */
 uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj);
 void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v);
@@ -1048,7 +1055,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1052 "cbf.h"
+#line 1059 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1178,8 +1185,9 @@ enum cbf__kind {
 extern "C" {
 #endif
 
-/* binary32 goes through uint32_t with memcpy: the sizes must agree. */
+/* binary32 and binary64 go through uint32_t and uint64_t with memcpy: the sizes must agree. */
 typedef char cbf__assert_float_size[(sizeof(float) == sizeof(uint32_t)) ? 1 : -1];
+typedef char cbf__assert_double_size[(sizeof(double) == sizeof(uint64_t)) ? 1 : -1];
 typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -1204,7 +1212,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1208 "cbf.h"
+#line 1216 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1281,7 +1289,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1285 "cbf.h"
+#line 1293 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -2208,6 +2216,61 @@ float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i)
 
 uint32_t cbf_float_bits(float f) { return cbf__f4_bits(f); }
 
+uint64_t cbf_field_bits(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    unsigned char m[8];
+    uint64_t u = 0;
+    if (!f || !base || i >= f->count || f->elem > 8u)
+        return 0u;
+    switch ((enum cbf_field_kind)f->kind) {
+    case CBF_KIND_UINT:
+    case CBF_KIND_SINT:
+    case CBF_KIND_FLOAT:
+        cbf__load_elem(m, base + f->offset + (size_t)f->elem * i, f->elem);
+        if (f->elem == 1u) { uint8_t x; memcpy(&x, m, 1); u = x; }
+        else if (f->elem == 2u) { uint16_t x; memcpy(&x, m, 2); u = x; }
+        else if (f->elem == 4u) { uint32_t x; memcpy(&x, m, 4); u = x; }
+        else memcpy(&u, m, 8);
+        break;
+    case CBF_KIND_STRING:
+    case CBF_KIND_BYTES:
+        break;
+    }
+    return u;
+}
+
+double cbf_field_number(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    uint64_t u = cbf_field_bits(f, base, i);
+    unsigned bits;
+    if (!f || !base || i >= f->count || f->elem > 8u)
+        return 0.0;
+    bits = 8u * f->elem;
+    switch ((enum cbf_field_kind)f->kind) {
+    case CBF_KIND_UINT:
+        return (double)u;
+    case CBF_KIND_SINT: { /* sign-extended to 64 bits; int64_t is two's complement */
+        int64_t v;
+        if (bits < 64u && ((u >> (bits - 1u)) & 1u))
+            u |= ~(uint64_t)0 << bits;
+        memcpy(&v, &u, sizeof v);
+        return (double)v;
+    }
+    case CBF_KIND_FLOAT:
+        if (f->elem == 4u)
+            return (double)cbf__bits_f4((uint32_t)u);
+        {
+            double d;
+            memcpy(&d, &u, sizeof d);
+            return d;
+        }
+    case CBF_KIND_STRING:
+    case CBF_KIND_BYTES:
+        break;
+    }
+    return 0.0;
+}
+
 uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj)
 {
     const unsigned char *m;
@@ -2230,7 +2293,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2234 "cbf.h"
+#line 2297 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2455,7 +2518,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2459 "cbf.h"
+#line 2522 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2626,7 +2689,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2630 "cbf.h"
+#line 2693 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2787,7 +2850,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2791 "cbf.h"
+#line 2854 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3040,7 +3103,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3044 "cbf.h"
+#line 3107 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4023,7 +4086,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4027 "cbf.h"
+#line 4090 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4173,7 +4236,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4177 "cbf.h"
+#line 4240 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4992,7 +5055,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 4996 "cbf.h"
+#line 5059 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

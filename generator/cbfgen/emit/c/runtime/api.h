@@ -23,9 +23,16 @@ size_t cbf_layout_fields(int layout, const cbf_field_info **out);
 size_t cbf_header_fields(int header_layout, const cbf_field_info **out);
 size_t cbf_record_fields(const cbf_field_info **out);
 /** Field values in a byte image (header, record head or argument bytes): */
-uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);
-float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i);
+uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);     /**< u1, u2, u4; else 0 */
+float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i); /**< binary32; else 0 */
 uint32_t cbf_float_bits(float f);
+/** Element i of an integer or float field of any registered width, as its bits (an unsigned
+ *  integer as itself, a signed one in two's complement, a float as its IEEE-754 bits); 0 for
+ *  other fields. */
+uint64_t cbf_field_bits(const cbf_field_info *f, const uint8_t *base, unsigned i);
+/** Element i of an integer or float field of any registered width, as a double (exact up to
+ *  2^53 for integers); 0.0 for other fields. */
+double cbf_field_number(const cbf_field_info *f, const uint8_t *base, unsigned i);
 /** Field values in a struct (cbf_record_head, header or argument struct) by member offset. */
 uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj);
 void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v);

@@ -196,6 +196,61 @@ float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i)
 
 uint32_t cbf_float_bits(float f) { return cbf__f4_bits(f); }
 
+uint64_t cbf_field_bits(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    unsigned char m[8];
+    uint64_t u = 0;
+    if (!f || !base || i >= f->count || f->elem > 8u)
+        return 0u;
+    switch ((enum cbf_field_kind)f->kind) {
+    case CBF_KIND_UINT:
+    case CBF_KIND_SINT:
+    case CBF_KIND_FLOAT:
+        cbf__load_elem(m, base + f->offset + (size_t)f->elem * i, f->elem);
+        if (f->elem == 1u) { uint8_t x; memcpy(&x, m, 1); u = x; }
+        else if (f->elem == 2u) { uint16_t x; memcpy(&x, m, 2); u = x; }
+        else if (f->elem == 4u) { uint32_t x; memcpy(&x, m, 4); u = x; }
+        else memcpy(&u, m, 8);
+        break;
+    case CBF_KIND_STRING:
+    case CBF_KIND_BYTES:
+        break;
+    }
+    return u;
+}
+
+double cbf_field_number(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    uint64_t u = cbf_field_bits(f, base, i);
+    unsigned bits;
+    if (!f || !base || i >= f->count || f->elem > 8u)
+        return 0.0;
+    bits = 8u * f->elem;
+    switch ((enum cbf_field_kind)f->kind) {
+    case CBF_KIND_UINT:
+        return (double)u;
+    case CBF_KIND_SINT: { /* sign-extended to 64 bits; int64_t is two's complement */
+        int64_t v;
+        if (bits < 64u && ((u >> (bits - 1u)) & 1u))
+            u |= ~(uint64_t)0 << bits;
+        memcpy(&v, &u, sizeof v);
+        return (double)v;
+    }
+    case CBF_KIND_FLOAT:
+        if (f->elem == 4u)
+            return (double)cbf__bits_f4((uint32_t)u);
+        {
+            double d;
+            memcpy(&d, &u, sizeof d);
+            return d;
+        }
+    case CBF_KIND_STRING:
+    case CBF_KIND_BYTES:
+        break;
+    }
+    return 0.0;
+}
+
 uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj)
 {
     const unsigned char *m;

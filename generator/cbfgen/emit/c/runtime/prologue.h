@@ -8,8 +8,9 @@
 extern "C" {
 #endif
 
-/* binary32 goes through uint32_t with memcpy: the sizes must agree. */
+/* binary32 and binary64 go through uint32_t and uint64_t with memcpy: the sizes must agree. */
 typedef char cbf__assert_float_size[(sizeof(float) == sizeof(uint32_t)) ? 1 : -1];
+typedef char cbf__assert_double_size[(sizeof(double) == sizeof(uint64_t)) ? 1 : -1];
 typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 
 #if defined(__GNUC__) || defined(__clang__)
