@@ -42,7 +42,8 @@ Edit = Callable[[st.DrawFn, Doc], str]
 # Names reserved in a binding's language are refused (escape.keyword_clash).
 RESERVED = ("class", "new", "default", "None", "int", "switch")
 SAFE_TEXT = string.ascii_letters + string.digits + " .,;:()[]-+='&%<>!?"
-HOSTILE = ('"""', "\\x", "/*", "*/", "\\", "{{", "}}", "{%", "#")
+HOSTILE = ('"""', "'''", "\\x", "\\u", "/*", "*/", "//", "??/", "\\", "{{", "}}", "{%", "#", "</script>", "`",
+           "\n", "\t", "\u00e9", "\u2028", "\U0001f600")
 TEXTS = st.one_of(st.text(SAFE_TEXT, min_size=1, max_size=30).filter(lambda s: s.strip() != ""),
                   st.lists(st.sampled_from(HOSTILE + tuple(SAFE_TEXT)), min_size=1, max_size=12).map("".join)
                   .filter(lambda s: s.strip() != ""))

@@ -88,8 +88,8 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     try:
         spec = load(args.spec)
-    except SpecError as exc:
-        print(f"cbfgen: {exc}", file=sys.stderr)
+    except SpecError as exc:  # every problem of the spec, one `file:line: message` a line
+        print("\n".join(f"cbfgen: {line}" for line in str(exc).splitlines()), file=sys.stderr)
         return 2
     if args.check_spec:
         print(f"{args.spec}: ok ({len(spec.commands)} commands, {len(spec.checks)} checks)")
