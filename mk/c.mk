@@ -15,7 +15,9 @@ C_HDR := $(C_GEN)/cbf.h
 C_CC ?= gcc
 C_CLANG ?= clang
 C_CXX ?= g++
-C_WARN := -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wdouble-promotion -Werror
+# -Wswitch-enum: the engine switches over the registry's kinds (check kinds, field kinds) with no default,
+# so a kind the registry gains and the C runtime lacks fails the build (issue #24).
+C_WARN := -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wdouble-promotion -Wswitch-enum -Werror
 C_STRICT := -std=c99 $(C_WARN)
 # As C++ (the header's extern "C" and the implementation compile as C++ too).
 # -Wdouble-promotion stays; only C99-only idioms are accepted.
@@ -74,7 +76,28 @@ $(C_OUT)/check.stamp: $(C_SOURCES) mk/c.mk | $(C_OUT)/.dir
 	done
 	@touch $@
 
-c-check: c-deps $(C_OUT)/check.stamp  ## strict C builds: gcc, clang, g++ as C++, clang -Weverything
+# The hand-written runtime (issue #24), compiled from its own files: cbf.h with each verbatim section
+# (between its BEGIN/END markers) replaced by an #include of runtime/<file> and its #line directives
+# dropped, so that every diagnostic names the file a developer edits; the same strict compilers.
+C_RUNTIME := generator/cbfgen/emit/c/runtime
+C_RUNTIME_FILES := $(wildcard $(C_RUNTIME)/*.c $(C_RUNTIME)/*.h)
+$(C_OUT)/runtime.stamp: $(C_HDR) $(C_RUNTIME_FILES) mk/c.mk | $(C_OUT)/.dir
+	@awk '/^\/\* ==== BEGIN runtime\// { f = $$4; sub(/^runtime\//, "", f); sub(/:$$/, "", f); print "#include \"" f "\""; skip = 1; n++; next } \
+	  /^\/\* ==== END runtime\// { skip = 0; next } \
+	  /^#line / { next } \
+	  !skip { print } \
+	  END { if (n == 0) { print "runtime-lint: no runtime section in cbf.h" > "/dev/stderr"; exit 1 } }' \
+	  $(C_HDR) > $(C_OUT)/obj/runtime_lint.h
+	@printf '#define CBF_IMPLEMENTATION\n#include "runtime_lint.h"\n' > $(C_OUT)/obj/runtime_lint.c
+	@echo "c-check: runtime/ ($(notdir $(C_RUNTIME_FILES))): gcc, clang, g++ (C++), clang -Weverything"
+	@set -e; src=$(C_OUT)/obj/runtime_lint.c; inc="-I$(C_OUT)/obj -I$(C_RUNTIME)"; \
+	  $(C_CC) $(C_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.gcc.o; \
+	  $(C_CLANG) $(C_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.clang.o; \
+	  $(C_CXX) $(C_CXX_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.cxx.o; \
+	  $(C_CLANG) $(C_EVERYTHING) $$inc -c $$src -o $(C_OUT)/obj/runtime.every.o
+	@touch $@
+
+c-check: c-deps $(C_OUT)/check.stamp $(C_OUT)/runtime.stamp  ## strict C builds (cbf.h's runtime/ from its own files too): gcc, clang, g++ as C++, clang -Weverything
 
 # A smoke run of the sanitizer testee on the golden files: every request is
 # answered with one JSON line (the conformance runner does the judging).

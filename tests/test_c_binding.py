@@ -23,7 +23,9 @@ from cbfgen.model import Spec
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec" / "cbf.yaml"
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion", "-Wdouble-promotion",
-          "-Werror"]
+          "-Wswitch-enum", "-Werror"]  # mk/c.mk's C_WARN
+EVERYTHING = ["-std=c99", "-Weverything", "-Werror", "-Wno-padded", "-Wno-unknown-warning-option",
+              "-Wno-declaration-after-statement"]  # mk/c.mk's C_EVERYTHING
 
 DWELL = {
     "name": "DWELL", "code": 0x44, "clause": "5.1", "doc": "Dwell.",
@@ -220,7 +222,7 @@ def test_templates_and_emitter_name_no_format_detail() -> None:
     doc = spec_doc()
     folder = ROOT / "generator" / "cbfgen" / "emit" / "c"
     text = "\n".join(p.read_text(encoding="utf-8") for p in sorted(folder.rglob("*"))
-                     if p.is_file() and p.suffix in (".py", ".j2"))
+                     if p.is_file() and p.suffix in (".py", ".j2", ".c", ".h"))
     for cmd in doc["commands"]:
         assert not re.search(rf"\b{cmd['name']}\b", text), cmd["name"]
         assert not re.search(rf"\b0x{cmd['code']:02X}\b", text, re.IGNORECASE), cmd["name"]
@@ -235,3 +237,231 @@ def test_generated_header_compiles_strictly(tmp_path: Path) -> None:
     src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\nint main(void) { return 0; }\n', encoding="utf-8")
     subprocess.run([cc, *STRICT, "-I", str(ROOT / "generated" / "c"), "-o", str(tmp_path / "one"), str(src), "-lm"],
                    check=True, capture_output=True)
+
+
+# Spec text that ends a C comment, opens one inside another (-Werror=comment), is a trigraph that
+# splices lines (??/), ends a line comment in a backslash, closes a string literal, or holds a newline.
+HOSTILE = 'x /* a */ b "q" \\d ??/ ??= @param <b &amp; \n2nd line */ \\'
+
+
+def _hostile_spec(doc: dict[str, object]) -> None:
+    """Every free text of the spec that the C binding writes into a comment or a string literal."""
+    d: dict[str, list[dict[str, object]]] = doc  # type: ignore[assignment]
+    meta: dict[str, object] = doc["meta"]  # type: ignore[assignment]
+    meta["title"] = HOSTILE
+    for v in d["versions"]:
+        v["doc"] = HOSTILE
+    for p in d["profiles"]:
+        p["doc"] = HOSTILE
+    for unit in doc["units"].values():  # type: ignore[attr-defined]
+        unit["doc"] = HOSTILE
+    for h in doc["headers"].values():  # type: ignore[attr-defined]
+        h["doc"] = HOSTILE
+        for f in h["fields"]:
+            f["doc"] = HOSTILE
+    rec: dict[str, list[dict[str, object]]] = doc["record"]  # type: ignore[assignment]
+    rec["doc"] = HOSTILE  # type: ignore[assignment]
+    for f in rec["fields"]:
+        f["doc"] = HOSTILE
+    for c in d["commands"]:
+        c["doc"] = HOSTILE
+        for lay in c["layouts"]:  # type: ignore[attr-defined]
+            lay["doc"] = HOSTILE
+            for a in lay["args"]:
+                a["doc"] = HOSTILE
+    for ch in d["checks"]:
+        ch["text"] = HOSTILE
+        ch["fails"] = HOSTILE
+    machine: dict[str, object] = doc["machine"]  # type: ignore[assignment]
+    machine["doc"] = HOSTILE
+    for lim in machine["limits"].values():  # type: ignore[attr-defined]
+        lim["doc"] = HOSTILE
+
+
+def test_hostile_spec_text_compiles_strictly(tmp_path: Path) -> None:
+    """Spec text lands in cbf.h (comments, string literals) through escape.py's C functions only:
+    a doc holding /*, */, a quote, backslashes, trigraphs and newlines gives a cbf.h that every
+    strict compiler of mk/c.mk accepts, with the text's string values intact."""
+    cc, clang = _need("gcc"), _need("clang")
+    doc = spec_doc()
+    _hostile_spec(doc)
+    spec = tmp_path / "cbf.yaml"
+    spec.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    out = tmp_path / "gen"
+    _generate(spec, out)
+    header = (out / "c" / "cbf.h").read_text(encoding="utf-8")
+    assert "/* a */" not in header and "??/" not in header  # the text is there, escaped
+    src = tmp_path / "one.c"
+    src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\n#include <string.h>\n'
+                   "int main(void) { return strcmp(cbf_machine_limit_names[0], \"\") == 0; }\n", encoding="utf-8")
+    for argv in ([cc, *STRICT], [clang, *EVERYTHING]):
+        done = subprocess.run([*argv, "-I", str(out / "c"), "-o", str(tmp_path / "one"), str(src), "-lm"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr[-3000:]
+    assert subprocess.run([str(tmp_path / "one")]).returncode == 0
+    for name in ("cbf_testee.c", "cbf_tool.c"):  # the programs built on the header, too
+        done = subprocess.run([cc, *STRICT, "-c", str(out / "c" / name), "-o", str(tmp_path / (name + ".o"))],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr[-3000:]
+
+
+# -- the registry's vocabulary in the C engine (issue #24 pt 2) ---------------------------------
+
+RUNTIME = ROOT / "generator" / "cbfgen" / "emit" / "c" / "runtime"
+
+
+def _switch_body(text: str, head: str) -> str:
+    """The body of the switch that starts at ``head`` (braces matched)."""
+    start = text.index(head) + len(head)
+    depth, i = 1, start
+    while depth:
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    return text[start:i - 1]
+
+
+def test_c_engine_places_every_registered_kind_and_field_kind() -> None:
+    """Each check kind of the registry has its case in the engine's kind switch, and each field kind
+    its case in the codec's load and store; none of these switches has a default (the kinds come
+    from cbfgen.registry, never from a list here)."""
+    from cbfgen.emit.c import macro
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
+
+    validator = (RUNTIME / "validator.c").read_text(encoding="utf-8")
+    body = _switch_body(validator, "switch ((enum cbf__kind)ch->kind) {")
+    assert "default:" not in body
+    missing = [k for k in CHECK_KINDS if f"case CBF__KIND_{macro(k)}:" not in body]
+    assert not missing, f"check kinds the C engine lacks: {missing}"
+    codec = (RUNTIME / "bytes.c").read_text(encoding="utf-8")
+    for fn in ("static void cbf__load(", "static void cbf__store("):
+        body = _switch_body(codec[codec.index(fn):], "switch ((enum cbf_field_kind)f->kind) {")
+        assert "default:" not in body, fn
+        missing = [k for k in FIELD_KINDS if f"case CBF_KIND_{macro(k)}:" not in body]
+        assert not missing, f"{fn} lacks field kinds {missing}"
+
+
+@pytest.mark.parametrize("what", ["check kind", "field kind"])
+def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """A kind added to the registry and to no C switch: the header of today's spec no longer
+    compiles under mk/c.mk's flags (-Wswitch-enum -Werror), and the error names the kind."""
+    cc = _need("gcc")
+    import cbfgen.emit.c as emitter
+    from cbfgen import registry
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS, CheckKind, NoParams
+
+    if what == "check kind":
+        extra = dict(CHECK_KINDS, zz_new_rule=CheckKind("zz_new_rule", NoParams, "record", "a new rule"))
+        monkeypatch.setattr(registry, "CHECK_KINDS", extra)
+        name = "CBF__KIND_ZZ_NEW_RULE"
+    else:
+        monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
+        name = "CBF_KIND_ZZ_NEW_TYPE"
+    out = emitter.emit(_model())
+    (tmp_path / "cbf.h").write_bytes(out["c/cbf.h"])
+    src = tmp_path / "one.c"
+    src.write_text('#define CBF_IMPLEMENTATION\n#include "cbf.h"\nint main(void) { return 0; }\n', encoding="utf-8")
+    argv = [cc, *STRICT, "-I", str(tmp_path), "-c", str(src), "-o", str(tmp_path / "one.o")]
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode != 0 and name in done.stderr, done.stderr[-2000:]
+    # and without the extra kind the same build passes (the failure is the kind's, not the flags')
+    monkeypatch.undo()
+    (tmp_path / "cbf.h").write_bytes(emitter.emit(_model())["c/cbf.h"])
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr[-2000:]
+
+
+TYPES_PROGRAM = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#include <string.h>
+
+/* One field of each registered numeric type, at offset 0 of its own buffer. */
+%(rows)s
+
+int main(void)
+{
+    static const uint8_t in[8] = { 0x81, 0x92, 0xA3, 0xB4, 0xC5, 0xD6, 0xE7, 0x78 };
+    uint8_t back[8];
+%(checks)s
+    return 0;
+}
+"""
+
+
+def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_order(tmp_path: Path) -> None:
+    """Every numeric type of the registry: its C struct member type is the registry's c_type, and the
+    codec (cbf__load, cbf__store) reads its bytes as the spec's byte order says and writes them back
+    unchanged; cbf_field_bits and cbf_field_number read it in place. Expected values come from
+    Python's struct with the registry's struct code."""
+    import struct
+
+    from cbfgen.emit.c import ctype
+    from cbfgen.model import Field
+    from cbfgen.registry import TYPES
+
+    cc = _need("gcc")
+    order = "<" if _model().meta["byte_order"] == "little" else ">"
+    data = bytes([0x81, 0x92, 0xA3, 0xB4, 0xC5, 0xD6, 0xE7, 0x78])
+    kinds = {"uint": "CBF_KIND_UINT", "sint": "CBF_KIND_SINT", "float": "CBF_KIND_FLOAT"}
+    rows, checks = [], []
+    numeric = [t for t in TYPES.values() if t.size is not None]
+    assert {t.kind for t in numeric} == set(kinds), "a numeric kind this test does not know"
+    for i, t in enumerate(numeric):
+        assert t.size is not None and t.c_type is not None and t.struct_code is not None
+        f = Field(name=t.name, type=t.name, kind=t.kind, offset=0, elem_size=t.size, count=1, doc="x", line=0)
+        assert ctype(f) == (t.c_type, "")
+        rows.append(f"static const cbf_field_info f{i} = {{ \"{t.name}\", NULL, {kinds[t.kind]}, 0, 0, 0, 0, "
+                    f"{t.size}, 1, 0, 0u }};")
+        want = struct.unpack(order + t.struct_code, data[:t.size])[0]
+        bits = int.from_bytes(data[:t.size], "little" if order == "<" else "big")
+        # the value as a C constant: a double for a float (exact), else a long long one (INT64_MIN safe)
+        lit = (repr(float(want)) if t.kind == "float" else f"{want}ULL" if t.kind == "uint"
+               else f"{want}LL" if want >= 0 else f"(-{-want - 1}LL - 1)")
+        checks.append(f"""    {{
+        {t.c_type} x;
+        cbf__load(&f{i}, 1, in, (unsigned char *)&x);
+        if (x != ({t.c_type})({lit})) {{ printf("{t.name} read wrong\\n"); return 1; }}
+        memset(back, 0, sizeof back);
+        cbf__store(&f{i}, 1, (const unsigned char *)&x, back);
+        if (memcmp(back, in, {t.size}) != 0) {{ printf("{t.name} written wrong\\n"); return 2; }}
+        if (cbf_field_bits(&f{i}, in, 0) != {bits}ULL) {{ printf("{t.name} bits wrong\\n"); return 3; }}
+        if (cbf_field_number(&f{i}, in, 0) != (double)({lit})) {{ printf("{t.name} number wrong\\n"); return 4; }}
+    }}""")
+    src = tmp_path / "types.c"
+    src.write_text(TYPES_PROGRAM % {"rows": "\n".join(rows), "checks": "\n".join(checks)}, encoding="utf-8")
+    exe = tmp_path / "types"
+    done = subprocess.run([cc, *STRICT, "-Wno-float-equal", "-I", str(ROOT / "generated" / "c"), "-o", str(exe),
+                           str(src), "-lm"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr[-3000:]
+    run = subprocess.run([str(exe)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout
+
+
+def test_runtime_files_are_in_the_header_verbatim() -> None:
+    """Every hand-written runtime file (generator/cbfgen/emit/c/runtime/) sits in generated/c/cbf.h
+    exactly once, byte for byte, between the markers that name it and after a #line directive that
+    points a compiler at the file; and the templates hold no runtime file's code."""
+    header = (ROOT / "generated" / "c" / "cbf.h").read_text(encoding="utf-8")
+    files = sorted(p for p in RUNTIME.iterdir() if p.suffix in (".c", ".h"))
+    assert files
+    for p in files:
+        text = p.read_text(encoding="utf-8").rstrip("\n")
+        begin = f"/* ==== BEGIN runtime/{p.name}: verbatim from generator/cbfgen/emit/c/runtime/{p.name}"
+        assert header.count(begin) == 1, p.name
+        start = header.index(begin)
+        line = header.index("\n", start) + 1
+        assert header[line:].startswith(f'#line 1 "generator/cbfgen/emit/c/runtime/{p.name}"\n'), p.name
+        body = header[header.index("\n", line) + 1:header.index(f"/* ==== END runtime/{p.name} ==== */")]
+        assert body == text + "\n", f"{p.name} is not in cbf.h verbatim"
+    # no template defines what a runtime file defines (one home for each function)
+    templates = "\n".join(t.read_text(encoding="utf-8") for t in (RUNTIME.parent / "templates").rglob("*.j2"))
+    for p in files:
+        for head in re.findall(r"^(?:static |CBF__INLINE |CBF__HOT |CBF__COLD )*[a-z_][\w ]*\*?\b(cbf_\w+)\(",
+                               p.read_text(encoding="utf-8"), re.M):
+            assert not re.search(rf"^(?!#)[^\n;]*\b{head}\([^;{{}}]*\)\s*\n\{{", templates, re.M), head
+    # after each section, #line gives cbf.h's own line numbers back
+    for i, line in enumerate(header.split("\n"), start=1):
+        if line.startswith('#line ') and line.endswith('"cbf.h"'):
+            assert line == f'#line {i + 1} "cbf.h"'

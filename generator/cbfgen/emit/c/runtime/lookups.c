@@ -1,11 +1,4 @@
 /* ---- look-ups ------------------------------------------------------------ */
-/* Command table index by code, -1 for codes that are not commands. */
-static const short cbf__index_by_code[256] = {
-{% for i in index_by_code|batch(16) %}
-    {{ i|join(", ") }},
-{% endfor %}
-};
-
 static inline int cbf__cmd_index(int code)
 {
     return (code < 0 || code > 0xFF) ? -1 : cbf__index_by_code[code];

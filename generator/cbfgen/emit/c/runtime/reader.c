@@ -105,7 +105,7 @@ long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
     return (long)n;
 }
 
-int cbf_next_record(cbf_reader *r, cbf_record *rec)
+CBF__HOT int cbf_next_record(cbf_reader *r, cbf_record *rec)
 {
     const uint8_t *p;
     size_t nb;

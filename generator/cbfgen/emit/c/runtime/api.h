@@ -1,0 +1,91 @@
+/* ================================================================ prototypes */
+
+/** Command names by code (NULL for codes that are not commands). */
+extern const char *const cbf_command_names[256];
+
+const char *cbf_strerror(int err);
+/** Name of a command code, or NULL when the code is unknown. */
+const char *cbf_command_name(int code);
+/** 1 when the command has a layout in the version, else 0. */
+int cbf_command_available(int code, int version);
+/** enum cbf_version for a version field, or CBF_V__UNKNOWN. */
+int cbf_version_find(unsigned major, unsigned minor);
+const char *cbf_version_name(int version);
+int cbf_version_writable(int version);
+/** enum cbf_profile for a name, or CBF_ERR_ARGUMENT. */
+int cbf_profile_find(const char *name);
+const char *cbf_layout_command_name(int layout);
+const char *cbf_layout_variant(int layout);
+int cbf_layout_code(int layout);
+long cbf_layout_size(int layout);
+/** Field tables: number of fields, *out set to the first. */
+size_t cbf_layout_fields(int layout, const cbf_field_info **out);
+size_t cbf_header_fields(int header_layout, const cbf_field_info **out);
+size_t cbf_record_fields(const cbf_field_info **out);
+/** Field values in a byte image (header, record head or argument bytes): */
+uint32_t cbf_field_uint(const cbf_field_info *f, const uint8_t *base);     /**< u1, u2, u4; else 0 */
+float cbf_field_float(const cbf_field_info *f, const uint8_t *base, unsigned i); /**< binary32; else 0 */
+uint32_t cbf_float_bits(float f);
+/** Element i of an integer or float field of any registered width, as its bits (an unsigned
+ *  integer as itself, a signed one in two's complement, a float as its IEEE-754 bits); 0 for
+ *  other fields. */
+uint64_t cbf_field_bits(const cbf_field_info *f, const uint8_t *base, unsigned i);
+/** Element i of an integer or float field of any registered width, as a double (exact up to
+ *  2^53 for integers); 0.0 for other fields. */
+double cbf_field_number(const cbf_field_info *f, const uint8_t *base, unsigned i);
+/** Field values in a struct (cbf_record_head, header or argument struct) by member offset. */
+uint32_t cbf_member_uint(const cbf_field_info *f, const void *obj);
+void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v);
+/** Header layout of a version (the fallback's for CBF_V__UNKNOWN). */
+int cbf_version_header_layout(int version);
+/** Decode candidates of a code in a version, in order (PROTOCOL.md): the
+ *  version's own layouts, else every layout newest first. Returns the number written. */
+int cbf_args_candidates(int code, int version, int *out, int cap);
+/** Layout that decodes nb argument bytes of a code in a version (PROTOCOL.md), or CBF_LAYOUT__NONE. */
+int cbf_args_layout(int code, int version, size_t nb);
+
+/** Decode the header: returns CBF_HEADER_SIZE or CBF_ERR_TRUNCATED_HEADER. */
+long cbf_header_decode(const uint8_t *buf, size_t len, cbf_header *out);
+/** A zeroed header of a version with its magic numbers set. */
+int cbf_header_init(cbf_header *h, int version);
+/** Write the header fields (as stored in h) to out: returns CBF_HEADER_SIZE or an error. */
+long cbf_header_encode(const cbf_header *h, uint8_t *out, size_t cap);
+
+/** Start iterating: decodes the header. CBF_OK or CBF_ERR_TRUNCATED_HEADER. */
+int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len);
+/** Next record: 1 and *rec filled; 0 at the end (r->trailing bytes remain at r->pos);
+ *  CBF_ERR_TRUNCATED_RECORD when the last record is cut before the header count is reached. */
+int cbf_next_record(cbf_reader *r, cbf_record *rec);
+
+/** Decode argument bytes with a layout: returns the layout size or an error. */
+long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out);
+/** Encode a layout's struct into bytes: returns the layout size or an error. */
+long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap);
+/** Checksum of argument bytes, as the spec computes the record's argument checksum. */
+uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
+
+/** Begin a file in buf with the header h (its fields as given). */
+int cbf_encode_begin(cbf_writer *w, uint8_t *buf, size_t cap, const cbf_header *h);
+/** Append a record; fills sequence (the index), the code copy, nb, reserved 0 and the argument checksum.
+ *  CBF_ERR_NOT_WRITABLE when the header's version lacks the command (or the code is unknown), or when
+ *  nargs is not the size of one of the command's layouts in that version. */
+int cbf_encode_record(cbf_writer *w, int code, const uint8_t *args, size_t nargs);
+/** Append a record with every head field as given in head (nb must equal nargs). */
+int cbf_encode_record_stored(cbf_writer *w, const cbf_record_head *head, const uint8_t *args, size_t nargs);
+/** Append raw bytes (trailing bytes of a faulty file). */
+int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
+/** Finish: with fill != 0 set the count, the magic numbers and the checksums
+ *  in the spec's fill order (the file checksum with the profile's coverage).
+ *  With fill != 0 the version must be writable and every record (stored ones
+ *  too) a command of that version with the size of one of its layouts that the
+ *  profile accepts, else CBF_ERR_NOT_WRITABLE. A command with a layout of the
+ *  profile's own (N8) is cut to that layout when the fields cut off are
+ *  reserved and zero, else CBF_ERR_NOT_WRITABLE. With fill == 0 the bytes are
+ *  kept as given (a faulty file reproduced). Returns the file size or the
+ *  writer's first error (errors are sticky: a refused record fails the end). */
+long cbf_encode_end(cbf_writer *w, int profile, int fill);
+
+/** Run every check of the spec; each finding goes to fn. Returns the number
+ *  of error-severity findings, or CBF_ERR_ARGUMENT. */
+long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
+

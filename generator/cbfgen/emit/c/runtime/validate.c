@@ -1,0 +1,229 @@
+/* ---- cbf_validate: the header, the record pass, the end of the file -------- */
+/* Whether the profile's file checksum is the plain sum of every byte from a
+ * start inside the header to the end of the file: the record pass then adds it
+ * up as it goes (each record's head and argument sums), with no second pass. */
+static int cbf__file_sum_folds(int profile, size_t *start)
+{
+    int cov = cbf__profiles[profile].file[0];
+    const cbf__segment *seg;
+    if (cov < 0 || cbf__profiles[profile].file_alg != CBF__ALG_SUM || cbf__coverages[cov].n != 1u)
+        return 0;
+    seg = &cbf__segments[cbf__coverages[cov].first];
+    if (seg->region != CBF__REGION_FILE || seg->start > CBF_HEADER_SIZE)
+        return 0;
+    *start = seg->start;
+    return 1;
+}
+
+/* Per command: the argument size last seen and what it gave (records of one
+ * command almost always share one size). */
+typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
+
+CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn,
+                          void *user)
+{
+    cbf__vctx v;
+    cbf_header h;
+    size_t pos, i, fold_start = 0;
+    unsigned long nrec = 0;
+    uint32_t fold = 0u;
+    int profile = opt ? opt->profile : CBF__DEFAULT_PROFILE, folds;
+    if ((!buf && len) || profile < 0 || profile >= CBF_PROFILE__COUNT)
+        return CBF_ERR_ARGUMENT;
+    memset(&v, 0, sizeof v);
+    v.buf = buf;
+    v.len = len;
+    v.opt = opt;
+    v.fn = fn;
+    v.user = user;
+    /* below this tan^2 the orientation angle is under its tolerance (with a margin of 1/1000) */
+    v.ori_tan2 = cbf__tol_orientation > 0.0 && cbf__tol_orientation < 45.0
+                 ? pow(tan(cbf__tol_orientation * 0.999 * (CBF__PI / 180.0)), 2.0) : 0.0;
+    cbf__machine_start(&v);
+    if (len < CBF_HEADER_SIZE || !buf) {
+        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
+                  (unsigned long)len, CBF_HEADER_SIZE);
+        return v.errors;
+    }
+    (void)cbf_header_decode(buf, len, &h);
+    v.version = h.version;
+    v.eff = cbf__eff_version(h.version);
+    v.hlayout = h.layout;
+    if (v.version < 0)
+        cbf__each(&v, CBF__KIND_VERSION, -1, CBF__VERSION_MAJOR_OFFSET,
+                  "version %u.%u is not a version of this spec; read as %s", h.major, h.minor,
+                  cbf__versions[v.eff].id);
+    /* header fields: magic numbers, strings */
+    for (i = 0; i < cbf__headers[v.hlayout].nfields; i++) {
+        const cbf_field_info *f = &cbf__headers[v.hlayout].fields[i];
+        if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != f->magic)
+                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lx, not 0x%08lx", f->name,
+                          (unsigned long)got, (unsigned long)f->magic);
+        }
+        if (f->kind == CBF__K_STRING)
+            cbf__check_string(&v, f, buf, 0, -1);
+    }
+    {
+        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
+        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
+        if (k && f) {
+            uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != want)
+                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
+                          (unsigned long)got, (unsigned long)want);
+        }
+    }
+    cbf__check_part_number(&v);
+    cbf__check_descriptor_word(&v);
+
+    /* records, framed by nb from the header to the end of the file (D1) */
+    pos = CBF_HEADER_SIZE;
+    const cbf__ckfield *kck = cbf__ckfield_of(CBF__CK_ARGS);
+    /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
+    const int args_sum = kck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
+                         && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
+    folds = args_sum && cbf__file_sum_folds(profile, &fold_start);
+    if (folds)
+        fold = cbf__sum(buf + fold_start, CBF_HEADER_SIZE - fold_start);
+    cbf__seen seen[CBF__NCOMMANDS];
+    for (i = 0; i < (size_t)CBF__NCOMMANDS; i++)
+        seen[i].nb = -1;
+    while (len - pos >= CBF_RECORD_HEAD_SIZE) {
+        const uint8_t *p = buf + pos, *args = p + CBF_RECORD_HEAD_SIZE;
+        size_t nb = CBF__HEAD_ARG_SIZE(p);
+        long rec = (long)nrec;
+        uint32_t code, copy, seq, res, asum = 0u;
+        int cmd, layout = CBF_LAYOUT__NONE;
+        if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
+            break;
+        code = CBF__HEAD_CODE(p);
+        copy = CBF__HEAD_CODE_COPY(p);
+        seq = CBF__HEAD_SEQUENCE(p);
+        res = CBF__HEAD_RESERVED(p);
+        cmd = cbf__cmd_index((int)code);
+        if (cmd >= 0 && seen[cmd].nb != (long)nb) { /* a new size for the command: look its layout up */
+            int k;
+            seen[cmd].nb = (long)nb;
+            seen[cmd].accepted = 0;
+            for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+                int lay = cbf__commands[cmd].candidates[v.eff][k];
+                if (lay < 0)
+                    break;
+                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                    seen[cmd].accepted = 1;
+            }
+            seen[cmd].layout = cbf_args_layout((int)code, v.eff, nb);
+            /* availability: the command has no layout for the file's version (fallback included);
+             * the finding names the one check that covers this command in this version */
+            seen[cmd].avail = (cbf__commands[cmd].versions & CBF__VBIT(v.eff)) ? -1 : cbf__avail_check[cmd][v.eff];
+        }
+        if (cmd >= 0)
+            layout = seen[cmd].layout;
+        if (args_sum)
+            asum = cbf__args_sum(layout, args, nb);
+        if (folds)
+            fold += CBF__HEAD_SUM(p) + asum;
+        if (seq != (uint32_t)(nrec & CBF__SEQUENCE_MASK))
+            cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
+                      (unsigned long)seq, (unsigned long)(nrec & CBF__SEQUENCE_MASK));
+        if (code != copy)
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code 0x%02lx, backup copy 0x%02lx",
+                      (unsigned long)code, (unsigned long)copy);
+#if CBF__HEAD_CK_ELEM
+        {
+            uint32_t want = args_sum ? (asum & CBF__HEAD_CK_MASK)
+                            : kck ? cbf__cover(kck->coverage, kck->alg, CBF__HEAD_CK_ELEM, NULL, 0, 0, args, nb)
+                                  : 0u;
+            uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
+            if (got != want)
+                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + CBF__HEAD_CK_OFFSET,
+                          "stored argument checksum %lu, computed %lu", (unsigned long)got, (unsigned long)want);
+        }
+#endif
+        if (res != 0u)
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lx",
+                      (unsigned long)res);
+        if (cmd < 0) {
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lx",
+                      (unsigned long)code);
+        } else {
+            if (seen[cmd].avail >= 0)
+                cbf__say(&v, seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
+                         cbf__commands[cmd].name, cbf__versions[v.eff].id);
+            if (!seen[cmd].accepted)
+                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + CBF__HEAD_OFF_ARG_SIZE,
+                          "%s has %lu argument bytes, no layout of %s has that size",
+                          cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
+            if (layout != CBF_LAYOUT__NONE)
+                cbf__decoded_checks(&v, layout, args, rec, pos);
+        }
+        pos += CBF_RECORD_HEAD_SIZE + nb;
+        nrec++;
+    }
+    if (v.shape_open)
+        cbf__each(&v, CBF__KIND_SHAPE, v.shape_rec, v.shape_off, "shape still open at the end of the file");
+    {
+        int truncated = 0;
+        if (pos < len) {
+            if (nrec < h.count) {
+                truncated = 1;
+                cbf__each(&v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
+                          "record %lu is cut: %lu byte(s) left (%lu of %lu records complete)", nrec,
+                          (unsigned long)(len - pos), nrec, h.count);
+            } else {
+                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) follow the last record",
+                          (unsigned long)(len - pos));
+            }
+        }
+        if (!truncated && nrec != h.count) {
+            const cbf_field_info *fc = cbf__header_field_by_role(v.hlayout, CBF_ROLE_COMMAND_COUNT);
+            cbf__each(&v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u,
+                      "the header counts %lu commands, the file holds %lu", h.count, nrec);
+        }
+    }
+    {
+        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_FILE);
+        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_FILE);
+        if (k && f) {
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem), first = 0u;
+            int c, match = 0;
+            for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
+                uint32_t want;
+                if (c == 0 && folds) { /* the record pass's sum, and the bytes after the last record */
+                    want = fold + cbf__sum(buf + pos, len - pos);
+                    if (f->elem < 4u)
+                        want &= (1u << (8u * f->elem)) - 1u;
+                } else {
+                    want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem,
+                                      buf, len, pos, NULL, 0);
+                }
+                if (c == 0)
+                    first = want;
+                if (want == got)
+                    match = 1;
+            }
+            if (!match) {
+                const char *hint = NULL;
+                for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
+                    if (cbf__cover(cbf__profiles[profile].hint[c], cbf__profiles[profile].hint_alg[c], f->elem, buf,
+                                   len, pos, NULL, 0) == got) {
+                        hint = cbf__coverages[cbf__profiles[profile].hint[c]].name;
+                        break;
+                    }
+                }
+                if (hint)
+                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset,
+                              "%s is %lu, expected %lu; it matches coverage %s (another profile)", f->name,
+                              (unsigned long)got, (unsigned long)first, hint);
+                else
+                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s is %lu, expected %lu", f->name,
+                              (unsigned long)got, (unsigned long)first);
+            }
+        }
+    }
+    return v.errors;
+}
+

@@ -1,0 +1,722 @@
+"""What the C templates read: one small typed view a section of cbf.h (frozen dataclasses), built
+from the model by one function each. `CContext.namespace()` is what Jinja sees: the sections'
+fields by name (the templates, cbf_testee's and cbf_tool's included, use those names).
+
+Nothing here names a command, field, offset or check: every identifier and number comes from the
+model, the field types and check kinds from the registry.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any
+
+from ... import __license__ as TOOLKIT_LICENSE
+from ... import __version__ as TOOLKIT_VERSION
+from ... import registry
+from ...model import ALGORITHM_KINDS, Command, Field, Layout, Spec
+from .cnames import cfloat, cname, comment, ctype, macro, member_doc
+from .machine import MachineView, machine_view
+
+# The model's vocabulary the engine understands (loader.py, spec comments); the field types and
+# check kinds come from the registry (cbfgen/registry.py), never from a list here.
+MOTION_KINDS = ("point", "line", "circle", "helix")
+MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length")
+ORIENT_KINDS = ("set", "path")
+ORIENT_KEYS = ("start", "end")
+SHAPE_KINDS = ("start", "end")
+SHAPE_KEYS = ("name", "count")
+CUTTER_KEYS = ("name", "length", "radius")
+REGIONS = ("file", "header", "records", "args")
+ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
+CHECKSUM_TAGS = ("args", "header", "file")
+# Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
+# targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
+OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
+
+
+# -- rows -------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class FieldRow:
+    """A header field, record head field or argument: its struct member and its cbf_field_info row."""
+
+    name: str
+    member: str
+    ctype: str
+    suffix: str
+    kind: str  # UINT, SINT, FLOAT, STRING, BYTES (CBF_KIND_*)
+    role: str  # ROLE_*
+    offset: int
+    elem: int
+    count: int
+    size: int
+    struct: str | None
+    magic: int | None
+    checksum: str  # CK_*
+    flags: str
+    unit: str | None
+    macro: str
+    doc: str
+
+
+def field_row(f: Field, struct: str | None, units: dict[str, str]) -> FieldRow:
+    type_, suffix = ctype(f)
+    flags = " | ".join(x for x in ("CBF__F_RESERVED" if f.reserved else "", "CBF__F_TEXT" if f.text else "",
+                                   "CBF__F_MAGIC" if f.magic is not None else "") if x) or "0"
+    return FieldRow(
+        name=f.name, member=cname(f.name), ctype=type_, suffix=suffix, kind=macro(f.kind),
+        role=("ROLE_" + macro(f.role)) if f.role else "ROLE_NONE", offset=f.offset, elem=f.elem_size,
+        count=f.count, size=f.size, struct=struct, magic=f.magic,
+        checksum=("CK_" + macro(f.checksum)) if f.checksum else "CK_NONE", flags=flags, unit=f.unit,
+        macro=macro(f.name), doc=member_doc(f, units))
+
+
+@dataclass(frozen=True)
+class HeaderRow:
+    id: str
+    macro: str
+    struct: str
+    size: int
+    clause: str
+    doc: str
+    fields: tuple[FieldRow, ...]
+
+
+@dataclass(frozen=True)
+class RecordView:
+    head_size: int
+    fields: tuple[FieldRow, ...]
+    clause: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class VersionRow:
+    id: str
+    macro: str
+    major: int
+    minor: int  # -1: any
+    header: int
+    writable: int
+    doc: str
+    clause: str
+
+
+@dataclass(frozen=True)
+class DecodedArg:
+    """A float or string argument the layout function reads once a record (x<arg>, ok<arg>)."""
+
+    name: str
+    kind: str
+    offset: int
+    count: int
+    row: int  # in cbf__args
+    arg: int  # in the layout
+
+
+@dataclass(frozen=True)
+class PlannedCheck:
+    """A (check, target) pair a layout's records run, with the kernel and the float rows it reads."""
+
+    check: int
+    target: int
+    kernel: str
+    text: str
+    args: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Motion:
+    start: int
+    end: int
+    center: int
+    normal: int
+    degrees: tuple[int, int]
+    length: tuple[int, int]
+    start_var: str
+    end_var: str
+
+
+@dataclass(frozen=True)
+class Orientation:
+    start: int
+    end: int
+    start_var: str
+    end_var: str
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What a record of a layout checks, as constants (templates/cbf/validator_layouts.c.j2)."""
+
+    values: tuple[DecodedArg, ...]
+    motion: Motion
+    orient: Orientation
+    targets: tuple[PlannedCheck, ...]
+
+
+@dataclass(frozen=True)
+class LayoutRow:
+    index: int
+    command: int
+    cmd_name: str
+    variant: str | None
+    macro: str
+    member: str
+    struct: str
+    size: int
+    versions: tuple[str, ...]
+    vmask: str
+    pmask: str
+    profiles: tuple[str, ...]
+    first_arg: int
+    nargs: int
+    args: tuple[FieldRow, ...]
+    motion: tuple[int, ...]
+    orient: tuple[int, ...]
+    shape: tuple[int, ...]
+    cutter: tuple[int, ...]
+    progress: int
+    doc: str
+    clause: str
+    plan: Plan
+
+
+@dataclass(frozen=True)
+class VersionLayouts:
+    macro: str
+    layouts: tuple[LayoutRow, ...]
+
+
+@dataclass(frozen=True)
+class CommandRow:
+    index: int
+    name: str
+    macro: str
+    code: int
+    doc: str
+    clause: str
+    first: int
+    nlayouts: int
+    cands: tuple[tuple[int, ...], ...]  # per version, padded with -1
+    motion: str
+    orient: str
+    shape: str
+    cutter: int
+    vmask: str
+    layouts: tuple[LayoutRow, ...]
+    per_version: tuple[VersionLayouts, ...]
+    first_ct: int
+    n_ct: int
+
+
+@dataclass(frozen=True)
+class SegmentRow:
+    region: str
+    start: int
+    end: int
+    exclude: str
+
+
+@dataclass(frozen=True)
+class CoverageRow:
+    name: str
+    first: int
+    n: int
+    doc: str
+
+
+@dataclass(frozen=True)
+class CkFieldRow:
+    tag: str
+    alg: str
+    coverage: int
+
+
+@dataclass(frozen=True)
+class ProfileRow:
+    id: str
+    macro: str
+    doc: str
+    file: tuple[int, ...]
+    hint: tuple[int, ...]
+    file_alg: str
+    hint_alg: tuple[str, ...]
+    file_pad: tuple[int, ...]
+    hint_pad: tuple[int, ...]
+    hint_alg_pad: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class AvailRow:
+    name: str
+    row: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class CheckRow:
+    id: str
+    macro: str
+    kind: str  # KIND_*
+    kind_name: str  # the registry's name
+    severity: str
+    error: int
+    vmask: str
+    first: int
+    n: int
+    has_min: int
+    min: str
+    has_max: int
+    max: str
+    text: str
+    fails: str
+    clause: str
+    decision: str
+
+
+@dataclass(frozen=True)
+class TargetRow:
+    command: int
+    first: int
+    n: int
+    text: str
+
+
+@dataclass(frozen=True)
+class CheckTarget:
+    """A (check, target) pair of one command's records (grouped by command, in check order)."""
+
+    check: int
+    target: int
+    text: str
+
+
+@dataclass(frozen=True)
+class Constant:
+    macro: str
+    value: str | int
+    name: str
+
+
+# -- sections ---------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class About:
+    """prologue.h.j2, cbf.pc.in.j2: the spec's identity and the byte order."""
+
+    meta: dict[str, Any]
+    toolkit_version: str
+    toolkit_license: str
+    spec_revision: str
+    little: bool
+    pad: int
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """impl_prologue.c.j2, enums.h.j2: the model's vocabulary, numbered (kinds from the registry)."""
+
+    roles: tuple[str, ...]
+    tags: tuple[str, ...]
+    algorithms: tuple[str, ...]
+    regions: tuple[str, ...]
+    motion_kinds: tuple[str, ...]
+    motion_keys: tuple[str, ...]
+    orient_kinds: tuple[str, ...]
+    orient_keys: tuple[str, ...]
+    shape_kinds: tuple[str, ...]
+    shape_keys: tuple[str, ...]
+    cutter_keys: tuple[str, ...]
+    check_kinds: tuple[str, ...]
+    field_kinds: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Framing:
+    """structs.h.j2, ids.h.j2, impl_prologue.c.j2: headers and the record head."""
+
+    headers: tuple[HeaderRow, ...]
+    header_size: int
+    record: RecordView
+    head: dict[str, FieldRow]  # record head fields by role (without ROLE_)
+    head_checksum: FieldRow | None
+    version_major_offset: int
+
+
+@dataclass(frozen=True)
+class Versions:
+    versions: tuple[VersionRow, ...]
+    default_version: int
+    fallback_version: int
+
+
+@dataclass(frozen=True)
+class Commands:
+    """ids.h.j2, structs.h.j2, tables.c.j2, writer.c.j2, validator_layouts.c.j2."""
+
+    commands: tuple[CommandRow, ...]
+    sorted_commands: tuple[CommandRow, ...]
+    index_by_code: tuple[int, ...]
+    names_by_code: tuple[str | None, ...]
+    layouts: tuple[LayoutRow, ...]
+    arg_rows: tuple[FieldRow, ...]
+    max_layouts: int
+    max_arg: int
+
+
+@dataclass(frozen=True)
+class Checksums:
+    segments: tuple[SegmentRow, ...]
+    coverages: tuple[CoverageRow, ...]
+    ckfields: tuple[CkFieldRow, ...]
+    fill: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Profiles:
+    profiles: tuple[ProfileRow, ...]
+    max_cov: int
+    avail_rows: tuple[AvailRow, ...]
+
+
+@dataclass(frozen=True)
+class Checks:
+    checks: tuple[CheckRow, ...]
+    targets: tuple[TargetRow, ...]  # one placeholder row when there is none (C has no empty array)
+    ntargets: int
+    tnames: tuple[str, ...]
+    tindex: tuple[tuple[int, ...], ...]  # per target argument, its index in each layout (-1: none)
+
+
+@dataclass(frozen=True)
+class Constants:
+    tolerances: tuple[Constant, ...]
+    limits: tuple[Constant, ...]
+
+
+@dataclass(frozen=True)
+class CContext:
+    about: About
+    vocabulary: Vocabulary
+    framing: Framing
+    versions: Versions
+    commands: Commands
+    checksums: Checksums
+    profiles: Profiles
+    checks: Checks
+    constants: Constants
+    machine: MachineView
+
+    def namespace(self) -> dict[str, Any]:
+        """The names the templates read: every section's fields (no two sections share a name)."""
+        out: dict[str, Any] = {}
+        for section in fields(self):
+            view = getattr(self, section.name)
+            for f in fields(view):
+                assert f.name not in out, f"two sections of the C context name {f.name}"
+                out[f.name] = getattr(view, f.name)
+        return out
+
+
+# -- builders ---------------------------------------------------------------------------------
+
+def _roles(spec: Spec) -> list[str]:
+    roles: list[str] = []
+    for f in [f for h in spec.headers.values() for f in h.fields] + list(spec.record.fields):
+        if f.role and f.role not in roles:
+            roles.append(f.role)
+    return roles
+
+
+def _about(spec: Spec) -> About:
+    if spec.meta.get("byte_order") not in ("little", "big"):
+        raise ValueError("C binding: byte_order must be little or big")
+    return About(meta=spec.meta, toolkit_version=TOOLKIT_VERSION, toolkit_license=TOOLKIT_LICENSE,
+                 spec_revision=spec.revision, little=spec.meta["byte_order"] == "little",
+                 pad=int(spec.meta.get("string_padding", 0)))
+
+
+def _vocabulary(spec: Spec) -> Vocabulary:
+    def m(names: tuple[str, ...] | list[str]) -> tuple[str, ...]:
+        return tuple(macro(k) for k in names)
+
+    return Vocabulary(
+        roles=m(_roles(spec)), tags=m(CHECKSUM_TAGS), algorithms=m(ALGORITHMS), regions=m(REGIONS),
+        motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
+        orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
+        cutter_keys=m(CUTTER_KEYS), check_kinds=m(list(registry.CHECK_KINDS)),
+        field_kinds=m(registry.FIELD_KINDS))
+
+
+def _framing(spec: Spec) -> Framing:
+    headers = tuple(HeaderRow(
+        id=hid, macro=macro(hid), struct="cbf_header_" + cname(hid), size=h.size, clause=h.clause,
+        doc=comment(h.doc), fields=tuple(field_row(f, "cbf_header_" + cname(hid), spec.units) for f in h.fields))
+        for hid, h in spec.headers.items())
+    if any(f.kind != "uint" for f in spec.record.fields):
+        raise ValueError("C binding: record head fields must be unsigned integers")
+    rec = tuple(field_row(f, "cbf_record_head", spec.units) for f in spec.record.fields)
+    major = [f for f in next(iter(spec.headers.values())).fields if f.role == "version_major"]
+    if not major:
+        raise ValueError("C binding: the first header layout has no version_major field")
+    return Framing(
+        headers=headers, header_size=spec.header_size,
+        record=RecordView(head_size=spec.record.head_size, fields=rec, clause=spec.record.clause,
+                          doc=comment(spec.record.doc)),
+        head={f.role[len("ROLE_"):]: f for f in rec if f.role != "ROLE_NONE"},
+        head_checksum=next((f for f in rec if f.checksum == "CK_ARGS"), None),
+        version_major_offset=major[0].offset)
+
+
+def _versions(spec: Spec) -> Versions:
+    header_ids = list(spec.headers)
+    ids = [v.id for v in spec.versions]
+    return Versions(
+        versions=tuple(VersionRow(id=v.id, macro=macro(v.id), major=v.major, minor=-1 if v.minor is None else v.minor,
+                                  header=header_ids.index(v.header), writable=int(v.writable), doc=comment(v.doc),
+                                  clause=v.clause) for v in spec.versions),
+        default_version=ids.index(spec.default_version), fallback_version=ids.index(spec.fallback_version))
+
+
+def _vmask(versions: tuple[str, ...] | list[str]) -> str:
+    return " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in versions)
+
+
+def _role_index(lay: Layout, role: dict[str, str] | None, keys: tuple[str, ...]) -> tuple[int, ...]:
+    """Per key of a command's role (motion, orientation ...), the index of the argument it names (-1: none)."""
+    names = [a.name for a in lay.args]
+    return tuple(names.index(n) if (n := (role or {}).get(k)) in names else -1 for k in keys)
+
+
+def _plan(args: tuple[FieldRow, ...], first_arg: int, motion: tuple[int, ...], orient: tuple[int, ...],
+          targets: list[PlannedCheck]) -> Plan:
+    """The constants a layout's checks read: its float and string arguments, the offsets the motion
+    and orientation roles read (-1: none)."""
+
+    def vec(i: int) -> int:
+        """Offset of a 3-element float argument, -1 when the role has none."""
+        return args[i].offset if i >= 0 and args[i].kind == "FLOAT" and args[i].count == 3 else -1
+
+    def scalar(i: int) -> tuple[int, int]:
+        """(offset, element count) of a float argument, (-1, 0) when the role has none."""
+        return (args[i].offset, args[i].count) if i >= 0 and args[i].kind == "FLOAT" else (-1, 0)
+
+    def var(i: int) -> str:
+        """The generated local that holds a 3-element float argument, decoded once a record (NULL: none)."""
+        return f"x{i}" if vec(i) >= 0 else "NULL"
+
+    m = dict(zip(MOTION_KEYS, motion, strict=True))
+    o = dict(zip(ORIENT_KEYS, orient, strict=True))
+    return Plan(
+        # each float argument is decoded once into x<arg> (finite flag ok<arg>) and shared by the checks
+        values=tuple(DecodedArg(name=a.name, kind=a.kind, offset=a.offset, count=a.count, row=first_arg + i, arg=i)
+                     for i, a in enumerate(args) if a.kind in ("FLOAT", "STRING")),
+        motion=Motion(start=vec(m["start"]), end=vec(m["end"]), center=vec(m["center"]), normal=vec(m["normal"]),
+                      degrees=scalar(m["degrees"]), length=scalar(m["length"]), start_var=var(m["start"]),
+                      end_var=var(m["end"])),
+        orient=Orientation(start=vec(o["start"]), end=vec(o["end"]), start_var=var(o["start"]),
+                           end_var=var(o["end"])),
+        targets=tuple(targets))
+
+
+def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str, tuple[str, ...]]]]:
+    """The checks as rows, and their targets (command index, check index, text, argument names)."""
+    cmd_index = {c.name: i for i, c in enumerate(spec.commands)}
+    rows: list[CheckRow] = []
+    targets: list[tuple[int, int, str, tuple[str, ...]]] = []
+    for ci, ch in enumerate(spec.checks):
+        if ch.kind not in registry.CHECK_KINDS:
+            raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not in the registry")
+        rows.append(CheckRow(
+            id=ch.id, macro=macro(ch.id), kind="KIND_" + macro(ch.kind), kind_name=ch.kind, severity=ch.severity,
+            error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
+            n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(ch.min or 0.0),
+            has_max=int(ch.max is not None), max=cfloat(ch.max or 0.0), text=comment(ch.text),
+            fails=comment(ch.fails), clause=ch.clause or "", decision=ch.decision or ""))
+        targets.extend((cmd_index[t.command], ci, f"{t.command} {' '.join(t.args)}", tuple(t.args))
+                       for t in ch.targets)
+    return tuple(rows), targets
+
+
+def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, profiles: list[str],
+                 planned: dict[int, list[PlannedCheck]]) -> list[LayoutRow]:
+    out: list[LayoutRow] = []
+    for j, lay in enumerate(c.layouts):
+        suffix = ("_" + cname(lay.variant)) if lay.variant else ""
+        struct = f"cbf_{cname(c.name)}{suffix}_args"
+        for a in lay.args:
+            if a.kind == "float" and a.elem_size != 4:  # the codec carries it; the checks read binary32
+                raise ValueError(f"C binding: {c.name} {a.name}: the C validator reads binary32 arguments only "
+                                 "(registry.unsupported says so; the loader refuses it first)")
+        args = tuple(field_row(a, struct, spec.units) for a in lay.args)
+        motion = _role_index(lay, c.motion, MOTION_KEYS)
+        orient = _role_index(lay, c.orientation, ORIENT_KEYS)
+        out.append(LayoutRow(
+            index=first + j, command=ci, cmd_name=c.name, variant=lay.variant,
+            macro=macro(c.name) + (("_" + macro(lay.variant)) if lay.variant else ""),
+            member=cname(c.name) + suffix, struct=struct, size=lay.size, versions=tuple(lay.versions),
+            vmask=_vmask(lay.versions),
+            pmask=" | ".join(f"CBF__PBIT({profiles.index(p)})" for p in lay.profiles) or "0",
+            profiles=tuple(lay.profiles), first_arg=first_arg, nargs=len(args), args=args, motion=motion,
+            orient=orient, shape=_role_index(lay, c.shape, SHAPE_KEYS),
+            cutter=_role_index(lay, c.cutter, CUTTER_KEYS),
+            progress=_role_index(lay, {"p": c.progress} if c.progress else None, ("p",))[0],
+            doc=comment(lay.doc or c.doc), clause=lay.clause or c.clause,
+            plan=_plan(args, first_arg, motion, orient, planned.get(first + j, []))))
+        first_arg += len(args)
+    return out
+
+
+def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
+    """The commands with their layouts, and the checks with their targets: each layout's plan
+    reads the (check, target) pairs of its command, so both are built here."""
+    check_rows, targets = _checks(spec)
+    profiles = [p.id for p in spec.profiles]
+    # every layout's index and arguments, for the targets' argument index per layout
+    flat = [(ci, lay) for ci, c in enumerate(spec.commands) for lay in c.layouts]
+    tnames = [n for _, _, _, names in targets for n in names]
+    tindex = [tuple((next((i for i, a in enumerate(lay.args) if a.name == n), -1) if ci == tc else -1)
+                    for ci, lay in flat)
+              for tc, _, _, names in targets for n in names]
+    tfirst = [sum(len(t[3]) for t in targets[:k]) for k in range(len(targets))]
+    # (check, target) pairs grouped by command, so that the validator visits only the checks that name
+    # the record's command (in check order); and per layout, the pairs whose kernel runs there
+    ctargets: list[CheckTarget] = []
+    first_ct: list[int] = []
+    planned: dict[int, list[PlannedCheck]] = {}
+    for ci in range(len(spec.commands)):
+        first_ct.append(len(ctargets))
+        ctargets.extend(CheckTarget(check=t[1], target=ti, text=f"{check_rows[t[1]].id}: {t[2]}")
+                        for ti, t in enumerate(targets) if t[0] == ci)
+    first_ct.append(len(ctargets))
+    for li, (ci, lay) in enumerate(flat):
+        first_arg = sum(len(x.args) for _, x in flat[:li])
+        for ct in ctargets[first_ct[ci]:first_ct[ci + 1]]:
+            rows = [tindex[tfirst[ct.target] + a][li] for a in range(len(targets[ct.target][3]))]
+            floats = tuple(first_arg + i for i in rows if i >= 0 and lay.args[i].kind == "float")
+            kernel = OWN_KERNEL.get(check_rows[ct.check].kind_name, "cbf__target_at")
+            if kernel == "cbf__machine_at":
+                continue  # its own rules (machine.py), called from the layout function too
+            # a check finds nothing in a layout without its float arguments (ordered: without all of them)
+            if floats if kernel == "cbf__target_at" else len(floats) == len(rows):
+                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kernel=kernel,
+                                                               text=ct.text, args=floats))
+    layouts: list[LayoutRow] = []
+    commands: list[CommandRow] = []
+    vorder = {v.id: i for i, v in enumerate(spec.versions)}
+    cands_all: list[list[list[int]]] = []
+    firsts: list[int] = []
+    for ci, c in enumerate(spec.commands):
+        first = len(layouts)
+        firsts.append(first)
+        layouts.extend(_layout_rows(spec, c, ci, first, sum(len(x.args) for x in layouts), profiles, planned))
+        # Decode candidates per version: the version's own layouts in spec order, else every
+        # layout, newest first (PROTOCOL.md).
+        cands = []
+        for v in spec.versions:
+            own = [first + i for i, lay in enumerate(c.layouts) if v.id in lay.versions]
+            newest_first = sorted(range(len(c.layouts)), key=lambda i: -max(vorder[x] for x in c.layouts[i].versions))
+            cands.append(own or [first + i for i in newest_first])
+        cands_all.append(cands)
+    max_layouts = max((len(row) for cands in cands_all for row in cands), default=0)
+    for ci, c in enumerate(spec.commands):
+        mine = tuple(lay for lay in layouts if lay.command == ci)
+        commands.append(CommandRow(
+            index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=comment(c.doc), clause=c.clause,
+            first=firsts[ci], nlayouts=len(c.layouts),
+            cands=tuple(tuple(row + [-1] * (max_layouts - len(row))) for row in cands_all[ci]),
+            motion=("MOTION_" + macro(c.motion["kind"])) if c.motion else "MOTION_NONE",
+            orient=("ORIENT_" + macro(c.orientation["kind"])) if c.orientation else "ORIENT_NONE",
+            shape=("SHAPE_" + macro(c.shape["kind"])) if c.shape else "SHAPE_NONE",
+            cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
+            per_version=tuple(VersionLayouts(macro=macro(v.id), layouts=tuple(x for x in mine if v.id in x.versions))
+                              for v in spec.versions),
+            first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci]))
+    code_of = {c.code: c for c in commands}
+    cmds = Commands(
+        commands=tuple(commands), sorted_commands=tuple(sorted(commands, key=lambda c: c.code)),
+        index_by_code=tuple(code_of[k].index if k in code_of else -1 for k in range(256)),
+        names_by_code=tuple(code_of[k].name if k in code_of else None for k in range(256)),
+        layouts=tuple(layouts), arg_rows=tuple(a for lay in layouts for a in lay.args), max_layouts=max_layouts,
+        max_arg=max([lay.size for lay in layouts] + [0]))
+    target_rows = tuple(TargetRow(command=t[0], first=tfirst[k], n=len(t[3]), text=t[2])
+                        for k, t in enumerate(targets))
+    checks = Checks(checks=check_rows, targets=target_rows or (TargetRow(command=-1, first=0, n=0, text="none"),),
+                    ntargets=len(targets), tnames=tuple(tnames) or ("",),
+                    tindex=tuple(tindex) or (tuple([-1] * len(layouts)),))
+    return cmds, checks
+
+
+def _checksums(spec: Spec) -> Checksums:
+    cov_names = list(spec.checksums.coverages)
+    rec_names = [f.name for f in spec.record.fields]
+    segments: list[SegmentRow] = []
+    coverages: list[CoverageRow] = []
+    for name, cov in spec.checksums.coverages.items():
+        coverages.append(CoverageRow(name=name, first=len(segments), n=len(cov.segments), doc=comment(cov.doc)))
+        segments.extend(SegmentRow(region="REGION_" + macro(s.region), start=s.start or 0,
+                                   end=-1 if s.end is None else s.end,
+                                   exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
+                        for s in cov.segments)
+    ckfields: list[CkFieldRow] = []
+    for tag in CHECKSUM_TAGS:
+        cf = spec.checksums.for_field(tag)
+        kind = spec.checksums.algorithms[cf.algorithm].kind
+        if kind not in ALGORITHMS:
+            raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
+        ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage)))
+    return Checksums(segments=tuple(segments), coverages=tuple(coverages), ckfields=tuple(ckfields),
+                     fill=tuple("CK_" + macro(t) for t in spec.checksums.fill_order))
+
+
+def _profiles(spec: Spec) -> Profiles:
+    cov_names = list(spec.checksums.coverages)
+
+    def alg(profile: str) -> str:
+        return "CBF__ALG_" + macro(spec.checksums.algorithms[spec.file_algorithm(profile)].kind)
+
+    width = max([len(p.file_coverages) for p in spec.profiles] + [len(p.hint_coverages) for p in spec.profiles] + [1])
+    rows: list[ProfileRow] = []
+    for p in spec.profiles:
+        # a hint coverage is computed with the algorithm of the profile that accepts it
+        owners = [next((q for q in spec.profiles if x in q.file_coverages), p) for x in p.hint_coverages]
+        file = tuple(cov_names.index(x) for x in p.file_coverages)
+        hint = tuple(cov_names.index(x) for x in p.hint_coverages)
+        hint_alg = tuple(alg(q.id) for q in owners)
+        rows.append(ProfileRow(id=p.id, macro=macro(p.id), doc=comment(p.doc), file=file, hint=hint,
+                               file_alg=alg(p.id), hint_alg=hint_alg, file_pad=file + (-1,) * (width - len(file)),
+                               hint_pad=hint + (-1,) * (width - len(hint)),
+                               hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg))))
+    # per command and version: the index of the one availability check covering a command the
+    # version lacks (the loader guarantees one), -1 when it has it
+    check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
+    avail = tuple(AvailRow(name=c.name, row=tuple(
+        check_index[a.id] if (a := spec.availability_check(c.name, v.id)) is not None else -1 for v in spec.versions))
+        for c in spec.commands)
+    return Profiles(profiles=tuple(rows), max_cov=width, avail_rows=avail)
+
+
+def _constants(spec: Spec) -> Constants:
+    return Constants(tolerances=tuple(Constant(macro=macro(k), value=cfloat(v), name=k)
+                                      for k, v in spec.tolerances.items()),
+                     limits=tuple(Constant(macro=macro(k), value=v, name=k) for k, v in spec.limits.items()))
+
+
+def _unique_names(cmds: Commands, versions: Versions, checks: Checks, profiles: Profiles) -> None:
+    groups = {"command": [c.macro for c in cmds.commands], "layout": [lay.macro for lay in cmds.layouts],
+              "version": [v.macro for v in versions.versions], "check": [c.macro for c in checks.checks],
+              "profile": [p.macro for p in profiles.profiles]}
+    for what, names in groups.items():
+        dup = sorted({n for n in names if names.count(n) > 1})
+        if dup:
+            raise ValueError(f"C binding: two {what}s map to the same C name {dup[0]}")
+
+
+def context(spec: Spec) -> CContext:
+    cmds, checks = _commands_and_checks(spec)
+    versions, profiles = _versions(spec), _profiles(spec)
+    _unique_names(cmds, versions, checks, profiles)
+    return CContext(about=_about(spec), vocabulary=_vocabulary(spec), framing=_framing(spec), versions=versions,
+                    commands=cmds, checksums=_checksums(spec), profiles=profiles, checks=checks,
+                    constants=_constants(spec), machine=machine_view(spec, cmds.layouts))
