@@ -1263,7 +1263,8 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
-typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+/* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
+typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 
 typedef struct cbf__profile {
     const char *id;
@@ -1289,7 +1290,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1293 "cbf.h"
+#line 1294 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1552,9 +1553,9 @@ static const cbf__coverage cbf__coverages[4] = {
 };
 
 static const cbf__ckfield cbf__ckfields[3] = {
-    { CBF__CK_ARGS, CBF__ALG_SUM, 0 },
-    { CBF__CK_HEADER, CBF__ALG_SUM, 1 },
-    { CBF__CK_FILE, CBF__ALG_SUM, 2 },
+    { CBF__CK_ARGS, CBF__ALG_SUM, 0, -1, "args" },
+    { CBF__CK_HEADER, CBF__ALG_SUM, 1, 7, "header" },
+    { CBF__CK_FILE, CBF__ALG_SUM, 2, -1, "file" },
 };
 static const int cbf__fill_order[3] = { CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 
@@ -2293,7 +2294,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2297 "cbf.h"
+#line 2298 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2518,7 +2519,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2522 "cbf.h"
+#line 2523 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2689,7 +2690,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2693 "cbf.h"
+#line 2694 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2850,7 +2851,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2854 "cbf.h"
+#line 2855 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3103,7 +3104,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3107 "cbf.h"
+#line 3108 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4086,7 +4087,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4090 "cbf.h"
+#line 4091 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4236,7 +4237,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4240 "cbf.h"
+#line 4241 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4893,15 +4894,16 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         if (f->kind == CBF__K_STRING)
             cbf__check_string(&v, f, buf, 0, -1);
     }
-    {
-        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
-        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
-        if (k && f) {
+    /* each header checksum field this version's header carries, judged by its header_checksum check */
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
+        const cbf__ckfield *k = &cbf__ckfields[i];
+        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v.hlayout, k->tag) : NULL;
+        if (f) {
             uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != want)
-                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
-                          (unsigned long)got, (unsigned long)want);
+                cbf__say(&v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
+                         (unsigned long)got, (unsigned long)want);
         }
     }
     cbf__check_part_number(&v);
@@ -5055,7 +5057,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5059 "cbf.h"
+#line 5061 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -37,7 +37,6 @@ from .model import (
     Segment,
     Spec,
     Version,
-    common_header_prefix,
 )
 from .registry import (
     CHECK_KINDS,
@@ -410,6 +409,8 @@ def _headers_pass(ctx: _Ctx, st: _State) -> None:
         if h.size != first.size:
             ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}", "size")
         for f in h.fields:
+            if f.role == "checksum" and f.checksum not in {x.checksum for x in first.fields}:
+                continue  # a checksum field of this layout's own (a new version's): _checksum_fields_pass
             if f.role in _SHARED_ROLES:
                 twin = first.field(f.name)
                 if twin is None or (twin.offset, twin.type, twin.role, twin.magic, twin.checksum) != (
@@ -728,6 +729,51 @@ def _availability_pass(ctx: _Ctx, st: _State) -> None:
     _check_machine_coverage(ctx, st)
 
 
+def _checksum_fields_pass(ctx: _Ctx, st: _State) -> None:
+    """Checksum fields as data: a tag may sit in any header layout (a new version's header turns
+    reserved bytes into one); each tag has one width; every header checksum field but the file
+    checksum is judged by exactly one header_checksum check (its `field`), over header bytes only
+    (the header is judged before the records are framed)."""
+    if st.record is None or st.checksums is None:
+        return
+    defined = {f.field: f for f in st.checksums.fields}
+    width: dict[str, Field] = {}
+    for h in st.headers.values():
+        for f in h.fields:
+            if not f.checksum:
+                continue
+            if f.role != "checksum" or f.kind != "uint":
+                ctx.at(f.line, f"header {h.id} field {f.name}: a checksum field needs role checksum and an "
+                               f"unsigned integer type")
+            first = width.setdefault(f.checksum, f)
+            if first.size != f.size:
+                ctx.at(f.line, f"header {h.id} field {f.name}: checksum {f.checksum} is {f.size} bytes here, "
+                               f"{first.size} at line {first.line}")
+    record_tags = {f.checksum for f in st.record.fields if f.checksum}
+    judged: dict[str, Check] = {}
+    for ch in st.checks:
+        if ch.kind != "header_checksum":
+            continue
+        tag = ch.checksum_field or "header"
+        raw = st.raw_checks.get(ch.id)
+        if tag not in width or tag in record_tags or tag == "file":
+            ctx.at(ch.line, f"check {ch.id}: field {tag} is no header checksum field (a tag of a header "
+                            f"field, other than the file checksum)")
+            continue
+        if tag in judged:
+            ctx.at(ch.line, f"check {ch.id}: checksum {tag} is judged by check {judged[tag].id} already")
+        judged.setdefault(tag, ch)
+        cov = st.checksums.coverages.get(defined[tag].coverage) if tag in defined else None
+        if cov is not None and any(seg.region != "header" for seg in cov.segments):
+            ctx.fail(raw if raw is not None else st.raw["checks"], f"check {ch.id}: checksum {tag} covers more "
+                     f"than header bytes (coverage {cov.name}); a header_checksum check judges header bytes only",
+                     "field")
+    for tag, f in width.items():
+        if tag != "file" and tag not in judged:
+            ctx.at(f.line, f"field {f.name}: no header_checksum check judges checksum {tag} (every binding "
+                           f"would read it and none check it)")
+
+
 def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
     """What every binding can implement: each field's type in each binding (registry.unsupported),
     and a header every reader can pick a layout for: Kaitai reads the version in the fields all
@@ -741,15 +787,8 @@ def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
             what = f"{f.type} x {f.count}" if f.count != 1 else f.type
             ctx.at(f.line, f"field {f.name}: type {what} is not implemented by the "
                            f"{', '.join(gaps)} binding{'s' if len(gaps) > 1 else ''} (generator/cbfgen/registry.py)")
-    headers = tuple(st.headers.values())
-    shared = {f.name for f in common_header_prefix(headers)}
-    for h in headers:
-        for role in ("version_major", "version_minor"):
-            vf = h.by_role(role)
-            if vf is not None and vf.name not in shared:
-                ctx.at(vf.line, f"header {h.id}: field {vf.name} ({role}) is not among the leading fields every header "
-                               f"layout shares ({', '.join(sorted(shared)) or 'none'}): a reader must read the version "
-                               f"before it knows the layout")
+    # The version fields sit in the same place in every header layout (_headers_pass, _SHARED_ROLES):
+    # Kaitai reads them by position when the layouts diverge before them (emit/kaitai).
 
 
 def _names_pass(ctx: _Ctx, st: _State) -> None:
@@ -776,7 +815,7 @@ def _names_pass(ctx: _Ctx, st: _State) -> None:
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
     _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
-    _checks_pass, _availability_pass, _capabilities_pass, _names_pass,
+    _checks_pass, _checksum_fields_pass, _availability_pass, _capabilities_pass, _names_pass,
 )
 
 

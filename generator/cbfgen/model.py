@@ -374,6 +374,11 @@ class Check:
         return self._param("max", None)  # type: ignore[no-any-return]
 
     @property
+    def checksum_field(self) -> str | None:
+        """header_checksum: the checksum tag of the header field it judges."""
+        return self._param("field", None)  # type: ignore[no-any-return]
+
+    @property
     def anchor(self) -> str:
         return "check-" + ident(self.id).replace("_", "-")
 
@@ -474,6 +479,20 @@ class Spec:
         if f is None:
             raise KeyError(role)
         return f
+
+    def header_checksum_tags(self, hid: str) -> dict[str, Field]:
+        """A header layout's checksum fields by tag (a new version's header may add its own)."""
+        return {f.checksum: f for f in self.headers[hid].fields if f.checksum}
+
+    def checksum_versions(self, tag: str) -> tuple[str, ...]:
+        """The versions whose header carries the checksum field ``tag`` (the record's: every one)."""
+        if any(f.checksum == tag for f in self.record.fields):
+            return tuple(v.id for v in self.versions)
+        return tuple(v.id for v in self.versions if tag in self.header_checksum_tags(v.header))
+
+    def checksum_check(self, tag: str) -> Check | None:
+        """The header_checksum check that judges the header checksum field ``tag``."""
+        return next((c for c in self.checks if c.kind == "header_checksum" and c.checksum_field == tag), None)
 
     def header_checksum_field(self, tag: str) -> Field:
         for f in next(iter(self.headers.values())).fields:

@@ -224,6 +224,11 @@ class CutterTableParams:
 
 
 @dataclass(frozen=True)
+class HeaderChecksumParams:
+    field: str = "header"  # the checksum tag (checksums.fields) of the header field it judges
+
+
+@dataclass(frozen=True)
 class AvailabilityParams:
     versions: tuple[str, ...]  # the versions it covers
     commands: tuple[str, ...]  # the commands missing from them
@@ -248,7 +253,8 @@ class MachineLimitsParams:
     input_severity: Severity | None = None  # the severity when a machine file is given
 
 
-Params = (NoParams | PartNumberParams | CutterTableParams | AvailabilityParams | TargetParams | RangeParams
+Params = (NoParams | PartNumberParams | CutterTableParams | HeaderChecksumParams | AvailabilityParams
+          | TargetParams | RangeParams
           | MachineLimitsParams)
 
 Scope = Literal["file", "record"]
@@ -302,7 +308,8 @@ _KINDS = (
     _k("cutter_table", CutterTableParams, "record", "cutters agree with the given cutter table"),
     _k("file_checksum", NoParams, "file", "the file checksum matches a coverage of the profile"),
     _k("command_count", NoParams, "file", "the header's count is the number of records"),
-    _k("header_checksum", NoParams, "file", "the header checksum matches"),
+    _k("header_checksum", HeaderChecksumParams, "file",
+       "the header checksum field it names (its `field`, a checksum tag) matches"),
     _k("magic", NoParams, "file", "the start and end patterns hold their values", kaitai=True),
     _k("sequence", NoParams, "record", "record i carries sequence number i"),
     _k("code_copy", NoParams, "record", "the code copy equals the code", kaitai=True),

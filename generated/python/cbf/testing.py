@@ -59,7 +59,7 @@ except ImportError as exc:  # pragma: no cover - depends on the environment
     raise ImportError("cbf.testing needs hypothesis: pip install hypothesis") from exc
 
 from . import tables as T
-from .codec import field_checksum, file_algorithm, fill_header, frame, pack_file
+from .codec import field_checksum, file_algorithm, fill_header, frame, header_info, pack_file
 from .geometry import motion_end
 from .model import Cbf, Record, new_header
 
@@ -585,11 +585,12 @@ def reseal_checksums(data: bytes | bytearray, profile: str = "default") -> bytes
     for o in offsets:
         start = o + T.HEAD_SIZE
         _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + b[o + T.ARG_SIZE_OFFSET]])))
+    own = T.LAYOUT_CHECKSUM_FIELDS[header_info(b)[1].id]  # this version's header's checksum fields
     for tag in T.CHECKSUMS["fill_order"]:
-        if tag != "args":
+        if tag in own:
             cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
             alg = file_algorithm(profile) if tag == "file" else None
-            _put(b, T.HEADER_CHECKSUM_FIELDS[tag], 0, field_checksum(tag, b, offsets, cov, algorithm=alg))
+            _put(b, own[tag], 0, field_checksum(tag, b, offsets, cov, algorithm=alg))
     return bytes(b)
 
 

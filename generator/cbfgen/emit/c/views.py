@@ -29,7 +29,12 @@ SHAPE_KEYS = ("name", "count")
 CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
-CHECKSUM_TAGS = ("args", "header", "file")
+CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own tags follow (_tags)
+
+
+def _tags(spec: Spec) -> tuple[str, ...]:
+    """The checksum tags of the spec: today's three, then any other, in checksums.fields order."""
+    return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
 # Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
 # targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
 OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
@@ -232,6 +237,7 @@ class CkFieldRow:
     tag: str
     alg: str
     coverage: int
+    check: int = -1  # the header_checksum check that judges the field (index in cbf__checks), -1: none
 
 
 @dataclass(frozen=True)
@@ -442,7 +448,7 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         return tuple(macro(k) for k in names)
 
     return Vocabulary(
-        roles=m(_roles(spec)), tags=m(CHECKSUM_TAGS), algorithms=m(ALGORITHMS), regions=m(REGIONS),
+        roles=m(_roles(spec)), tags=m(_tags(spec)), algorithms=m(ALGORITHMS), regions=m(REGIONS),
         motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=m(CUTTER_KEYS), check_kinds=m(list(registry.CHECK_KINDS)),
@@ -660,12 +666,15 @@ def _checksums(spec: Spec) -> Checksums:
                                    exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
                         for s in cov.segments)
     ckfields: list[CkFieldRow] = []
-    for tag in CHECKSUM_TAGS:
+    check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
+    for tag in _tags(spec):
         cf = spec.checksums.for_field(tag)
         kind = spec.checksums.algorithms[cf.algorithm].kind
         if kind not in ALGORITHMS:
             raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
-        ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage)))
+        judge = spec.checksum_check(tag)
+        ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage),
+                                   check=-1 if judge is None else check_index[judge.id]))
     return Checksums(segments=tuple(segments), coverages=tuple(coverages), ckfields=tuple(ckfields),
                      fill=tuple("CK_" + macro(t) for t in spec.checksums.fill_order))
 

@@ -106,7 +106,7 @@ def build(spec: Spec) -> dict[str, Any]:
     common: list[Field] = list(common_header_prefix(tuple(spec.headers.values())))
     common_names = {f.name for f in common}
     tails = {h.id: [f for f in h.fields if f.name not in common_names] for h in spec.headers.values()}
-    header_type = {
+    header_type: dict[str, Any] = {
         "doc": f"File header ({first.clause}); after the version field its layout depends on the version.",
         "seq": [_field_attr(f, enc, first.clause, spec.revision) for f in common] + [{
             "id": "layout",
@@ -121,6 +121,14 @@ def build(spec: Spec) -> dict[str, Any]:
                    + f"); unknown versions read as {spec.fallback_version}.",
         }},
     }
+    # Layouts that diverge before the version fields (a new version's checksum field in reserved
+    # bytes): the version is read where every layout has it (the loader makes sure), by position.
+    for role in ("version_major", "version_minor"):
+        vf = spec.common_header_field(role)
+        if vf.name not in common_names:
+            attr = _field_attr(vf, enc, first.clause, spec.revision)
+            del attr["id"]
+            header_type["instances"][vf.name] = {"pos": vf.offset, **attr}
     types: dict[str, Any] = {"header": header_type}
     for hid, fields in tails.items():
         types[f"header_{ident(hid)}"] = {

@@ -93,7 +93,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
              "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
-             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity}
+             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity,
+             "field": c.checksum_field}
             for c in spec.checks
         ],
         "cut": spec.cut,

@@ -46,7 +46,8 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
-typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+/* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
+typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 
 typedef struct cbf__profile {
     const char *id;

@@ -65,15 +65,16 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         if (f->kind == CBF__K_STRING)
             cbf__check_string(&v, f, buf, 0, -1);
     }
-    {
-        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
-        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
-        if (k && f) {
+    /* each header checksum field this version's header carries, judged by its header_checksum check */
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
+        const cbf__ckfield *k = &cbf__ckfields[i];
+        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v.hlayout, k->tag) : NULL;
+        if (f) {
             uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != want)
-                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
-                          (unsigned long)got, (unsigned long)want);
+                cbf__say(&v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
+                         (unsigned long)got, (unsigned long)want);
         }
     }
     cbf__check_part_number(&v);

@@ -209,6 +209,9 @@ VMAJOR = _common("version_major")
 VMINOR = _common("version_minor")
 COUNT = _common("command_count")
 HEADER_CHECKSUM_FIELDS = {f.checksum: f for f in _H0.fields if f.checksum}
+# Each header layout's checksum fields by tag: a new version's header may carry its own.
+LAYOUT_CHECKSUM_FIELDS: dict[str, dict[str, FieldInfo]] = {
+    hid: {f.checksum: f for f in h.fields if f.checksum} for hid, h in HEADERS.items()}
 
 RECORD_FIELDS = tuple(_field(f) for f in SPEC["record"]["fields"])
 HEAD_SIZE: int = SPEC["record"]["head_size"]
