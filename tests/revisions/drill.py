@@ -296,6 +296,13 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
         else:
             for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
                 del c[k]
+    elif op == "copy":  # the value at `from` (its first match), e.g. a new header layout from the newest one
+        src = _resolve(root, str(edit["from"]))[0]
+        for c, k in slots:
+            c[k] = copy.deepcopy(src[0][src[1]])
+    elif op == "splice":  # one list item replaced by the items of value (reserved bytes become fields)
+        for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
+            c[k:k + 1] = copy.deepcopy(value)
     elif op == "prune":  # drop the items of the list(s) at path whose `key` is empty (a layout left no version)
         for c, k in slots:
             c[k][:] = [item for item in c[k] if not (isinstance(item, dict) and not item.get(edit["key"]))]
