@@ -755,7 +755,6 @@ def _checksum_fields_pass(ctx: _Ctx, st: _State) -> None:
         if ch.kind != "header_checksum":
             continue
         tag = ch.checksum_field or "header"
-        raw = st.raw_checks.get(ch.id)
         if tag not in width or tag in record_tags or tag == "file":
             ctx.at(ch.line, f"check {ch.id}: field {tag} is no header checksum field (a tag of a header "
                             f"field, other than the file checksum)")
@@ -765,9 +764,8 @@ def _checksum_fields_pass(ctx: _Ctx, st: _State) -> None:
         judged.setdefault(tag, ch)
         cov = st.checksums.coverages.get(defined[tag].coverage) if tag in defined else None
         if cov is not None and any(seg.region != "header" for seg in cov.segments):
-            ctx.fail(raw if raw is not None else st.raw["checks"], f"check {ch.id}: checksum {tag} covers more "
-                     f"than header bytes (coverage {cov.name}); a header_checksum check judges header bytes only",
-                     "field")
+            ctx.at(ch.line, f"check {ch.id}: checksum {tag} covers more than header bytes (coverage "
+                            f"{cov.name}); a header_checksum check judges header bytes only")
     for tag, f in width.items():
         if tag != "file" and tag not in judged:
             ctx.at(f.line, f"field {f.name}: no header_checksum check judges checksum {tag} (every binding "
