@@ -339,6 +339,9 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
 
     def applies_to_old(c: Check) -> bool:
         vs = getattr(c, "versions", ())
+        if c.kind == "header_checksum" and c.checksum_field:  # the versions whose header has its field
+            vs = new.checksum_versions(c.checksum_field)
+            return any(v in old_ids for v in vs)
         return not vs or any(v in old_ids for v in vs)
 
     moved = _check_renames(old, new, names)
@@ -448,8 +451,12 @@ def _checksums(old: Spec, new: Spec, breaking: bool) -> list[Change]:
             out.append(Change("checksum_coverage_changed", None, None,
                               f"{of.field} checksum: {_coverage_text(ocov)} -> {_coverage_text(ncov)}", breaking))
     if ocs.fill_order != ncs.fill_order:
+        # a new tag placed among the old ones (a new version's header checksum) changes no existing
+        # file; the old tags in another order, or one dropped, do
+        kept = [t for t in ncs.fill_order if t in ocs.fill_order]
         out.append(Change("checksum_fill_order_changed", None, None,
-                          f"{list(ocs.fill_order)} -> {list(ncs.fill_order)}", breaking))
+                          f"{list(ocs.fill_order)} -> {list(ncs.fill_order)}",
+                          breaking and kept != list(ocs.fill_order)))
     return out
 
 

@@ -385,7 +385,7 @@ class Check:
 
 # A check's attributes as one flat list: its own, then its kind's parameters (registry.py).
 CHECK_ATTRS = ("id", "kind", "severity", "text", "fails", "line", "clause", "decision", "input", "input_severity",
-               "versions", "commands", "targets", "min", "max")
+               "versions", "commands", "targets", "min", "max", "checksum_field")
 
 
 @dataclass(frozen=True)

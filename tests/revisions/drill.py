@@ -35,6 +35,9 @@ item. Operations:
     prune    drop the items of the list(s) at path whose `key` is empty
     sub      replace the regular expression `pattern` by value in the text at path
     append_line    (no path) append the line value to the text `file:` (a known-failure list)
+    sub_text       (no path) replace `pattern` (a regular expression) by value in the text `file:`
+    copy           set path to a copy of the value at `from`
+    splice         replace the list item at path by the items of value
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
 expectation of a golden case, a binding's known-failure list; `optional:
 true` skips it when that file is missing). `files:` maps new paths to their
@@ -333,6 +336,13 @@ def apply(fx: Fixture, root: Path) -> None:
         if edit.get("op") == "append_line":  # a line of a text file (a binding's known-failure list)
             with (root / rel).open("a", encoding="utf-8") as fh:
                 fh.write(str(edit["value"]).rstrip("\n") + "\n")
+            continue
+        if edit.get("op") == "sub_text":  # a regular-expression replacement in a text file (a failure list)
+            text = (root / rel).read_text(encoding="utf-8")
+            text, n = re.subn(str(edit["pattern"]), str(edit["value"]), text, flags=re.MULTILINE)
+            if not n:
+                raise FixtureError(f"{fx.path.name}: edit {i + 1} ({rel}): {edit['pattern']!r} does not match")
+            (root / rel).write_text(text, encoding="utf-8")
             continue
         if rel not in docs:
             docs[rel] = read_spec(root / rel)
