@@ -38,6 +38,7 @@ item. Operations:
     sub_text       (no path) replace `pattern` (a regular expression) by value in the text `file:`
     copy           set path to a copy of the value at `from`
     splice         replace the list item at path by the items of value
+    insert         put the items of value into the list at path before its item `before` (else last)
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
 expectation of a golden case, a binding's known-failure list; `optional:
 true` skips it when that file is missing). `files:` maps new paths to their
@@ -193,6 +194,13 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
            "unwritable": _flow([str(v["id"]) for v in unwritable]),
            "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
            "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing"}
+    # The header of the newest version that still reserves the checksum bytes (4.2: offset 10, 6 bytes
+    # "reserved for future checksum usage"), the newest header when none does.
+    headers = doc.get("headers", {})
+    reserve = next((str(v["header"]) for v in sorted(versions, key=_key, reverse=True)
+                    if any(f.get("role") == "reserved" and f.get("offset") == 10 and f.get("size", 0) >= 4
+                           for f in headers.get(v["header"], {}).get("fields", ()))), str(newest["header"]))
+    out["reserve_header"] = reserve
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
@@ -306,6 +314,10 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     elif op == "splice":  # one list item replaced by the items of value (reserved bytes become fields)
         for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
             c[k:k + 1] = copy.deepcopy(value)
+    elif op == "insert":  # the items of value put into the list at path before its item `before`
+        for c, k in slots:
+            at = c[k].index(edit["before"]) if edit["before"] in c[k] else len(c[k])
+            c[k][at:at] = copy.deepcopy(value)
     elif op == "prune":  # drop the items of the list(s) at path whose `key` is empty (a layout left no version)
         for c, k in slots:
             c[k][:] = [item for item in c[k] if not (isinstance(item, dict) and not item.get(edit["key"]))]
@@ -409,7 +421,11 @@ def copy_tree(dest: Path) -> None:
                             capture_output=True).stdout.decode().split("\0")
     for rel in listed:
         src = REPO / rel
-        if not rel or not src.is_file() or src.is_symlink():
+        if rel and src.is_symlink():  # a tracked link (schemas/ links into the runtime): the same link
+            (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+            (dest / rel).symlink_to(os.readlink(src))
+            continue
+        if not rel or not src.is_file():
             continue
         (dest / rel).parent.mkdir(parents=True, exist_ok=True)
         try:
