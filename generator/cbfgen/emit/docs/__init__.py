@@ -33,6 +33,10 @@ OUT = "docs"
 GOLDEN = REPO / "conformance" / "golden"
 REPORT = REPO / "conformance" / "report.json"
 RELIABILITY = REPO / "conformance" / "reliability.json"
+# The folder the output folder sits in: a page links a file of the repository (the spec, the golden README,
+# a case's hex source, the kit's guide) only when the file is there, relative to the page; otherwise it
+# names it as text. cbfgen sets it to its --out folder's parent; the checkout's generated/ sits in REPO.
+ROOT = REPO
 
 
 def _anchor(text: str) -> str:
@@ -447,6 +451,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "limitations": {b: known_failures(b)[1] for b in bindings},
         "reliability": _reliability(_reliability_file()),
         "cases": cases,
+        "case_names": {c.name for c in cases},
         "examples": golden.examples(spec, cases),
         "cut_example": golden.cut_example(spec, cases),
         "header_example": golden.header_example(spec, cases),
@@ -502,7 +507,17 @@ def _environment(spec: Spec) -> Any:
     env.filters["header_svg"] = header_svg
     env.filters["prose"] = lambda value, index="": text.prose(spec, value, index)
     env.filters["md"] = text.md_escape
+    env.globals["repo_link"] = repo_link
     return env
+
+
+def repo_link(path: str, depth: int, label: str | None = None) -> str:
+    """A Markdown link from a docs page (depth: its folders below docs/) to a repository file (path from
+    the repository's root), when the file is there; else its name as text (a link to nothing is broken)."""
+    label = label or f"`{path}`"
+    if (ROOT / path).is_file():
+        return f"[{label}]({'../' * (depth + 2)}{path})"
+    return label if label.startswith("`") else f"{label} (`{path}` in the toolkit's repository)"
 
 
 def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:
