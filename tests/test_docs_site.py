@@ -277,6 +277,17 @@ def test_search_documents_cover_every_page(html_site: Path) -> None:
     assert index.startswith("window.CBF_SEARCH_INDEX = ") and '\\"documentCount\\":' in index
 
 
+def test_search_titles_a_part_without_heading_by_whole_words() -> None:
+    """At 390 px the result list showed titles cut inside a word ("CIRCL", "the m") after the page's whole
+    title, which the result already shows beside it."""
+    body = ("<html><head><title>Page T · x</title></head><body><main><a id=\"n9\"></a><p>" + "N9 Version 4.0 forbids "
+            "ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX and HELIX5B in every file</p><footer></footer></main></body></html>")
+    docs_ = search_documents({"p.html": body.encode()})
+    title = next(d["title"] for d in docs_ if d["url"] == "p.html#n9")
+    assert title == "N9 Version 4.0 forbids ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX …", title
+    assert all(w in body for w in title[:-2].split())
+
+
 def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
     index = _parsed_page(html_site / "index.html")
     text = _text(index)

@@ -57,6 +57,14 @@ class SearchError(RuntimeError):
     """The search index could not be built (node or the minisearch package missing)."""
 
 
+def _excerpt(words: str, width: int = 60) -> str:
+    """A part without a heading is titled by its first words, cut at a word (its page is shown beside it)."""
+    if len(words) <= width:
+        return words
+    cut = words[:width + 1].rsplit(" ", 1)[0] if " " in words[:width + 1] else words[:width]
+    return cut.rstrip(" ,;:(") + " …"
+
+
 def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
     """One document a part of a page: the text from one anchor to the next, titled by its heading
     (or the page title), for every HTML page of the site but the search page and imported files."""
@@ -76,7 +84,7 @@ def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
                 continue
             head = _HEADING.search(chunk)
             title = " ".join(html.unescape(_TAG.sub("", head.group(2))).split()) if head else \
-                (f"{page_title}: {words[:60]}" if anchor else page_title)
+                (_excerpt(words) if anchor else page_title)
             docs.append({"id": str(len(docs)), "title": title, "url": page + (f"#{anchor}" if anchor else ""),
                          "page": page_title, "text": words})
     return docs
