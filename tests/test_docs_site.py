@@ -370,7 +370,7 @@ def test_reliability_tables(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> 
 def test_missing_reliability_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setattr(docs, "RELIABILITY", tmp_path / "absent.json")
     text = docs.emit(SPEC)["docs/index.md"].decode()
-    assert "No reliability report is present: no figures are shown." in text
+    assert "No reliability report is present: no figures are shown (`cbfgen --report FILE`" in text
     assert " %" not in text[text.index('<a id="reliability"></a>'):]
 
 
