@@ -429,3 +429,16 @@ def test_pdf_check_fails_on_a_page_left_mostly_blank_by_a_forced_break(tmp_path:
     assert fills[0] < BLANK < fills[1] and fills[2] < BLANK
     assert blank_pages(fills, {2, 3}) == []  # pages 1 and 2 end parts, page 3 ends the document
     assert [p.split(" is ")[0] for p in blank_pages(fills, {3})] == ["page 1"]
+
+
+def test_pdf_places_every_page_of_the_site(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The PDF holds what the site holds: every Markdown page the docs emitter writes is in the PDF's
+    order; a page it does not name stops the PDF (no silent gap)."""
+    from cbfgen.emit.docs import pdf
+
+    placed = {path for path, _ in pdf.site_pages(SPEC)}
+    assert placed == {rel[len("docs/"):-3] + ".html" for rel in docs.emit(SPEC) if rel.endswith(".md")}
+    real = pdf.emit
+    monkeypatch.setattr(pdf, "emit", lambda spec, ctx=None: {**real(spec, ctx), "docs/extra.md": b"# Extra\n"})
+    with pytest.raises(pdf.Unplaced, match="extra.md"):
+        pdf.site_pages(SPEC)

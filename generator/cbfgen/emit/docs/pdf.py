@@ -146,12 +146,19 @@ def _localise(page: Page, held: dict[str, str]) -> str:
                   r"\1\3<caption>\2</caption>", body)
 
 
+class Unplaced(ValueError):
+    """A page of the site that the PDF's order does not name."""
+
+
 def site_pages(spec: Spec) -> list[tuple[str, str]]:
     """(site path, Markdown) of every page the PDF holds, in its order."""
     ctx = context(spec)
     files = emit(spec, ctx)
     order = ["index.md", CUT_PAGE, *(command_page(c) for c in spec.commands), "changes.md", FIELD_INDEX,
              GOLDEN_INDEX, *(case_page(c.name) for c in ctx["cases"])]
+    unplaced = sorted(rel[len("docs/"):] for rel in files if rel.endswith(".md") and rel[len("docs/"):] not in order)
+    if unplaced:  # the PDF holds every page of the site (the gallery, made apart from the spec, aside)
+        raise Unplaced(f"pages of the site the PDF does not place: {', '.join(unplaced)} (pdf.site_pages)")
     return [(rel[:-3] + ".html", files[f"docs/{rel}"].decode()) for rel in order]
 
 
@@ -411,9 +418,9 @@ def main(argv: list[str] | None = None) -> int:
     except CdpError as exc:
         print(f"docs-pdf: chromium: {exc}", file=sys.stderr)
         return 1
-    except FileNotFoundError as exc:
+    except (FileNotFoundError, Unplaced) as exc:
         print(f"docs-pdf: {exc}", file=sys.stderr)
-        return 2
+        return 2 if isinstance(exc, FileNotFoundError) else 1
     for p in problems:
         print(f"docs-pdf: {p}", file=sys.stderr)
     if problems:
