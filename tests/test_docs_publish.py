@@ -442,3 +442,16 @@ def test_pdf_places_every_page_of_the_site(monkeypatch: pytest.MonkeyPatch) -> N
     monkeypatch.setattr(pdf, "emit", lambda spec, ctx=None: {**real(spec, ctx), "docs/extra.md": b"# Extra\n"})
     with pytest.raises(pdf.Unplaced, match="extra.md"):
         pdf.site_pages(SPEC)
+
+
+def test_pdf_names_a_repository_file_it_does_not_hold() -> None:
+    """A link of a site page to a repository file (copied under files/) becomes text in the PDF that names
+    the file where its label does not, so the paper refers only to what it holds or to a named file."""
+    from cbfgen.emit.docs.pdf import Page, _localise
+
+    body = ('<p><a href="files/conformance/golden/README.html">the golden README</a>, '
+            '<a href="files/spec/cbf.yaml.html"><code>spec/cbf.yaml</code></a>, <a href="cut.html#x">CUT</a></p>')
+    out = _localise(Page("index.html", "", body), {"index.html": "", "cut.html": "cut"})
+    assert "the golden README (<code>conformance/golden/README.md</code>)" in out
+    assert "<code>spec/cbf.yaml</code>, " in out and "spec/cbf.yaml</code>)" not in out
+    assert '<a href="#cut-x">CUT</a>' in out and "files/" not in out

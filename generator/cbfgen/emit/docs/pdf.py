@@ -118,6 +118,14 @@ _NAV = re.compile(r"(<p>Spec [^<]*</p>\n)<p>(?:<a [^>]*>[^<]*</a>(?: · )?)+</p>
 _LEAD = re.compile(r"<p>(Spec [^<]*)</p>\n<p>((?:<a [^>]*>[^<]*</a>[\s·]*)+)")
 
 
+def _repository_file(target: str) -> str:
+    """The repository file a site page under files/ copies (site.imported's inverse), else ""."""
+    if not target.startswith("files/") or not target.endswith(".html"):
+        return ""
+    rel = target[len("files/"):-len(".html")]
+    return rel if "." in posixpath.basename(rel) else rel + ".md"
+
+
 def _localise(page: Page, held: dict[str, str]) -> str:
     """A page's HTML inside the one document: ids prefixed with the page's id, links to held pages as
     links inside the PDF, links to anything else as plain text, the navigation line left out."""
@@ -134,10 +142,15 @@ def _localise(page: Page, held: dict[str, str]) -> str:
             return "<a>"
         target = posixpath.normpath(posixpath.join(posixpath.dirname(page.path), path))
         if target not in held:
-            return "<a>"
+            return f'<a data-file="{html.escape(_repository_file(target))}">'
         pid = held[target]
         return f'<a href="#{(pid + "-" + frag) if pid and frag else frag or pid or "top"}">'
     body = re.sub(r'<a href="([^"]*)">', link, body)
+
+    def unheld(m: re.Match[str]) -> str:  # a file the PDF does not hold: named where the label does not
+        file, label = html.unescape(m.group(1)), m.group(2)
+        return label if not file or file in _text(label) else f"{label} (<code>{html.escape(file)}</code>)"
+    body = re.sub(r'<a data-file="([^"]*)">(.*?)</a>', unheld, body, flags=re.S)
     body = re.sub(r'src="(?:\.\./)*svg/', 'src="svg/', body)
     first_row = "<table>\n<thead>\n<tr>\n<th>Ver#</th>"  # table 5.1: one page
     body = body.replace(first_row, first_row.replace("<table>", '<table class="one-page">'))
