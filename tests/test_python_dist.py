@@ -144,6 +144,8 @@ def test_cbfgen_wheel_generates_from_a_spec_argument(outside: Path) -> None:
     assert site_links.markdown_problems(bare / "docs", bare.parent) == []
     index = (bare / "docs" / "golden" / "index.md").read_text(encoding="utf-8")
     assert "No golden case was given" in index and "](" + "../../../conformance" not in index
+    for page in (bare / "docs" / "cut.md", next((bare / "docs" / "commands").glob("*.md"))):
+        assert "No golden case was given to cbfgen" in page.read_text(encoding="utf-8"), page
     broken = index + "\n[x](../missing.md) [y](../index.md#nowhere)\n"
     (bare / "docs" / "golden" / "index.md").write_text(broken, encoding="utf-8")
     assert len(site_links.markdown_problems(bare / "docs", bare.parent)) == 2
