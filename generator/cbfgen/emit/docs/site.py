@@ -51,6 +51,7 @@ SEARCH_OPTIONS = {"fields": ["title", "text"], "storeFields": ["title", "url", "
 _ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
 _TAG = re.compile(r"<[^>]+>")
 _HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
+_DATE_CELL = re.compile(r"<td>([0-9]{4}-[0-9]{2}-[0-9]{2})</td>")
 
 
 class SearchError(RuntimeError):
@@ -179,7 +180,9 @@ def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
     """(title, body HTML) of one Markdown page (page: its HTML path in the site)."""
     tokens = md.parse(text)
     _walk(tokens, page, imports, source)
-    return _title(tokens), md.renderer.render(tokens, md.options, {})
+    # a date alone in a cell stays on one line (narrow columns broke "2027-01-15" after its hyphen)
+    body = _DATE_CELL.sub(r'<td style="white-space: nowrap">\1</td>', md.renderer.render(tokens, md.options, {}))
+    return _title(tokens), body
 
 
 def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:
