@@ -288,6 +288,18 @@ def test_search_titles_a_part_without_heading_by_whole_words() -> None:
     assert all(w in body for w in title[:-2].split())
 
 
+def test_a_long_title_wraps_at_a_dot_or_underscore_and_a_date_cell_not_at_all() -> None:
+    """At 390 px a golden case's h1 broke inside a word ("helix_ra / w_normal") and a date column broke
+    "2027-01-15" after a hyphen; the title text, the page's <title> and links stay as they were."""
+    from cbfgen.emit.docs.site import Imports, _markdown, to_html
+
+    title, body = to_html(_markdown(), "# Golden case check.6.4.5.helix_raw\n\n| d |\n|---|\n| 2027-01-15 |\n",
+                          "golden/x.html", Imports())
+    assert title == "Golden case check.6.4.5.helix_raw"
+    assert "<h1>Golden case check.6.4.5.<wbr>helix_<wbr>raw</h1>" in body
+    assert '<td style="white-space: nowrap">2027-01-15</td>' in body
+
+
 def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
     index = _parsed_page(html_site / "index.html")
     text = _text(index)

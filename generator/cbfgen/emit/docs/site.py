@@ -52,6 +52,8 @@ _ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
 _TAG = re.compile(r"<[^>]+>")
 _HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
 _DATE_CELL = re.compile(r"<td>([0-9]{4}-[0-9]{2}-[0-9]{2})</td>")
+_H1 = re.compile(r"(<h1>)(.*?)(</h1>)", re.S)
+_BREAK = re.compile(r"([._])(?=[A-Za-z])")
 
 
 class SearchError(RuntimeError):
@@ -181,8 +183,14 @@ def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
     tokens = md.parse(text)
     _walk(tokens, page, imports, source)
     # a date alone in a cell stays on one line (narrow columns broke "2027-01-15" after its hyphen)
-    body = _DATE_CELL.sub(r'<td style="white-space: nowrap">\1</td>', md.renderer.render(tokens, md.options, {}))
-    return _title(tokens), body
+    rendered: str = md.renderer.render(tokens, md.options, {})
+    body = _DATE_CELL.sub(r'<td style="white-space: nowrap">\1</td>', rendered)
+
+    def breaks(m: re.Match[str]) -> str:  # in the h1's text, not in its tags' attributes
+        text = re.sub(r"(>[^<]*)", lambda t: _BREAK.sub(r"\1<wbr>", t.group(1)), ">" + m.group(2))[1:]
+        return m.group(1) + text + m.group(3)
+    # a long name in a title (a golden case's) may wrap after a dot or an underscore, not inside a word
+    return _title(tokens), _H1.sub(breaks, body)
 
 
 def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:
