@@ -8,7 +8,7 @@ contradicts itself. `line` attributes point back into the YAML.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from .registry import TYPES, FieldType, Params, Target
@@ -122,6 +122,18 @@ class Layout:
             return 1 if nb == self.size else None
         n, extra = divmod(nb - self.size, rep.size)
         return n if nb >= self.size and not extra and rep.repeat[0] <= n <= rep.repeat[1] else None
+
+    def sized(self, nb: int) -> Layout | None:
+        """This layout as it stands in a record of nb argument bytes, else None: a repeated group
+        spelled out as its n items, fields named ``name[i]`` one after another (what a hex dump or
+        a CUT line shows item by item)."""
+        n = self.count_for(nb)
+        rep = self.repeated
+        if n is None or rep is None:
+            return self if n is not None else None
+        items = tuple(replace(rep, name=f"{rep.name}[{i}]", offset=rep.offset + i * rep.size, repeat=None)
+                      for i in range(n))
+        return replace(self, size=nb, args=(*self.fixed_args, *items))
 
 
 @dataclass(frozen=True)
