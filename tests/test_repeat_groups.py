@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 
 import pytest
+import yaml
 from conftest import HYPOTHESIS_PROFILE, REPO, dump_yaml, spec_doc
 from revisions.drill import apply_edit, load_fixture, render
 
@@ -141,3 +142,53 @@ def test_round_trips_for_random_n(package: tuple[Path, str]) -> None:
                          text=True, cwd=pkg)
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-4000:]
     assert run.stdout.strip().endswith("ok")
+
+
+def test_diff_classifies_groups(tmp_path: Path) -> None:
+    """cbfgen diff: the new variable command is a command_added whose size says nb = fixed + k n; a
+    changed min or max of an existing version's group changes which files are judged valid: breaking."""
+    from cbfgen.diff import diff
+
+    base = tmp_path / "base"
+    base.mkdir()
+    new_path = _revised_spec(base)
+    narrowed = yaml.safe_load(new_path.read_text(encoding="utf-8"))
+    name = render("${name:POLYLINE}", spec_doc(), "test")
+    group = next(c for c in narrowed["commands"] if c["name"] == name)["layouts"][0]["args"][-1]
+    group["repeat"]["max"] -= 1
+    narrow_path = tmp_path / "narrow.yaml"
+    narrow_path.write_text(dump_yaml(narrowed), encoding="utf-8")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(loader, "repeat_unsupported", lambda: ())
+        old, new, narrow = loader.load(REPO / "spec" / "cbf.yaml"), loader.load(new_path), loader.load(narrow_path)
+    added = [c for c in diff(old, new).changes if c.kind == "command_added"]
+    assert added and all(" n (" in c.detail for c in added)
+    changed = [c for c in diff(new, narrow).changes if c.kind == "field_repeat_changed"]
+    assert changed and all(c.breaking for c in changed)
+
+
+def test_kaitai_reads_the_group_count_from_nb(tmp_path: Path) -> None:
+    """The .ksy: the group as `repeat: expr` with n from the argument substream's size, one args case per
+    nb the group takes, and the arg_size rule accepting exactly nb = fixed + k n for n in min..max."""
+    from cbfgen.emit.kaitai import build
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(loader, "repeat_unsupported", lambda: ())
+        spec = loader.load(_revised_spec(tmp_path))
+    ksy = build(spec)
+    cmd = next(c for c in spec.commands if any(lay.repeated is not None for lay in c.layouts))
+    lay = next(lay for lay in cmd.layouts if lay.repeated is not None)
+    rep = lay.repeated
+    assert rep is not None and rep.repeat is not None
+    seq = ksy["types"]["args_" + cmd.name.lower()]["seq"]
+    assert seq[-1]["repeat"] == "expr"
+    assert seq[-1]["repeat-expr"] == f"(_io.size - {lay.size}) / {rep.size}" + (
+        f" * {rep.count}" if rep.count > 1 else "")
+    record = {a["id"]: a for a in ksy["types"]["record"]["seq"]}
+    cases = record["args"]["type"]["cases"]
+    vi = 1 + [v.id for v in spec.versions].index(lay.versions[0])
+    taken = {nb for nb in range(256) if cases.get(cmd.code * 65536 + nb * 256 + vi) == "args_" + cmd.name.lower()}
+    assert taken == set(lay.sizes)
+    lo, hi = lay.size + rep.size * rep.repeat[0], lay.size + rep.size * rep.repeat[1]
+    size_rule = next(a for a in record.values() if a.get("valid", {}).get("expr", "").count("?"))
+    assert f"(_ >= {lo} and _ <= {hi} and (_ - {lay.size}) % {rep.size} == 0)" in size_rule["valid"]["expr"]
