@@ -826,8 +826,7 @@ def _repeat_pass(ctx: _Ctx, st: _State) -> None:
                 continue
             if gaps:
                 ctx.at(rep.line, f"{cmd.name} argument {rep.name}: a repeated argument group is not implemented by "
-                                 f"the {', '.join(gaps)} binding{'s' if len(gaps) > 1 else ''} "
-                                 f"(generator/cbfgen/registry.py REPEAT_BINDINGS)")
+                                 f"the binding(s) {', '.join(gaps)} (generator/cbfgen/registry.py REPEAT_BINDINGS)")
             for what, arg in roles:
                 point_end = what == "motion.end" and (cmd.motion or {}).get("kind") == "point"
                 if arg == rep.name and not point_end:
