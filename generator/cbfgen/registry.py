@@ -147,6 +147,16 @@ TYPES: dict[str, FieldType] = {
 BINDINGS = ("python", "kaitai", "c")
 
 
+# The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
+# fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
+REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai")
+
+
+def repeat_unsupported() -> tuple[str, ...]:
+    """The bindings that cannot carry a repeated argument group yet; empty: all can."""
+    return tuple(b for b in BINDINGS if b not in REPEAT_BINDINGS)
+
+
 def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
     When a binding learns a type, its rule here changes, and nothing else in the loader."""

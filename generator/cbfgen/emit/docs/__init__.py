@@ -221,7 +221,11 @@ def figures(spec: Spec) -> dict[str, str]:
         for lay in c.layouts:
             if lay.args:
                 name = f"{c.name}{' ' + lay.variant if lay.variant else ''}"
-                out[layout_svg(lay)] = svg.byte_field(f"{name} arguments, {lay.size} bytes", lay.args, lay.size)
+                # a repeated group (issue 25, point 3): drawn with its fewest items, named name[i]
+                shown = lay.sized(lay.sizes[0]) if lay.repeated is not None else lay
+                rep = f" + {lay.repeated.size}·n" if lay.repeated is not None else ""
+                out[layout_svg(lay)] = svg.byte_field(f"{name} arguments, {lay.size}{rep} bytes",
+                                                      (shown or lay).args, (shown or lay).size)
     circle = _motion_names(spec, "circle")
     if circle:
         out[MOTION_SVG] = svg.motion(circle, _motion_names(spec, "helix"), "Circle and helix end points")
