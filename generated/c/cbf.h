@@ -4139,7 +4139,7 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
             bad = 1;
         prev = x;
     }
-    if (bad) { /* "FCPARMS: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
+    if (bad) { /* "<command>: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
         char msg[256];
         size_t at = 0;
         cbf__cat(msg, sizeof msg, &at, "%s: ", cbf__commands[cmd].name);
@@ -4955,7 +4955,7 @@ static int cbf__file_sum_folds(int profile, size_t *start)
     return 1;
 }
 
-/* arg_size: "LINE with 20 argument bytes; expected 24" (the sizes of the command's layouts in the
+/* arg_size: "<command> with 20 argument bytes; expected 24" (the sizes of the command's layouts in the
  * file's version that the profile accepts, ascending, each once). Cold: a record of a bad size. */
 CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec, size_t off, size_t nb)
 {
@@ -4985,7 +4985,7 @@ CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec
     cbf__each(v, CBF__KIND_ARG_SIZE, rec, off, "%s", msg);
 }
 
-/* shape: the file ends inside a shape, named by the STARTSHAPE that opened it. */
+/* shape: the file ends inside a shape, named by the command that opened it. */
 CBF__COLD static void cbf__shape_unclosed(cbf__vctx *v)
 {
     const cbf_field_info *sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);

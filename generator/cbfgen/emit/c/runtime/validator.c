@@ -579,7 +579,7 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
             bad = 1;
         prev = x;
     }
-    if (bad) { /* "FCPARMS: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
+    if (bad) { /* "<command>: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
         char msg[256];
         size_t at = 0;
         cbf__cat(msg, sizeof msg, &at, "%s: ", cbf__commands[cmd].name);
