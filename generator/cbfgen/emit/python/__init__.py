@@ -5,7 +5,7 @@ generated/python/cbf/."""
 from __future__ import annotations
 
 import json
-from dataclasses import replace
+from dataclasses import asdict, replace
 from pathlib import Path
 from typing import Any
 
@@ -13,6 +13,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...options import option_rules
+from ...registry import kind as check_kind
 from ...render import environment
 from .machine import machine_data, machine_schema
 
@@ -97,7 +98,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
              "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
-             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity}
+             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity,
+             "accepts": None if (a := check_kind(c.kind).accepted(c)) is None else asdict(a)}
             for c in spec.checks
         ],
         "cut": spec.cut,
