@@ -119,7 +119,9 @@ class Diff:
 
 # -- descriptions ---------------------------------------------------------------
 def _type_text(f: Field) -> str:
-    return f"{f.type}[{f.count}]" if f.count > 1 else f.type
+    text = f"{f.type}[{f.count}]" if f.count > 1 else f.type
+    # a repeated group (issue 25, point 3): n items, n in min..max
+    return text + (f" x n ({f.repeat[0]} <= n <= {f.repeat[1]})" if f.repeat is not None else "")
 
 
 def describe_field(f: Field) -> str:
@@ -173,7 +175,8 @@ def compare_fields(old: Iterable[Field], new: Iterable[Field], version: str | No
             add("field_retyped", f"{o.name} retyped from {_type_text(o)} to {_type_text(n)}")
         for attr, kind in (("unit", "field_unit_changed"), ("magic", "field_value_changed"),
                            ("role", "field_role_changed"), ("checksum", "field_role_changed"),
-                           ("reserved", "field_role_changed"), ("text", "field_role_changed")):
+                           ("reserved", "field_role_changed"), ("text", "field_role_changed"),
+                           ("repeat", "field_repeat_changed")):  # which nb a group takes: a file's judgement
             a, b = getattr(o, attr), getattr(n, attr)
             if a != b:
                 add(kind, f"{o.name} {attr} changed from {a!r} to {b!r}")
@@ -286,7 +289,9 @@ def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: 
             continue
         if any(c.code == nc.code and c.available_in(old_vid) and c.name not in new_cmds for c in old.commands):
             continue  # a rename, reported above
-        sizes = "/".join(str(lay.size) for lay in nc.layouts_for(new_vid))
+        sizes = "/".join(str(lay.size) if lay.repeated is None or lay.repeated.repeat is None else
+                         f"{lay.size} + {lay.repeated.size} n ({lay.repeated.repeat[0]} <= n <= "
+                         f"{lay.repeated.repeat[1]})" for lay in nc.layouts_for(new_vid))
         out.append(Change("command_added", new_vid, nc.name,
                           f"code 0x{nc.code:02X}, {sizes} argument byte(s)", breaking))
     return out

@@ -24,8 +24,9 @@ See generator/README.md, "Extending the spec language".
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import MISSING, dataclass, fields
-from typing import Literal
+from typing import Any, Literal
 
 # -- field types ------------------------------------------------------------------------------
 
@@ -147,6 +148,16 @@ TYPES: dict[str, FieldType] = {
 BINDINGS = ("python", "kaitai", "c")
 
 
+# The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
+# fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
+REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai")
+
+
+def repeat_unsupported() -> tuple[str, ...]:
+    """The bindings that cannot carry a repeated argument group yet; empty: all can."""
+    return tuple(b for b in BINDINGS if b not in REPEAT_BINDINGS)
+
+
 def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
     When a binding learns a type, its rule here changes, and nothing else in the loader."""
@@ -261,6 +272,22 @@ Scope = Literal["file", "record"]
 
 
 @dataclass(frozen=True)
+class Accepts:
+    """The values a check of a value-bounding kind accepts in each of its target arguments: what
+    a generator of valid files (the Python runtime's ``testing``) may draw. A new kind that bounds
+    values says it here, and the generators follow without naming the kind."""
+
+    min: float | None = None
+    max: float | None = None
+    min_open: bool = False  # min itself is refused (``positive``: > 0)
+    nonzero: bool = False  # a vector of zeros is refused
+
+
+def _at_least(bound: float, open_: bool = False) -> Callable[[Any], Accepts]:
+    return lambda check: Accepts(min=bound, min_open=open_)
+
+
+@dataclass(frozen=True)
 class CheckKind:
     """A check kind. ``scope``: file (judged once a file) or record (a kernel over records).
     ``repeatable``: several checks of the kind may exist, and every binding runs each one.
@@ -273,6 +300,11 @@ class CheckKind:
     repeatable: bool = True
     kaitai: bool = False
     target_shape: RoleArg | None = None  # what each target argument must be (None: the kind checks it itself)
+    accepts: Callable[[Any], Accepts] | None = None  # a check (model.Check) -> the values it accepts
+
+    def accepted(self, check: Any) -> Accepts | None:
+        """What ``check`` (of this kind) accepts in its targets; None: the kind bounds no value."""
+        return None if self.accepts is None else self.accepts(check)
 
     @property
     def keys(self) -> tuple[str, ...]:
@@ -295,8 +327,8 @@ class CheckKind:
 
 
 def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = False,
-       target: RoleArg | None = None) -> CheckKind:
-    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target)
+       target: RoleArg | None = None, accepts: Callable[[Any], Accepts] | None = None) -> CheckKind:
+    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target, accepts=accepts)
 
 
 # In the order of the C engine's kind enum (and of the schema's list).
@@ -324,9 +356,11 @@ _KINDS = (
     _k("string_tail", NoParams, "record", "only NULs follow a string's first NUL"),
     _k("string_ascii", NoParams, "record", "strings are printable ASCII"),
     _k("finite", NoParams, "record", "float arguments are finite"),
-    _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM),
-    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC),
-    _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM),
+    _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM, accepts=_at_least(0.0, True)),
+    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC,
+       accepts=lambda check: Accepts(nonzero=True)),
+    _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM,
+       accepts=lambda check: Accepts(min=check.min, max=check.max)),
     _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record", target=_NUM),
     _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
     _k("orientation", NoParams, "record", "a 5-axis command starts at the current orientation"),

@@ -252,6 +252,7 @@ class ProfileRow:
     file_pad: tuple[int, ...]
     hint_pad: tuple[int, ...]
     hint_alg_pad: tuple[str, ...]
+    hint_owner_pad: tuple[int, ...]  # the profile (index) that accepts each hint coverage, -1: none
 
 
 @dataclass(frozen=True)
@@ -690,13 +691,16 @@ def _profiles(spec: Spec) -> Profiles:
     for p in spec.profiles:
         # a hint coverage is computed with the algorithm of the profile that accepts it
         owners = [next((q for q in spec.profiles if x in q.file_coverages), p) for x in p.hint_coverages]
+        owner_ix = tuple(next((k for k, q in enumerate(spec.profiles) if x in q.file_coverages), -1)
+                         for x in p.hint_coverages)
         file = tuple(cov_names.index(x) for x in p.file_coverages)
         hint = tuple(cov_names.index(x) for x in p.hint_coverages)
         hint_alg = tuple(alg(q.id) for q in owners)
         rows.append(ProfileRow(id=p.id, macro=macro(p.id), doc=comment(p.doc), file=file, hint=hint,
                                file_alg=alg(p.id), hint_alg=hint_alg, file_pad=file + (-1,) * (width - len(file)),
                                hint_pad=hint + (-1,) * (width - len(hint)),
-                               hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg))))
+                               hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg)),
+                               hint_owner_pad=owner_ix + (-1,) * (width - len(owner_ix))))
     # per command and version: the index of the one availability check covering a command the
     # version lacks (the loader guarantees one), -1 when it has it
     check_index = {ch.id: i for i, ch in enumerate(spec.checks)}

@@ -55,6 +55,7 @@ typedef struct cbf__profile {
     int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
     int file_alg;                 /* the file checksum's algorithm under this profile */
     int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
+    int hint_owner[CBF__MAX_COVERAGES]; /* that profile (its index; -1: none accepts it) */
 } cbf__profile;
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
