@@ -16,6 +16,8 @@ import shutil
 import sys
 from pathlib import Path
 
+import yaml
+
 ROOT = Path(__file__).resolve().parent
 REPO = ROOT.parent
 PAGE = "RUN-AGAINST-YOUR-READER.md"
@@ -32,13 +34,14 @@ def toolkit_version() -> str:
 
 
 def spec_revision() -> str:
-    """The spec revision the golden cases come from (the runner's about.py reads it the same way)."""
-    text = (REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8")
-    part = re.search(r'^  part_number: "?([^"\n]+)"?', text, re.M)
-    rev = re.search(r'^  revision: "?([^"\n]+)"?', text, re.M)
-    if part is None or rev is None:
+    """The spec revision the golden cases come from, read as YAML (not as text: a revised spec written by
+    another dumper quotes its scalars its own way; the runner's about.py reads it the same way)."""
+    doc = yaml.load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"),
+                    Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    meta = doc.get("meta") if isinstance(doc, dict) else None
+    if not isinstance(meta, dict) or meta.get("part_number") is None or meta.get("revision") is None:
         raise SystemExit("conformance.kit: no meta part_number / revision in spec/cbf.yaml")
-    return f"{part.group(1)} rev {rev.group(1)}"
+    return f"{meta['part_number']} rev {meta['revision']}"
 
 
 def golden_files(golden: Path) -> list[Path]:

@@ -9,6 +9,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import yaml
+
 __all__ = ["SPEC_REVISION", "VERSION", "version_line"]
 
 
@@ -16,12 +18,14 @@ def _from_repo() -> tuple[str, str]:
     root = Path(__file__).resolve().parents[2]
     init = (root / "generator" / "cbfgen" / "__init__.py").read_text(encoding="utf-8")
     version = re.search(r'^__version__ = "([^"]+)"', init, re.M)
-    spec = (root / "spec" / "cbf.yaml").read_text(encoding="utf-8")
-    part = re.search(r'^  part_number: "?([^"\n]+)"?', spec, re.M)
-    rev = re.search(r'^  revision: "?([^"\n]+)"?', spec, re.M)
-    if not (version and part and rev):
+    # the spec read as YAML, not as text: a revised spec written by another dumper quotes its scalars its own way
+    text = (root / "spec" / "cbf.yaml").read_text(encoding="utf-8")
+    doc = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    meta = doc.get("meta") if isinstance(doc, dict) else None
+    if not (version and isinstance(meta, dict) and meta.get("part_number") is not None
+            and meta.get("revision") is not None):
         return "unknown", "unknown"
-    return version.group(1), f"{part.group(1)} rev {rev.group(1)}"
+    return version.group(1), f"{meta['part_number']} rev {meta['revision']}"
 
 
 def _stamped() -> tuple[str, str]:
