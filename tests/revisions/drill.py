@@ -16,7 +16,8 @@ runs, in order: `cbfgen diff` (the classification the fixture states),
 .hex: the assembler follows the revised checksums; then the docs made from
 them regenerated), a check that generated/ is fresh (the README's order
 leaves nothing to regenerate), `make conformance`
-(every binding) and the test suite. `--quick` runs the subset `make test`
+(every binding) and the test suite (in the copy indexed as a git repository,
+as a commit of the revision would track it). `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
 the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
 then applies them all to ONE tree, where the steps run once (drill_together).
