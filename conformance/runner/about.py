@@ -17,8 +17,9 @@ def _from_repo() -> tuple[str, str]:
     init = (root / "generator" / "cbfgen" / "__init__.py").read_text(encoding="utf-8")
     version = re.search(r'^__version__ = "([^"]+)"', init, re.M)
     spec = (root / "spec" / "cbf.yaml").read_text(encoding="utf-8")
-    part = re.search(r'^  part_number: "?([^"\n]+)"?', spec, re.M)
-    rev = re.search(r'^  revision: "?([^"\n]+)"?', spec, re.M)
+    # either quote: the revision drill writes the spec back with YAML's single quotes
+    part = re.search(r"^  part_number: [\"']?([^\"'\n]+)[\"']?", spec, re.M)
+    rev = re.search(r"^  revision: [\"']?([^\"'\n]+)[\"']?", spec, re.M)
     if not (version and part and rev):
         return "unknown", "unknown"
     return version.group(1), f"{part.group(1)} rev {rev.group(1)}"

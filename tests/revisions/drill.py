@@ -183,7 +183,11 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     lacks = [str(c["name"]) for c in cmds if not _has(c, nid) or c is drop]
     writable = [str(v["id"]) for v in versions if v.get("writable")]
     unwritable = [v for v in versions if not v.get("writable")]
+    older = max((v for v in versions if v is not newest), key=_key, default=newest)  # the newest but one
     out = {"newest_version": nid, "newest_major": str(newest["major"]), "newest_header": str(newest["header"]),
+           "older_version": str(older["id"]), "older_major": str(older["major"]),
+           "older_minor": str(older.get("minor") or 0),
+           "newest_lacks": _flow([str(c["name"]) for c in cmds if not _has(c, nid)]),  # what a copy of it lacks
            "new_version": f"{major}.0", "new_major": str(major), "free_clause": clause, "free_code": str(code),
            "free_code_hex": f"{code:02x}", "writable": _flow(writable),
            "writable_with_new": _prose([*writable, f"{major}.0"]),
@@ -392,7 +396,11 @@ def copy_tree(dest: Path) -> None:
                             capture_output=True).stdout.decode().split("\0")
     for rel in listed:
         src = REPO / rel
-        if not rel or not src.is_file() or src.is_symlink():
+        if rel and src.is_symlink():  # a tracked link (schemas/*.json) stays a link, relative as committed
+            (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+            (dest / rel).symlink_to(os.readlink(src))
+            continue
+        if not rel or not src.is_file():
             continue
         (dest / rel).parent.mkdir(parents=True, exist_ok=True)
         try:

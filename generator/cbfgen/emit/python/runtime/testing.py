@@ -97,6 +97,8 @@ class _Limits:
     hi: float | None = None
     positive: bool = False
     nonzero: bool = False
+    lo_open: bool = False  # a range's open bound (min_exclusive, max_exclusive): the value must differ
+    hi_open: bool = False
     monotone: list[str] = field(default_factory=list)  # keys of nondecreasing checks
 
 
@@ -125,8 +127,10 @@ def _rules() -> _Rules:
                 elif kind == "range":
                     if ch["min"] is not None:
                         lim.lo = ch["min"] if lim.lo is None else max(lim.lo, ch["min"])
+                        lim.lo_open = lim.lo_open or bool(ch["min_exclusive"])
                     if ch["max"] is not None:
                         lim.hi = ch["max"] if lim.hi is None else min(lim.hi, ch["max"])
+                        lim.hi_open = lim.hi_open or bool(ch["max_exclusive"])
                 elif kind == "nondecreasing":
                     lim.monotone.append(f"{ch['id']}:{cmd}.{n}")
                 elif kind == "machine_limits":  # the default machine (L1): its tightest bound on any axis
@@ -246,6 +250,10 @@ class _Draw:
             lo = max(lo, lim.lo)
         if lim.hi is not None:
             hi = min(hi, lim.hi)
+            if lim.hi_open and hi == lim.hi:
+                hi = _f32_step(_f32(hi), up=False)  # an open bound: the binary32 just below it
+        if lim.lo_open and lim.lo is not None and lo == lim.lo:
+            lo = _f32_step(_f32(lo), up=True)
         if lim.positive:
             lo = max(lo, 0.0)
         for key in lim.monotone:
