@@ -53,6 +53,7 @@ from .registry import (
     Target,
     role_arg_fits,
     unsupported,
+    unsupported_in_head,
 )
 
 SCHEMA_PATH = Path(__file__).with_name("spec.schema.json")
@@ -749,6 +750,12 @@ def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
             what = f"{f.type} x {f.count}" if f.count != 1 else f.type
             ctx.at(f.line, f"field {f.name}: type {what} is not implemented by the "
                            f"{', '.join(gaps)} binding{'s' if len(gaps) > 1 else ''} (generator/cbfgen/registry.py)")
+    for f in [f for h in st.headers.values() for f in h.fields] + list(st.record.fields if st.record else ()):
+        head_gaps = unsupported_in_head(TYPES[f.type])
+        if head_gaps:
+            ctx.at(f.line, f"field {f.name}: type {f.type} in a header or record head is not implemented by the "
+                           f"{', '.join(head_gaps)} binding (it reads those fields unsigned, at most 4 bytes; "
+                           f"generator/cbfgen/registry.py)")
     headers = tuple(st.headers.values())
     shared = {f.name for f in common_header_prefix(headers)}
     for h in headers:

@@ -160,6 +160,13 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     return tuple(b for b in BINDINGS if b in gaps)
 
 
+def unsupported_in_head(t: FieldType) -> tuple[str, ...]:
+    """The bindings that cannot carry a header or record-head field of type ``t``: the C engine
+    reads those (magic numbers, counts, sequence numbers, codes, checksums) unsigned, at most 4
+    bytes wide; an argument may be any integer."""
+    return ("c",) if t.is_integer and (t.kind == "sint" or (t.size or 0) > 4) else ()
+
+
 # What the argument a role names must be, by role and key: ("float", 3) a vector of three floats
 # (the runtimes' geometry is 3-D), ("float", 1) one float, ("string", 1) a string, ("integer", 1)
 # an integer. The loader refuses a role naming another argument (the kernels read these shapes).
