@@ -48,7 +48,8 @@ def test_the_old_cut_keyword_and_json_name_read_as_the_new_command(old: str, new
                 r["command"] = old
         back = cbf.from_canonical(doc)
         assert cbf.encode(back) == want, path.name
-        assert cbf.to_canonical(back)["records"] == cbf.to_canonical(model)["records"]  # written as the new name
+        names = [r.get("command") for r in cbf.to_canonical(back)["records"]]
+        assert old not in names and new in names  # written as the new name
 
 
 @pytest.mark.parametrize(("old", "new"), FORMER)
