@@ -34,8 +34,8 @@ def toolkit_version() -> str:
 def spec_revision() -> str:
     """The spec revision the golden cases come from (the runner's about.py reads it the same way)."""
     text = (REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8")
-    part = re.search(r'^  part_number: "?([^"\n]+)"?', text, re.M)
-    rev = re.search(r'^  revision: "?([^"\n]+)"?', text, re.M)
+    part = re.search(r"^  part_number: [\"']?([^\"'\n]+)[\"']?", text, re.M)  # either quote (the drill's YAML)
+    rev = re.search(r"^  revision: [\"']?([^\"'\n]+)[\"']?", text, re.M)
     if part is None or rev is None:
         raise SystemExit("conformance.kit: no meta part_number / revision in spec/cbf.yaml")
     return f"{part.group(1)} rev {rev.group(1)}"
