@@ -12,8 +12,9 @@
 #   javac + mvn (JDK >= 11)      the Kaitai Java parser: its Maven package, testee and consumer test
 #   gcc, g++, clang, libclang-rt-14-dev   the C binding, libFuzzer and sanitizers
 #   graphviz                     Kaitai's graphviz diagram in the docs
-#   chromium                     only with CBF_WANT_CHROMIUM=1: the headless browser
-#                                of `make docs-check`
+#   chromium, pdftotext          only with CBF_WANT_CHROMIUM=1: the headless browser of
+#                                `make docs-check` and poppler-utils, whose pdftotext -bbox
+#                                measures the printed PDF's pages (no page left mostly blank)
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 # command -> Debian package
@@ -22,7 +23,7 @@ declare -A pkg_of=(
   [gcc]=gcc [g++]=g++ [make]=make [git]=git [clang]=clang [dot]=graphviz
 )
 order=(python3 node npm go javac mvn gcc g++ make git clang dot)
-[ "${CBF_WANT_CHROMIUM:-0}" = 1 ] && { pkg_of[chromium]=chromium; order+=(chromium); }
+[ "${CBF_WANT_CHROMIUM:-0}" = 1 ] && { pkg_of[chromium]=chromium; pkg_of[pdftotext]=poppler-utils; order+=(chromium pdftotext); }
 missing=()
 for cmd in "${order[@]}"; do
   command -v "$cmd" >/dev/null 2>&1 || missing+=("${pkg_of[$cmd]}")

@@ -8,7 +8,10 @@
 #               The search index is built by node with MiniSearch from node_modules.
 #   docs-pdf    headless Chromium prints the whole site to $(DOCS_PDF) in 300071's frame
 #               (header and footer from `meta`, page N of M); fails unless each chapter is on
-#               the page the contents give (generator/cbfgen/emit/docs/pdf.py).
+#               the page the contents give, every page but a part's last is filled at least half
+#               way down (pdftotext -bbox of poppler-utils, installed with chromium), no navigation
+#               line of the site is printed and every link stays inside the PDF
+#               (generator/cbfgen/emit/docs/pdf.py).
 #   docs-check  every link of the site stays inside it and resolves; in headless Chromium
 #               (Debian `chromium`, installed by .ci/setup-debian.sh with CBF_WANT_CHROMIUM=1)
 #               no page of the site overflows at 1280 px or 390 px, every image loads, no

@@ -58,7 +58,7 @@ def test_missing_report_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path)
 
     monkeypatch.setattr(docs, "REPORT", tmp_path / "absent.json")
     text = docs.emit(SPEC)["docs/index.md"].decode()
-    assert "No conformance report is present: no status is shown." in text
+    assert "No conformance report is present: no status is shown (`cbfgen --report FILE`" in text
     assert "pass (" not in text
 
 

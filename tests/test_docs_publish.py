@@ -393,3 +393,65 @@ def test_pdf_check_fails_when_the_contents_do_not_match_the_pages() -> None:
     assert verify("r.pdf", ["A", "B"], ["2", "3"], [(_key("A"), 2), (_key("B"), 2)], texts) != []
     assert verify("r.pdf", ["Profiles"], ["2"], [(_key("Profiles"), 2)], ["Contents", "Pro\ufb01les here"]) == []
     assert verify("r.pdf", ["Profiles"], ["1"], [(_key("Profiles"), 1)], ["Contents", "Profiles"]) != []
+
+
+def test_pdf_check_fails_on_a_dangling_link_and_a_printed_navigation_line() -> None:
+    from cbfgen.emit.docs.pdf import dangling, navigation_printed
+
+    assert dangling('<a id="x"></a><a href="#x">x</a>') == []
+    assert len(dangling('<a id="x"></a><a href="#y">y</a><a href="other.html">o</a>')) == 2
+    assert navigation_printed(["300071 rev 03 · golden cases"], ["a page", "text"]) == []
+    assert navigation_printed(["300071 rev 03 · golden cases"], ["x 300071 rev 03 · golden\ncases y"]) != []
+
+
+@pytest.mark.skipif(not shutil.which("chromium"), reason="Debian chromium not installed (make docs-check)")
+def test_pdf_check_fails_on_a_page_left_mostly_blank_by_a_forced_break(tmp_path: Path) -> None:
+    """A page that ends after one line because the next starts on a new page is mostly blank, unless a
+    part ends there; a page whose text reaches its foot is not. pdftotext (poppler-utils) is installed with
+    chromium (.ci/setup-debian.sh): its absence fails here, not skips."""
+    from cbfgen.emit.docs import browser
+    from cbfgen.emit.docs.cdp import Browser
+    from cbfgen.emit.docs.pdf import BLANK, blank_pages, pdf_pages
+
+    doc = ('<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>t</title></head><body>'
+           '<p>alpha, one line</p><div style="break-before: page; height: 220mm; display: flex; '
+           'align-items: flex-end">beta, at the foot of its page</div>'
+           '<p style="break-before: page">gamma, one line</p></body></html>')
+    (tmp_path / "d.html").write_text(doc, encoding="utf-8")
+    chromium = browser.chromium()
+    assert chromium
+    with Browser(chromium) as b:
+        b.open((tmp_path / "d.html").resolve().as_uri(), 800, 1000)
+        b.pdf(tmp_path / "d.pdf", "<span>page footer</span>", "<span>page header</span>")
+    pages = pdf_pages(tmp_path / "d.pdf")
+    assert [t for _, t in pages] == ["alpha, one line", "beta, at the foot of its page", "gamma, one line"]
+    fills = [f for f, _ in pages]
+    assert fills[0] < BLANK < fills[1] and fills[2] < BLANK
+    assert blank_pages(fills, {2, 3}) == []  # pages 1 and 2 end parts, page 3 ends the document
+    assert [p.split(" is ")[0] for p in blank_pages(fills, {3})] == ["page 1"]
+
+
+def test_pdf_places_every_page_of_the_site(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The PDF holds what the site holds: every Markdown page the docs emitter writes is in the PDF's
+    order; a page it does not name stops the PDF (no silent gap)."""
+    from cbfgen.emit.docs import pdf
+
+    placed = {path for path, _ in pdf.site_pages(SPEC)}
+    assert placed == {rel[len("docs/"):-3] + ".html" for rel in docs.emit(SPEC) if rel.endswith(".md")}
+    real = pdf.emit
+    monkeypatch.setattr(pdf, "emit", lambda spec, ctx=None: {**real(spec, ctx), "docs/extra.md": b"# Extra\n"})
+    with pytest.raises(pdf.Unplaced, match="extra.md"):
+        pdf.site_pages(SPEC)
+
+
+def test_pdf_names_a_repository_file_it_does_not_hold() -> None:
+    """A link of a site page to a repository file (copied under files/) becomes text in the PDF that names
+    the file where its label does not, so the paper refers only to what it holds or to a named file."""
+    from cbfgen.emit.docs.pdf import Page, _localise
+
+    body = ('<p><a href="files/conformance/golden/README.html">the golden README</a>, '
+            '<a href="files/spec/cbf.yaml.html"><code>spec/cbf.yaml</code></a>, <a href="cut.html#x">CUT</a></p>')
+    out = _localise(Page("index.html", "", body), {"index.html": "", "cut.html": "cut"})
+    assert "the golden README (<code>conformance/golden/README.md</code>)" in out
+    assert "<code>spec/cbf.yaml</code>, " in out and "spec/cbf.yaml</code>)" not in out
+    assert '<a href="#cut-x">CUT</a>' in out and "files/" not in out

@@ -277,6 +277,29 @@ def test_search_documents_cover_every_page(html_site: Path) -> None:
     assert index.startswith("window.CBF_SEARCH_INDEX = ") and '\\"documentCount\\":' in index
 
 
+def test_search_titles_a_part_without_heading_by_whole_words() -> None:
+    """At 390 px the result list showed titles cut inside a word ("CIRCL", "the m") after the page's whole
+    title, which the result already shows beside it."""
+    body = ("<html><head><title>Page T · x</title></head><body><main><a id=\"n9\"></a><p>" + "N9 Version 4.0 forbids "
+            "ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX and HELIX5B in every file</p><footer></footer></main></body></html>")
+    docs_ = search_documents({"p.html": body.encode()})
+    title = next(d["title"] for d in docs_ if d["url"] == "p.html#n9")
+    assert title == "N9 Version 4.0 forbids ARC, ARC5B, CIRCLE, CIRCLE5B, HELIX …", title
+    assert all(w in body for w in title[:-2].split())
+
+
+def test_a_long_title_wraps_at_a_dot_or_underscore_and_a_date_cell_not_at_all() -> None:
+    """At 390 px a golden case's h1 broke inside a word ("helix_ra / w_normal") and a date column broke
+    "2027-01-15" after a hyphen; the title text, the page's <title> and links stay as they were."""
+    from cbfgen.emit.docs.site import Imports, _markdown, to_html
+
+    title, body = to_html(_markdown(), "# Golden case check.6.4.5.helix_raw\n\n| d |\n|---|\n| 2027-01-15 |\n",
+                          "golden/x.html", Imports())
+    assert title == "Golden case check.6.4.5.helix_raw"
+    assert "<h1>Golden case check.6.4.5.<wbr>helix_<wbr>raw</h1>" in body
+    assert '<td style="white-space: nowrap">2027-01-15</td>' in body
+
+
 def test_every_command_and_check_is_in_the_html(html_site: Path) -> None:
     index = _parsed_page(html_site / "index.html")
     text = _text(index)
@@ -359,7 +382,7 @@ def test_reliability_tables(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> 
 def test_missing_reliability_is_said(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setattr(docs, "RELIABILITY", tmp_path / "absent.json")
     text = docs.emit(SPEC)["docs/index.md"].decode()
-    assert "No reliability report is present: no figures are shown." in text
+    assert "No reliability report is present: no figures are shown (`cbfgen --report FILE`" in text
     assert " %" not in text[text.index('<a id="reliability"></a>'):]
 
 

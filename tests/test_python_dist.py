@@ -17,6 +17,7 @@ from conftest import clean_venv
 
 import cbf
 import cbfgen
+from cbfgen.emit.docs import site_links
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
@@ -104,9 +105,16 @@ def test_cbfgen_wheel_generates_from_a_spec_argument(outside: Path) -> None:
     # every target, as the README shows it, with the compiler found as cbfgen.ksc says (NODE_PATH), and the
     # docs' inputs given: the wheel carries every file an emitter reads (a missing package-data file, such as
     # the Kaitai Go module's go.sum, fails here and nowhere in the tree)
-    conf = REPO / "conformance"
+    # a consumer's project laid out as this repository is (spec/, conformance/ beside the output folder), so
+    # the docs' links to the spec, the golden README and each case's hex resolve there as they do here
+    (work / "spec").mkdir()
+    shutil.copy(REPO / "spec" / "cbf.yaml", work / "spec" / "cbf.yaml")
+    shutil.copytree(REPO / "conformance", work / "conformance",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.py", "runner", "assembler", "reliability",
+                                                  "testees"))
+    conf = work / "conformance"
     env = dict(no_ksc, NODE_PATH=str(REPO / "node_modules"))
-    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", "out", "--golden",
+    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "spec/cbf.yaml", "--out", "out", "--golden",
                           str(conf / "golden"), "--report", str(conf / "report.json")], cwd=work, env=env,
                          capture_output=True, text=True)
     assert res.returncode == 0 and "Traceback" not in res.stderr, res.stderr[-2000:]
@@ -122,8 +130,23 @@ def test_cbfgen_wheel_generates_from_a_spec_argument(outside: Path) -> None:
                     and (work / "out" / rel).read_bytes() != (REPO / "generated" / rel).read_bytes())
     assert not differ, differ
     assert {f"generated/{r}" for r in written} >= {t for t in tracked if not t.startswith("generated/docs/site/")}
-    # without the docs' inputs the run says which sections stay empty (and still writes every binding)
-    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", "out2", "--only", "docs"], cwd=work,
-                         env=env, capture_output=True, text=True)
+    # without the docs' inputs the run says which sections stay empty (and still writes every binding); its
+    # output folder's parent holds no spec/ or conformance/
+    bare = outside / "bare" / "out"
+    res = subprocess.run([str(bin_ / "cbfgen"), "--spec", "format.yaml", "--out", str(bare), "--only", "docs"],
+                         cwd=work, env=env, capture_output=True, text=True)
     assert res.returncode == 0 and "--golden DIR" in res.stderr and "--report FILE" in res.stderr, res.stderr
+    # the docs read as a site of their own: with the docs' inputs every link resolves in the consumer's tree;
+    # without them (bare, whose parent holds no conformance/ or spec/) the pages that need
+    # them say so and link nothing that is not there; a broken link is seen (the check can fail)
+    assert site_links.markdown_problems(work / "out" / "docs", work) == []
+    assert [p.name for p in (bare / "docs" / "golden").iterdir()] == ["index.md"]
+    assert site_links.markdown_problems(bare / "docs", bare.parent) == []
+    index = (bare / "docs" / "golden" / "index.md").read_text(encoding="utf-8")
+    assert "No golden case was given" in index and "](" + "../../../conformance" not in index
+    for page in (bare / "docs" / "cut.md", next((bare / "docs" / "commands").glob("*.md"))):
+        assert "No golden case was given to cbfgen" in page.read_text(encoding="utf-8"), page
+    broken = index + "\n[x](../missing.md) [y](../index.md#nowhere)\n"
+    (bare / "docs" / "golden" / "index.md").write_text(broken, encoding="utf-8")
+    assert len(site_links.markdown_problems(bare / "docs", bare.parent)) == 2
     assert _run(bin_ / "cbfgen", "--version", cwd=work).stdout.strip() == f"cbfgen {cbfgen.__version__}"

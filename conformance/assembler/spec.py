@@ -79,9 +79,10 @@ def load(path: Path = SPEC) -> SpecSums:
     sizes = _sizes(doc)
     header = next(iter(doc["headers"].values()))
     slots: dict[str, Slot] = {}
-    for f, slot in _tile(header["fields"], sizes):
-        if "checksum" in f:
-            slots[f["checksum"]] = slot
+    for layout in doc["headers"].values():  # a new version's header may carry a checksum field of its own
+        for f, slot in _tile(layout["fields"], sizes):
+            if "checksum" in f:
+                slots.setdefault(f["checksum"], slot)
     record: dict[str, Slot] = {}
     arg_size = None
     for f, slot in _tile(doc["record"]["fields"], sizes):

@@ -1264,7 +1264,8 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
-typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+/* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
+typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 
 typedef struct cbf__profile {
     const char *id;
@@ -1272,6 +1273,7 @@ typedef struct cbf__profile {
     int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
     int file_alg;                 /* the file checksum's algorithm under this profile */
     int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
+    int hint_owner[CBF__MAX_COVERAGES]; /* that profile (its index; -1: none accepts it) */
 } cbf__profile;
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;
@@ -1291,7 +1293,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1295 "cbf.h"
+#line 1297 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1554,15 +1556,15 @@ static const cbf__coverage cbf__coverages[4] = {
 };
 
 static const cbf__ckfield cbf__ckfields[3] = {
-    { CBF__CK_ARGS, CBF__ALG_SUM, 0 },
-    { CBF__CK_HEADER, CBF__ALG_SUM, 1 },
-    { CBF__CK_FILE, CBF__ALG_SUM, 2 },
+    { CBF__CK_ARGS, CBF__ALG_SUM, 0, -1, "args" },
+    { CBF__CK_HEADER, CBF__ALG_SUM, 1, 7, "header" },
+    { CBF__CK_FILE, CBF__ALG_SUM, 2, -1, "file" },
 };
 static const int cbf__fill_order[3] = { CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 
 static const cbf__profile cbf__profiles[2] = {
-    { "default", { 2 }, { 3 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
-    { "implib", { 3 }, { 2 }, CBF__ALG_SUM, { CBF__ALG_SUM } },
+    { "default", { 2 }, { 3 }, CBF__ALG_SUM, { CBF__ALG_SUM }, { 1 } },
+    { "implib", { 3 }, { 2 }, CBF__ALG_SUM, { CBF__ALG_SUM }, { 0 } },
 };
 
 /* Per command and version: the availability check that covers the command
@@ -2299,7 +2301,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2303 "cbf.h"
+#line 2305 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2524,7 +2526,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2528 "cbf.h"
+#line 2530 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2695,7 +2697,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2699 "cbf.h"
+#line 2701 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2856,7 +2858,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2860 "cbf.h"
+#line 2862 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3109,7 +3111,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3113 "cbf.h"
+#line 3115 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -3645,6 +3647,67 @@ static void cbf__each(cbf__vctx *v, int kind, long rec, size_t off, const char *
     }
 }
 
+/* Appends to a message buffer (the findings' words are cbf validate's, the Python runtime's: some are
+ * built in parts); a message longer than the buffer is cut, never overrun. */
+static void cbf__cat(char *buf, size_t size, size_t *at, const char *fmt, ...) CBF__PRINTF(4, 5);
+static void cbf__cat(char *buf, size_t size, size_t *at, const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+    if (*at >= size)
+        return;
+    va_start(ap, fmt);
+    n = vsnprintf(buf + *at, size - *at, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        *at = *at + (size_t)n < size ? *at + (size_t)n : size - 1u;
+}
+
+/* A string value as text: its bytes read as ISO-8859-1 (the codec's string_value), out as UTF-8. */
+static void cbf__text(char *buf, size_t size, size_t *at, const uint8_t *s, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (s[i] < 0x80u)
+            cbf__cat(buf, size, at, "%c", (char)s[i]);
+        else
+            cbf__cat(buf, size, at, "%c%c", (char)(0xC0u | (s[i] >> 6)), (char)(0x80u | (s[i] & 0x3Fu)));
+    }
+}
+
+/* A string value as Python's repr() writes it (the value decoded as ISO-8859-1): quoted with '
+ * unless it holds a ' and no ", backslash escapes for the quote, \\, \t, \n, \r, and \xNN for
+ * the code points str.isprintable() refuses (controls, 0x7F-0xA0, 0xAD). Code points above 0x7F
+ * go out as UTF-8, as Python prints them. */
+static void cbf__repr(char *buf, size_t size, size_t *at, const uint8_t *s, size_t n)
+{
+    size_t i;
+    int sq = 0, dq = 0;
+    char q;
+    for (i = 0; i < n; i++) {
+        sq |= s[i] == 0x27u;
+        dq |= s[i] == 0x22u;
+    }
+    q = sq && !dq ? '"' : '\'';
+    cbf__cat(buf, size, at, "%c", q);
+    for (i = 0; i < n; i++) {
+        uint8_t c = s[i];
+        if (c == (uint8_t)q || c == 0x5Cu)
+            cbf__cat(buf, size, at, "\\%c", (char)c);
+        else if (c == 0x09u)
+            cbf__cat(buf, size, at, "\\t");
+        else if (c == 0x0Au)
+            cbf__cat(buf, size, at, "\\n");
+        else if (c == 0x0Du)
+            cbf__cat(buf, size, at, "\\r");
+        else if (c < 0x20u || (c >= 0x7Fu && c <= 0xA0u) || c == 0xADu)
+            cbf__cat(buf, size, at, "\\x%02x", (unsigned)c);
+        else
+            cbf__text(buf, size, at, &c, 1u);
+    }
+    cbf__cat(buf, size, at, "%c", q);
+}
+
 /* The string's value: the bytes before the first NUL. */
 static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
 {
@@ -3655,24 +3718,31 @@ static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
     return size;
 }
 
-static void cbf__check_string(cbf__vctx *v, const cbf_field_info *f, const uint8_t *base, size_t base_off, long rec)
+/* string_tail and string_ascii on one string field; cmd: the record's command name, NULL in the header. */
+static void cbf__check_string(cbf__vctx *v, const char *cmd, const cbf_field_info *f, const uint8_t *base,
+                              size_t base_off, long rec)
 {
     const uint8_t *s = base + f->offset;
     size_t size = (size_t)f->elem * f->count;
     size_t n = cbf__strvalue_len(s, size), i;
     for (i = n; i < size; i++) {
-        if (s[i] != CBF__PAD) {
-            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset,
-                      "string %s has a non-NUL byte 0x%02x after its first NUL (offset %lu)", f->name,
-                      (unsigned)s[i], (unsigned long)(base_off + f->offset + i));
+        if (s[i] != CBF__PAD) { /* the bytes after the first NUL, in hex, up to the last that is not NUL */
+            char msg[256];
+            size_t at = 0, last = size;
+            while (last > n + 1u && s[last - 1u] == CBF__PAD)
+                last--;
+            cbf__cat(msg, sizeof msg, &at, "%s%s%s: bytes after the first NUL: ", cmd ? cmd : "", cmd ? "." : "",
+                     f->name);
+            for (i = n + 1u; i < last; i++)
+                cbf__cat(msg, sizeof msg, &at, "%02x", (unsigned)s[i]);
+            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset, "%s", msg);
             break;
         }
     }
     for (i = 0; i < n; i++) {
         if (s[i] < 0x20u || s[i] > 0x7Eu) {
-            cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset,
-                      "string %s has byte 0x%02x, not printable ASCII (offset %lu)", f->name, (unsigned)s[i],
-                      (unsigned long)(base_off + f->offset + i));
+            cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset, "%s%s%s: non-ASCII byte 0x%02X",
+                      cmd ? cmd : "", cmd ? "." : "", f->name, (unsigned)s[i]);
             break;
         }
     }
@@ -3696,9 +3766,15 @@ static void cbf__check_part_number(cbf__vctx *v)
     for (a = 0; a < n && cbf__space(s[a]); a++) {}
     for (b = a; b < n && !cbf__space(s[b]); b++) {}
     plen = strlen(v->opt->part_number);
-    if (plen != b - a || (plen && memcmp(s + a, v->opt->part_number, plen) != 0))
-        cbf__each(v, CBF__KIND_PART_NUMBER, -1, f->offset,
-                  "implant descriptor's first word is not the part number %.64s", v->opt->part_number);
+    if (plen != b - a || (plen && memcmp(s + a, v->opt->part_number, plen) != 0)) {
+        char msg[512];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "implant descriptor starts with ");
+        cbf__repr(msg, sizeof msg, &at, s + a, b - a);
+        cbf__cat(msg, sizeof msg, &at, ", expected ");
+        cbf__repr(msg, sizeof msg, &at, (const uint8_t *)v->opt->part_number, plen);
+        cbf__each(v, CBF__KIND_PART_NUMBER, -1, f->offset, "%s", msg);
+    }
 }
 
 /* 4.2: the implant descriptor begins with the part number, so it holds at least one word. */
@@ -3826,8 +3902,7 @@ CBF__INLINE void cbf__continuity_at(cbf__vctx *v, int cmd, int kind, const uint8
         dist = cbf__norm(d);
         if (dist > cbf__tol_position)
             cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + (size_t)o_start,
-                      "%s starts %.6g mm from the current position (%.9g, %.9g, %.9g)",
-                      cbf__commands[cmd].name, dist, v->pos[0], v->pos[1], v->pos[2]);
+                      "%s starts %.6g mm from the current position", cbf__commands[cmd].name, dist);
     }
     if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE) {
         v->pos_ok = xe && ok_e;
@@ -3866,7 +3941,7 @@ CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, long rec, 
         if (!(dot > 0.0 && c2 < dot * dot * v->ori_tan2)) {
             double ang = atan2(cbf__norm(cx), dot) * (180.0 / CBF__PI);
             if (ang > cbf__tol_orientation)
-                cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g degrees from the current orientation",
+                cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g deg from the current orientation",
                           cbf__commands[cmd].name, ang);
         }
     }
@@ -3888,6 +3963,14 @@ static int cbf__same_string(const uint8_t *a, size_t na, const uint8_t *b, size_
     while (na && a[na - 1] == CBF__PAD) na--;
     while (nb && b[nb - 1] == CBF__PAD) nb--;
     return na == nb && (na == 0 || memcmp(a, b, na) == 0);
+}
+
+/* The value of string field f of args (nothing when the layout has none), as text. */
+static void cbf__name_of(char *buf, size_t size, size_t *at, const uint8_t *args, const cbf_field_info *f)
+{
+    if (f)
+        cbf__text(buf, size, at, args + f->offset,
+                  cbf__strvalue_len(args + f->offset, (size_t)f->elem * f->count));
 }
 
 static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
@@ -3917,23 +4000,27 @@ static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, l
         fc = cbf__layout_arg(layout, L->shape[CBF__S_COUNT]);
         sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);
         sc = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_COUNT]);
-        if (fn && sn && !cbf__same_string(args + fn->offset, (size_t)fn->elem * fn->count,
-                                          v->shape_args + sn->offset, (size_t)sn->elem * sn->count)) {
-            cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s name differs from the shape opened at record %ld",
-                      cbf__commands[cmd].name, v->shape_rec);
-            return;
-        }
-        if (fc && sc) {
-            uint32_t ce = cbf__get_u(args + fc->offset, fc->elem);
-            uint32_t cs = cbf__get_u(v->shape_args + sc->offset, sc->elem);
-            if (ce != cs) {
-                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s count %lu differs from %lu at record %ld",
-                          cbf__commands[cmd].name, (unsigned long)ce, (unsigned long)cs, v->shape_rec);
-                return;
+        {
+            int same_name = !fn || !sn || cbf__same_string(args + fn->offset, (size_t)fn->elem * fn->count,
+                                                           v->shape_args + sn->offset, (size_t)sn->elem * sn->count);
+            uint32_t ce = fc ? cbf__get_u(args + fc->offset, fc->elem) : 0u;
+            uint32_t cs = sc ? cbf__get_u(v->shape_args + sc->offset, sc->elem) : 0u;
+            char msg[256];
+            size_t at = 0;
+            if (!same_name || (fc && sc && ce != cs)) {
+                cbf__cat(msg, sizeof msg, &at, "%s ", cbf__commands[cmd].name);
+                cbf__name_of(msg, sizeof msg, &at, args, fn);
+                cbf__cat(msg, sizeof msg, &at, ",%lu does not repeat record %ld's ", (unsigned long)ce, v->shape_rec);
+                cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+                cbf__cat(msg, sizeof msg, &at, ",%lu", (unsigned long)cs);
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s", msg);
+            } else if (fc && sc && v->shape_moves != cs) {
+                cbf__cat(msg, sizeof msg, &at, "shape ");
+                cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+                cbf__cat(msg, sizeof msg, &at, " encloses %lu motion commands, declares %lu", v->shape_moves,
+                         (unsigned long)cs);
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s", msg);
             }
-            if (v->shape_moves != cs)
-                cbf__each(v, CBF__KIND_SHAPE, rec, off, "shape of record %ld holds %lu motion commands, not %lu",
-                          v->shape_rec, v->shape_moves, (unsigned long)cs);
         }
     }
 }
@@ -3956,17 +4043,26 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
             found = i; /* the last entry of a name counts */
     }
     if (found == (size_t)-1) {
-        cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s is not in the cutter table", (int)n,
-                  (const char *)(args + fn->offset));
+        char msg[256];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "cutter ");
+        cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
+        cbf__cat(msg, sizeof msg, &at, " is not in the cutter table");
+        cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         return;
     }
     for (k = 0; k < 2; k++) {
         double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
         if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv[k], &x))
             continue;
-        if (fabs(x - ref) > cbf__tol_cutter)
-            cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s %s %.9g mm, the table says %.9g mm", (int)n,
-                      (const char *)(args + fn->offset), fv[k]->name, x, ref);
+        if (fabs(x - ref) > cbf__tol_cutter) { /* named by the cutter role's key, as cbf validate does */
+            char msg[256];
+            size_t at = 0;
+            cbf__cat(msg, sizeof msg, &at, "cutter ");
+            cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
+            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", k == 0 ? "length" : "radius", x, ref);
+            cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
+        }
     }
 }
 
@@ -3990,21 +4086,30 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
     switch ((enum cbf__kind)ch->kind) {
     case CBF__KIND_POSITIVE:
         if (any_le)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, not > 0", cbf__commands[cmd].name, f->name, x);
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name, x);
         break;
     case CBF__KIND_NONZERO_VECTOR:
         if (all_zero)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s has zero length", cbf__commands[cmd].name, f->name);
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
         break;
     case CBF__KIND_RANGE:
         if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
-            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max)))
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, outside %s%.9g..%.9g%s", cbf__commands[cmd].name,
-                     f->name, x, ch->min_open ? "(" : "", ch->min, ch->max, ch->max_open ? ")" : "");
+            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
+            /* findings.range_text's words */
+            if (ch->has_min && ch->has_max)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+            else if (ch->has_min)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
+            else
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
+        }
         break;
     case CBF__KIND_NONDECREASING:
         if (v->nd_ok[t] && x < v->nd_prev[t])
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s falls from %.9g to %.9g", cbf__commands[cmd].name,
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
                      f->name, v->nd_prev[t], x);
         v->nd_ok[t] = 1;
         v->nd_prev[t] = x;
@@ -4061,8 +4166,20 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
             bad = 1;
         prev = x;
     }
-    if (bad)
-        cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
+    if (bad) { /* "<command>: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
+        char msg[256];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "%s: ", cbf__commands[cmd].name);
+        for (a = 0; a < tg->n; a++) {
+            const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
+            double x = 0.0;
+            if (f)
+                (void)cbf__ffirst(args, f, &x);
+            cbf__cat(msg, sizeof msg, &at, "%s%s=%g", a ? " <= " : "", f ? f->name : "?", x);
+        }
+        cbf__cat(msg, sizeof msg, &at, " does not hold");
+        cbf__say(v, ci, rec, args_off, "%s", msg);
+    }
 }
 
 /* cbf__sum for a short n (at most 1024 bytes: the 16-bit lanes cannot overflow), inlined
@@ -4108,7 +4225,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4112 "cbf.h"
+#line 4229 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4260,7 +4377,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4264 "cbf.h"
+#line 4381 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4276,11 +4393,11 @@ CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *
     const int ok1 = cbf__float_at(a + 16, &x1[0]) & cbf__float_at(a + 20, &x1[1]) & cbf__float_at(a + 24, &x1[2]); /* recovery_point */
     float x2[1];
     const int ok2 = cbf__float_at(a + 28, &x2[0]); /* completion */
-    cbf__check_string(v, &cbf__args[0], a, ao, rec);
+    cbf__check_string(v, "CHECKPOINT", &cbf__args[0], a, ao, rec);
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "recovery_point");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s.%s is not finite", cbf__commands[cmd].name, "recovery_point");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s %s is not finite", cbf__commands[cmd].name, "completion");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s.%s is not finite", cbf__commands[cmd].name, "completion");
     cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_range: CHECKPOINT completion */
     cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CHECKPOINT, 0u, x1, 3u, ok1, rec, ao + 16u); /* CHECKPOINT recovery_point: workspace */
@@ -4290,7 +4407,7 @@ CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *
 CBF__HOT static void cbf__layout_checks_checkpoint_v1(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[3], a, ao, rec);
+    cbf__check_string(v, "CHECKPOINT", &cbf__args[3], a, ao, rec);
 }
 
 /* CUTTER: 32 argument bytes */
@@ -4304,13 +4421,13 @@ CBF__HOT static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, l
     const int ok2 = cbf__float_at(a + 20, &x2[0]); /* radius */
     float x3[1];
     const int ok3 = cbf__float_at(a + 24, &x3[0]); /* head_length */
-    cbf__check_string(v, &cbf__args[4], a, ao, rec);
+    cbf__check_string(v, "CUTTER", &cbf__args[4], a, ao, rec);
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s.%s is not finite", cbf__commands[cmd].name, "radius");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "head_length");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "head_length");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 1u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER length: cutter_length */
@@ -4327,11 +4444,11 @@ CBF__HOT static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a
     const int ok1 = cbf__float_at(a + 16, &x1[0]); /* length */
     float x2[1];
     const int ok2 = cbf__float_at(a + 20, &x2[0]); /* radius */
-    cbf__check_string(v, &cbf__args[9], a, ao, rec);
+    cbf__check_string(v, "CUTTER", &cbf__args[9], a, ao, rec);
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s %s is not finite", cbf__commands[cmd].name, "radius");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s.%s is not finite", cbf__commands[cmd].name, "radius");
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 3u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER_V1 length: cutter_length */
@@ -4347,7 +4464,7 @@ CBF__HOT static void cbf__layout_checks_orient(cbf__vctx *v, const uint8_t *a, l
     float x0[3];
     const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* approach */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "approach");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "approach");
     cbf__orientation_at(v, cmd, CBF__ORIENT_SET, rec, ao, NULL, 0, x0, ok0);
 }
 
@@ -4361,9 +4478,9 @@ CBF__HOT static void cbf__layout_checks_orient5b(cbf__vctx *v, const uint8_t *a,
     float x1[3];
     const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* end_approach */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_approach");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start_approach");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_approach");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "end_approach");
     cbf__orientation_at(v, cmd, CBF__ORIENT_PATH, rec, ao, x0, ok0, x1, ok1);
 }
 
@@ -4371,14 +4488,14 @@ CBF__HOT static void cbf__layout_checks_orient5b(cbf__vctx *v, const uint8_t *a,
 CBF__HOT static void cbf__layout_checks_phase(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[17], a, ao, rec);
+    cbf__check_string(v, "PHASE", &cbf__args[17], a, ao, rec);
 }
 
 /* ENABLE_SKIP: 16 argument bytes */
 CBF__HOT static void cbf__layout_checks_enable_skip(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[18], a, ao, rec);
+    cbf__check_string(v, "ENABLE_SKIP", &cbf__args[18], a, ao, rec);
 }
 
 /* STARTSHAPE: 6 argument bytes */
@@ -4386,7 +4503,7 @@ CBF__HOT static void cbf__layout_checks_startshape(cbf__vctx *v, const uint8_t *
 {
     const int cmd = 6; /* STARTSHAPE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[19], a, ao, rec);
+    cbf__check_string(v, "STARTSHAPE", &cbf__args[19], a, ao, rec);
     cbf__shape(v, cmd, CBF_LAYOUT_STARTSHAPE, a, rec, off);
 }
 
@@ -4395,7 +4512,7 @@ CBF__HOT static void cbf__layout_checks_endshape(cbf__vctx *v, const uint8_t *a,
 {
     const int cmd = 7; /* ENDSHAPE in cbf__commands */
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[21], a, ao, rec);
+    cbf__check_string(v, "ENDSHAPE", &cbf__args[21], a, ao, rec);
     cbf__shape(v, cmd, CBF_LAYOUT_ENDSHAPE, a, rec, off);
 }
 
@@ -4421,7 +4538,7 @@ CBF__HOT static void cbf__layout_checks_point(cbf__vctx *v, const uint8_t *a, lo
     float x0[3];
     const int ok0 = cbf__float_at(a + 0, &x0[0]) & cbf__float_at(a + 4, &x0[1]) & cbf__float_at(a + 8, &x0[2]); /* point */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "point");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "point");
     cbf__machine_at(v, cmd, CBF_LAYOUT_POINT, 5u, x0, 3u, ok0, rec, ao + 0u); /* POINT point: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_POINT, a, rec, ao, NULL, 0, x0, ok0, -1, -1, -1, -1, 0u, -1, 0u);
     v->shape_moves += (unsigned long)v->shape_open; /* a motion command inside a shape */
@@ -4437,9 +4554,9 @@ CBF__HOT static void cbf__layout_checks_line(cbf__vctx *v, const uint8_t *a, lon
     float x1[3];
     const int ok1 = cbf__float_at(a + 12, &x1[0]) & cbf__float_at(a + 16, &x1[1]) & cbf__float_at(a + 20, &x1[2]); /* end */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "end");
     cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 6u, x0, 3u, ok0, rec, ao + 0u); /* LINE start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_LINE, 7u, x1, 3u, ok1, rec, ao + 12u); /* LINE end: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x1, ok1, 0, -1, -1, -1, 0u, -1, 0u);
@@ -4460,13 +4577,13 @@ CBF__HOT static void cbf__layout_checks_line5b(cbf__vctx *v, const uint8_t *a, l
     float x3[3];
     const int ok3 = cbf__float_at(a + 36, &x3[0]) & cbf__float_at(a + 40, &x3[1]) & cbf__float_at(a + 44, &x3[2]); /* end_orient */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start_pos");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "end_pos");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 8u, x0, 3u, ok0, rec, ao + 0u); /* LINE5B start_pos: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_LINE5B, 9u, x1, 3u, ok1, rec, ao + 12u); /* LINE5B end_pos: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_LINE, a, rec, ao, x0, ok0, x1, ok1, 0, -1, -1, -1, 0u, -1, 0u);
@@ -4486,11 +4603,11 @@ CBF__HOT static void cbf__layout_checks_arc(cbf__vctx *v, const uint8_t *a, long
     float x2[3];
     const int ok2 = cbf__float_at(a + 24, &x2[0]) & cbf__float_at(a + 28, &x2[1]) & cbf__float_at(a + 32, &x2[2]); /* end */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "middle");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "middle");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "end");
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 10u, x0, 3u, ok0, rec, ao + 0u); /* ARC start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 11u, x1, 3u, ok1, rec, ao + 12u); /* ARC middle: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC, 12u, x2, 3u, ok2, rec, ao + 24u); /* ARC end: workspace */
@@ -4514,15 +4631,15 @@ CBF__HOT static void cbf__layout_checks_arc5b(cbf__vctx *v, const uint8_t *a, lo
     float x4[3];
     const int ok4 = cbf__float_at(a + 48, &x4[0]) & cbf__float_at(a + 52, &x4[1]) & cbf__float_at(a + 56, &x4[2]); /* end_orient */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start_pos");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start_pos");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "mid_pos");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "mid_pos");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "end_pos");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "end_pos");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok4)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 48u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 13u, x0, 3u, ok0, rec, ao + 0u); /* ARC5B start_pos: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 14u, x1, 3u, ok1, rec, ao + 12u); /* ARC5B mid_pos: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ARC5B, 15u, x2, 3u, ok2, rec, ao + 24u); /* ARC5B end_pos: workspace */
@@ -4545,13 +4662,13 @@ CBF__HOT static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, l
     float x3[1];
     const int ok3 = cbf__float_at(a + 36, &x3[0]); /* ndegrees */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "center");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "normal");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
     cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 16u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 17u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE center: workspace */
@@ -4577,17 +4694,17 @@ CBF__HOT static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a,
     float x5[3];
     const int ok5 = cbf__float_at(a + 52, &x5[0]) & cbf__float_at(a + 56, &x5[1]) & cbf__float_at(a + 60, &x5[2]); /* end_orient */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "center");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "normal");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
     if (!ok4)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok5)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE5B normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 18u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE5B start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 19u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE5B center: workspace */
@@ -4612,15 +4729,15 @@ CBF__HOT static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, lo
     float x4[1];
     const int ok4 = cbf__float_at(a + 40, &x4[0]); /* length */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "center");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "normal");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
     if (!ok4)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
     cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], x2, ok2, rec, ao); /* normal_nonzero: HELIX normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 20u, x0, 3u, ok0, rec, ao + 0u); /* HELIX start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 21u, x1, 3u, ok1, rec, ao + 12u); /* HELIX center: workspace */
@@ -4648,19 +4765,19 @@ CBF__HOT static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, 
     float x6[3];
     const int ok6 = cbf__float_at(a + 56, &x6[0]) & cbf__float_at(a + 60, &x6[1]) & cbf__float_at(a + 64, &x6[2]); /* end_orient */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "start");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "start");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "center");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "center");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s %s is not finite", cbf__commands[cmd].name, "normal");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "normal");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s %s is not finite", cbf__commands[cmd].name, "ndegrees");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
     if (!ok4)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s %s is not finite", cbf__commands[cmd].name, "length");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
     if (!ok5)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 44u, "%s %s is not finite", cbf__commands[cmd].name, "start_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 44u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok6)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s %s is not finite", cbf__commands[cmd].name, "end_orient");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
     cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], x2, ok2, rec, ao); /* normal_nonzero: HELIX5B normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 22u, x0, 3u, ok0, rec, ao + 0u); /* HELIX5B start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 23u, x1, 3u, ok1, rec, ao + 12u); /* HELIX5B center: workspace */
@@ -4677,7 +4794,7 @@ CBF__HOT static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, lo
     float x0[1];
     const int ok0 = cbf__float_at(a + 0, &x0[0]); /* speed */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "speed");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "speed");
     cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], x0, ok0, rec, ao); /* speed_positive: SPEED speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_SPEED, 24u, x0, 1u, ok0, rec, ao + 0u); /* SPEED speed: speed */
 }
@@ -4692,9 +4809,9 @@ CBF__HOT static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, lo
     float x1[1];
     const int ok1 = cbf__float_at(a + 4, &x1[0]); /* decel */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "accel");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "accel");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "decel");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s.%s is not finite", cbf__commands[cmd].name, "decel");
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], x0, ok0, rec, ao); /* accel_positive: ACCEL accel decel */
     cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], x1, ok1, rec, ao); /* accel_positive: ACCEL accel decel */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 25u, x0, 1u, ok0, rec, ao + 0u); /* ACCEL accel: acceleration */
@@ -4719,7 +4836,7 @@ CBF__HOT static void cbf__layout_checks_cutter_off(cbf__vctx *v, const uint8_t *
 CBF__HOT static void cbf__layout_checks_guide(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[63], a, ao, rec);
+    cbf__check_string(v, "GUIDE", &cbf__args[63], a, ao, rec);
 }
 
 /* FCPARMS: 16 argument bytes */
@@ -4736,13 +4853,13 @@ CBF__HOT static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, 
     float x3[1];
     const int ok3 = cbf__float_at(a + 12, &x3[0]); /* max_force */
     if (!ok0)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s %s is not finite", cbf__commands[cmd].name, "nom_speed");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "nom_speed");
     if (!ok1)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s %s is not finite", cbf__commands[cmd].name, "max_speed");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s.%s is not finite", cbf__commands[cmd].name, "max_speed");
     if (!ok2)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 8u, "%s %s is not finite", cbf__commands[cmd].name, "min_speed");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 8u, "%s.%s is not finite", cbf__commands[cmd].name, "min_speed");
     if (!ok3)
-        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s %s is not finite", cbf__commands[cmd].name, "max_force");
+        cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "max_force");
     cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 27u, x0, 1u, ok0, rec, ao + 0u); /* FCPARMS nom_speed: speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 28u, x1, 1u, ok1, rec, ao + 4u); /* FCPARMS max_speed: speed */
@@ -4753,23 +4870,23 @@ CBF__HOT static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, 
 CBF__HOT static void cbf__layout_checks_version(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[68], a, ao, rec);
-    cbf__check_string(v, &cbf__args[69], a, ao, rec);
+    cbf__check_string(v, "VERSION", &cbf__args[68], a, ao, rec);
+    cbf__check_string(v, "VERSION", &cbf__args[69], a, ao, rec);
 }
 
 /* VERSION_IMPLIB: 16 argument bytes */
 CBF__HOT static void cbf__layout_checks_version_implib(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[71], a, ao, rec);
-    cbf__check_string(v, &cbf__args[72], a, ao, rec);
+    cbf__check_string(v, "VERSION", &cbf__args[71], a, ao, rec);
+    cbf__check_string(v, "VERSION", &cbf__args[72], a, ao, rec);
 }
 
 /* COMMENT: 40 argument bytes */
 CBF__HOT static void cbf__layout_checks_comment(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
     const size_t ao = off + CBF_RECORD_HEAD_SIZE;
-    cbf__check_string(v, &cbf__args[73], a, ao, rec);
+    cbf__check_string(v, "COMMENT", &cbf__args[73], a, ao, rec);
 }
 
 /* The generated checks of a record's layout. */
@@ -4867,6 +4984,48 @@ static int cbf__file_sum_folds(int profile, size_t *start)
     return 1;
 }
 
+/* arg_size: "<command> with 20 argument bytes; expected 24" (the sizes of the command's layouts in the
+ * file's version that the profile accepts, ascending, each once). Cold: a record of a bad size. */
+CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec, size_t off, size_t nb)
+{
+    char msg[256];
+    size_t at = 0, sizes[CBF__MAX_CANDIDATES], n = 0, i, j;
+    int k;
+    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+        int lay = cbf__commands[cmd].candidates[v->eff][k];
+        if (lay < 0)
+            break;
+        if (!cbf__profile_accepts(lay, profile))
+            continue;
+        for (i = 0; i < n && sizes[i] != cbf__layouts[lay].size; i++) {}
+        if (i == n)
+            sizes[n++] = cbf__layouts[lay].size;
+    }
+    for (i = 1; i < n; i++) /* insertion sort: a handful of sizes */
+        for (j = i; j > 0 && sizes[j - 1] > sizes[j]; j--) {
+            size_t t = sizes[j];
+            sizes[j] = sizes[j - 1];
+            sizes[j - 1] = t;
+        }
+    cbf__cat(msg, sizeof msg, &at, "%s with %lu argument bytes; expected ", cbf__commands[cmd].name,
+             (unsigned long)nb);
+    for (i = 0; i < n; i++)
+        cbf__cat(msg, sizeof msg, &at, "%s%lu", i ? " or " : "", (unsigned long)sizes[i]);
+    cbf__each(v, CBF__KIND_ARG_SIZE, rec, off, "%s", msg);
+}
+
+/* shape: the file ends inside a shape, named by the command that opened it. */
+CBF__COLD static void cbf__shape_unclosed(cbf__vctx *v)
+{
+    const cbf_field_info *sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);
+    char msg[256];
+    size_t at = 0;
+    cbf__cat(msg, sizeof msg, &at, "shape ");
+    cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+    cbf__cat(msg, sizeof msg, &at, " is never closed");
+    cbf__each(v, CBF__KIND_SHAPE, v->shape_rec, v->shape_off, "%s", msg);
+}
+
 /* Per command: the argument size last seen and what it gave (records of one
  * command almost always share one size). */
 typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
@@ -4893,7 +5052,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                  ? pow(tan(cbf__tol_orientation * 0.999 * (CBF__PI / 180.0)), 2.0) : 0.0;
     cbf__machine_start(&v);
     if (len < CBF_HEADER_SIZE || !buf) {
-        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
+        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "file is %lu bytes, the header needs %d",
                   (unsigned long)len, CBF_HEADER_SIZE);
         return v.errors;
     }
@@ -4911,21 +5070,22 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != f->magic)
-                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lx, not 0x%08lx", f->name,
+                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lX, expected 0x%08lX", f->name,
                           (unsigned long)got, (unsigned long)f->magic);
         }
         if (f->kind == CBF__K_STRING)
-            cbf__check_string(&v, f, buf, 0, -1);
+            cbf__check_string(&v, NULL, f, buf, 0, -1);
     }
-    {
-        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
-        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
-        if (k && f) {
+    /* each header checksum field this version's header carries, judged by its header_checksum check */
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
+        const cbf__ckfield *k = &cbf__ckfields[i];
+        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v.hlayout, k->tag) : NULL;
+        if (f) {
             uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != want)
-                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
-                          (unsigned long)got, (unsigned long)want);
+                cbf__say(&v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
+                         (unsigned long)got, (unsigned long)want);
         }
     }
     cbf__check_part_number(&v);
@@ -4982,8 +5142,8 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
             cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
                       (unsigned long)seq, (unsigned long)(nrec & CBF__SEQUENCE_MASK));
         if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code 0x%02lx, backup copy 0x%02lx",
-                      (unsigned long)code, (unsigned long)copy);
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code copy 0x%02lX differs from code 0x%02lX",
+                      (unsigned long)copy, (unsigned long)code);
 #if CBF__HEAD_CK_ELEM
         {
             uint32_t want = args_sum ? (asum & CBF__HEAD_CK_MASK)
@@ -4996,19 +5156,17 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         }
 #endif
         if (res != 0u)
-            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lx",
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
                       (unsigned long)res);
         if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lx",
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lX",
                       (unsigned long)code);
         } else {
             if (seen[cmd].avail >= 0)
                 cbf__say(&v, seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (!seen[cmd].accepted)
-                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + CBF__HEAD_OFF_ARG_SIZE,
-                          "%s has %lu argument bytes, no layout of %s has that size",
-                          cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
+                cbf__arg_size(&v, cmd, profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
             if (layout != CBF_LAYOUT__NONE && cbf__deprecated[layout] >= 0)
                 cbf__say(&v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
                          cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
@@ -5019,24 +5177,24 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         nrec++;
     }
     if (v.shape_open)
-        cbf__each(&v, CBF__KIND_SHAPE, v.shape_rec, v.shape_off, "shape still open at the end of the file");
+        cbf__shape_unclosed(&v);
     {
         int truncated = 0;
         if (pos < len) {
             if (nrec < h.count) {
                 truncated = 1;
                 cbf__each(&v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
-                          "record %lu is cut: %lu byte(s) left (%lu of %lu records complete)", nrec,
-                          (unsigned long)(len - pos), nrec, h.count);
+                          "the file ends inside record %lu (%lu byte(s) left)", nrec,
+                          (unsigned long)(len - pos));
             } else {
-                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) follow the last record",
+                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) after the last record",
                           (unsigned long)(len - pos));
             }
         }
         if (!truncated && nrec != h.count) {
             const cbf_field_info *fc = cbf__header_field_by_role(v.hlayout, CBF_ROLE_COMMAND_COUNT);
             cbf__each(&v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u,
-                      "the header counts %lu commands, the file holds %lu", h.count, nrec);
+                      "header count %lu, the file holds %lu records", h.count, nrec);
         }
     }
     {
@@ -5060,29 +5218,26 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                 if (want == got)
                     match = 1;
             }
-            if (!match) {
-                const char *hint = NULL;
+            if (!match) { /* one message: the sums, then every hint coverage the stored value matches */
+                char msg[512];
+                size_t at = 0;
+                cbf__cat(msg, sizeof msg, &at, "stored file checksum %lu, computed %lu", (unsigned long)got,
+                         (unsigned long)first);
                 for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
-                    if (cbf__cover(cbf__profiles[profile].hint[c], cbf__profiles[profile].hint_alg[c], f->elem, buf,
-                                   len, pos, NULL, 0) == got) {
-                        hint = cbf__coverages[cbf__profiles[profile].hint[c]].name;
-                        break;
-                    }
+                    const cbf__profile *pr = &cbf__profiles[profile];
+                    if (cbf__cover(pr->hint[c], pr->hint_alg[c], f->elem, buf, len, pos, NULL, 0) == got)
+                        cbf__cat(msg, sizeof msg, &at, "; it matches coverage %s (use profile %s)",
+                                 cbf__coverages[pr->hint[c]].name,
+                                 pr->hint_owner[c] >= 0 ? cbf__profiles[pr->hint_owner[c]].id : "?");
                 }
-                if (hint)
-                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset,
-                              "%s is %lu, expected %lu; it matches coverage %s (another profile)", f->name,
-                              (unsigned long)got, (unsigned long)first, hint);
-                else
-                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s is %lu, expected %lu", f->name,
-                              (unsigned long)got, (unsigned long)first);
+                cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s", msg);
             }
         }
     }
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5086 "cbf.h"
+#line 5241 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -11,7 +11,9 @@ and exits 2 before writing anything. --no-ksc writes the .ksy without its parser
 repository's `make` compiles them in a later step). The docs' golden-case pages, the command
 pages' CUT examples and the traceability matrix need the golden cases (--golden DIR) and the
 conformance report (--report FILE, with the failure lists in failures/ beside it); without them
-those sections say that no case or report is present, and cbfgen says so on stderr.
+those sections say that no case or report is present, and cbfgen says so on stderr. A docs page
+links a repository file (spec/cbf.yaml, conformance/golden/README.md, a case's .hex) only when it is
+there beside the output folder, as in this repository (--out generated); elsewhere it names the file.
 
 `diff` exits 0 when nothing is breaking, 1 when something is wire-breaking,
 3 when something is text-breaking only (a rename), 2 on bad input (a spec
@@ -115,9 +117,9 @@ def main(argv: list[str] | None = None) -> int:
         if opt is not None and not (path.is_dir() if want == "dir" else path.is_file()):
             print(f"cbfgen: {path}: no such {'folder' if want == 'dir' else 'file'}", file=sys.stderr)
             return 2
-    if "docs" in selected:
-        _docs_inputs(args.golden, args.report)
     out = Path(args.out)
+    if "docs" in selected:
+        _docs_inputs(args.golden, args.report, out)
     changed = 0
     for name in selected:
         module = importlib.import_module(f"{emit_pkg.__name__}.{name}")
@@ -146,10 +148,13 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-def _docs_inputs(golden: Path | None, report: Path | None) -> None:
+def _docs_inputs(golden: Path | None, report: Path | None, out: Path) -> None:
     """Point the docs emitter at the golden cases and the conformance report (its module's paths,
-    read when it runs); say on stderr which sections stay empty without them."""
+    read when it runs) and at the folder its links to repository files start from (out's parent: a
+    page links such a file only when it is there); say on stderr which sections stay empty without them."""
     from .emit import docs
+
+    docs.ROOT = out.resolve().parent
 
     if golden is not None:
         docs.GOLDEN = golden.resolve()

@@ -128,7 +128,9 @@ class Diff:
 
 # -- descriptions ---------------------------------------------------------------
 def _type_text(f: Field) -> str:
-    return f"{f.type}[{f.count}]" if f.count > 1 else f.type
+    text = f"{f.type}[{f.count}]" if f.count > 1 else f.type
+    # a repeated group (issue 25, point 3): n items, n in min..max
+    return text + (f" x n ({f.repeat[0]} <= n <= {f.repeat[1]})" if f.repeat is not None else "")
 
 
 def describe_field(f: Field) -> str:
@@ -182,7 +184,8 @@ def compare_fields(old: Iterable[Field], new: Iterable[Field], version: str | No
             add("field_retyped", f"{o.name} retyped from {_type_text(o)} to {_type_text(n)}")
         for attr, kind in (("unit", "field_unit_changed"), ("magic", "field_value_changed"),
                            ("role", "field_role_changed"), ("checksum", "field_role_changed"),
-                           ("reserved", "field_role_changed"), ("text", "field_role_changed")):
+                           ("reserved", "field_role_changed"), ("text", "field_role_changed"),
+                           ("repeat", "field_repeat_changed")):  # which nb a group takes: a file's judgement
             a, b = getattr(o, attr), getattr(n, attr)
             if a != b:
                 add(kind, f"{o.name} {attr} changed from {a!r} to {b!r}")
@@ -301,7 +304,9 @@ def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: 
             continue
         if any(c.code == nc.code and c.available_in(old_vid) and c.name not in new_cmds for c in old.commands):
             continue  # a rename, reported above
-        sizes = "/".join(str(lay.size) for lay in nc.layouts_for(new_vid))
+        sizes = "/".join(str(lay.size) if lay.repeated is None or lay.repeated.repeat is None else
+                         f"{lay.size} + {lay.repeated.size} n ({lay.repeated.repeat[0]} <= n <= "
+                         f"{lay.repeated.repeat[1]})" for lay in nc.layouts_for(new_vid))
         out.append(Change("command_added", new_vid, nc.name,
                           f"code 0x{nc.code:02X}, {sizes} argument byte(s)", breaking))
     return out
@@ -354,6 +359,9 @@ def _checks(old: Spec, new: Spec) -> list[Change]:
 
     def applies_to_old(c: Check) -> bool:
         vs = getattr(c, "versions", ())
+        if c.kind == "header_checksum" and c.checksum_field:  # the versions whose header has its field
+            vs = new.checksum_versions(c.checksum_field)
+            return any(v in old_ids for v in vs)
         return not vs or any(v in old_ids for v in vs)
 
     moved = _check_renames(old, new, names)
@@ -463,8 +471,12 @@ def _checksums(old: Spec, new: Spec, breaking: bool) -> list[Change]:
             out.append(Change("checksum_coverage_changed", None, None,
                               f"{of.field} checksum: {_coverage_text(ocov)} -> {_coverage_text(ncov)}", breaking))
     if ocs.fill_order != ncs.fill_order:
+        # a new tag placed among the old ones (a new version's header checksum) changes no existing
+        # file; the old tags in another order, or one dropped, do
+        kept = [t for t in ncs.fill_order if t in ocs.fill_order]
         out.append(Change("checksum_fill_order_changed", None, None,
-                          f"{list(ocs.fill_order)} -> {list(ncs.fill_order)}", breaking))
+                          f"{list(ocs.fill_order)} -> {list(ncs.fill_order)}",
+                          breaking and kept != list(ocs.fill_order)))
     return out
 
 

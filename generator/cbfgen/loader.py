@@ -37,7 +37,6 @@ from .model import (
     Segment,
     Spec,
     Version,
-    common_header_prefix,
 )
 from .registry import (
     CHECK_KINDS,
@@ -51,6 +50,7 @@ from .registry import (
     FieldType,
     RoleArg,
     Target,
+    repeat_unsupported,
     role_arg_fits,
     unsupported,
     unsupported_in_head,
@@ -374,7 +374,27 @@ def _field(ctx: _Ctx, raw: _Map, types: dict[str, FieldType], offset: int, where
         doc=str(raw["doc"]).strip(), line=raw.line, clause=raw.get("clause"), unit=raw.get("unit"),
         role=raw.get("role"), magic=raw.get("magic"), checksum=raw.get("checksum"),
         reserved=bool(raw.get("reserved", False)), text=bool(raw.get("text", False)),
+        repeat=(int(raw["repeat"]["min"]), int(raw["repeat"]["max"])) if "repeat" in raw else None,
     )
+
+
+def _repeat(ctx: _Ctx, lay: _Map, name: str, fixed: int, rep: Field, max_nb: int) -> None:
+    """A repeated argument group (issue 25, point 3): the last argument, of numbers (what CUT writes
+    as n values or vectors), n in [min, max] with n = 0 allowed only beside fixed arguments (a
+    record's arguments are never empty of meaning), and the largest nb within limits.max_arg_size."""
+    assert rep.repeat is not None
+    lo, hi = rep.repeat
+    raw_rep = next((a for a in lay["args"] if a["name"] == rep.name), lay)
+    if lo > hi:
+        ctx.fail(raw_rep, f"{name} argument {rep.name}: repeat min {lo} exceeds max {hi}", "repeat")
+    if lo == 0 and fixed == 0:
+        ctx.fail(raw_rep, f"{name} argument {rep.name}: repeat min 0 with no fixed argument leaves nb = 0 "
+                          f"ambiguous with a command that takes no arguments", "repeat")
+    if rep.kind not in ("uint", "sint", "float"):
+        ctx.fail(raw_rep, f"{name} argument {rep.name}: only numbers repeat (type {rep.type})", "repeat")
+    if fixed + rep.size * hi > max_nb:
+        ctx.fail(raw_rep, f"{name} argument {rep.name}: {fixed} + {rep.size} x {hi} = {fixed + rep.size * hi} "
+                          f"bytes exceeds limits.max_arg_size {max_nb}", "repeat")
 
 
 def _fields(ctx: _Ctx, raws: _Seq, types: dict[str, FieldType], where: str) -> tuple[tuple[Field, ...], int, bool]:
@@ -412,6 +432,8 @@ def _headers_pass(ctx: _Ctx, st: _State) -> None:
         if h.size != first.size:
             ctx.fail(raw["headers"][h.id], f"header {h.id} is {h.size} bytes, header {first.id} {first.size}", "size")
         for f in h.fields:
+            if f.role == "checksum" and f.checksum not in {x.checksum for x in first.fields}:
+                continue  # a checksum field of this layout's own (a new version's): _checksum_fields_pass
             if f.role in _SHARED_ROLES:
                 twin = first.field(f.name)
                 if twin is None or (twin.offset, twin.type, twin.role, twin.magic, twin.checksum) != (
@@ -475,15 +497,20 @@ def _commands_pass(ctx: _Ctx, st: _State) -> None:
                     ctx.fail(lay, f"{name}: unknown profile {p!r}", "profiles")
             args, total, whole = _fields(ctx, lay["args"], st.types, f"{name}")
             vtext = "/".join("v" + v for v in lay["versions"])
+            rep = args[-1] if args and args[-1].repeat is not None else None
+            if whole and rep is not None:
+                total -= rep.size  # a repeated group: `size` is the fixed arguments' (issue 25, point 3)
             if whole and total != lay["size"]:
                 ctx.fail(lay, f"{name} {vtext} arguments sum to {total} bytes, declared {lay['size']}", "size")
+            if rep is not None:
+                _repeat(ctx, lay, name, lay["size"], rep, int(raw["limits"]["max_arg_size"]))
             if lay["size"] > raw["limits"]["max_arg_size"]:
                 ctx.fail(lay, f"{name}: size {lay['size']} exceeds limits.max_arg_size", "size")
             layouts.append(Layout(name, variant, tuple(str(v) for v in lay["versions"]), lay["size"], args,
                                   tuple(lay.get("profiles", [])), str(lay.get("doc", "")).strip(), lay.get("clause"),
                                   lay.line))
         for v in st.vids:
-            sizes = [lay.size for lay in layouts if v in lay.versions]
+            sizes = [nb for lay in layouts if v in lay.versions for nb in lay.sizes]
             if len(sizes) != len(set(sizes)):
                 ctx.fail(c, f"{name}: two layouts of version {v} have the same size", "layouts")
         cmd = Command(
@@ -737,6 +764,49 @@ def _availability_pass(ctx: _Ctx, st: _State) -> None:
     _check_machine_coverage(ctx, st)
 
 
+def _checksum_fields_pass(ctx: _Ctx, st: _State) -> None:
+    """Checksum fields as data: a tag may sit in any header layout (a new version's header turns
+    reserved bytes into one); each tag has one width; every header checksum field but the file
+    checksum is judged by exactly one header_checksum check (its `field`), over header bytes only
+    (the header is judged before the records are framed)."""
+    if st.record is None or st.checksums is None:
+        return
+    defined = {f.field: f for f in st.checksums.fields}
+    width: dict[str, Field] = {}
+    for h in st.headers.values():
+        for f in h.fields:
+            if not f.checksum:
+                continue
+            if f.role != "checksum" or f.kind != "uint":
+                ctx.at(f.line, f"header {h.id} field {f.name}: a checksum field needs role checksum and an "
+                               f"unsigned integer type")
+            first = width.setdefault(f.checksum, f)
+            if first.size != f.size:
+                ctx.at(f.line, f"header {h.id} field {f.name}: checksum {f.checksum} is {f.size} bytes here, "
+                               f"{first.size} at line {first.line}")
+    record_tags = {f.checksum for f in st.record.fields if f.checksum}
+    judged: dict[str, Check] = {}
+    for ch in st.checks:
+        if ch.kind != "header_checksum":
+            continue
+        tag = ch.checksum_field or "header"
+        if tag not in width or tag in record_tags or tag == "file":
+            ctx.at(ch.line, f"check {ch.id}: field {tag} is no header checksum field (a tag of a header "
+                            f"field, other than the file checksum)")
+            continue
+        if tag in judged:
+            ctx.at(ch.line, f"check {ch.id}: checksum {tag} is judged by check {judged[tag].id} already")
+        judged.setdefault(tag, ch)
+        cov = st.checksums.coverages.get(defined[tag].coverage) if tag in defined else None
+        if cov is not None and any(seg.region != "header" for seg in cov.segments):
+            ctx.at(ch.line, f"check {ch.id}: checksum {tag} covers more than header bytes (coverage "
+                            f"{cov.name}); a header_checksum check judges header bytes only")
+    for tag, f in width.items():
+        if tag != "file" and tag not in judged:
+            ctx.at(f.line, f"field {f.name}: no header_checksum check judges checksum {tag} (every binding "
+                           f"would read it and none check it)")
+
+
 def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
     """What every binding can implement: each field's type in each binding (registry.unsupported),
     and a header every reader can pick a layout for: Kaitai reads the version in the fields all
@@ -756,15 +826,8 @@ def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
             ctx.at(f.line, f"field {f.name}: type {f.type} in a header or record head is not implemented by the "
                            f"{', '.join(head_gaps)} binding (it reads those fields unsigned, at most 4 bytes; "
                            f"generator/cbfgen/registry.py)")
-    headers = tuple(st.headers.values())
-    shared = {f.name for f in common_header_prefix(headers)}
-    for h in headers:
-        for role in ("version_major", "version_minor"):
-            vf = h.by_role(role)
-            if vf is not None and vf.name not in shared:
-                ctx.at(vf.line, f"header {h.id}: field {vf.name} ({role}) is not among the leading fields every header "
-                               f"layout shares ({', '.join(sorted(shared)) or 'none'}): a reader must read the version "
-                               f"before it knows the layout")
+    # The version fields sit in the same place in every header layout (_headers_pass, _SHARED_ROLES):
+    # Kaitai reads them by position when the layouts diverge before them (emit/kaitai).
 
 
 def _names_pass(ctx: _Ctx, st: _State) -> None:
@@ -843,9 +906,44 @@ def _deprecations_pass(ctx: _Ctx, st: _State) -> None:
         st.checks[i] = replace(ch, params=replace(ch.params, versions=versions))
 
 
+def _repeat_pass(ctx: _Ctx, st: _State) -> None:
+    """Repeated argument groups (issue 25, point 3): only the last argument of a command layout
+    repeats; a role reads one value, so only a point motion's end may name a group (its last
+    element: where a polyline leaves the tool); and every binding must carry groups."""
+    for h in st.headers.values():
+        for f in h.fields:
+            if f.repeat is not None:
+                ctx.at(f.line, f"header {h.id} field {f.name}: only a command's arguments repeat")
+    for f in st.record.fields if st.record else ():
+        if f.repeat is not None:
+            ctx.at(f.line, f"record field {f.name}: only a command's arguments repeat")
+    gaps = repeat_unsupported()
+    for cmd in st.commands:
+        roles = [(f"{role}.{key}", arg) for role in ("motion", "orientation", "shape", "cutter")
+                 for key, arg in (getattr(cmd, role) or {}).items() if key != "kind"]
+        roles += [(f"sets.{key}", arg) for key, arg in (cmd.sets or {}).items() if isinstance(arg, str)]
+        roles += [("progress", cmd.progress)] if cmd.progress else []
+        for lay in cmd.layouts:
+            for a in lay.args[:-1]:
+                if a.repeat is not None:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: only the last argument of a layout repeats")
+            rep = lay.repeated
+            if rep is None:
+                continue
+            if gaps:
+                ctx.at(rep.line, f"{cmd.name} argument {rep.name}: a repeated argument group is not implemented by "
+                                 f"the binding(s) {', '.join(gaps)} (generator/cbfgen/registry.py REPEAT_BINDINGS)")
+            for what, arg in roles:
+                point_end = what == "motion.end" and (cmd.motion or {}).get("kind") == "point"
+                if arg == rep.name and not point_end:
+                    ctx.at(rep.line, f"{cmd.name}: {what} names the repeated argument {rep.name} (only a point "
+                                     f"motion's end may: the group's last element)")
+
+
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
     _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
-    _checks_pass, _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass, _former_names_pass,
+    _checks_pass, _checksum_fields_pass, _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass,
+    _former_names_pass, _repeat_pass,
 )
 
 

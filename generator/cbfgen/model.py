@@ -8,7 +8,7 @@ contradicts itself. `line` attributes point back into the YAML.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from .registry import TYPES, FieldType, Params, Target
@@ -50,6 +50,9 @@ class Field:
     checksum: str | None = None
     reserved: bool = False
     text: bool = False
+    # A repeated argument group (issue 25, point 3): (min n, max n) when this, the last argument of a
+    # command layout, stands n times after the fixed arguments (nb = Layout.size + n * size).
+    repeat: tuple[int, int] | None = None
 
     @property
     def size(self) -> int:
@@ -93,6 +96,44 @@ class Layout:
 
     def accepted_under(self, profile: str) -> bool:
         return not self.profiles or profile in self.profiles
+
+    # -- repeated argument groups (issue 25, point 3): `size` is then the fixed arguments' size --
+    @property
+    def repeated(self) -> Field | None:
+        """The repeated group (the last argument, when it has `repeat`), else None."""
+        return self.args[-1] if self.args and self.args[-1].repeat is not None else None
+
+    @property
+    def fixed_args(self) -> tuple[Field, ...]:
+        return self.args[:-1] if self.repeated is not None else self.args
+
+    @property
+    def sizes(self) -> tuple[int, ...]:
+        """Every nb this layout takes: its size, or size + k*n for each n of the group."""
+        rep = self.repeated
+        if rep is None or rep.repeat is None:
+            return (self.size,)
+        return tuple(self.size + rep.size * n for n in range(rep.repeat[0], rep.repeat[1] + 1))
+
+    def count_for(self, nb: int) -> int | None:
+        """n for an nb this layout takes (1 for a fixed layout of that size), else None."""
+        rep = self.repeated
+        if rep is None or rep.repeat is None:
+            return 1 if nb == self.size else None
+        n, extra = divmod(nb - self.size, rep.size)
+        return n if nb >= self.size and not extra and rep.repeat[0] <= n <= rep.repeat[1] else None
+
+    def sized(self, nb: int) -> Layout | None:
+        """This layout as it stands in a record of nb argument bytes, else None: a repeated group
+        spelled out as its n items, fields named ``name[i]`` one after another (what a hex dump or
+        a CUT line shows item by item)."""
+        n = self.count_for(nb)
+        rep = self.repeated
+        if n is None or rep is None:
+            return self if n is not None else None
+        items = tuple(replace(rep, name=f"{rep.name}[{i}]", offset=rep.offset + i * rep.size, repeat=None)
+                      for i in range(n))
+        return replace(self, size=nb, args=(*self.fixed_args, *items))
 
 
 @dataclass(frozen=True)
@@ -405,6 +446,11 @@ class Check:
         return not self.versions or version in self.versions
 
     @property
+    def checksum_field(self) -> str | None:
+        """header_checksum: the checksum tag of the header field it judges."""
+        return self._param("field", None)  # type: ignore[no-any-return]
+
+    @property
     def anchor(self) -> str:
         return "check-" + ident(self.id).replace("_", "-")
 
@@ -412,7 +458,7 @@ class Check:
 # A check's attributes as one flat list: its own, then its kind's parameters (registry.py).
 CHECK_ATTRS = ("id", "kind", "severity", "text", "fails", "line", "clause", "decision", "input", "input_severity",
                "versions", "commands", "targets", "min", "max", "min_exclusive", "max_exclusive",
-               "since", "deprecates")
+               "since", "deprecates", "checksum_field")
 
 
 @dataclass(frozen=True)
@@ -506,6 +552,20 @@ class Spec:
         if f is None:
             raise KeyError(role)
         return f
+
+    def header_checksum_tags(self, hid: str) -> dict[str, Field]:
+        """A header layout's checksum fields by tag (a new version's header may add its own)."""
+        return {f.checksum: f for f in self.headers[hid].fields if f.checksum}
+
+    def checksum_versions(self, tag: str) -> tuple[str, ...]:
+        """The versions whose header carries the checksum field ``tag`` (the record's: every one)."""
+        if any(f.checksum == tag for f in self.record.fields):
+            return tuple(v.id for v in self.versions)
+        return tuple(v.id for v in self.versions if tag in self.header_checksum_tags(v.header))
+
+    def checksum_check(self, tag: str) -> Check | None:
+        """The header_checksum check that judges the header checksum field ``tag``."""
+        return next((c for c in self.checks if c.kind == "header_checksum" and c.checksum_field == tag), None)
 
     def header_checksum_field(self, tag: str) -> Field:
         for f in next(iter(self.headers.values())).fields:

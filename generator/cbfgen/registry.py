@@ -26,8 +26,9 @@ See generator/README.md, "Extending the spec language".
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import MISSING, dataclass, fields
-from typing import Literal
+from typing import Any, Literal
 
 # -- field types ------------------------------------------------------------------------------
 
@@ -149,6 +150,16 @@ TYPES: dict[str, FieldType] = {
 BINDINGS = ("python", "kaitai", "c")
 
 
+# The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
+# fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
+REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai")
+
+
+def repeat_unsupported() -> tuple[str, ...]:
+    """The bindings that cannot carry a repeated argument group yet; empty: all can."""
+    return tuple(b for b in BINDINGS if b not in REPEAT_BINDINGS)
+
+
 def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
     When a binding learns a type, its rule here changes, and nothing else in the loader."""
@@ -240,6 +251,12 @@ class CutterTableParams:
 
 
 @dataclass(frozen=True)
+class HeaderChecksumParams:
+    field: str = "header"  # the checksum tag (checksums.fields) of the header field it judges
+    versions: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class AvailabilityParams:
     versions: tuple[str, ...]  # the versions it covers
     commands: tuple[str, ...]  # the commands missing from them
@@ -283,10 +300,27 @@ class DeprecatedParams:
     versions: tuple[str, ...] = ()
 
 
-Params = (NoParams | DeprecatedParams | ScopedParams | PartNumberParams | CutterTableParams | AvailabilityParams
-          | TargetParams | RangeParams | MachineLimitsParams)
+Params = (NoParams | DeprecatedParams | ScopedParams | PartNumberParams | CutterTableParams | HeaderChecksumParams
+          | AvailabilityParams | TargetParams | RangeParams | MachineLimitsParams)
 
 Scope = Literal["file", "record"]
+
+
+@dataclass(frozen=True)
+class Accepts:
+    """The values a check of a value-bounding kind accepts in each of its target arguments: what
+    a generator of valid files (the Python runtime's ``testing``) may draw. A new kind that bounds
+    values says it here, and the generators follow without naming the kind."""
+
+    min: float | None = None
+    max: float | None = None
+    min_open: bool = False  # min itself is refused (``positive``: > 0; ``range`` with min_exclusive)
+    max_open: bool = False  # max itself is refused (``range`` with max_exclusive)
+    nonzero: bool = False  # a vector of zeros is refused
+
+
+def _at_least(bound: float, open_: bool = False) -> Callable[[Any], Accepts]:
+    return lambda check: Accepts(min=bound, min_open=open_)
 
 
 @dataclass(frozen=True)
@@ -302,6 +336,11 @@ class CheckKind:
     repeatable: bool = True
     kaitai: bool = False
     target_shape: RoleArg | None = None  # what each target argument must be (None: the kind checks it itself)
+    accepts: Callable[[Any], Accepts] | None = None  # a check (model.Check) -> the values it accepts
+
+    def accepted(self, check: Any) -> Accepts | None:
+        """What ``check`` (of this kind) accepts in its targets; None: the kind bounds no value."""
+        return None if self.accepts is None else self.accepts(check)
 
     @property
     def keys(self) -> tuple[str, ...]:
@@ -329,8 +368,8 @@ class CheckKind:
 
 
 def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = False,
-       target: RoleArg | None = None) -> CheckKind:
-    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target)
+       target: RoleArg | None = None, accepts: Callable[[Any], Accepts] | None = None) -> CheckKind:
+    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target, accepts=accepts)
 
 
 # In the order of the C engine's kind enum (and of the schema's list).
@@ -342,7 +381,8 @@ _KINDS = (
     _k("cutter_table", CutterTableParams, "record", "cutters agree with the given cutter table"),
     _k("file_checksum", ScopedParams, "file", "the file checksum matches a coverage of the profile"),
     _k("command_count", ScopedParams, "file", "the header's count is the number of records"),
-    _k("header_checksum", ScopedParams, "file", "the header checksum matches"),
+    _k("header_checksum", HeaderChecksumParams, "file",
+       "the header checksum field it names (its `field`, a checksum tag) matches"),
     _k("magic", ScopedParams, "file", "the start and end patterns hold their values", kaitai=True),
     _k("sequence", ScopedParams, "record", "record i carries sequence number i"),
     _k("code_copy", ScopedParams, "record", "the code copy equals the code", kaitai=True),
@@ -357,9 +397,12 @@ _KINDS = (
     _k("string_tail", ScopedParams, "record", "only NULs follow a string's first NUL"),
     _k("string_ascii", ScopedParams, "record", "strings are printable ASCII"),
     _k("finite", ScopedParams, "record", "float arguments are finite"),
-    _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM),
-    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC),
-    _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM),
+    _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM, accepts=_at_least(0.0, True)),
+    _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC,
+       accepts=lambda check: Accepts(nonzero=True)),
+    _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM,
+       accepts=lambda check: Accepts(min=check.min, max=check.max, min_open=check.min_exclusive,
+                                     max_open=check.max_exclusive)),
     _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record", target=_NUM),
     _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
     _k("orientation", ScopedParams, "record", "a 5-axis command starts at the current orientation"),

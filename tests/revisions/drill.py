@@ -35,6 +35,10 @@ item. Operations:
     prune    drop the items of the list(s) at path whose `key` is empty
     sub      replace the regular expression `pattern` by value in the text at path
     append_line    (no path) append the line value to the text `file:` (a known-failure list)
+    sub_text       (no path) replace `pattern` (a regular expression) by value in the text `file:`
+    copy           set path to a copy of the value at `from`
+    splice         replace the list item at path by the items of value
+    insert         put the items of value into the list at path before its item `before` (else last)
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
 expectation of a golden case, a binding's known-failure list; `optional:
 true` skips it when that file is missing). `files:` maps new paths to their
@@ -194,6 +198,13 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
            "unwritable": _flow([str(v["id"]) for v in unwritable]),
            "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
            "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing"}
+    # The header of the newest version that still reserves the checksum bytes (4.2: offset 10, 6 bytes
+    # "reserved for future checksum usage"), the newest header when none does.
+    headers = doc.get("headers", {})
+    reserve = next((str(v["header"]) for v in sorted(versions, key=_key, reverse=True)
+                    if any(f.get("role") == "reserved" and f.get("offset") == 10 and f.get("size", 0) >= 4
+                           for f in headers.get(v["header"], {}).get("fields", ()))), str(newest["header"]))
+    out["reserve_header"] = reserve
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
@@ -300,6 +311,17 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
         else:
             for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
                 del c[k]
+    elif op == "copy":  # the value at `from` (its first match), e.g. a new header layout from the newest one
+        src = _resolve(root, str(edit["from"]))[0]
+        for c, k in slots:
+            c[k] = copy.deepcopy(src[0][src[1]])
+    elif op == "splice":  # one list item replaced by the items of value (reserved bytes become fields)
+        for c, k in sorted(slots, key=lambda s: s[1] if isinstance(s[1], int) else 0, reverse=True):
+            c[k:k + 1] = copy.deepcopy(value)
+    elif op == "insert":  # the items of value put into the list at path before its item `before`
+        for c, k in slots:
+            at = c[k].index(edit["before"]) if edit["before"] in c[k] else len(c[k])
+            c[k][at:at] = copy.deepcopy(value)
     elif op == "prune":  # drop the items of the list(s) at path whose `key` is empty (a layout left no version)
         for c, k in slots:
             c[k][:] = [item for item in c[k] if not (isinstance(item, dict) and not item.get(edit["key"]))]
@@ -330,6 +352,13 @@ def apply(fx: Fixture, root: Path) -> None:
         if edit.get("op") == "append_line":  # a line of a text file (a binding's known-failure list)
             with (root / rel).open("a", encoding="utf-8") as fh:
                 fh.write(str(edit["value"]).rstrip("\n") + "\n")
+            continue
+        if edit.get("op") == "sub_text":  # a regular-expression replacement in a text file (a failure list)
+            text = (root / rel).read_text(encoding="utf-8")
+            text, n = re.subn(str(edit["pattern"]), str(edit["value"]), text, flags=re.MULTILINE)
+            if not n:
+                raise FixtureError(f"{fx.path.name}: edit {i + 1} ({rel}): {edit['pattern']!r} does not match")
+            (root / rel).write_text(text, encoding="utf-8")
             continue
         if rel not in docs:
             docs[rel] = read_spec(root / rel)
@@ -396,7 +425,7 @@ def copy_tree(dest: Path) -> None:
                             capture_output=True).stdout.decode().split("\0")
     for rel in listed:
         src = REPO / rel
-        if rel and src.is_symlink():  # a tracked link (schemas/*.json) stays a link, relative as committed
+        if rel and src.is_symlink():  # a tracked link (schemas/ links into the runtime): the same link
             (dest / rel).parent.mkdir(parents=True, exist_ok=True)
             (dest / rel).symlink_to(os.readlink(src))
             continue

@@ -74,6 +74,21 @@ func f32(v float32) interface{} {
 }
 
 func value(f field, v reflect.Value) interface{} {
+	if f.Count < 0 { // a repeated group: items of -Count elements, read flat
+		one := field{f.Name, f.Kind, f.Go, 1}
+		flat := make([]interface{}, v.Len())
+		for i := 0; i < v.Len(); i++ {
+			flat[i] = value(one, v.Index(i))
+		}
+		if f.Count == -1 {
+			return flat
+		}
+		items := []interface{}{}
+		for i := 0; i < len(flat); i += -f.Count {
+			items = append(items, flat[i:i-f.Count])
+		}
+		return items
+	}
 	switch f.Kind {
 	case "float":
 		if f.Count > 1 {

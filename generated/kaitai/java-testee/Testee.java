@@ -111,6 +111,17 @@ public class Testee {
     }
 
     static String value(String[] f, Object v) {
+        int count = Integer.parseInt(f[2]);
+        if (count < 0) { // a repeated group: items of -count elements, read flat
+            String[] one = {f[0], f[1], "1", f[3]};
+            List<?> list = (List<?>) v;
+            StringBuilder b = new StringBuilder("[");
+            for (int i = 0; i < list.size(); i++) {
+                boolean open = count < -1 && i % -count == 0, close = count < -1 && (i + 1) % -count == 0;
+                b.append(i > 0 ? ", " : "").append(open ? "[" : "").append(value(one, list.get(i))).append(close ? "]" : "");
+            }
+            return b.append("]").toString();
+        }
         switch (f[1]) {
             case "float":
                 if (!f[2].equals("1")) {

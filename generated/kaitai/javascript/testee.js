@@ -22,6 +22,13 @@ function f32(v) {
 }
 function hex(bytes) { return Buffer.from(bytes).toString('hex'); }
 function value(kind, count, v) {
+  if (count < 0) {  // a repeated group: items of -count elements, read flat
+    const flat = Array.from(v, (x) => value(kind, 1, x));
+    if (count === -1) return flat;
+    const items = [];
+    for (let i = 0; i < flat.length; i += -count) items.push(flat.slice(i, i - count));
+    return items;
+  }
   if (kind === 'float') return count > 1 ? Array.from(v, f32) : f32(v);
   if (kind === 'bytes') return hex(v);
   return v;

@@ -28,6 +28,9 @@ def f32(v):
 
 
 def value(kind, count, v):
+    if count < 0:  # a repeated group: items of -count elements, read flat
+        flat = [value(kind, 1, x) for x in v]
+        return flat if count == -1 else [flat[i:i - count] for i in range(0, len(flat), -count)]
     if kind == "float":
         return [f32(x) for x in v] if count > 1 else f32(v)
     if kind == "bytes":

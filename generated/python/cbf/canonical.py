@@ -12,6 +12,7 @@ import json
 import math
 import re
 import struct
+from dataclasses import replace
 from decimal import Decimal
 from typing import Any
 
@@ -119,7 +120,10 @@ def _fields_json(fields: tuple[T.FieldInfo, ...], vals: tuple[Any, ...]) -> dict
     out: dict[str, Any] = {}
     j = 0
     for f in fields:
-        if f.kind == "float":
+        if f.per:  # a repeated group: a list of n items (issue 25, point 3)
+            one = (replace(f, count=f.per, per=0),)
+            out[f.name] = [_fields_json(one, vals[k:k + f.per])[f.name] for k in range(j, j + f.count, f.per)]
+        elif f.kind == "float":
             items = [float_json(b) for b in vals[j:j + f.count]]
             out[f.name] = items if f.count > 1 else items[0]
         elif f.kind == "string":
@@ -200,6 +204,14 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
     for f in fields:
         w = f"{where}.{f.name}"
         v = obj[f.name]
+        if f.per:  # a repeated group: a list of exactly the layout's n items
+            if not isinstance(v, list) or len(v) != f.items:
+                raise JsonShapeError(f"{w}: expected a list of {f.items} items")
+            one = (replace(f, count=f.per, per=0),)
+            st1 = struct.Struct(_fmt(one))
+            for k, item in enumerate(v):
+                vals.extend(st1.unpack(_pack_json(one, st1, {f.name: item}, f"{w}[{k}]")))
+            continue
         if f.kind == "float":
             items = v if f.count > 1 else [v]
             if not isinstance(items, list) or len(items) != f.count:
@@ -216,6 +228,17 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
         else:
             vals.append(_hex(v, w, f.size))
     return st.pack(*vals)
+
+
+def _fmt(fields: tuple[T.FieldInfo, ...]) -> str:
+    """The bit-pattern struct format of fields (floats as their unsigned bits, as _pack_json packs)."""
+    return T.BO + "".join(f.bits_fmt for f in fields)
+
+
+def _items_fit(lay: T.LayoutInfo, args: dict[str, Any]) -> bool:
+    """A layout made for n items of a repeated group fits a JSON group of n items (else any)."""
+    rep = lay.repeated
+    return rep is None or (isinstance(args.get(rep.name), list) and len(args[rep.name]) == rep.items)
 
 
 def _obj(value: Any, where: str) -> dict[str, Any]:
@@ -283,7 +306,8 @@ def from_canonical(doc: Any) -> Cbf:
                 raise JsonShapeError(f"{w}.args: unknown code 0x{code:02X} takes raw_args only")
             want_size = r.get(names["arg_size"])
             lay = next((x for x in cmd.candidates(vid) + cmd.layouts
-                        if {f.name for f in x.args} == set(a) and (want_size is None or want_size == x.size)), None)
+                        if {f.name for f in x.args} == set(a) and (want_size is None or want_size == x.size)
+                        and _items_fit(x, a)), None)
             if lay is None:
                 raise JsonShapeError(f"{w}.args: keys {sorted(a)} match no layout of {cmd.name}")
             raw = _pack_json(lay.args, lay.struct.__class__(lay.bits.format), a, f"{w}.args")

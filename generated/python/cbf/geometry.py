@@ -76,6 +76,8 @@ def motion_end(m: dict[str, str] | Any, a: dict[str, Any] | Any) -> tuple[float,
     kind = m["kind"]
     if kind in ("point", "line"):
         end = a[m["end"]]
+        if end and isinstance(end[0], tuple):  # a repeated group (a polyline): its last point
+            end = end[-1]
         return tuple(end) if finite(end) else None
     start, center, normal, deg = a[m["start"]], a[m["center"]], a[m["normal"]], a[m["degrees"]]
     length = a[m["length"]] if kind == "helix" else 0.0
@@ -228,7 +230,8 @@ def curve_of(motion: dict[str, str], args: Any, pos: Vec | None) -> Curve | None
         return getattr(args, motion[key])
 
     if kind == "point":
-        end = vec(get("end"))
+        got = get("end")
+        end = vec(got[-1] if got and isinstance(got[0], tuple) else got)  # a polyline: its last point
         if not finite(end):
             return None
         return Curve(pos if pos is not None else end, end)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 import struct
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache
 from importlib import import_module
 from pathlib import Path
@@ -46,6 +46,15 @@ class FieldInfo:
     numpy: str | None = None  # numpy dtype code without byte order ("u2", "f4"); None: str, bytes
     lo: int | None = None  # an integer's least and greatest value (unsigned or two's complement)
     hi: int | None = None
+    # A repeated argument group (issue 25, point 3): (min n, max n) in the spec's layout; in a layout
+    # made for one n (LayoutInfo.n), count is n * per, the elements of n items of `per` elements.
+    repeat: tuple[int, int] | None = None
+    per: int = 0
+
+    @property
+    def items(self) -> int:
+        """How many items a repeated field holds in its layout (count // per); 1 when not repeated."""
+        return self.count // self.per if self.per else 1
 
     @property
     def is_int(self) -> bool:
@@ -81,8 +90,15 @@ class FieldInfo:
 
 
 def _field(d: dict[str, Any]) -> FieldInfo:
+    rep = d.get("repeat")
     return FieldInfo(d["name"], d["kind"], d["offset"], d["elem_size"], d["count"], d["role"], d["magic"],
-                     d["checksum"], d["reserved"], d["text"], d["code"], d["bits_code"], d["numpy"], d["min"], d["max"])
+                     d["checksum"], d["reserved"], d["text"], d["code"], d["bits_code"], d["numpy"], d["min"], d["max"],
+                     (rep[0], rep[1]) if rep else None)
+
+
+def _for_n(f: FieldInfo, n: int) -> FieldInfo:
+    """A repeated field as it stands in the layout made for n items."""
+    return replace(f, count=f.count * n, per=f.count)
 
 
 def _struct(fields: tuple[FieldInfo, ...], bits: bool = False) -> struct.Struct:
@@ -100,6 +116,12 @@ class LayoutInfo:
     args: tuple[FieldInfo, ...]
     struct: Struct
     bits: Struct
+    # A layout with a repeated group is made once per n it takes (nb = fixed + k*n): n, else None.
+    n: int | None = None
+
+    @property
+    def repeated(self) -> FieldInfo | None:
+        return self.args[-1] if self.n is not None else None
 
     def accepted_under(self, profile: str) -> bool:
         return not self.profiles or profile in self.profiles
@@ -209,6 +231,9 @@ VMAJOR = _common("version_major")
 VMINOR = _common("version_minor")
 COUNT = _common("command_count")
 HEADER_CHECKSUM_FIELDS = {f.checksum: f for f in _H0.fields if f.checksum}
+# Each header layout's checksum fields by tag: a new version's header may carry its own.
+LAYOUT_CHECKSUM_FIELDS: dict[str, dict[str, FieldInfo]] = {
+    hid: {f.checksum: f for f in h.fields if f.checksum} for hid, h in HEADERS.items()}
 
 RECORD_FIELDS = tuple(_field(f) for f in SPEC["record"]["fields"])
 HEAD_SIZE: int = SPEC["record"]["head_size"]
@@ -231,6 +256,14 @@ def _command(c: dict[str, Any]) -> CommandInfo:
     lays = []
     for lay in c["layouts"]:
         args = tuple(_field(a) for a in lay["args"])
+        rep = args[-1].repeat if args else None
+        if rep is not None:  # one layout per n (issue 25, point 3): every look-up by nb finds its own
+            for n in range(rep[0], rep[1] + 1):
+                nargs = (*args[:-1], _for_n(args[-1], n))
+                lays.append(LayoutInfo(c["name"], c["code"], lay["variant"], frozenset(lay["versions"]),
+                                       lay["size"] + args[-1].size * n, frozenset(lay["profiles"]), nargs,
+                                       _struct(nargs), _struct(nargs, bits=True), n))
+            continue
         lays.append(LayoutInfo(c["name"], c["code"], lay["variant"], frozenset(lay["versions"]), lay["size"],
                                frozenset(lay["profiles"]), args, _struct(args), _struct(args, bits=True)))
     by_version = {v["id"]: tuple(x for x in lays if v["id"] in x.versions) for v in SPEC["versions"]}

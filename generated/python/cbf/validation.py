@@ -79,12 +79,14 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     for f in (T.START, T.END):
         if header[f.name] != f.magic:
             out.add("magic", None, f.offset, f"{f.name} is 0x{header[f.name]:08X}, expected 0x{f.magic:08X}")
-    hsum = T.HEADER_CHECKSUM_FIELDS.get("header")
-    if hsum is not None:
-        want = _field_sum("header", buf, [])
-        if header[hsum.name] != want:
-            out.add("header_checksum", None, hsum.offset,
-                    f"stored header checksum {header[hsum.name]}, computed {want}")
+    own = T.LAYOUT_CHECKSUM_FIELDS[info.id]
+    for check in T.checks_of("header_checksum"):  # each judges its field, where this version's header has it
+        hsum = own.get(check["field"])
+        if hsum is not None:
+            want = _field_sum(check["field"], buf, [])
+            if header[hsum.name] != want:
+                out.findings.append(finding(check, None, hsum.offset,
+                                            f"stored {check['field']} checksum {header[hsum.name]}, computed {want}"))
     for f in info.fields:
         if f.kind == "string":
             out.findings.extend(header_string_findings(header[f.name], f.offset, f.name))

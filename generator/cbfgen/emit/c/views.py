@@ -29,7 +29,12 @@ SHAPE_KEYS = ("name", "count")
 CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
-CHECKSUM_TAGS = ("args", "header", "file")
+CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own tags follow (_tags)
+
+
+def _tags(spec: Spec) -> tuple[str, ...]:
+    """The checksum tags of the spec: today's three, then any other, in checksums.fields order."""
+    return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
 # Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
 # targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
 OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
@@ -233,6 +238,7 @@ class CkFieldRow:
     tag: str
     alg: str
     coverage: int
+    check: int = -1  # the header_checksum check that judges the field (index in cbf__checks), -1: none
 
 
 @dataclass(frozen=True)
@@ -247,6 +253,7 @@ class ProfileRow:
     file_pad: tuple[int, ...]
     hint_pad: tuple[int, ...]
     hint_alg_pad: tuple[str, ...]
+    hint_owner_pad: tuple[int, ...]  # the profile (index) that accepts each hint coverage, -1: none
 
 
 @dataclass(frozen=True)
@@ -446,7 +453,7 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         return tuple(macro(k) for k in names)
 
     return Vocabulary(
-        roles=m(_roles(spec)), tags=m(CHECKSUM_TAGS), algorithms=m(ALGORITHMS), regions=m(REGIONS),
+        roles=m(_roles(spec)), tags=m(_tags(spec)), algorithms=m(ALGORITHMS), regions=m(REGIONS),
         motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=m(CUTTER_KEYS), check_kinds=m(list(registry.CHECK_KINDS)),
@@ -669,12 +676,15 @@ def _checksums(spec: Spec) -> Checksums:
                                    exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
                         for s in cov.segments)
     ckfields: list[CkFieldRow] = []
-    for tag in CHECKSUM_TAGS:
+    check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
+    for tag in _tags(spec):
         cf = spec.checksums.for_field(tag)
         kind = spec.checksums.algorithms[cf.algorithm].kind
         if kind not in ALGORITHMS:
             raise ValueError(f"C binding: checksum algorithm kind {kind!r} is not supported")
-        ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage)))
+        judge = spec.checksum_check(tag)
+        ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage),
+                                   check=-1 if judge is None else check_index[judge.id]))
     return Checksums(segments=tuple(segments), coverages=tuple(coverages), ckfields=tuple(ckfields),
                      fill=tuple("CK_" + macro(t) for t in spec.checksums.fill_order))
 
@@ -690,13 +700,16 @@ def _profiles(spec: Spec) -> Profiles:
     for p in spec.profiles:
         # a hint coverage is computed with the algorithm of the profile that accepts it
         owners = [next((q for q in spec.profiles if x in q.file_coverages), p) for x in p.hint_coverages]
+        owner_ix = tuple(next((k for k, q in enumerate(spec.profiles) if x in q.file_coverages), -1)
+                         for x in p.hint_coverages)
         file = tuple(cov_names.index(x) for x in p.file_coverages)
         hint = tuple(cov_names.index(x) for x in p.hint_coverages)
         hint_alg = tuple(alg(q.id) for q in owners)
         rows.append(ProfileRow(id=p.id, macro=macro(p.id), doc=comment(p.doc), file=file, hint=hint,
                                file_alg=alg(p.id), hint_alg=hint_alg, file_pad=file + (-1,) * (width - len(file)),
                                hint_pad=hint + (-1,) * (width - len(hint)),
-                               hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg))))
+                               hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg)),
+                               hint_owner_pad=owner_ix + (-1,) * (width - len(owner_ix))))
     # per command and version: the index of the one availability check covering a command the
     # version lacks (the loader guarantees one), -1 when it has it
     check_index = {ch.id: i for i, ch in enumerate(spec.checks)}

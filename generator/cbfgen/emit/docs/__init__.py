@@ -33,6 +33,10 @@ OUT = "docs"
 GOLDEN = REPO / "conformance" / "golden"
 REPORT = REPO / "conformance" / "report.json"
 RELIABILITY = REPO / "conformance" / "reliability.json"
+# The folder the output folder sits in: a page links a file of the repository (the spec, the golden README,
+# a case's hex source, the kit's guide) only when the file is there, relative to the page; otherwise it
+# names it as text. cbfgen sets it to its --out folder's parent; the checkout's generated/ sits in REPO.
+ROOT = REPO
 
 
 def _anchor(text: str) -> str:
@@ -217,7 +221,11 @@ def figures(spec: Spec) -> dict[str, str]:
         for lay in c.layouts:
             if lay.args:
                 name = f"{c.name}{' ' + lay.variant if lay.variant else ''}"
-                out[layout_svg(lay)] = svg.byte_field(f"{name} arguments, {lay.size} bytes", lay.args, lay.size)
+                # a repeated group (issue 25, point 3): drawn with its fewest items, named name[i]
+                shown = lay.sized(lay.sizes[0]) if lay.repeated is not None else lay
+                rep = f" + {lay.repeated.size}·n" if lay.repeated is not None else ""
+                out[layout_svg(lay)] = svg.byte_field(f"{name} arguments, {lay.size}{rep} bytes",
+                                                      (shown or lay).args, (shown or lay).size)
     circle = _motion_names(spec, "circle")
     if circle:
         out[MOTION_SVG] = svg.motion(circle, _motion_names(spec, "helix"), "Circle and helix end points")
@@ -447,6 +455,7 @@ def context(spec: Spec) -> dict[str, Any]:
         "limitations": {b: known_failures(b)[1] for b in bindings},
         "reliability": _reliability(_reliability_file()),
         "cases": cases,
+        "case_names": {c.name for c in cases},
         "examples": golden.examples(spec, cases),
         "cut_example": golden.cut_example(spec, cases),
         "header_example": golden.header_example(spec, cases),
@@ -524,7 +533,17 @@ def _environment(spec: Spec) -> Any:
     env.filters["header_svg"] = header_svg
     env.filters["prose"] = lambda value, index="": text.prose(spec, value, index)
     env.filters["md"] = text.md_escape
+    env.globals["repo_link"] = repo_link
     return env
+
+
+def repo_link(path: str, depth: int, label: str | None = None) -> str:
+    """A Markdown link from a docs page (depth: its folders below docs/) to a repository file (path from
+    the repository's root), when the file is there; else its name as text (a link to nothing is broken)."""
+    label = label or f"`{path}`"
+    if (ROOT / path).is_file():
+        return f"[{label}]({'../' * (depth + 2)}{path})"
+    return label if label.startswith("`") else f"{label} (`{path}` in the toolkit's repository)"
 
 
 def emit(spec: Spec, ctx: dict[str, Any] | None = None) -> dict[str, bytes]:

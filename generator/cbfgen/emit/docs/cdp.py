@@ -23,6 +23,8 @@ FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
          "--hide-scrollbars", "--remote-debugging-pipe", "--font-render-hinting=none")
 TIMEOUT = 60.0
+MARGIN_TOP = 0.75  # inches of a printed page above its body (the header's band)
+MARGIN_BOTTOM = 0.85  # inches below its body (the footer's band)
 
 
 class CdpError(RuntimeError):
@@ -123,7 +125,7 @@ class Browser:
             "printBackground": True, "displayHeaderFooter": True, "generateDocumentOutline": True,
             "headerTemplate": header,
             "footerTemplate": footer, "paperWidth": 8.27, "paperHeight": 11.69,
-            "marginTop": 0.75, "marginBottom": 0.85, "marginLeft": 0.6, "marginRight": 0.6})["data"]
+            "marginTop": MARGIN_TOP, "marginBottom": MARGIN_BOTTOM, "marginLeft": 0.6, "marginRight": 0.6})["data"]
         path.write_bytes(base64.b64decode(data))
 
     def console(self, since: int = 0) -> list[str]:

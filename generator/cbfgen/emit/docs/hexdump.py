@@ -108,7 +108,7 @@ def records(spec: Spec, data: bytes) -> Iterator[Record]:
         if pos + rec.head_size + nb > len(data):
             return
         cmd = by_code.get(_uint(spec, code_f, data, pos))
-        lays = [lay for lay in cmd.layouts_for(version) if lay.size == nb] if cmd else []
+        lays = [x for lay in cmd.layouts_for(version) if (x := lay.sized(nb)) is not None] if cmd else []
         yield Record(index, pos, cmd, lays[0] if lays else None,
                      data[pos + rec.head_size:pos + rec.head_size + nb])
         pos += rec.head_size + nb

@@ -19,7 +19,11 @@ outline (Chromium writes one destination per heading): the document is
 printed with placeholder numbers of the same width, the outline read, the
 contents filled in and the document printed again. The check then reads the
 final PDF (pypdf): its outline must put every chapter on the page the contents
-give, and the first chapters' titles must be on those pages' text.
+give, and the first chapters' titles must be on those pages' text. It also reads
+the words' boxes of every page (pdftotext -bbox, poppler-utils): a page whose
+text ends above half its body, other than a part's last page, fails (left
+mostly blank); so does a site page's navigation line found in the text, and a
+link of the printed document to anything it does not hold.
 
     python -m cbfgen.emit.docs.pdf --out build/docs-pdf/cbf-reference.pdf
 """
@@ -31,6 +35,7 @@ import html
 import posixpath
 import re
 import shutil
+import subprocess
 import sys
 import unicodedata
 from collections.abc import Sequence
@@ -44,7 +49,7 @@ from ...loader import load
 from ...model import Spec
 from . import CUT_PAGE, FIELD_INDEX, GOLDEN_INDEX, case_page, command_page, context, emit, figures
 from .browser import chromium
-from .cdp import Browser, CdpError
+from .cdp import MARGIN_BOTTOM, MARGIN_TOP, Browser, CdpError
 from .site import Imports, _markdown, to_html
 
 STYLE = """
@@ -85,6 +90,7 @@ class Chapter:
     body: str
     part: bool  # starts on a new page
     level: int = 1  # 1: listed in the contents; 2: listed indented
+    nav: str = ""  # the text of the site page's "Spec" line and navigation line, which the PDF must not print
 
 
 @dataclass(frozen=True)
@@ -104,13 +110,26 @@ def _text(fragment: str) -> str:
     return " ".join(html.unescape(re.sub("<[^>]+>", "", fragment)).split())
 
 
-_NAV = re.compile(r"<p>(?:<a [^>]*>[^<]*</a>(?: · )?)+</p>\n?")
+# A site page's navigation line: the paragraph of links joined by " · " after its "Spec ... · toolkit ..."
+# line (a page's first paragraph of links may be an anchor before its h1)
+_NAV = re.compile(r"(<p>Spec [^<]*</p>\n)<p>(?:<a [^>]*>[^<]*</a>(?: · )?)+</p>\n?")
+# What the check looks for in the PDF's text: the "Spec" line and the links the next paragraph starts with
+# (found more loosely than _NAV, so a line _NAV leaves in is seen)
+_LEAD = re.compile(r"<p>(Spec [^<]*)</p>\n<p>((?:<a [^>]*>[^<]*</a>[\s·]*)+)")
+
+
+def _repository_file(target: str) -> str:
+    """The repository file a site page under files/ copies (site.imported's inverse), else ""."""
+    if not target.startswith("files/") or not target.endswith(".html"):
+        return ""
+    rel = target[len("files/"):-len(".html")]
+    return rel if "." in posixpath.basename(rel) else rel + ".md"
 
 
 def _localise(page: Page, held: dict[str, str]) -> str:
     """A page's HTML inside the one document: ids prefixed with the page's id, links to held pages as
     links inside the PDF, links to anything else as plain text, the navigation line left out."""
-    body = _NAV.sub("", page.html, count=1) if page.pid else page.html
+    body = _NAV.sub(r"\1", page.html, count=1) if page.pid else page.html
     prefix = f"{page.pid}-" if page.pid else ""
     body = re.sub(r'id="([^"]+)"', lambda m: f'id="{prefix}{m.group(1)}"', body)
 
@@ -123,10 +142,15 @@ def _localise(page: Page, held: dict[str, str]) -> str:
             return "<a>"
         target = posixpath.normpath(posixpath.join(posixpath.dirname(page.path), path))
         if target not in held:
-            return "<a>"
+            return f'<a data-file="{html.escape(_repository_file(target))}">'
         pid = held[target]
         return f'<a href="#{(pid + "-" + frag) if pid and frag else frag or pid or "top"}">'
     body = re.sub(r'<a href="([^"]*)">', link, body)
+
+    def unheld(m: re.Match[str]) -> str:  # a file the PDF does not hold: named where the label does not
+        file, label = html.unescape(m.group(1)), m.group(2)
+        return label if not file or file in _text(label) else f"{label} (<code>{html.escape(file)}</code>)"
+    body = re.sub(r'<a data-file="([^"]*)">(.*?)</a>', unheld, body, flags=re.S)
     body = re.sub(r'src="(?:\.\./)*svg/', 'src="svg/', body)
     first_row = "<table>\n<thead>\n<tr>\n<th>Ver#</th>"  # table 5.1: one page
     body = body.replace(first_row, first_row.replace("<table>", '<table class="one-page">'))
@@ -135,12 +159,19 @@ def _localise(page: Page, held: dict[str, str]) -> str:
                   r"\1\3<caption>\2</caption>", body)
 
 
+class Unplaced(ValueError):
+    """A page of the site that the PDF's order does not name."""
+
+
 def site_pages(spec: Spec) -> list[tuple[str, str]]:
     """(site path, Markdown) of every page the PDF holds, in its order."""
     ctx = context(spec)
     files = emit(spec, ctx)
     order = ["index.md", CUT_PAGE, *(command_page(c) for c in spec.commands), "changes.md", FIELD_INDEX,
              GOLDEN_INDEX, *(case_page(c.name) for c in ctx["cases"])]
+    unplaced = sorted(rel[len("docs/"):] for rel in files if rel.endswith(".md") and rel[len("docs/"):] not in order)
+    if unplaced:  # the PDF holds every page of the site (the gallery, made apart from the spec, aside)
+        raise Unplaced(f"pages of the site the PDF does not place: {', '.join(unplaced)} (pdf.site_pages)")
     return [(rel[:-3] + ".html", files[f"docs/{rel}"].decode()) for rel in order]
 
 
@@ -162,13 +193,15 @@ def chapters(spec: Spec) -> list[Chapter]:
             case = path.startswith("golden/") and path != golden_index
             # a new page for each part; the command pages and the cases flow one after the other
             part = not (command and path != first_command) and not case and path != golden_index
+            lead = _LEAD.search(body)
+            nav = _text(lead.group(1) + " " + lead.group(2)) if lead else ""
             out.append(Chapter(title, held[path], f'<a id="{held[path]}"></a>{local}', part,
-                               level=2 if command or case else 1))
+                               level=2 if command or case else 1, nav=nav))
             continue
         parts = re.split(r"(?=<h2>)", local)
         head = parts[0]
         h1 = re.search(r"<h1>(.*?)</h1>", head)
-        out.append(Chapter(_text(h1.group(1)) if h1 else "Reference", "top", head, False))
+        out.append(Chapter(_text(h1.group(1)) if h1 else "Reference", "top", f'<a id="top"></a>{head}', False))
         for section in parts[1:]:
             h2 = re.match(r"<h2>(.*?)</h2>", section)
             name = _text(h2.group(1)) if h2 else "Section"
@@ -179,13 +212,15 @@ def chapters(spec: Spec) -> list[Chapter]:
     return out
 
 
+def _toc_title(spec: Spec) -> str:
+    return f"Contents of {spec.meta['part_number']} rev {spec.meta['revision']}"
+
+
 def _toc(spec: Spec, chs: list[Chapter], starts: list[str]) -> str:
-    m = spec.meta
     items = "".join(
         f'<li class="{"sub" if c.level == 2 else "top"}"><a href="#{c.anchor}">{html.escape(c.title)}</a>'
         f'<span class="dots"></span><span>{s}</span></li>' for c, s in zip(chs, starts, strict=True))
-    return (f'<section class="toc part"><h2>Contents of {html.escape(m["part_number"])} rev '
-            f'{html.escape(m["revision"])}</h2><ol>{items}</ol></section>')
+    return f'<section class="toc part"><h2>{html.escape(_toc_title(spec))}</h2><ol>{items}</ol></section>'
 
 
 def _doc(title: str, body: str) -> str:
@@ -276,11 +311,73 @@ def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, 
         draft = PdfReader(str(print_("draft", document([PLACEHOLDER] * len(chs)))))
         found = chapter_pages([c.title for c in chs], outline_pages(draft))
         starts = [str(p) if p is not None else "?" for p in found]
-        final = print_("document", document(starts))
+        final_doc = document(starts)
+        final = print_("document", final_doc)
     shutil.copyfile(final, out)
     reader = PdfReader(str(out))
-    return len(reader.pages), verify(out.name, [c.title for c in chs], starts, outline_pages(reader),
-                                     PageTexts(reader))
+    outline = outline_pages(reader)
+    problems = verify(out.name, [c.title for c in chs], starts, outline, PageTexts(reader))
+    problems += [f"{out.name}: {p}" for p in dangling(final_doc)]
+    # the pages a part starts on (the contents, and each chapter that starts a new page)
+    toc = chapter_pages([_toc_title(spec)], outline)
+    part_starts = {p for c, p in zip([None, *chs], [*toc, *chapter_pages([c.title for c in chs], outline)],
+                                     strict=True) if p is not None and (c is None or c.part)}
+    pages = pdf_pages(out)
+    problems += [f"{out.name}: {p}" for p in blank_pages([fill for fill, _ in pages], part_starts)]
+    problems += [f"{out.name}: {p}" for p in navigation_printed([c.nav for c in chs], [t for _, t in pages])]
+    return len(reader.pages), problems
+
+
+def navigation_printed(navs: list[str], texts: list[str]) -> list[str]:
+    """Every navigation line of the site's pages (given with the line before it) that the PDF's text holds
+    (dead text on paper)."""
+    text = _key(" ".join(texts))
+    return [f"the site's navigation line '{nav}' is printed" for nav in sorted(set(navs)) if nav and _key(nav) in text]
+
+
+BLANK = 0.5  # a page whose text ends above this fraction of its body's height is mostly blank
+_PAGE = re.compile(r'<page width="[^"]*" height="([^"]*)">(.*?)</page>', re.S)
+_WORD = re.compile(r'<word xMin="[^"]*" yMin="([^"]*)" xMax="[^"]*" yMax="([^"]*)">([^<]*)</word>')
+
+
+def pdf_pages(pdf: Path) -> list[tuple[float, str]]:
+    """(fill, text) of every page of a PDF printed by Browser.pdf: how far down the page's body (between
+    the header's and the footer's bands) its lowest word reaches, 0 to 1, and the body's words; from
+    pdftotext -bbox (poppler-utils), one call for the whole document."""
+    tool = shutil.which("pdftotext")
+    if tool is None:
+        raise FileNotFoundError("pdftotext not found (poppler-utils: CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh "
+                                "installs it)")
+    run = subprocess.run([tool, "-bbox", str(pdf), "-"], capture_output=True, text=True, check=True, timeout=300)
+    out = []
+    top = MARGIN_TOP * 72  # PDF points
+    for page in _PAGE.finditer(run.stdout):
+        bottom = float(page.group(1)) - MARGIN_BOTTOM * 72
+        body = [(float(y1), html.unescape(w)) for y0, y1, w in _WORD.findall(page.group(2))
+                if float(y0) >= top - 1 and float(y1) <= bottom + 1]
+        fill = (max(y for y, _ in body) - top) / (bottom - top) if body else 0.0
+        out.append((fill, " ".join(w for _, w in body)))
+    return out
+
+
+def blank_pages(fills: list[float], part_starts: set[int]) -> list[str]:
+    """Every page left mostly blank that is not the last page of a part (the page before a part starts,
+    and the document's last page, may end anywhere)."""
+    lasts = {p - 1 for p in part_starts} | {len(fills)}
+    return [f"page {n} is mostly blank (its text ends {fill:.0%} down the page) and no part ends there"
+            for n, fill in enumerate(fills, 1) if fill < BLANK and n not in lasts]
+
+
+_HREF = re.compile(r'<a [^>]*href="([^"]*)"')
+_ID = re.compile(r'\sid="([^"]+)"')
+
+
+def dangling(doc: str) -> list[str]:
+    """Every link of the printed document that leaves it or names no id of it: the PDF refers only to
+    what it holds."""
+    ids = set(_ID.findall(doc))
+    return [f"link to {href!r}, which the PDF does not hold" for href in _HREF.findall(doc)
+            if not href.startswith("#") or html.unescape(href[1:]) not in ids]
 
 
 TEXT_CHECKED = 12  # chapters whose title is also looked for in their page's text (extraction is slow)
@@ -334,11 +431,15 @@ def main(argv: list[str] | None = None) -> int:
     except CdpError as exc:
         print(f"docs-pdf: chromium: {exc}", file=sys.stderr)
         return 1
+    except (FileNotFoundError, Unplaced) as exc:
+        print(f"docs-pdf: {exc}", file=sys.stderr)
+        return 2 if isinstance(exc, FileNotFoundError) else 1
     for p in problems:
         print(f"docs-pdf: {p}", file=sys.stderr)
     if problems:
         return 1
-    print(f"docs-pdf: {out} ({pages} pages, each chapter on the page the contents give)")
+    print(f"docs-pdf: {out} ({pages} pages, each chapter on the page the contents give, none mostly blank "
+          "but a part's last, no navigation line, every link inside it)")
     return 0
 
 

@@ -51,10 +51,21 @@ SEARCH_OPTIONS = {"fields": ["title", "text"], "storeFields": ["title", "url", "
 _ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
 _TAG = re.compile(r"<[^>]+>")
 _HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
+_DATE_CELL = re.compile(r"<td>([0-9]{4}-[0-9]{2}-[0-9]{2})</td>")
+_H1 = re.compile(r"(<h1>)(.*?)(</h1>)", re.S)
+_BREAK = re.compile(r"([._])(?=[A-Za-z])")
 
 
 class SearchError(RuntimeError):
     """The search index could not be built (node or the minisearch package missing)."""
+
+
+def _excerpt(words: str, width: int = 60) -> str:
+    """A part without a heading is titled by its first words, cut at a word (its page is shown beside it)."""
+    if len(words) <= width:
+        return words
+    cut = words[:width + 1].rsplit(" ", 1)[0] if " " in words[:width + 1] else words[:width]
+    return cut.rstrip(" ,;:(") + " …"
 
 
 def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
@@ -76,7 +87,7 @@ def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
                 continue
             head = _HEADING.search(chunk)
             title = " ".join(html.unescape(_TAG.sub("", head.group(2))).split()) if head else \
-                (f"{page_title}: {words[:60]}" if anchor else page_title)
+                (_excerpt(words) if anchor else page_title)
             docs.append({"id": str(len(docs)), "title": title, "url": page + (f"#{anchor}" if anchor else ""),
                          "page": page_title, "text": words})
     return docs
@@ -171,7 +182,15 @@ def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
     """(title, body HTML) of one Markdown page (page: its HTML path in the site)."""
     tokens = md.parse(text)
     _walk(tokens, page, imports, source)
-    return _title(tokens), md.renderer.render(tokens, md.options, {})
+    # a date alone in a cell stays on one line (narrow columns broke "2027-01-15" after its hyphen)
+    rendered: str = md.renderer.render(tokens, md.options, {})
+    body = _DATE_CELL.sub(r'<td style="white-space: nowrap">\1</td>', rendered)
+
+    def breaks(m: re.Match[str]) -> str:  # in the h1's text, not in its tags' attributes
+        text = re.sub(r"(>[^<]*)", lambda t: _BREAK.sub(r"\1<wbr>", t.group(1)), ">" + m.group(2))[1:]
+        return m.group(1) + text + m.group(3)
+    # a long name in a title (a golden case's) may wrap after a dot or an underscore, not inside a word
+    return _title(tokens), _H1.sub(breaks, body)
 
 
 def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:

@@ -70,6 +70,43 @@ def problems(site: Path) -> list[str]:
     return out
 
 
+def markdown_problems(docs: Path, root: Path) -> list[str]:
+    """The same for the Markdown pages cbfgen writes (docs/ of its --out folder), read as a site of their
+    own: every link of every page (Markdown links and HTML attributes) resolves to a file inside root (the
+    folder the docs may link into: out's parent, where the spec and conformance/ sit in a checkout), and a
+    #fragment into a page names an id of that page."""
+    from markdown_it import MarkdownIt
+
+    md = MarkdownIt("commonmark", {"html": True}).enable("table")
+    base = root.resolve()
+    pages: dict[Path, _Page] = {}  # every page's ids and links, each page parsed once
+    for file in sorted(docs.rglob("*.md")):
+        page = pages[file.resolve()] = _Page()
+        stack = list(md.parse(file.read_text(encoding="utf-8")))
+        while stack:
+            tok = stack.pop()
+            page.links += [v for a in ("href", "src") if isinstance(v := (tok.attrs or {}).get(a), str)]
+            if tok.type in ("html_inline", "html_block"):
+                page.feed(tok.content)
+            stack += tok.children or []
+    out = []
+    for file, page in pages.items():
+        rel = file.relative_to(docs.resolve()).as_posix()
+        for href in page.links:
+            path, _, frag = href.partition("#")
+            if SCHEME.match(href) or href.startswith(("/", "\\")):
+                out.append(f"{rel}: {href}: leaves the site")
+                continue
+            target = (file.parent / path).resolve() if path else file
+            if not target.is_relative_to(base):
+                out.append(f"{rel}: {href}: leaves {root}")
+            elif not target.is_file():
+                out.append(f"{rel}: {href}: no such file")
+            elif frag and target in pages and frag not in pages[target].ids:
+                out.append(f"{rel}: {href}: no such anchor")
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     site = Path((argv if argv is not None else sys.argv[1:] or ["build/docs-html"])[0])
     found = problems(site)

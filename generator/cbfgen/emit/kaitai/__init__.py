@@ -59,6 +59,25 @@ def _layout_type(lay: Layout) -> str:
     return "args_" + ident(lay.command) + (("_" + ident(lay.variant)) if lay.variant else "")
 
 
+def _group_size_cond(lay: Layout) -> str:
+    """The nb a layout with a repeated group takes, as a Kaitai expression on `_`."""
+    rep = lay.repeated
+    assert rep is not None and rep.repeat is not None
+    lo, hi = lay.size + rep.size * rep.repeat[0], lay.size + rep.size * rep.repeat[1]
+    return f"(_ >= {lo} and _ <= {hi} and (_ - {lay.size}) % {rep.size} == 0)"
+
+
+def _group_attr(lay: Layout, attr: dict[str, Any]) -> dict[str, Any]:
+    """A repeated group (issue 25, point 3) as `repeat: expr`: its n items' elements, one after
+    another, n computed from nb (the argument substream's size): (nb - size) / k items."""
+    rep = lay.repeated
+    assert rep is not None
+    per = f" * {rep.count}" if rep.count > 1 else ""
+    return {**attr, "repeat": "expr", "repeat-expr": f"(_io.size - {lay.size}) / {rep.size}{per}",
+            "doc": attr["doc"] + f" A repeated group: (nb - {lay.size}) / {rep.size} items"
+                   + (f" of {rep.count} elements each, one after another." if rep.count > 1 else ".")}
+
+
 def _field_attr(f: Field, encoding: str, clause: str | None, revision: str) -> dict[str, Any]:
     attr: dict[str, Any] = {"id": f.name}
     if f.ftype.kaitai is not None:  # every fixed-size type of the registry: u1..u8, s1..s8, f4, f8
@@ -106,7 +125,7 @@ def build(spec: Spec) -> dict[str, Any]:
     common: list[Field] = list(common_header_prefix(tuple(spec.headers.values())))
     common_names = {f.name for f in common}
     tails = {h.id: [f for f in h.fields if f.name not in common_names] for h in spec.headers.values()}
-    header_type = {
+    header_type: dict[str, Any] = {
         "doc": f"File header ({first.clause}); after the version field its layout depends on the version.",
         "seq": [_field_attr(f, enc, first.clause, spec.revision) for f in common] + [{
             "id": "layout",
@@ -121,6 +140,14 @@ def build(spec: Spec) -> dict[str, Any]:
                    + f"); unknown versions read as {spec.fallback_version}.",
         }},
     }
+    # Layouts that diverge before the version fields (a new version's checksum field in reserved
+    # bytes): the version is read where every layout has it (the loader makes sure), by position.
+    for role in ("version_major", "version_minor"):
+        vf = spec.common_header_field(role)
+        if vf.name not in common_names:
+            attr = _field_attr(vf, enc, first.clause, spec.revision)
+            del attr["id"]
+            header_type["instances"][vf.name] = {"pos": vf.offset, **attr}
     types: dict[str, Any] = {"header": header_type}
     for hid, fields in tails.items():
         types[f"header_{ident(hid)}"] = {
@@ -135,8 +162,11 @@ def build(spec: Spec) -> dict[str, Any]:
     for cmd in spec.commands:
         conds = []
         for i, v in enumerate(vids, 1):
-            sizes = sorted({lay.size for lay in _candidates(spec, cmd, v)})
-            conds.append(f"(_root.header.version_index == {i} and (" + " or ".join(f"_ == {s}" for s in sizes) + "))")
+            sizes = sorted({lay.size for lay in _candidates(spec, cmd, v) if lay.repeated is None})
+            # a repeated group (issue 25, point 3): every nb = size + k n, n in min..max
+            groups = sorted({_group_size_cond(lay) for lay in _candidates(spec, cmd, v) if lay.repeated is not None})
+            conds.append(f"(_root.header.version_index == {i} and ("
+                         + " or ".join([*(f"_ == {s}" for s in sizes), *groups]) + "))")
         size_cases.append(f"{by_role['code'].name} == {cmd.code} ? ({' or '.join(conds)})")
     size_expr = " : ".join(size_cases) + " : true"
     gates = []
@@ -163,10 +193,11 @@ def build(spec: Spec) -> dict[str, Any]:
         for i, v in enumerate(vids, 1):
             seen: set[int] = set()
             for lay in _candidates(spec, cmd, v):
-                if lay.size in seen:
-                    continue
-                seen.add(lay.size)
-                cases[f"{cmd.code * 65536 + lay.size * 256 + i}"] = _layout_type(lay)
+                for nb in lay.sizes:  # one size, or every nb of a repeated group
+                    if nb in seen:
+                        continue
+                    seen.add(nb)
+                    cases[f"{cmd.code * 65536 + nb * 256 + i}"] = _layout_type(lay)
     code_name, size_name = by_role["code"].name, by_role["arg_size"].name
     head.append({
         "id": "args",
@@ -190,7 +221,8 @@ def build(spec: Spec) -> dict[str, Any]:
                             + (f" Accepted under profile {', '.join(lay.profiles)}." if lay.profiles else "")
                             + (f" {lay.doc}" if lay.doc else "")),
                 "doc-ref": f"{spec.revision}, {lay.clause or cmd.clause}",
-                "seq": [_field_attr(a, enc, None, spec.revision) for a in lay.args],
+                "seq": [_group_attr(lay, _field_attr(a, enc, None, spec.revision)) if a.repeat is not None
+                        else _field_attr(a, enc, None, spec.revision) for a in lay.args],
             }
     not_here = [c for c in spec.checks if not CHECK_KINDS[c.kind].kaitai]
     ksy: dict[str, Any] = {
@@ -241,7 +273,8 @@ def _hex_int(dumper: yaml.SafeDumper, value: int) -> yaml.Node:
 
 
 def _spec_tuples(fields: list[Field] | tuple[Field, ...]) -> list[tuple[str, str, int]]:
-    return [(f.name, f.kind, f.count) for f in fields]
+    # a repeated group (issue 25, point 3): count -k, its items of k elements read flat (repeat: expr)
+    return [(f.name, f.kind, -f.count if f.repeat is not None else f.count) for f in fields]
 
 
 def _js_fields(spec: list[tuple[str, str, int]]) -> list[tuple[str, str, int, str]]:

@@ -5,6 +5,7 @@ generated/python/cbf/."""
 from __future__ import annotations
 
 import json
+from dataclasses import asdict, replace
 from pathlib import Path
 from typing import Any
 
@@ -12,6 +13,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...options import option_rules
+from ...registry import kind as check_kind
 from ...render import environment
 from .machine import machine_data, machine_schema
 
@@ -27,6 +29,8 @@ EXTRAS: dict[str, tuple[str, ...]] = {
 
 
 def _py_type(f: Field) -> str:
+    if f.repeat is not None:  # a repeated group (issue 25, point 3): a tuple of n items
+        return f"tuple[{_py_type(replace(f, repeat=None))}, ...]"
     if f.kind == "float":
         return "float" if f.count == 1 else "tuple[" + ", ".join(["float"] * f.count) + "]"
     return {"uint": "int", "sint": "int", "string": "str", "bytes": "bytes"}[f.kind]
@@ -40,6 +44,7 @@ def _field_data(f: Field) -> dict[str, Any]:
         "count": f.count, "role": f.role, "magic": f.magic, "checksum": f.checksum,
         "reserved": f.reserved, "text": f.text, "unit": f.unit,
         "code": t.struct_code, "bits_code": t.bits_code, "numpy": t.numpy, "min": t.min, "max": t.max,
+        "repeat": list(f.repeat) if f.repeat is not None else None,
     }
 
 
@@ -96,7 +101,9 @@ def spec_data(spec: Spec) -> dict[str, Any]:
              "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
              "min": c.min, "max": c.max, "min_exclusive": c.min_exclusive, "max_exclusive": c.max_exclusive,
              "since": c.since, "deprecates": list(c.deprecates),
-             "input": c.input, "input_severity": c.input_severity}
+             "input": c.input, "input_severity": c.input_severity,
+             "field": c.checksum_field,
+             "accepts": None if (a := check_kind(c.kind).accepted(c)) is None else asdict(a)}
             for c in spec.checks
         ],
         "cut": spec.cut,
@@ -108,6 +115,9 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
     f32: dict[str, Any] = {"oneOf": [{"type": "number"}, {"type": "string", "pattern": "^0x[0-9a-f]{8}$"}]}
 
     def value(f: Field) -> dict[str, Any]:
+        if f.repeat is not None:  # a repeated group: a list of min..max items
+            return {"type": "array", "items": value(replace(f, repeat=None)), "minItems": f.repeat[0],
+                    "maxItems": f.repeat[1]}
         if f.kind == "float":
             return f32 if f.count == 1 else {"type": "array", "items": f32, "minItems": f.count, "maxItems": f.count}
         if f.ftype.is_integer:

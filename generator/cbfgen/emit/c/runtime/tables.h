@@ -46,7 +46,8 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
-typedef struct cbf__ckfield { int tag; int alg; int coverage; } cbf__ckfield;
+/* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
+typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 
 typedef struct cbf__profile {
     const char *id;
@@ -54,6 +55,7 @@ typedef struct cbf__profile {
     int hint[CBF__MAX_COVERAGES]; /* coverages named in the message when they match */
     int file_alg;                 /* the file checksum's algorithm under this profile */
     int hint_alg[CBF__MAX_COVERAGES]; /* each hint computed as the profile that accepts it */
+    int hint_owner[CBF__MAX_COVERAGES]; /* that profile (its index; -1: none accepts it) */
 } cbf__profile;
 
 typedef struct cbf__target { int command; size_t first, n; } cbf__target;

@@ -15,6 +15,48 @@ static int cbf__file_sum_folds(int profile, size_t *start)
     return 1;
 }
 
+/* arg_size: "<command> with 20 argument bytes; expected 24" (the sizes of the command's layouts in the
+ * file's version that the profile accepts, ascending, each once). Cold: a record of a bad size. */
+CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec, size_t off, size_t nb)
+{
+    char msg[256];
+    size_t at = 0, sizes[CBF__MAX_CANDIDATES], n = 0, i, j;
+    int k;
+    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+        int lay = cbf__commands[cmd].candidates[v->eff][k];
+        if (lay < 0)
+            break;
+        if (!cbf__profile_accepts(lay, profile))
+            continue;
+        for (i = 0; i < n && sizes[i] != cbf__layouts[lay].size; i++) {}
+        if (i == n)
+            sizes[n++] = cbf__layouts[lay].size;
+    }
+    for (i = 1; i < n; i++) /* insertion sort: a handful of sizes */
+        for (j = i; j > 0 && sizes[j - 1] > sizes[j]; j--) {
+            size_t t = sizes[j];
+            sizes[j] = sizes[j - 1];
+            sizes[j - 1] = t;
+        }
+    cbf__cat(msg, sizeof msg, &at, "%s with %lu argument bytes; expected ", cbf__commands[cmd].name,
+             (unsigned long)nb);
+    for (i = 0; i < n; i++)
+        cbf__cat(msg, sizeof msg, &at, "%s%lu", i ? " or " : "", (unsigned long)sizes[i]);
+    cbf__each(v, CBF__KIND_ARG_SIZE, rec, off, "%s", msg);
+}
+
+/* shape: the file ends inside a shape, named by the command that opened it. */
+CBF__COLD static void cbf__shape_unclosed(cbf__vctx *v)
+{
+    const cbf_field_info *sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);
+    char msg[256];
+    size_t at = 0;
+    cbf__cat(msg, sizeof msg, &at, "shape ");
+    cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+    cbf__cat(msg, sizeof msg, &at, " is never closed");
+    cbf__each(v, CBF__KIND_SHAPE, v->shape_rec, v->shape_off, "%s", msg);
+}
+
 /* Per command: the argument size last seen and what it gave (records of one
  * command almost always share one size). */
 typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
@@ -41,7 +83,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                  ? pow(tan(cbf__tol_orientation * 0.999 * (CBF__PI / 180.0)), 2.0) : 0.0;
     cbf__machine_start(&v);
     if (len < CBF_HEADER_SIZE || !buf) {
-        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "the file is %lu bytes, the header needs %d",
+        cbf__each(&v, CBF__KIND_TRUNCATED_HEADER, -1, 0, "file is %lu bytes, the header needs %d",
                   (unsigned long)len, CBF_HEADER_SIZE);
         return v.errors;
     }
@@ -59,21 +101,22 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != f->magic)
-                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lx, not 0x%08lx", f->name,
+                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lX, expected 0x%08lX", f->name,
                           (unsigned long)got, (unsigned long)f->magic);
         }
         if (f->kind == CBF__K_STRING)
-            cbf__check_string(&v, f, buf, 0, -1);
+            cbf__check_string(&v, NULL, f, buf, 0, -1);
     }
-    {
-        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_HEADER);
-        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_HEADER);
-        if (k && f) {
+    /* each header checksum field this version's header carries, judged by its header_checksum check */
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
+        const cbf__ckfield *k = &cbf__ckfields[i];
+        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v.hlayout, k->tag) : NULL;
+        if (f) {
             uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
             uint32_t got = cbf__get_u(buf + f->offset, f->elem);
             if (got != want)
-                cbf__each(&v, CBF__KIND_HEADER_CHECKSUM, -1, f->offset, "stored header checksum %lu, computed %lu",
-                          (unsigned long)got, (unsigned long)want);
+                cbf__say(&v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
+                         (unsigned long)got, (unsigned long)want);
         }
     }
     cbf__check_part_number(&v);
@@ -130,8 +173,8 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
             cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
                       (unsigned long)seq, (unsigned long)(nrec & CBF__SEQUENCE_MASK));
         if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code 0x%02lx, backup copy 0x%02lx",
-                      (unsigned long)code, (unsigned long)copy);
+            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code copy 0x%02lX differs from code 0x%02lX",
+                      (unsigned long)copy, (unsigned long)code);
 #if CBF__HEAD_CK_ELEM
         {
             uint32_t want = args_sum ? (asum & CBF__HEAD_CK_MASK)
@@ -144,19 +187,17 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         }
 #endif
         if (res != 0u)
-            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lx",
+            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
                       (unsigned long)res);
         if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lx",
+            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lX",
                       (unsigned long)code);
         } else {
             if (seen[cmd].avail >= 0)
                 cbf__say(&v, seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (!seen[cmd].accepted)
-                cbf__each(&v, CBF__KIND_ARG_SIZE, rec, pos + CBF__HEAD_OFF_ARG_SIZE,
-                          "%s has %lu argument bytes, no layout of %s has that size",
-                          cbf__commands[cmd].name, (unsigned long)nb, cbf__versions[v.eff].id);
+                cbf__arg_size(&v, cmd, profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
             if (layout != CBF_LAYOUT__NONE && cbf__deprecated[layout] >= 0)
                 cbf__say(&v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
                          cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
@@ -167,24 +208,24 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
         nrec++;
     }
     if (v.shape_open)
-        cbf__each(&v, CBF__KIND_SHAPE, v.shape_rec, v.shape_off, "shape still open at the end of the file");
+        cbf__shape_unclosed(&v);
     {
         int truncated = 0;
         if (pos < len) {
             if (nrec < h.count) {
                 truncated = 1;
                 cbf__each(&v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
-                          "record %lu is cut: %lu byte(s) left (%lu of %lu records complete)", nrec,
-                          (unsigned long)(len - pos), nrec, h.count);
+                          "the file ends inside record %lu (%lu byte(s) left)", nrec,
+                          (unsigned long)(len - pos));
             } else {
-                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) follow the last record",
+                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) after the last record",
                           (unsigned long)(len - pos));
             }
         }
         if (!truncated && nrec != h.count) {
             const cbf_field_info *fc = cbf__header_field_by_role(v.hlayout, CBF_ROLE_COMMAND_COUNT);
             cbf__each(&v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u,
-                      "the header counts %lu commands, the file holds %lu", h.count, nrec);
+                      "header count %lu, the file holds %lu records", h.count, nrec);
         }
     }
     {
@@ -208,22 +249,19 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                 if (want == got)
                     match = 1;
             }
-            if (!match) {
-                const char *hint = NULL;
+            if (!match) { /* one message: the sums, then every hint coverage the stored value matches */
+                char msg[512];
+                size_t at = 0;
+                cbf__cat(msg, sizeof msg, &at, "stored file checksum %lu, computed %lu", (unsigned long)got,
+                         (unsigned long)first);
                 for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
-                    if (cbf__cover(cbf__profiles[profile].hint[c], cbf__profiles[profile].hint_alg[c], f->elem, buf,
-                                   len, pos, NULL, 0) == got) {
-                        hint = cbf__coverages[cbf__profiles[profile].hint[c]].name;
-                        break;
-                    }
+                    const cbf__profile *pr = &cbf__profiles[profile];
+                    if (cbf__cover(pr->hint[c], pr->hint_alg[c], f->elem, buf, len, pos, NULL, 0) == got)
+                        cbf__cat(msg, sizeof msg, &at, "; it matches coverage %s (use profile %s)",
+                                 cbf__coverages[pr->hint[c]].name,
+                                 pr->hint_owner[c] >= 0 ? cbf__profiles[pr->hint_owner[c]].id : "?");
                 }
-                if (hint)
-                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset,
-                              "%s is %lu, expected %lu; it matches coverage %s (another profile)", f->name,
-                              (unsigned long)got, (unsigned long)first, hint);
-                else
-                    cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s is %lu, expected %lu", f->name,
-                              (unsigned long)got, (unsigned long)first);
+                cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s", msg);
             }
         }
     }

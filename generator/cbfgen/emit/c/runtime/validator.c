@@ -80,6 +80,67 @@ static void cbf__each(cbf__vctx *v, int kind, long rec, size_t off, const char *
     }
 }
 
+/* Appends to a message buffer (the findings' words are cbf validate's, the Python runtime's: some are
+ * built in parts); a message longer than the buffer is cut, never overrun. */
+static void cbf__cat(char *buf, size_t size, size_t *at, const char *fmt, ...) CBF__PRINTF(4, 5);
+static void cbf__cat(char *buf, size_t size, size_t *at, const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+    if (*at >= size)
+        return;
+    va_start(ap, fmt);
+    n = vsnprintf(buf + *at, size - *at, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        *at = *at + (size_t)n < size ? *at + (size_t)n : size - 1u;
+}
+
+/* A string value as text: its bytes read as ISO-8859-1 (the codec's string_value), out as UTF-8. */
+static void cbf__text(char *buf, size_t size, size_t *at, const uint8_t *s, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (s[i] < 0x80u)
+            cbf__cat(buf, size, at, "%c", (char)s[i]);
+        else
+            cbf__cat(buf, size, at, "%c%c", (char)(0xC0u | (s[i] >> 6)), (char)(0x80u | (s[i] & 0x3Fu)));
+    }
+}
+
+/* A string value as Python's repr() writes it (the value decoded as ISO-8859-1): quoted with '
+ * unless it holds a ' and no ", backslash escapes for the quote, \\, \t, \n, \r, and \xNN for
+ * the code points str.isprintable() refuses (controls, 0x7F-0xA0, 0xAD). Code points above 0x7F
+ * go out as UTF-8, as Python prints them. */
+static void cbf__repr(char *buf, size_t size, size_t *at, const uint8_t *s, size_t n)
+{
+    size_t i;
+    int sq = 0, dq = 0;
+    char q;
+    for (i = 0; i < n; i++) {
+        sq |= s[i] == 0x27u;
+        dq |= s[i] == 0x22u;
+    }
+    q = sq && !dq ? '"' : '\'';
+    cbf__cat(buf, size, at, "%c", q);
+    for (i = 0; i < n; i++) {
+        uint8_t c = s[i];
+        if (c == (uint8_t)q || c == 0x5Cu)
+            cbf__cat(buf, size, at, "\\%c", (char)c);
+        else if (c == 0x09u)
+            cbf__cat(buf, size, at, "\\t");
+        else if (c == 0x0Au)
+            cbf__cat(buf, size, at, "\\n");
+        else if (c == 0x0Du)
+            cbf__cat(buf, size, at, "\\r");
+        else if (c < 0x20u || (c >= 0x7Fu && c <= 0xA0u) || c == 0xADu)
+            cbf__cat(buf, size, at, "\\x%02x", (unsigned)c);
+        else
+            cbf__text(buf, size, at, &c, 1u);
+    }
+    cbf__cat(buf, size, at, "%c", q);
+}
+
 /* The string's value: the bytes before the first NUL. */
 static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
 {
@@ -90,24 +151,31 @@ static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
     return size;
 }
 
-static void cbf__check_string(cbf__vctx *v, const cbf_field_info *f, const uint8_t *base, size_t base_off, long rec)
+/* string_tail and string_ascii on one string field; cmd: the record's command name, NULL in the header. */
+static void cbf__check_string(cbf__vctx *v, const char *cmd, const cbf_field_info *f, const uint8_t *base,
+                              size_t base_off, long rec)
 {
     const uint8_t *s = base + f->offset;
     size_t size = (size_t)f->elem * f->count;
     size_t n = cbf__strvalue_len(s, size), i;
     for (i = n; i < size; i++) {
-        if (s[i] != CBF__PAD) {
-            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset,
-                      "string %s has a non-NUL byte 0x%02x after its first NUL (offset %lu)", f->name,
-                      (unsigned)s[i], (unsigned long)(base_off + f->offset + i));
+        if (s[i] != CBF__PAD) { /* the bytes after the first NUL, in hex, up to the last that is not NUL */
+            char msg[256];
+            size_t at = 0, last = size;
+            while (last > n + 1u && s[last - 1u] == CBF__PAD)
+                last--;
+            cbf__cat(msg, sizeof msg, &at, "%s%s%s: bytes after the first NUL: ", cmd ? cmd : "", cmd ? "." : "",
+                     f->name);
+            for (i = n + 1u; i < last; i++)
+                cbf__cat(msg, sizeof msg, &at, "%02x", (unsigned)s[i]);
+            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset, "%s", msg);
             break;
         }
     }
     for (i = 0; i < n; i++) {
         if (s[i] < 0x20u || s[i] > 0x7Eu) {
-            cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset,
-                      "string %s has byte 0x%02x, not printable ASCII (offset %lu)", f->name, (unsigned)s[i],
-                      (unsigned long)(base_off + f->offset + i));
+            cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset, "%s%s%s: non-ASCII byte 0x%02X",
+                      cmd ? cmd : "", cmd ? "." : "", f->name, (unsigned)s[i]);
             break;
         }
     }
@@ -131,9 +199,15 @@ static void cbf__check_part_number(cbf__vctx *v)
     for (a = 0; a < n && cbf__space(s[a]); a++) {}
     for (b = a; b < n && !cbf__space(s[b]); b++) {}
     plen = strlen(v->opt->part_number);
-    if (plen != b - a || (plen && memcmp(s + a, v->opt->part_number, plen) != 0))
-        cbf__each(v, CBF__KIND_PART_NUMBER, -1, f->offset,
-                  "implant descriptor's first word is not the part number %.64s", v->opt->part_number);
+    if (plen != b - a || (plen && memcmp(s + a, v->opt->part_number, plen) != 0)) {
+        char msg[512];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "implant descriptor starts with ");
+        cbf__repr(msg, sizeof msg, &at, s + a, b - a);
+        cbf__cat(msg, sizeof msg, &at, ", expected ");
+        cbf__repr(msg, sizeof msg, &at, (const uint8_t *)v->opt->part_number, plen);
+        cbf__each(v, CBF__KIND_PART_NUMBER, -1, f->offset, "%s", msg);
+    }
 }
 
 /* 4.2: the implant descriptor begins with the part number, so it holds at least one word. */
@@ -261,8 +335,7 @@ CBF__INLINE void cbf__continuity_at(cbf__vctx *v, int cmd, int kind, const uint8
         dist = cbf__norm(d);
         if (dist > cbf__tol_position)
             cbf__each(v, CBF__KIND_CONTINUITY, rec, args_off + (size_t)o_start,
-                      "%s starts %.6g mm from the current position (%.9g, %.9g, %.9g)",
-                      cbf__commands[cmd].name, dist, v->pos[0], v->pos[1], v->pos[2]);
+                      "%s starts %.6g mm from the current position", cbf__commands[cmd].name, dist);
     }
     if (kind == CBF__MOTION_POINT || kind == CBF__MOTION_LINE) {
         v->pos_ok = xe && ok_e;
@@ -301,7 +374,7 @@ CBF__INLINE void cbf__orientation_at(cbf__vctx *v, int cmd, int kind, long rec, 
         if (!(dot > 0.0 && c2 < dot * dot * v->ori_tan2)) {
             double ang = atan2(cbf__norm(cx), dot) * (180.0 / CBF__PI);
             if (ang > cbf__tol_orientation)
-                cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g degrees from the current orientation",
+                cbf__each(v, CBF__KIND_ORIENTATION, rec, args_off, "%s starts %.6g deg from the current orientation",
                           cbf__commands[cmd].name, ang);
         }
     }
@@ -323,6 +396,14 @@ static int cbf__same_string(const uint8_t *a, size_t na, const uint8_t *b, size_
     while (na && a[na - 1] == CBF__PAD) na--;
     while (nb && b[nb - 1] == CBF__PAD) nb--;
     return na == nb && (na == 0 || memcmp(a, b, na) == 0);
+}
+
+/* The value of string field f of args (nothing when the layout has none), as text. */
+static void cbf__name_of(char *buf, size_t size, size_t *at, const uint8_t *args, const cbf_field_info *f)
+{
+    if (f)
+        cbf__text(buf, size, at, args + f->offset,
+                  cbf__strvalue_len(args + f->offset, (size_t)f->elem * f->count));
 }
 
 static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, long rec, size_t off)
@@ -352,23 +433,27 @@ static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, l
         fc = cbf__layout_arg(layout, L->shape[CBF__S_COUNT]);
         sn = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_NAME]);
         sc = cbf__layout_arg(v->shape_layout, cbf__layouts[v->shape_layout].shape[CBF__S_COUNT]);
-        if (fn && sn && !cbf__same_string(args + fn->offset, (size_t)fn->elem * fn->count,
-                                          v->shape_args + sn->offset, (size_t)sn->elem * sn->count)) {
-            cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s name differs from the shape opened at record %ld",
-                      cbf__commands[cmd].name, v->shape_rec);
-            return;
-        }
-        if (fc && sc) {
-            uint32_t ce = cbf__get_u(args + fc->offset, fc->elem);
-            uint32_t cs = cbf__get_u(v->shape_args + sc->offset, sc->elem);
-            if (ce != cs) {
-                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s count %lu differs from %lu at record %ld",
-                          cbf__commands[cmd].name, (unsigned long)ce, (unsigned long)cs, v->shape_rec);
-                return;
+        {
+            int same_name = !fn || !sn || cbf__same_string(args + fn->offset, (size_t)fn->elem * fn->count,
+                                                           v->shape_args + sn->offset, (size_t)sn->elem * sn->count);
+            uint32_t ce = fc ? cbf__get_u(args + fc->offset, fc->elem) : 0u;
+            uint32_t cs = sc ? cbf__get_u(v->shape_args + sc->offset, sc->elem) : 0u;
+            char msg[256];
+            size_t at = 0;
+            if (!same_name || (fc && sc && ce != cs)) {
+                cbf__cat(msg, sizeof msg, &at, "%s ", cbf__commands[cmd].name);
+                cbf__name_of(msg, sizeof msg, &at, args, fn);
+                cbf__cat(msg, sizeof msg, &at, ",%lu does not repeat record %ld's ", (unsigned long)ce, v->shape_rec);
+                cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+                cbf__cat(msg, sizeof msg, &at, ",%lu", (unsigned long)cs);
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s", msg);
+            } else if (fc && sc && v->shape_moves != cs) {
+                cbf__cat(msg, sizeof msg, &at, "shape ");
+                cbf__name_of(msg, sizeof msg, &at, v->shape_args, sn);
+                cbf__cat(msg, sizeof msg, &at, " encloses %lu motion commands, declares %lu", v->shape_moves,
+                         (unsigned long)cs);
+                cbf__each(v, CBF__KIND_SHAPE, rec, off, "%s", msg);
             }
-            if (v->shape_moves != cs)
-                cbf__each(v, CBF__KIND_SHAPE, rec, off, "shape of record %ld holds %lu motion commands, not %lu",
-                          v->shape_rec, v->shape_moves, (unsigned long)cs);
         }
     }
 }
@@ -391,17 +476,26 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
             found = i; /* the last entry of a name counts */
     }
     if (found == (size_t)-1) {
-        cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s is not in the cutter table", (int)n,
-                  (const char *)(args + fn->offset));
+        char msg[256];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "cutter ");
+        cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
+        cbf__cat(msg, sizeof msg, &at, " is not in the cutter table");
+        cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         return;
     }
     for (k = 0; k < 2; k++) {
         double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
         if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv[k], &x))
             continue;
-        if (fabs(x - ref) > cbf__tol_cutter)
-            cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "cutter %.*s %s %.9g mm, the table says %.9g mm", (int)n,
-                      (const char *)(args + fn->offset), fv[k]->name, x, ref);
+        if (fabs(x - ref) > cbf__tol_cutter) { /* named by the cutter role's key, as cbf validate does */
+            char msg[256];
+            size_t at = 0;
+            cbf__cat(msg, sizeof msg, &at, "cutter ");
+            cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
+            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", k == 0 ? "length" : "radius", x, ref);
+            cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
+        }
     }
 }
 
@@ -425,21 +519,30 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
     switch ((enum cbf__kind)ch->kind) {
     case CBF__KIND_POSITIVE:
         if (any_le)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, not > 0", cbf__commands[cmd].name, f->name, x);
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name, x);
         break;
     case CBF__KIND_NONZERO_VECTOR:
         if (all_zero)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s has zero length", cbf__commands[cmd].name, f->name);
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
         break;
     case CBF__KIND_RANGE:
         if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
-            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max)))
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s is %.9g, outside %s%.9g..%.9g%s", cbf__commands[cmd].name,
-                     f->name, x, ch->min_open ? "(" : "", ch->min, ch->max, ch->max_open ? ")" : "");
+            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
+            /* findings.range_text's words */
+            if (ch->has_min && ch->has_max)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+            else if (ch->has_min)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
+            else
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
+        }
         break;
     case CBF__KIND_NONDECREASING:
         if (v->nd_ok[t] && x < v->nd_prev[t])
-            cbf__say(v, ci, rec, args_off + f->offset, "%s %s falls from %.9g to %.9g", cbf__commands[cmd].name,
+            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
                      f->name, v->nd_prev[t], x);
         v->nd_ok[t] = 1;
         v->nd_prev[t] = x;
@@ -496,8 +599,20 @@ static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, co
             bad = 1;
         prev = x;
     }
-    if (bad)
-        cbf__say(v, ci, rec, args_off, "%s arguments are not in non-decreasing order", cbf__commands[cmd].name);
+    if (bad) { /* "<command>: a=1 <= b=0.5 <= c=2 does not hold", as cbf validate says it */
+        char msg[256];
+        size_t at = 0;
+        cbf__cat(msg, sizeof msg, &at, "%s: ", cbf__commands[cmd].name);
+        for (a = 0; a < tg->n; a++) {
+            const cbf_field_info *f = cbf__layout_arg(layout, cbf__target_arg_at[tg->first + a][layout]);
+            double x = 0.0;
+            if (f)
+                (void)cbf__ffirst(args, f, &x);
+            cbf__cat(msg, sizeof msg, &at, "%s%s=%g", a ? " <= " : "", f ? f->name : "?", x);
+        }
+        cbf__cat(msg, sizeof msg, &at, " does not hold");
+        cbf__say(v, ci, rec, args_off, "%s", msg);
+    }
 }
 
 /* cbf__sum for a short n (at most 1024 bytes: the 16-bit lanes cannot overflow), inlined

@@ -160,8 +160,9 @@ def decode(data: Buffer) -> Cbf:
 
 # -- checksums -----------------------------------------------------------------
 def _width(tag: str) -> int:
-    f = T.ARG_CHECKSUM if tag == "args" else T.HEADER_CHECKSUM_FIELDS[tag]
-    return f.size
+    if tag == "args":
+        return T.ARG_CHECKSUM.size
+    return next(own[tag].size for own in T.LAYOUT_CHECKSUM_FIELDS.values() if tag in own)
 
 
 def checksum(algorithm: str, parts: Iterable[Buffer], width: int) -> int:
@@ -308,9 +309,10 @@ def fill_header(out: bytearray, offsets: list[int], count: int, profile: str) ->
     _put(out, T.START, T.START.magic or 0)
     _put(out, T.END, T.END.magic or 0)
     _put(out, T.COUNT, count)
+    own = T.LAYOUT_CHECKSUM_FIELDS[header_info(out)[1].id]  # the checksum fields of this version's header
     for tag in T.CHECKSUMS["fill_order"]:
-        if tag == "args":
-            continue  # written with each record
+        if tag not in own:
+            continue  # the arguments' are written with each record; another version's are not here
         cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
         alg = file_algorithm(profile) if tag == "file" else None
-        _put(out, T.HEADER_CHECKSUM_FIELDS[tag], field_checksum(tag, out, offsets, cov, algorithm=alg))
+        _put(out, own[tag], field_checksum(tag, out, offsets, cov, algorithm=alg))

@@ -22,7 +22,7 @@ from __future__ import annotations
 import re
 from array import array
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from itertools import compress, repeat
 from operator import attrgetter
@@ -94,9 +94,18 @@ def _plain_layout(cmd: T.CommandInfo, version: str, profile: str) -> T.LayoutInf
     return chosen[0] if chosen else None
 
 
+def _sized(cmd: T.CommandInfo, lay: T.LayoutInfo, nb: int) -> T.LayoutInfo:
+    """For a layout with a repeated group, its sibling made for nb argument bytes (when there is one)."""
+    if lay.n is None:
+        return lay
+    return next((x for x in cmd.layouts if x.variant == lay.variant and x.size == nb), lay)
+
+
 def _record_line(r: Record, version: str, profile: str) -> str:
     cmd = T.BY_CODE.get(r.code)
     lay = _plain_layout(cmd, version, profile) if cmd else None
+    if cmd is not None and lay is not None:
+        lay = _sized(cmd, lay, len(r.raw_args))
     plain = (cmd is not None and lay is not None and lay.size == len(r.raw_args) and r.reserved == 0
              and (r.code_copy is None or r.code_copy == r.code))
     parts: list[str] = []
@@ -112,10 +121,15 @@ def _record_line(r: Record, version: str, profile: str) -> str:
                     plain = False
                     break
                 text = [format_float(b) for b in v]
+                if f.per:  # a repeated group: its n values or vectors, one after another
+                    parts.extend(text if f.per == 1 else (
+                        f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text[k:k + f.per])} "
+                        f"{C['vector_close']}" for k in range(0, f.count, f.per)))
+                    continue
                 parts.append(f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text)} {C['vector_close']}"
                              if f.count > 1 else text[0])
             elif f.is_int:
-                parts.append(str(v[0]))
+                parts.extend(map(str, v) if f.per else [str(v[0])])
             elif f.kind == "bytes":
                 if any(v[0]):
                     plain = False
@@ -148,7 +162,10 @@ def _template(cmd: T.CommandInfo, lay: T.LayoutInfo) -> str | None:
     vec = (C["vector_open"], C["vector_separator"] + " ", C["vector_close"])
     opn, sep, cls = (x.replace("{", "{{").replace("}", "}}") for x in vec)
     for f in lay.args:
-        if f.kind == "float":
+        if f.per:  # a repeated group: n values or vectors
+            one = f"{opn} {sep.join(['{}'] * f.per)} {cls}" if f.per > 1 and f.kind == "float" else "{}"
+            parts.extend([one] * f.items)
+        elif f.kind == "float":
             parts.append(f"{opn} {sep.join(['{}'] * f.count)} {cls}" if f.count > 1 else "{}")
         elif f.kind == "uint":
             parts.append("{}")
@@ -191,6 +208,7 @@ def _record_lines(records: Any, version: str, profile: str) -> list[str]:
     for k in np.unique(key[plain]).tolist():
         cmd = T.BY_CODE.get(k >> 16)
         lay = _plain_layout(cmd, version, profile) if cmd else None
+        lay = _sized(cmd, lay, k & 0xFFFF) if cmd and lay else lay
         tmpl = _template(cmd, lay) if cmd and lay and lay.size == k & 0xFFFF else None
         if lay is None or tmpl is None:
             continue
@@ -203,6 +221,9 @@ def _record_lines(records: Any, version: str, profile: str) -> list[str]:
                 vals = _column(u8, base, f.offset, f.elem_size, f.count)
                 good &= ((vals & 0x7F800000) != 0x7F800000).all(axis=1)
                 cols.extend(("float", vals[:, j]) for j in range(f.count))
+            elif f.kind == "uint" and f.per:
+                ints = _column(u8, base, f.offset, f.elem_size, f.count)
+                cols.extend(("uint", ints[:, j]) for j in range(f.count))
             elif f.kind == "uint":
                 cols.append(("uint", _column(u8, base, f.offset, f.elem_size)[:, 0]))
             else:
@@ -333,10 +354,40 @@ class _Cursor:
             raise self.fail(f"unexpected text {_show(self.text[self.pos:])}")
 
 
+def _parse_group(cur: _Cursor, lay: T.LayoutInfo, vals: list[Any]) -> T.LayoutInfo:
+    """A repeated group's items to the end of the line (issue 25, point 3): the values go to vals,
+    and the layout made for their number is returned."""
+    f = lay.args[-1]
+    one = replace(f, count=f.per, per=0)
+    n = 0
+    while True:
+        cur.skip()
+        if cur.pos >= len(cur.text):
+            break
+        vals.extend(_parse_values(cur, (one,), f"{f.name}[{n}]"))
+        n += 1
+    for x in T.BY_CODE[lay.code].layouts:
+        if x.variant == lay.variant and x.n == n:
+            return x
+    assert f.repeat is not None
+    raise cur.fail(f"{f.name}: {n} items; the group holds {f.repeat[0]} to {f.repeat[1]}")
+
+
 def _parse_args(cur: _Cursor, lay: T.LayoutInfo) -> bytes:
+    vals: list[Any] = []
+    if lay.n is not None:
+        vals = _parse_values(cur, lay.args[:-1])
+        lay = _parse_group(cur, lay, vals)
+    else:
+        vals = _parse_values(cur, lay.args)
+    cur.end()
+    return lay.bits.pack(*vals)
+
+
+def _parse_values(cur: _Cursor, fields: tuple[T.FieldInfo, ...], label: str | None = None) -> list[Any]:
     vals: list[Any] = []  # floats as their bits: packing a double as "f" would round a second time
-    for f in lay.args:
-        name = f.name
+    for f in fields:
+        name = label or f.name
         if f.kind == "float":
             if f.count > 1:
                 cur.expect(C["vector_open"], name)
@@ -370,8 +421,7 @@ def _parse_args(cur: _Cursor, lay: T.LayoutInfo) -> bytes:
             if len(raw) > f.size:
                 raise cur.fail(f"{name}: {len(raw)} characters, the field holds {f.size}")
             vals.append(raw)
-    cur.end()
-    return lay.bits.pack(*vals)
+    return vals
 
 
 def _hex(cur: _Cursor, name: str) -> bytes:
@@ -486,7 +536,7 @@ def _fast_table(version: str, profile: str) -> dict[str, _Fast]:
         kw = keyword(cmd)
         lay = _plain_layout(cmd, version, profile)
         pattern = _fast_pattern(lay) if lay is not None else None
-        if lay is None or pattern is None or kw in taken or kw.lower() in taken or " " in kw:
+        if lay is None or pattern is None or kw in taken or kw.lower() in taken or " " in kw or lay.n is not None:
             continue
         count = sum(f.count for f in lay.args if f.kind == "float")
         table[kw] = _Fast(re.compile(pattern, re.ASCII), cmd.code, lay, count)

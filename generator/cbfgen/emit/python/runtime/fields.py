@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import Any
 
 from . import tables as T
@@ -16,6 +17,11 @@ def convert_values(fields: Sequence[T.FieldInfo], values: Sequence[Any]) -> list
     out: list[Any] = []
     i = 0
     for f in fields:
+        if f.per:  # a repeated group: n items of `per` elements (a vector each when per > 1)
+            flat = values[i:i + f.count]
+            out.append(tuple(flat) if f.per == 1 else tuple(tuple(flat[k:k + f.per]) for k in range(0, f.count, f.per)))
+            i += f.count
+            continue
         if f.kind == "float" and f.count > 1:
             out.append(tuple(values[i:i + f.count]))
             i += f.count
@@ -34,6 +40,12 @@ def unpack_args(lay: T.LayoutInfo, raw: Buffer) -> Any:
 
 
 def pack_value(f: T.FieldInfo, value: Any, where: str) -> list[Any]:
+    if f.per:  # a repeated group: exactly the layout's n items
+        if not isinstance(value, (tuple, list)) or len(value) != f.items:
+            got = f"{len(value)} items" if isinstance(value, (tuple, list)) else repr(value)
+            raise EncodeError(f"{where}: expected {f.items} items, got {got}")
+        one = replace(f, count=f.per, per=0)
+        return [v for k, item in enumerate(value) for v in pack_value(one, item, f"{where}[{k}]")]
     if f.is_int:
         if not isinstance(value, int) or isinstance(value, bool) or not f.holds(value):
             raise EncodeError(f"{where}: {value!r} is not {f.int_name}")
@@ -71,7 +83,23 @@ def pack_fields(fields: Sequence[T.FieldInfo], st: struct.Struct, obj: Any, wher
 
 
 def pack_args(lay: T.LayoutInfo, args: Any) -> bytes:
+    rep = lay.repeated
+    if rep is not None:  # a repeated group: the layout made for the object's n (issue 25, point 3)
+        lay = layout_for_items(lay, getattr(args, rep.name), lay.command)
     return pack_fields(lay.args, lay.struct, args, lay.command)
+
+
+def layout_for_items(lay: T.LayoutInfo, items: Any, where: str) -> T.LayoutInfo:
+    """The layout of lay's command and variant made for len(items) items of its repeated group."""
+    rep = lay.repeated
+    assert rep is not None and rep.repeat is not None
+    n = len(items) if isinstance(items, (tuple, list)) else -1
+    for x in T.BY_CODE[lay.code].layouts:
+        if x.variant == lay.variant and x.n == n:
+            return x
+    lo, hi = rep.repeat
+    raise EncodeError(f"{where} field {rep.name}: {n if n >= 0 else repr(items)} items; the group holds "
+                      f"{lo} to {hi}")
 
 
 # A writer's strings hold printable ASCII and the NUL padding, before AND after the first

@@ -577,6 +577,9 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
         lim = m.limits[limit]
         lo, hi = _bounds(lim)
         stored = b.raw[f.name]  # binary32 as stored: compared exactly with the binary32 bounds
+        if f.per:
+            _machine_limits_group(r, check, b, f, lim, positive)
+            continue
         out = (stored < lo) | (stored > hi)  # NaN compares false: the finite check's
         if out.ndim > 1:
             out = out.any(axis=1)
@@ -588,6 +591,29 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
             keep &= ~(v <= 0.0).any(axis=1)
         bad = np.nonzero(keep)[0]
         r.add(check, b.rows[bad], b.at(f.name)[bad], bad, _breach(f"{b.cmd.name}.{f.name}", v, lim, positive))
+
+
+def _machine_limits_group(r: Records, check: Check, b: Batch, f: T.FieldInfo, lim: Limit, positive: bool) -> None:
+    """machine_limits on a repeated group (issue 25, point 3): each item is a position; one finding
+    per record, at its first item out, named argument[item]."""
+    f = next(a for a in b.lay.args if a.name == f.name)  # as this batch's layout holds it (its n items)
+    lo, hi = _bounds(lim)
+    stored = b.raw[f.name].reshape(len(b.rows), f.items, -1)
+    v = np.asarray(stored, dtype=np.float64)
+    out = ((stored < lo) | (stored > hi)).any(axis=2) & np.isfinite(v).all(axis=2)
+    if positive:
+        out &= ~(v <= 0.0).any(axis=2)
+    bad = np.flatnonzero(out.any(axis=1))
+    if bad.size == 0:
+        return
+    first = out[bad].argmax(axis=1)
+    item_size = f.size // f.items
+
+    def msg(k: int) -> str:
+        i = int(first[np.searchsorted(bad, k)])
+        return f"{b.cmd.name}.{f.name}[{i}]" + (breach(tuple(v[k, i].tolist()), lim, positive) or "")
+
+    r.add(check, b.rows[bad], b.at(f.name)[bad] + first * item_size, bad, msg)
 
 
 @lru_cache(maxsize=64)
@@ -606,7 +632,7 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     """Where each motion leaves the tool (NaN when not finite); as geometry.motion_end."""
     kind = m["kind"]
     if kind in ("point", "line"):
-        end = cols[m["end"]].copy()
+        end = cols[m["end"]][:, -3:].copy()  # a repeated group's last point (issue 25, point 3)
         end[~_finite_rows(end)] = np.nan
         return end
     start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]

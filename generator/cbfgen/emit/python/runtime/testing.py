@@ -28,8 +28,9 @@ validates with **no finding at all** (no error, no warning) -- framing,
 count, sequence numbers, code copies, checksums, magic numbers, versions,
 command availability, argument sizes (layouts the profile accepts), finite
 floats (no NaN, infinity or subnormal, within ``bound``), ASCII strings
-without tails, zero reserved bytes, the ``positive``, ``nonzero_vector``,
-``range``, ``nondecreasing`` and ``ordered`` checks of the spec, the
+without tails, zero reserved bytes, the checks of the spec that bound values
+(each check's ``accepts``, from the registry of check kinds: ``positive``,
+``range``, ``nonzero_vector``, ...), the ``nondecreasing`` and ``ordered`` checks, the
 ``machine_limits`` checks against the spec's default machine (positions stay
 inside its workspace: ``bound`` is narrowed to fit), motion
 continuity (each motion starts where the last one ended, circles and helices
@@ -59,7 +60,7 @@ except ImportError as exc:  # pragma: no cover - depends on the environment
     raise ImportError("cbf.testing needs hypothesis: pip install hypothesis") from exc
 
 from . import tables as T
-from .codec import field_checksum, file_algorithm, fill_header, frame, pack_file
+from .codec import field_checksum, file_algorithm, fill_header, frame, header_info, pack_file
 from .geometry import motion_end
 from .model import Cbf, Record, new_header
 
@@ -95,10 +96,9 @@ class _Limits:
 
     lo: float | None = None
     hi: float | None = None
-    positive: bool = False
+    lo_open: bool = False  # lo itself is refused (positive; a range's min_exclusive)
+    hi_open: bool = False  # hi itself is refused (a range's max_exclusive)
     nonzero: bool = False
-    lo_open: bool = False  # a range's open bound (min_exclusive, max_exclusive): the value must differ
-    hi_open: bool = False
     monotone: list[str] = field(default_factory=list)  # keys of nondecreasing checks
 
 
@@ -120,17 +120,8 @@ def _rules() -> _Rules:
                 continue
             for n in names:
                 lim = limits.setdefault((cmd, n), _Limits())
-                if kind == "positive":
-                    lim.positive = True
-                elif kind == "nonzero_vector":
-                    lim.nonzero = True
-                elif kind == "range":
-                    if ch["min"] is not None:
-                        lim.lo = ch["min"] if lim.lo is None else max(lim.lo, ch["min"])
-                        lim.lo_open = lim.lo_open or bool(ch["min_exclusive"])
-                    if ch["max"] is not None:
-                        lim.hi = ch["max"] if lim.hi is None else min(lim.hi, ch["max"])
-                        lim.hi_open = lim.hi_open or bool(ch["max_exclusive"])
+                if ch["accepts"] is not None:
+                    _bound(lim, ch["accepts"])
                 elif kind == "nondecreasing":
                     lim.monotone.append(f"{ch['id']}:{cmd}.{n}")
                 elif kind == "machine_limits":  # the default machine (L1): its tightest bound on any axis
@@ -139,6 +130,29 @@ def _rules() -> _Rules:
                     lim.lo = lo if lim.lo is None else max(lim.lo, lo)
                     lim.hi = hi if lim.hi is None else min(lim.hi, hi)
     return _Rules(limits, ordered)
+
+
+def _bound(lim: _Limits, acc: Mapping[str, Any]) -> None:
+    """Narrows ``lim`` to what one check accepts (its ``accepts``: min, max, min_open, max_open, nonzero)."""
+    lo, hi = acc["min"], acc["max"]
+    if lo is not None:
+        if lim.lo is None or lo > lim.lo:
+            lim.lo, lim.lo_open = lo, bool(acc["min_open"])
+        elif lo == lim.lo:
+            lim.lo_open = lim.lo_open or bool(acc["min_open"])
+    if hi is not None:
+        if lim.hi is None or hi < lim.hi:
+            lim.hi, lim.hi_open = hi, bool(acc["max_open"])
+        elif hi == lim.hi:
+            lim.hi_open = lim.hi_open or bool(acc["max_open"])
+    lim.nonzero = lim.nonzero or bool(acc["nonzero"])
+
+
+def _int_lo(lim: _Limits | None) -> int:
+    """The least unsigned value a check's bound lets an integer argument take."""
+    if lim is None or lim.lo is None:
+        return 0
+    return max(0, math.floor(lim.lo) + 1 if lim.lo_open else math.ceil(lim.lo))
 
 
 def _as_list(v: float | list[float]) -> list[float]:
@@ -240,7 +254,7 @@ class _Draw:
             return draw(_ascii(f.size, spaces=f.text)).encode("ascii")
         if f.kind == "uint":
             ulim = self.rules.limits.get((cmd.name, f.name))
-            return draw(st.integers(1 if ulim is not None and ulim.positive else 0, (1 << (8 * f.elem_size)) - 1))
+            return draw(st.integers(_int_lo(ulim), (1 << (8 * f.elem_size)) - 1))
         if f.is_int:  # signed: its whole range
             return draw(st.integers(f.lo, f.hi))
         lim = self.rules.limits.get((cmd.name, f.name)) or _Limits()
@@ -252,16 +266,12 @@ class _Draw:
             hi = min(hi, lim.hi)
             if lim.hi_open and hi == lim.hi:
                 hi = _f32_step(_f32(hi), up=False)  # an open bound: the binary32 just below it
-        if lim.lo_open and lim.lo is not None and lo == lim.lo:
-            lo = _f32_step(_f32(lo), up=True)
-        if lim.positive:
-            lo = max(lo, 0.0)
         for key in lim.monotone:
             if key in self.state.prev:
                 lo = max(lo, self.state.prev[key])
         if f.count > 1:
             return _vector(draw, f.count, lo, hi, lim.nonzero)
-        return draw(_floats(lo, max(lo, hi), exclude_lo=lim.positive and lo <= 0.0))
+        return draw(_floats(lo, max(lo, hi), exclude_lo=lim.lo_open and lim.lo is not None and lo <= lim.lo))
 
     def args(self, cmd: T.CommandInfo, lay: T.LayoutInfo, fixed: Mapping[str, Any] | None = None) -> bytes:
         """The argument bytes of one record; ``fixed`` values are kept as given."""
@@ -593,11 +603,12 @@ def reseal_checksums(data: bytes | bytearray, profile: str = "default") -> bytes
     for o in offsets:
         start = o + T.HEAD_SIZE
         _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + b[o + T.ARG_SIZE_OFFSET]])))
+    own = T.LAYOUT_CHECKSUM_FIELDS[header_info(b)[1].id]  # this version's header's checksum fields
     for tag in T.CHECKSUMS["fill_order"]:
-        if tag != "args":
+        if tag in own:
             cov = T.PROFILES[profile]["file_coverages"][0] if tag == "file" else None
             alg = file_algorithm(profile) if tag == "file" else None
-            _put(b, T.HEADER_CHECKSUM_FIELDS[tag], 0, field_checksum(tag, b, offsets, cov, algorithm=alg))
+            _put(b, own[tag], 0, field_checksum(tag, b, offsets, cov, algorithm=alg))
     return bytes(b)
 
 
