@@ -229,8 +229,8 @@ def _directive(op: str, toks: tuple[str, ...], st: _State, env: dict[str, int], 
             if not _HEX_BYTE.fullmatch(t):
                 raise ValueError(f"{t!r} is not a hex byte")
             out.append(int(t, 16))
-    elif op in ("u8", "u16", "u32"):
-        fmt = {"u8": "<B", "u16": "<H", "u32": "<I"}[op]
+    elif op in ("u8", "u16", "u32", "u64", "i8", "i16", "i32", "i64"):  # u8: one byte; i*: two's complement
+        fmt = {"u8": "<B", "u16": "<H", "u32": "<I", "u64": "<Q", "i8": "<b", "i16": "<h", "i32": "<i", "i64": "<q"}[op]
         for t in args:
             out += struct.pack(fmt, int(_eval(t, env)))
     elif op == "f32":

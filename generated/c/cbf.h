@@ -1141,7 +1141,8 @@ enum cbf__kind {
     CBF__KIND_ORDERED = 27,
     CBF__KIND_ORIENTATION = 28,
     CBF__KIND_SHAPE = 29,
-    CBF__KIND_MACHINE_LIMITS = 30
+    CBF__KIND_MACHINE_LIMITS = 30,
+    CBF__KIND_DEPRECATED = 31
 };
 #define CBF__PAD 0u
 #define CBF__NVERSIONS 4
@@ -1212,7 +1213,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1216 "cbf.h"
+#line 1217 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1285,13 +1286,14 @@ typedef struct cbf__check {
     size_t first_target, ntargets;
     int has_min; double min;
     int has_max; double max;
+    int min_open, max_open; /* range: the bound excludes its value (> min, < max) */
 } cbf__check;
 
 static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1295 "cbf.h"
+#line 1297 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1597,6 +1599,10 @@ static const signed char cbf__avail_check[27][CBF__NVERSIONS] = {
     { -1, -1, -1, -1 }, /* COMMENT */
 };
 
+/* Per layout: the deprecation check naming it (at most one, loader.py), -1 when none;
+ * its versions (the check's mask) are applied where findings are said. */
+static const signed char cbf__deprecated[30] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+
 static const cbf__target cbf__targets[25] = {
     { 19, 0, 1 }, /* SPEED speed */
     { 20, 1, 2 }, /* ACCEL accel decel */
@@ -1673,71 +1679,71 @@ static const signed char cbf__target_arg_at[42][CBF_LAYOUT__COUNT] = {
 
 static const cbf__check cbf__checks[CBF__NCHECKS] = {
     /* 4.2 (clause 4.2): The file is shorter than the header. No other check runs. */
-    { CBF_CHECK_4_2, CBF__KIND_TRUNCATED_HEADER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_4_2, CBF__KIND_TRUNCATED_HEADER, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 4.3 (clause 4.3): The bytes after the last complete record do not hold a whole record head or its nb argument bytes, and fewer complete records than the header count precede them. 6.2.2 is then not judged. The finding's record is the index the incomplete record would have had. */
-    { CBF_CHECK_4_3, CBF__KIND_TRUNCATED_RECORD, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_4_3, CBF__KIND_TRUNCATED_RECORD, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.1.1 (clause 6.1.1): A part number is given and differs from the first whitespace-separated word of the implant descriptor. */
-    { CBF_CHECK_6_1_1, CBF__KIND_PART_NUMBER, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_1_1, CBF__KIND_PART_NUMBER, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* part_number_first (clause 4.2): The implant descriptor holds no word: it is empty or only whitespace (a CUT text without a header line), so no part number comes first. implib's reader fails on such a file. A warning: the file is still well formed. */
-    { CBF_CHECK_PART_NUMBER_FIRST, CBF__KIND_DESCRIPTOR_WORD, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_PART_NUMBER_FIRST, CBF__KIND_DESCRIPTOR_WORD, 0, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.1.2 (clause 6.1.2): A cutter table is given, and a cutter's name is not in it, or its length or radius differs from the table by more than tolerances.cutter_mm. */
-    { CBF_CHECK_6_1_2, CBF__KIND_CUTTER_TABLE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_1_2, CBF__KIND_CUTTER_TABLE, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.2.1 (clause 6.2.1): The stored file checksum matches none of the profile's file coverages. The message names a hint coverage that matches. */
-    { CBF_CHECK_6_2_1, CBF__KIND_FILE_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_2_1, CBF__KIND_FILE_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.2.2 (clause 6.2.2): The number of records differs from the header's command count (N6). */
-    { CBF_CHECK_6_2_2, CBF__KIND_COMMAND_COUNT, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_2_2, CBF__KIND_COMMAND_COUNT, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.3.1 (clause 6.3.1): The stored header checksum differs from the sum over its coverage. */
-    { CBF_CHECK_6_3_1, CBF__KIND_HEADER_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_3_1, CBF__KIND_HEADER_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.3.2 (clause 6.3.2): The start pattern or the end pattern differs from its value; one finding per field. */
-    { CBF_CHECK_6_3_2, CBF__KIND_MAGIC, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_3_2, CBF__KIND_MAGIC, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.4.1 (clause 6.4.1): Record i does not carry sequence number i modulo 65536. */
-    { CBF_CHECK_6_4_1, CBF__KIND_SEQUENCE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_4_1, CBF__KIND_SEQUENCE, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.4.2 (clause 6.4.2): The backup copy differs from the command code. */
-    { CBF_CHECK_6_4_2, CBF__KIND_CODE_COPY, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_4_2, CBF__KIND_CODE_COPY, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.4.3 (clause 6.4.3): A known command's nb is not the size of a layout for the file's version (for a command the version lacks, of any of its layouts) that the profile accepts. */
-    { CBF_CHECK_6_4_3, CBF__KIND_ARG_SIZE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_4_3, CBF__KIND_ARG_SIZE, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.4.4 (clause 6.4.4): The stored argument checksum differs from the sum of the argument bytes. */
-    { CBF_CHECK_6_4_4, CBF__KIND_ARG_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_4_4, CBF__KIND_ARG_CHECKSUM, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 6.4.5 (clause 6.4.5): A motion command other than a point starts farther than tolerances.position_mm from the current position. POINT sets the current position; every motion command then moves it to its end point. Nothing is compared before the first motion command, and after a motion whose values are not finite or whose normal is zero. */
-    { CBF_CHECK_6_4_5, CBF__KIND_CONTINUITY, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_6_4_5, CBF__KIND_CONTINUITY, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 7.2.3.1 (clause 7.2.3.1): A record's command has no layout for the file's version 4.0 (N9). */
-    { CBF_CHECK_7_2_3_1, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V4_0), 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_7_2_3_1, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V4_0), 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* 7.2.2.4 (clause 7.2.2.4): A record's command has no layout for the file's version 1.x (N10). */
-    { CBF_CHECK_7_2_2_4, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V1_X), 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_7_2_2_4, CBF__KIND_AVAILABILITY, 1, CBF__VBIT(CBF_V1_X), 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* version_supported (clause 7.1): The header's version matches no version of this spec; the file is read with fallback_version. */
-    { CBF_CHECK_VERSION_SUPPORTED, CBF__KIND_VERSION, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_VERSION_SUPPORTED, CBF__KIND_VERSION, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* unknown_command (clause 5.2) (N6): The command code is not in the command table. */
-    { CBF_CHECK_UNKNOWN_COMMAND, CBF__KIND_UNKNOWN_CODE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_UNKNOWN_COMMAND, CBF__KIND_UNKNOWN_CODE, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* trailing_bytes (N6): Bytes follow the last complete record that do not form a whole record, and at least as many complete records as the header count precede them. The finding's record is null. */
-    { CBF_CHECK_TRAILING_BYTES, CBF__KIND_TRAILING, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_TRAILING_BYTES, CBF__KIND_TRAILING, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* reserved_nonzero (N7): The record head's reserved byte is not 0. */
-    { CBF_CHECK_RESERVED_NONZERO, CBF__KIND_RESERVED_BYTE, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_RESERVED_NONZERO, CBF__KIND_RESERVED_BYTE, 0, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* string_tail (N4): A string field of the header or of a record has a non-NUL byte after its first NUL; one finding per field. */
-    { CBF_CHECK_STRING_TAIL, CBF__KIND_STRING_TAIL, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_STRING_TAIL, CBF__KIND_STRING_TAIL, 0, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* string_ascii (N4): A string field of the header or of a record has a byte outside 0x20..0x7E before its first NUL; one finding per field. */
-    { CBF_CHECK_STRING_ASCII, CBF__KIND_STRING_ASCII, 0, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_STRING_ASCII, CBF__KIND_STRING_ASCII, 0, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* non_finite (X1): A float argument is NaN or infinite; one finding per argument (a vector counts once). */
-    { CBF_CHECK_NON_FINITE, CBF__KIND_FINITE, 1, 0, 0, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_NON_FINITE, CBF__KIND_FINITE, 1, 0, 0, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* speed_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
-    { CBF_CHECK_SPEED_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 0, 1, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_SPEED_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 0, 1, 0, 0.0, 0, 0.0, 0, 0 },
     /* accel_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
-    { CBF_CHECK_ACCEL_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 1, 1, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_ACCEL_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 1, 1, 0, 0.0, 0, 0.0, 0, 0 },
     /* cutter_positive (X1): A target argument is finite and <= 0 (one finding per argument). */
-    { CBF_CHECK_CUTTER_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 2, 1, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_CUTTER_POSITIVE, CBF__KIND_POSITIVE, 1, 0, 2, 1, 0, 0.0, 0, 0.0, 0, 0 },
     /* normal_nonzero (X1): All components of a finite target vector are zero (one finding per argument). */
-    { CBF_CHECK_NORMAL_NONZERO, CBF__KIND_NONZERO_VECTOR, 1, 0, 3, 4, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_NORMAL_NONZERO, CBF__KIND_NONZERO_VECTOR, 1, 0, 3, 4, 0, 0.0, 0, 0.0, 0, 0 },
     /* checkpoint_range (X1): A finite target argument is below min or above max (one finding per argument). */
-    { CBF_CHECK_CHECKPOINT_RANGE, CBF__KIND_RANGE, 0, 0, 7, 1, 1, 0.0, 1, 100.0 },
+    { CBF_CHECK_CHECKPOINT_RANGE, CBF__KIND_RANGE, 0, 0, 7, 1, 1, 0.0, 1, 100.0, 0, 0 },
     /* checkpoint_falling (X1): A finite target argument is less than the same argument of the previous record of that command whose value was finite. */
-    { CBF_CHECK_CHECKPOINT_FALLING, CBF__KIND_NONDECREASING, 0, 0, 8, 1, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_CHECKPOINT_FALLING, CBF__KIND_NONDECREASING, 0, 0, 8, 1, 0, 0.0, 0, 0.0, 0, 0 },
     /* fcparms_order (X1): The target arguments, all finite, are not in non-decreasing order. */
-    { CBF_CHECK_FCPARMS_ORDER, CBF__KIND_ORDERED, 0, 0, 9, 1, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_FCPARMS_ORDER, CBF__KIND_ORDERED, 0, 0, 9, 1, 0, 0.0, 0, 0.0, 0, 0 },
     /* orientation_jump (X1): The angle between a path command's start orientation and the current orientation exceeds tolerances.orientation_deg. A set command sets the current orientation; a path command moves it to its end. Nothing is compared before the first orientation command, and after a zero-length or non-finite orientation. */
-    { CBF_CHECK_ORIENTATION_JUMP, CBF__KIND_ORIENTATION, 0, 0, 10, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_ORIENTATION_JUMP, CBF__KIND_ORIENTATION, 0, 0, 10, 0, 0, 0.0, 0, 0.0, 0, 0 },
     /* machine_limits (L1): A finite target argument lies outside its limit of the machine (the target's limit in machine.limits): below min or above max, a vector in any component (the first such component is named). One finding per argument. A value that a positive check of the same argument fails (<= 0) is left to that check, as a non-finite one is left to the finite check: one fault, one finding. Without a machine file the default machine applies and the findings are warnings; with one, its limits apply and the findings are errors. */
-    { CBF_CHECK_MACHINE_LIMITS, CBF__KIND_MACHINE_LIMITS, 0, 0, 10, 15, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_MACHINE_LIMITS, CBF__KIND_MACHINE_LIMITS, 0, 0, 10, 15, 0, 0.0, 0, 0.0, 0, 0 },
     /* shape (X2): A STARTSHAPE inside an open shape, an ENDSHAPE without an open shape, an ENDSHAPE whose name or count differs from its STARTSHAPE, a shape whose number of motion commands differs from its count (at most one finding per ENDSHAPE, reported there), or a shape still open at the end of the file (reported at its STARTSHAPE). A STARTSHAPE inside an open shape opens a new shape. Motion commands are the records of commands with a motion role (POINT included). */
-    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 25, 0, 0, 0.0, 0, 0.0 },
+    { CBF_CHECK_SHAPE, CBF__KIND_SHAPE, 1, 0, 25, 0, 0, 0.0, 0, 0.0, 0, 0 },
 };
 
 const char *const cbf_command_names[256] = {
@@ -2295,7 +2301,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2299 "cbf.h"
+#line 2305 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2520,7 +2526,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2524 "cbf.h"
+#line 2530 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2691,7 +2697,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2695 "cbf.h"
+#line 2701 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2852,7 +2858,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2856 "cbf.h"
+#line 2862 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3105,7 +3111,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3109 "cbf.h"
+#line 3115 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -3591,6 +3597,9 @@ static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fm
 {
     char msg[256];
     cbf_finding f;
+    unsigned scope = cbf__checks[ci].versions;
+    if (scope && !(scope & CBF__VBIT(v->eff)))
+        return; /* a check scoped to other versions (versions:) judges nothing in this file */
     (void)vsnprintf(msg, sizeof msg, fmt, ap);
     f.check = cbf__checks[ci].id;
     f.severity = cbf__checks[ci].severity;
@@ -3610,6 +3619,17 @@ static void cbf__say(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt
     va_start(ap, fmt);
     cbf__vsay(v, ci, rec, off, fmt, ap);
     va_end(ap);
+}
+
+/* A deprecation check's first version: the lowest bit of its mask (the loader makes the mask
+ * since and every version after it). */
+static int cbf__deprecation_since(int ci)
+{
+    int i;
+    for (i = 0; i < CBF__NVERSIONS; i++)
+        if (cbf__checks[ci].versions & CBF__VBIT(i))
+            return i;
+    return 0;
 }
 
 /* A finding for every check of a kind. */
@@ -4073,13 +4093,18 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
             cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
         break;
     case CBF__KIND_RANGE:
-        if ((ch->has_min && x < ch->min) || (ch->has_max && x > ch->max)) {
+        if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
+            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
+            /* findings.range_text's words */
             if (ch->has_min && ch->has_max)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %g..%g", cbf__commands[cmd].name,
-                         f->name, x, ch->min, ch->max);
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+            else if (ch->has_min)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
             else
                 cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->has_min ? ">=" : "<=", ch->has_min ? ch->min : ch->max);
+                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
         }
         break;
     case CBF__KIND_NONDECREASING:
@@ -4095,6 +4120,7 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
      * machine_limits here). */
     case CBF__KIND_ORDERED:          /* cbf__ordered */
     case CBF__KIND_MACHINE_LIMITS:   /* cbf__machine_at (machine.h.j2) */
+    case CBF__KIND_DEPRECATED:       /* cbf_validate's record loop (cbf__deprecated) */
     case CBF__KIND_FINITE:           /* the layout function (validator_layouts.c.j2) */
     case CBF__KIND_STRING_TAIL:      /* cbf__check_string */
     case CBF__KIND_STRING_ASCII:     /* cbf__check_string */
@@ -4199,7 +4225,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4203 "cbf.h"
+#line 4229 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4318,6 +4344,8 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][out] : NULL;
         char msg[256];
         cbf_finding fd;
+        if (cbf__checks[r->check].versions && !(cbf__checks[r->check].versions & CBF__VBIT(v->eff)))
+            return; /* scoped to other versions (versions:) */
         (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
                        cbf__commands[cmd].name, f ? f->name : "?", axis ? " " : "", axis ? axis : "", (double)x[out],
                        cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[out],
@@ -4349,7 +4377,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4353 "cbf.h"
+#line 4381 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5139,6 +5167,9 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (!seen[cmd].accepted)
                 cbf__arg_size(&v, cmd, profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
+            if (layout != CBF_LAYOUT__NONE && cbf__deprecated[layout] >= 0)
+                cbf__say(&v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
+                         cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
             if (layout != CBF_LAYOUT__NONE)
                 cbf__decoded_checks(&v, layout, args, rec, pos);
         }
@@ -5206,7 +5237,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5210 "cbf.h"
+#line 5241 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -1512,6 +1512,26 @@ static void put_float(float f)
         printf("%.9g", (double)f);
 }
 
+/* Element i of an integer field, in decimal, exact at every registered width and signedness
+ * (from its bits: a double would round beyond 2^53). */
+static void put_int(const cbf_field_info *f, const uint8_t *base, unsigned i)
+{
+    uint64_t u = cbf_field_bits(f, base, i);
+    unsigned bits = 8u * f->elem;
+    char d[24];
+    size_t n = 0;
+    if (f->kind == CBF_KIND_SINT && ((u >> (bits - 1u)) & 1u)) {
+        putchar('-');
+        u = (bits < 64u ? ((uint64_t)1 << bits) : (uint64_t)0) - u; /* the magnitude, mod 2^64 */
+    }
+    do {
+        d[n++] = (char)('0' + (int)(u % 10u));
+        u /= 10u;
+    } while (u);
+    while (n)
+        putchar(d[--n]);
+}
+
 /* One field of a byte image, as canonical JSON (PROTOCOL.md). */
 static void put_field(const cbf_field_info *f, const uint8_t *base)
 {
@@ -1520,7 +1540,8 @@ static void put_field(const cbf_field_info *f, const uint8_t *base)
     printf("\"%s\": ", f->name);
     switch (f->kind) {
     case CBF_KIND_UINT:
-        printf("%lu", (unsigned long)cbf_field_uint(f, base));
+    case CBF_KIND_SINT:
+        put_int(f, base, 0);
         break;
     case CBF_KIND_FLOAT:
         if (f->count > 1u)
@@ -1931,6 +1952,44 @@ static int juint(int32_t n, uint32_t max, uint32_t *out)
     return 1;
 }
 
+/* An integer of ``bits`` bits, signed or not, from a JSON number (no fraction, no exponent; -0 is
+ * 0), as its two's complement bits; 0 when it is not one or does not fit. */
+static int jint(int32_t n, int sign, unsigned bits, uint64_t *out)
+{
+    const char *s;
+    size_t i = 0;
+    uint64_t v = 0, lim;
+    int neg = 0;
+    if (n < 0 || nodes[n].type != J_NUM)
+        return 0;
+    s = jtext + nodes[n].start;
+    if (nodes[n].len > 0 && s[0] == '-') {
+        neg = 1;
+        i = 1;
+    }
+    if (i >= nodes[n].len)
+        return 0;
+    for (; i < nodes[n].len; i++) {
+        unsigned dg;
+        if (!jdigit(s[i]))
+            return 0;
+        dg = (unsigned)(s[i] - '0');
+        if (v > (UINT64_MAX - dg) / 10u)
+            return 0;
+        v = v * 10u + dg;
+    }
+    if (neg && v == 0u)
+        neg = 0;
+    if (!sign)
+        lim = neg ? 0u : bits >= 64u ? UINT64_MAX : (((uint64_t)1 << bits) - 1u);
+    else
+        lim = ((uint64_t)1 << (bits - 1u)) - (neg ? 0u : 1u);
+    if (v > lim || (neg && !sign))
+        return 0;
+    *out = neg ? (uint64_t)0 - v : v;
+    return 1;
+}
+
 /* A binary32 from a JSON number (rounded from the double, as Python's struct
  * does; out of range fails) or a "0xXXXXXXXX" bit string. */
 static int jfloat(int32_t n, uint32_t *bits)
@@ -1992,10 +2051,12 @@ static int pack_field(const cbf_field_info *f, int32_t v, uint8_t *base)
     uint8_t *d = base + f->offset;
     unsigned i;
     switch (f->kind) {
-    case CBF_KIND_UINT: {
-        uint32_t x, max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
-        if (!juint(v, max, &x))
-            return fail("field %s: not an unsigned integer of its size", f->name);
+    case CBF_KIND_UINT:
+    case CBF_KIND_SINT: {
+        uint64_t x;
+        if (!jint(v, f->kind == CBF_KIND_SINT, 8u * f->elem, &x))
+            return fail("field %s: not %s integer of its size", f->name,
+                        f->kind == CBF_KIND_SINT ? "a signed" : "an unsigned");
         for (i = 0; i < f->elem; i++)
             d[i] = (uint8_t)((x >> (8u * i)) & 0xFFu);
         return 1;

@@ -1722,8 +1722,23 @@ static void dump_field(const cbf_field_info *f, const uint8_t *base)
     printf(" %s=", f->name);
     switch (f->kind) {
     case CBF_KIND_UINT:
-        printf("%lu", (unsigned long)cbf_field_uint(f, base));
+    case CBF_KIND_SINT: { /* exact at every registered width and signedness (from its bits) */
+        uint64_t u = cbf_field_bits(f, base, 0);
+        unsigned bits = 8u * f->elem;
+        char d[24];
+        size_t n = 0;
+        if (f->kind == CBF_KIND_SINT && ((u >> (bits - 1u)) & 1u)) {
+            putchar('-');
+            u = (bits < 64u ? ((uint64_t)1 << bits) : (uint64_t)0) - u;
+        }
+        do {
+            d[n++] = (char)('0' + (int)(u % 10u));
+            u /= 10u;
+        } while (u);
+        while (n)
+            putchar(d[--n]);
         break;
+    }
     case CBF_KIND_FLOAT:
         for (i = 0; i < f->count; i++)
             printf("%s%.9g", i ? "," : "", (double)cbf_field_float(f, base, (unsigned)i));

@@ -10,7 +10,10 @@ version and command by command. Each change is in one of three classes:
 - text-breaking (TEXT, `text_breaking`): every byte of OLD's versions keeps
   its meaning, but a name a user or a program writes changes: a CUT keyword
   or argument name, a JSON key, a C macro or struct member, a Python name
-  (a command renamed with the same code and layouts, an argument renamed
+  (a command renamed with the same code and layouts -- when it keeps the
+  old name in its `former_names`, readers of CUT and JSON, cbf.h and the
+  Python package still accept the old name, and only what writers write
+  changes (`old_name_reads`); an argument renamed
   at the same offset with the same type, a layout variant renamed, a
   check whose findings carry another id);
 - neither. Adding a version, and anything inside a version that OLD does
@@ -59,6 +62,8 @@ class Change:
     detail: str
     breaking: bool  # wire-breaking
     text_breaking: bool = False  # a name changes, every byte keeps its meaning
+    # a text-breaking rename whose old name still reads (a former name): writers write the new one
+    old_name_reads: bool = False
 
     @property
     def impact(self) -> str:
@@ -101,6 +106,10 @@ class Diff:
         if self.breaking:
             return (f"wire-breaking (exit {EXIT_WIRE}): a file of a version in OLD changes meaning or judgement "
                     "(BREAKING above)")
+        if self.text_breaking and all(c.old_name_reads for c in self.text_breaking):
+            return (f"text-breaking only (exit {EXIT_TEXT}): every byte of OLD's versions keeps its meaning; writers "
+                    "write the new names (TEXT above), and readers of CUT and JSON, cbf.h and the Python package "
+                    "still accept the former ones")
         if self.text_breaking:
             return (f"text-breaking only (exit {EXIT_TEXT}): every byte of OLD's versions keeps its meaning; names "
                     "in the CUT and JSON forms or the C and Python bindings change (TEXT above)")
@@ -265,9 +274,15 @@ def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: 
             renamed = [c.name for c in new.commands if c.code == oc.code and c.name not in old_cmds
                        and c.available_in(new_vid)]
             if renamed:
+                # a rename that keeps the old name among the command's former names is no text break for
+                # readers: CUT and JSON readers accept it, cbf.h and the Python package keep it as an alias
+                keeps = oc.name in new.command(renamed[0]).former_names
+                why = (f"{oc.name} stays a former name: CUT and JSON readers accept it, CBF_CMD_{oc.name} and "
+                       f"CommandCode.{oc.name} stay as deprecated aliases; writers write {renamed[0]}" if keeps else
+                       "the CUT keyword, the JSON form and the C and Python names change")
                 out.append(Change("command_renamed", new_vid, oc.name,
-                                  f"{oc.name} renamed to {renamed[0]}, the same code 0x{oc.code:02X} (the CUT "
-                                  "keyword, the JSON form and the C and Python names change)", False, breaking))
+                                  f"{oc.name} renamed to {renamed[0]}, the same code 0x{oc.code:02X} ({why})", False,
+                                  breaking, keeps))
                 out += _compare_layouts(olays, new.command(renamed[0]).layouts_for(new_vid), new_vid, renamed[0],
                                         breaking)
             else:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from dataclasses import field as dataclass_field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -46,12 +46,14 @@ from .registry import (
     ROLE_ARGS,
     SEVERITIES,
     TYPES,
+    DeprecatedParams,
     FieldType,
     RoleArg,
     Target,
     repeat_unsupported,
     role_arg_fits,
     unsupported,
+    unsupported_in_head,
 )
 
 SCHEMA_PATH = Path(__file__).with_name("spec.schema.json")
@@ -520,6 +522,7 @@ def _commands_pass(ctx: _Ctx, st: _State) -> None:
             sets=dict(c["sets"]) if "sets" in c else None,
             progress=c.get("progress"),
             declared_size=c.get("declared_size"), listed_size=c.get("listed_size"), erratum=c.get("erratum"),
+            former_names=tuple(str(x) for x in c.get("former_names", ())),
         )
         for role in ("motion", "orientation", "shape", "cutter"):
             for key, argname in (getattr(cmd, role) or {}).items():
@@ -680,6 +683,12 @@ def _checks_pass(ctx: _Ctx, st: _State) -> None:
                 ctx.fail(ch, f"check {cid}: a range check needs min, max or both", "kind")
             elif ch.get("min") is not None and ch.get("max") is not None and ch["min"] > ch["max"]:
                 ctx.fail(ch, f"check {cid}: min {ch['min']} exceeds max {ch['max']}", "min")
+            elif (ch.get("min") is not None and ch.get("min") == ch.get("max")
+                  and (ch.get("min_exclusive") or ch.get("max_exclusive"))):
+                ctx.fail(ch, f"check {cid}: an open bound at min = max {ch['min']} leaves no value", "min")
+            for b in ("min", "max"):
+                if ch.get(f"{b}_exclusive") and ch.get(b) is None:
+                    ctx.fail(ch, f"check {cid}: {b}_exclusive without {b}", f"{b}_exclusive")
         if ch.get("decision") and ch["decision"] not in known_notes:
             ctx.fail(ch, f"check {cid}: unknown decision {ch['decision']!r}", "decision")
         if missing:
@@ -687,7 +696,7 @@ def _checks_pass(ctx: _Ctx, st: _State) -> None:
         values: dict[str, Any] = {k: ch[k] for k in ck.keys if k in ch}
         if "targets" in ck.keys:
             values["targets"] = tuple(targets)
-        for k in ("versions", "commands"):
+        for k in ("versions", "commands", "deprecates"):
             if k in values:
                 values[k] = tuple(str(x) for x in values[k])
         check = Check(id=cid, kind=kname, severity=ch["severity"], text=str(ch["text"]).strip(),
@@ -728,7 +737,7 @@ def _availability_pass(ctx: _Ctx, st: _State) -> None:
     covered: dict[tuple[str, str], Check] = {}
     by_name = {c.name: c for c in st.commands}
     for ch in st.checks:
-        if not CHECK_KINDS[ch.kind].versioned:
+        if not CHECK_KINDS[ch.kind].gates:
             continue
         node = st.raw_checks[ch.id]
         for v in ch.versions:
@@ -811,6 +820,12 @@ def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
             what = f"{f.type} x {f.count}" if f.count != 1 else f.type
             ctx.at(f.line, f"field {f.name}: type {what} is not implemented by the "
                            f"{', '.join(gaps)} binding{'s' if len(gaps) > 1 else ''} (generator/cbfgen/registry.py)")
+    for f in [f for h in st.headers.values() for f in h.fields] + list(st.record.fields if st.record else ()):
+        head_gaps = unsupported_in_head(TYPES[f.type])
+        if head_gaps:
+            ctx.at(f.line, f"field {f.name}: type {f.type} in a header or record head is not implemented by the "
+                           f"{', '.join(head_gaps)} binding (it reads those fields unsigned, at most 4 bytes; "
+                           f"generator/cbfgen/registry.py)")
     # The version fields sit in the same place in every header layout (_headers_pass, _SHARED_ROLES):
     # Kaitai reads them by position when the layouts diverge before them (emit/kaitai).
 
@@ -835,6 +850,60 @@ def _names_pass(ctx: _Ctx, st: _State) -> None:
         if f.name in GENERATED_NAMES[part]:
             ctx.at(f.line, f"{what} {f.name}: the generated code names a member of the {part} so "
                            f"({', '.join(GENERATED_NAMES[part])} are taken)")
+
+
+def _former_names_pass(ctx: _Ctx, st: _State) -> None:
+    """A command's former names (issue 25, point 6) name it alone: no command's current name, no
+    other former name, and a name every binding can use (they become aliases)."""
+    owner: dict[str, Command] = {c.name: c for c in st.commands}
+    raw = {str(x["name"]): x for x in st.raw["commands"]}
+    for c in st.commands:
+        for old in c.former_names:
+            other = owner.get(old)
+            why = keyword_clash(old, what="command")
+            if other is not None:
+                what = "its own name" if other is c else f"already a name of {other.name} (line {other.line})"
+                ctx.fail(raw[c.name], f"{c.name}: former name {old} is {what}", "former_names")
+            elif why:
+                ctx.fail(raw[c.name], f"{c.name}: former name {old}: the name {why}", "former_names")
+            owner.setdefault(old, c)
+
+
+def _deprecations_pass(ctx: _Ctx, st: _State) -> None:
+    """Each deprecation (kind deprecated, issue 25 point 5): a known version ``since``, whose
+    ``versions`` become it and every version after it in the spec's list; each command or
+    NAME/variant layout it names exists, has a layout in one of those versions, and is deprecated
+    by no other check."""
+    by_name = {c.name: c for c in st.commands}
+    seen: dict[tuple[str, str], Check] = {}
+    for i, ch in enumerate(st.checks):
+        if not isinstance(ch.params, DeprecatedParams):
+            continue
+        node = st.raw_checks[ch.id]
+        if "versions" in node:
+            ctx.fail(node, f"check {ch.id}: a deprecation gives since, not versions", "versions")
+            continue
+        if ch.params.since not in st.vids:
+            ctx.fail(node, f"check {ch.id}: unknown version {ch.params.since!r}", "since")
+            continue
+        versions = tuple(st.vids[st.vids.index(ch.params.since):])
+        for item in ch.params.deprecates:
+            name, _, variant = item.partition("/")
+            cmd = by_name.get(name)
+            lays = [] if cmd is None else [lay for lay in cmd.layouts if not variant or lay.variant == variant]
+            if not lays:
+                ctx.fail(node, f"check {ch.id}: deprecates {item}, which names no command or layout", "deprecates")
+                continue
+            if not any(v in lay.versions for lay in lays for v in versions):
+                ctx.fail(node, f"check {ch.id}: {item} has no layout in {', '.join(versions)}, nothing to deprecate",
+                         "deprecates")
+            for lay in lays:
+                other = seen.get((name, lay.variant))
+                if other is not None:
+                    ctx.fail(node, f"check {ch.id}: {name} layout {lay.variant or 'primary'} is already deprecated "
+                                   f"by check {other.id} (line {other.line})", "deprecates")
+                seen[(name, lay.variant)] = ch
+        st.checks[i] = replace(ch, params=replace(ch.params, versions=versions))
 
 
 def _repeat_pass(ctx: _Ctx, st: _State) -> None:
@@ -873,7 +942,8 @@ def _repeat_pass(ctx: _Ctx, st: _State) -> None:
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
     _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
-    _checks_pass, _checksum_fields_pass, _availability_pass, _capabilities_pass, _names_pass, _repeat_pass,
+    _checks_pass, _checksum_fields_pass, _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass,
+    _former_names_pass, _repeat_pass,
 )
 
 

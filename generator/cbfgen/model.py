@@ -154,6 +154,9 @@ class Command:
     declared_size: int | None = None
     listed_size: int | None = None
     erratum: str | None = None
+    # Issue 25, point 6: names the command had before a rename. Readers of CUT and JSON accept
+    # them, writers write ``name``; the C header and the Python package keep them as aliases.
+    former_names: tuple[str, ...] = ()
 
     @property
     def primary(self) -> Layout:
@@ -394,7 +397,8 @@ class Check:
 
     @property
     def versions(self) -> tuple[str, ...]:
-        """availability: the versions it covers (no other kind takes versions)."""
+        """The versions whose files the check judges (empty: every version); availability: the
+        versions it covers."""
         return self._param("versions", ())  # type: ignore[no-any-return]
 
     @property
@@ -415,6 +419,33 @@ class Check:
         return self._param("max", None)  # type: ignore[no-any-return]
 
     @property
+    def min_exclusive(self) -> bool:
+        """range: the value must be > min (not >=)."""
+        return bool(self._param("min_exclusive", False))
+
+    @property
+    def max_exclusive(self) -> bool:
+        """range: the value must be < max (not <=)."""
+        return bool(self._param("max_exclusive", False))
+
+    @property
+    def since(self) -> str | None:
+        """deprecated: the first version that deprecates its commands or layouts."""
+        return self._param("since", None)  # type: ignore[no-any-return]
+
+    @property
+    def deprecates(self) -> tuple[str, ...]:
+        """deprecated: the commands ("NAME") and layouts ("NAME/variant") it deprecates."""
+        return self._param("deprecates", ())  # type: ignore[no-any-return]
+
+    def deprecates_layout(self, command: str, variant: str) -> bool:
+        return command in self.deprecates or f"{command}/{variant}" in self.deprecates
+
+    def applies_to(self, version: str) -> bool:
+        """Whether the check judges a file of ``version`` (its ``versions:`` scope)."""
+        return not self.versions or version in self.versions
+
+    @property
     def checksum_field(self) -> str | None:
         """header_checksum: the checksum tag of the header field it judges."""
         return self._param("field", None)  # type: ignore[no-any-return]
@@ -426,7 +457,8 @@ class Check:
 
 # A check's attributes as one flat list: its own, then its kind's parameters (registry.py).
 CHECK_ATTRS = ("id", "kind", "severity", "text", "fails", "line", "clause", "decision", "input", "input_severity",
-               "versions", "commands", "targets", "min", "max", "checksum_field")
+               "versions", "commands", "targets", "min", "max", "min_exclusive", "max_exclusive",
+               "since", "deprecates", "checksum_field")
 
 
 @dataclass(frozen=True)

@@ -12,8 +12,10 @@ Field types
 Check kinds
     A ``CheckKind`` names one rule every binding implements once (a Python kernel, a C kernel) and
     the parameters a check of that kind takes, as a frozen dataclass (``params``): the loader
-    builds it from the YAML and refuses any key the kind does not take. ``versions`` is a
-    parameter of ``availability`` only, the one kind whose runtimes scope by version.
+    builds it from the YAML and refuses any key the kind does not take. ``versions`` scopes a check
+    to files of those versions (empty: every version; a file of no known version is judged as the
+    fallback version, as its records are read): every kind takes it but the two that judge a file
+    before its version is known (``truncated_header``, ``version``). Availability requires it.
 
 Binding capabilities
     ``unsupported(t)`` names the bindings that cannot yet carry a field of type ``t`` (the loader
@@ -141,7 +143,7 @@ TYPES: dict[str, FieldType] = {
 # The bindings the loader answers for, and what each carries today. Python and Kaitai read every
 # type's codes from this registry; what a binding cannot carry yet is refused at load (the
 # binding-capabilities pass), with the field's line, before any emitter runs:
-#   c       the engine of rev 03: unsigned 1, 2 and 4 bytes, binary32 (branch cruntime widens it)
+#   c       every integer (the testee and cbf-c print them from their bits); binary32
 #   python  every integer; no binary64 (canonical JSON and the CUT text carry binary32)
 #   kaitai  every integer; no binary64 (its conformance testees report floats as binary32)
 # Vectors (count > 1) are float vectors only (x, y, z) in every binding.
@@ -162,13 +164,18 @@ def unsupported(t: FieldType, count: int = 1) -> tuple[str, ...]:
     """The bindings that cannot carry a field of type ``t`` (``count`` elements); empty: all can.
     When a binding learns a type, its rule here changes, and nothing else in the loader."""
     gaps: set[str] = set()
-    if t.is_integer and (t.kind == "sint" or t.size not in (1, 2, 4)):
-        gaps.add("c")
     if t.kind == "float" and t.size != 4:
         gaps |= {"python", "kaitai", "c"}
     if count != 1 and t.kind != "float":
         gaps |= set(BINDINGS)
     return tuple(b for b in BINDINGS if b in gaps)
+
+
+def unsupported_in_head(t: FieldType) -> tuple[str, ...]:
+    """The bindings that cannot carry a header or record-head field of type ``t``: the C engine
+    reads those (magic numbers, counts, sequence numbers, codes, checksums) unsigned, at most 4
+    bytes wide; an argument may be any integer."""
+    return ("c",) if t.is_integer and (t.kind == "sint" or (t.size or 0) > 4) else ()
 
 
 # What the argument a role names must be, by role and key: ("float", 3) a vector of three floats
@@ -225,18 +232,28 @@ class NoParams:
 
 
 @dataclass(frozen=True)
+class ScopedParams:
+    """A kind that takes nothing but ``versions`` (and its id, severity and texts)."""
+
+    versions: tuple[str, ...] = ()  # the versions whose files it judges (empty: every version)
+
+
+@dataclass(frozen=True)
 class PartNumberParams:
     input: Literal["part_number"] | None = None  # the run's input the check compares (cbf validate --part-number)
+    versions: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class CutterTableParams:
     input: Literal["cutters"] | None = None  # cbf validate --cutters FILE
+    versions: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class HeaderChecksumParams:
     field: str = "header"  # the checksum tag (checksums.fields) of the header field it judges
+    versions: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -248,13 +265,20 @@ class AvailabilityParams:
 @dataclass(frozen=True)
 class TargetParams:
     targets: tuple[Target, ...]
+    versions: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class RangeParams:
+    """``min``/``max`` are closed bounds unless ``min_exclusive``/``max_exclusive`` opens them:
+    ``min: 0, min_exclusive: true, max: 36000`` says (0, 36000]."""
+
     targets: tuple[Target, ...]
     min: float | None = None  # at least one bound (the loader refuses a range without one)
     max: float | None = None
+    min_exclusive: bool = False  # the value must be > min (the loader refuses it without min)
+    max_exclusive: bool = False  # the value must be < max
+    versions: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -262,11 +286,22 @@ class MachineLimitsParams:
     targets: tuple[Target, ...]  # each names a limit of machine.limits
     input: Literal["machine"] | None = None  # cbf validate --machine FILE
     input_severity: Severity | None = None  # the severity when a machine file is given
+    versions: tuple[str, ...] = ()
 
 
-Params = (NoParams | PartNumberParams | CutterTableParams | HeaderChecksumParams | AvailabilityParams
-          | TargetParams | RangeParams
-          | MachineLimitsParams)
+@dataclass(frozen=True)
+class DeprecatedParams:
+    """A deprecation (issue 25, point 5): the commands ("NAME") or layouts ("NAME/variant") it names
+    stay valid but every record of them draws a finding, in files of ``since`` and of every version
+    after it in the spec's list. The loader fills ``versions`` from ``since`` (the YAML gives since)."""
+
+    since: str
+    deprecates: tuple[str, ...]
+    versions: tuple[str, ...] = ()
+
+
+Params = (NoParams | DeprecatedParams | ScopedParams | PartNumberParams | CutterTableParams | HeaderChecksumParams
+          | AvailabilityParams | TargetParams | RangeParams | MachineLimitsParams)
 
 Scope = Literal["file", "record"]
 
@@ -279,7 +314,8 @@ class Accepts:
 
     min: float | None = None
     max: float | None = None
-    min_open: bool = False  # min itself is refused (``positive``: > 0)
+    min_open: bool = False  # min itself is refused (``positive``: > 0; ``range`` with min_exclusive)
+    max_open: bool = False  # max itself is refused (``range`` with max_exclusive)
     nonzero: bool = False  # a vector of zeros is refused
 
 
@@ -322,6 +358,11 @@ class CheckKind:
         return "versions" in self.keys
 
     @property
+    def gates(self) -> bool:
+        """Whether a check of the kind covers (version, command) pairs (availability)."""
+        return "commands" in self.keys
+
+    @property
     def targeted(self) -> bool:
         return "targets" in self.keys
 
@@ -334,38 +375,40 @@ def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = F
 # In the order of the C engine's kind enum (and of the schema's list).
 _KINDS = (
     _k("truncated_header", NoParams, "file", "the file is shorter than the header"),
-    _k("truncated_record", NoParams, "file", "the file ends inside a record"),
+    _k("truncated_record", ScopedParams, "file", "the file ends inside a record"),
     _k("part_number", PartNumberParams, "file", "the implant descriptor's first word is the given part number"),
-    _k("descriptor_word", NoParams, "file", "the implant descriptor holds a word"),
+    _k("descriptor_word", ScopedParams, "file", "the implant descriptor holds a word"),
     _k("cutter_table", CutterTableParams, "record", "cutters agree with the given cutter table"),
-    _k("file_checksum", NoParams, "file", "the file checksum matches a coverage of the profile"),
-    _k("command_count", NoParams, "file", "the header's count is the number of records"),
+    _k("file_checksum", ScopedParams, "file", "the file checksum matches a coverage of the profile"),
+    _k("command_count", ScopedParams, "file", "the header's count is the number of records"),
     _k("header_checksum", HeaderChecksumParams, "file",
        "the header checksum field it names (its `field`, a checksum tag) matches"),
-    _k("magic", NoParams, "file", "the start and end patterns hold their values", kaitai=True),
-    _k("sequence", NoParams, "record", "record i carries sequence number i"),
-    _k("code_copy", NoParams, "record", "the code copy equals the code", kaitai=True),
-    _k("arg_size", NoParams, "record", "nb is the size of a layout of the version", kaitai=True),
-    _k("arg_checksum", NoParams, "record", "the argument checksum matches"),
-    _k("continuity", NoParams, "record", "a motion starts where the last one ended"),
+    _k("magic", ScopedParams, "file", "the start and end patterns hold their values", kaitai=True),
+    _k("sequence", ScopedParams, "record", "record i carries sequence number i"),
+    _k("code_copy", ScopedParams, "record", "the code copy equals the code", kaitai=True),
+    _k("arg_size", ScopedParams, "record", "nb is the size of a layout of the version", kaitai=True),
+    _k("arg_checksum", ScopedParams, "record", "the argument checksum matches"),
+    _k("continuity", ScopedParams, "record", "a motion starts where the last one ended"),
     _k("availability", AvailabilityParams, "record", "the version has the command", kaitai=True),
     _k("version", NoParams, "file", "the header's version is a version of the spec"),
-    _k("unknown_code", NoParams, "record", "the command code is in the table"),
-    _k("trailing", NoParams, "file", "no byte follows the last record"),
-    _k("reserved_byte", NoParams, "record", "the record's reserved byte is 0"),
-    _k("string_tail", NoParams, "record", "only NULs follow a string's first NUL"),
-    _k("string_ascii", NoParams, "record", "strings are printable ASCII"),
-    _k("finite", NoParams, "record", "float arguments are finite"),
+    _k("unknown_code", ScopedParams, "record", "the command code is in the table"),
+    _k("trailing", ScopedParams, "file", "no byte follows the last record"),
+    _k("reserved_byte", ScopedParams, "record", "the record's reserved byte is 0"),
+    _k("string_tail", ScopedParams, "record", "only NULs follow a string's first NUL"),
+    _k("string_ascii", ScopedParams, "record", "strings are printable ASCII"),
+    _k("finite", ScopedParams, "record", "float arguments are finite"),
     _k("positive", TargetParams, "record", "target arguments are > 0", target=_NUM, accepts=_at_least(0.0, True)),
     _k("nonzero_vector", TargetParams, "record", "target vectors are not all zero", target=_VEC,
        accepts=lambda check: Accepts(nonzero=True)),
     _k("range", RangeParams, "record", "target arguments lie within min..max", target=_NUM,
-       accepts=lambda check: Accepts(min=check.min, max=check.max)),
+       accepts=lambda check: Accepts(min=check.min, max=check.max, min_open=check.min_exclusive,
+                                     max_open=check.max_exclusive)),
     _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record", target=_NUM),
     _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
-    _k("orientation", NoParams, "record", "a 5-axis command starts at the current orientation"),
-    _k("shape", NoParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
+    _k("orientation", ScopedParams, "record", "a 5-axis command starts at the current orientation"),
+    _k("shape", ScopedParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
     _k("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits"),
+    _k("deprecated", DeprecatedParams, "record", "a deprecated command or layout draws a finding"),
 )
 
 CHECK_KINDS: dict[str, CheckKind] = {k.name: k for k in _KINDS}

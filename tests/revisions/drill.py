@@ -188,7 +188,11 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     lacks = [str(c["name"]) for c in cmds if not _has(c, nid) or c is drop]
     writable = [str(v["id"]) for v in versions if v.get("writable")]
     unwritable = [v for v in versions if not v.get("writable")]
+    older = max((v for v in versions if v is not newest), key=_key, default=newest)  # the newest but one
     out = {"newest_version": nid, "newest_major": str(newest["major"]), "newest_header": str(newest["header"]),
+           "older_version": str(older["id"]), "older_major": str(older["major"]),
+           "older_minor": str(older.get("minor") or 0),
+           "newest_lacks": _flow([str(c["name"]) for c in cmds if not _has(c, nid)]),  # what a copy of it lacks
            "new_version": f"{major}.0", "new_major": str(major), "free_clause": clause, "free_code": str(code),
            "free_code_hex": f"{code:02x}", "writable": _flow(writable),
            "writable_with_new": _prose([*writable, f"{major}.0"]),
@@ -198,10 +202,18 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     # The header of the newest version that still reserves the checksum bytes (4.2: offset 10, 6 bytes
     # "reserved for future checksum usage"), the newest header when none does.
     headers = doc.get("headers", {})
-    reserve = next((str(v["header"]) for v in sorted(versions, key=_key, reverse=True)
-                    if any(f.get("role") == "reserved" and f.get("offset") == 10 and f.get("size", 0) >= 4
-                           for f in headers.get(v["header"], {}).get("fields", ()))), str(newest["header"]))
-    out["reserve_header"] = reserve
+    reserving = [v for v in sorted(versions, key=_key, reverse=True)
+                 if any(f.get("role") == "reserved" and f.get("offset") == 10 and f.get("size", 0) >= 4
+                        for f in headers.get(v["header"], {}).get("fields", ()))]
+    out["reserve_header"] = str(reserving[0]["header"]) if reserving else str(newest["header"])
+    # The newest version whose header reserves those bytes, and the one before it: a fixture's golden
+    # files written with _header_v3.inc (zeros there) name these, so that they hold on top of a
+    # revision whose newest header fills a checksum there (header_crc).
+    rv = reserving[0] if reserving else newest
+    ro = reserving[1] if len(reserving) > 1 else older
+    out.update({"reserve_version": str(rv["id"]), "reserve_major": str(rv["major"]),
+                "reserve_older_version": str(ro["id"]), "reserve_older_major": str(ro["major"]),
+                "reserve_older_minor": str(ro.get("minor") or 0)})
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",

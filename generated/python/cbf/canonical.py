@@ -292,12 +292,12 @@ def from_canonical(doc: Any) -> Cbf:
         code = r.get(names["code"])
         if code is None:
             cname = r.get("command")
-            if cname not in T.BY_NAME:
+            if cname not in T.BY_ANY_NAME:
                 raise JsonShapeError(f"{w}: needs {names['code']} or a known command name, got {cname!r}")
-            code = T.BY_NAME[cname].code
+            code = T.BY_ANY_NAME[cname].code
         code = _uint(code, f"{w}.{names['code']}", 1)
         cmd = T.BY_CODE.get(code)
-        if r.get("command") is not None and (cmd is None or r["command"] != cmd.name):
+        if r.get("command") is not None and (cmd is None or T.BY_ANY_NAME.get(r["command"]) is not cmd):
             raise JsonShapeError(f"{w}.command: {r['command']!r} does not match code 0x{code:02X}")
         args = r.get("args")
         if args is not None:

@@ -274,6 +274,10 @@ def _command(c: dict[str, Any]) -> CommandInfo:
 COMMANDS: tuple[CommandInfo, ...] = tuple(_command(c) for c in SPEC["commands"])
 BY_CODE = {c.code: c for c in COMMANDS}
 BY_NAME = {c.name: c for c in COMMANDS}
+# What readers (CUT, JSON) accept: every name, and each command's former names (issue 25, point 6);
+# writers write ``CommandInfo.name``.
+BY_ANY_NAME = {**{old: BY_CODE[c["code"]] for c in SPEC["commands"] for old in c.get("former_names", ())},
+               **BY_NAME}
 
 CHECKS: tuple[dict[str, Any], ...] = tuple(SPEC["checks"])
 
@@ -286,6 +290,12 @@ def _checks_by_kind() -> dict[str, tuple[dict[str, Any], ...]]:
 
 
 _CHECKS_BY_KIND = _checks_by_kind()
+
+
+@cache
+def scoped_out(version: str) -> frozenset[str]:
+    """The ids of the checks whose ``versions:`` leave out ``version`` (they judge no file of it)."""
+    return frozenset(c["id"] for c in SPEC["checks"] if c["versions"] and version not in c["versions"])
 
 
 def checks_of(kind: str) -> tuple[dict[str, Any], ...]:

@@ -125,7 +125,12 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
     if part_number is not None:
         _part_number(out, info, header, part_number)
     _descriptor_word(out, info, header)
-    return iter(heapq.merge(sorted(out.findings, key=finding_order), stream, key=finding_order))
+    merged = iter(heapq.merge(sorted(out.findings, key=finding_order), stream, key=finding_order))
+    elsewhere = T.scoped_out(version)
+    # a check scoped to other versions (versions:) judges nothing in this file, as in the C engine
+    if elsewhere:
+        return (f for f in merged if f.check not in elsewhere)
+    return merged
 
 
 def _decoded_source(model: Cbf) -> tuple[bytes, tuple[Sequence[int], int]] | None:

@@ -214,6 +214,7 @@ class CommandRow:
     per_version: tuple[VersionLayouts, ...]
     first_ct: int
     n_ct: int
+    former: tuple[str, ...] = ()  # macros of the command's former names (issue 25, point 6): aliases
 
 
 @dataclass(frozen=True)
@@ -276,6 +277,8 @@ class CheckRow:
     min: str
     has_max: int
     max: str
+    min_open: int
+    max_open: int
     text: str
     fails: str
     clause: str
@@ -394,6 +397,7 @@ class Checks:
     ntargets: int
     tnames: tuple[str, ...]
     tindex: tuple[tuple[int, ...], ...]  # per target argument, its index in each layout (-1: none)
+    deprecated: tuple[int, ...] = ()  # per layout: the deprecation check that names it (-1: none)
 
 
 @dataclass(frozen=True)
@@ -539,7 +543,8 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
             id=ch.id, macro=macro(ch.id), kind="KIND_" + macro(ch.kind), kind_name=ch.kind, severity=ch.severity,
             error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
             n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(ch.min or 0.0),
-            has_max=int(ch.max is not None), max=cfloat(ch.max or 0.0), text=comment(ch.text),
+            has_max=int(ch.max is not None), max=cfloat(ch.max or 0.0), min_open=int(ch.min_exclusive),
+            max_open=int(ch.max_exclusive), text=comment(ch.text),
             fails=comment(ch.fails), clause=ch.clause or "", decision=ch.decision or ""))
         targets.extend((cmd_index[t.command], ci, f"{t.command} {' '.join(t.args)}", tuple(t.args))
                        for t in ch.targets)
@@ -639,7 +644,8 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
             cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
             per_version=tuple(VersionLayouts(macro=macro(v.id), layouts=tuple(x for x in mine if v.id in x.versions))
                               for v in spec.versions),
-            first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci]))
+            first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci],
+            former=tuple(macro(n) for n in c.former_names)))
     code_of = {c.code: c for c in commands}
     cmds = Commands(
         commands=tuple(commands), sorted_commands=tuple(sorted(commands, key=lambda c: c.code)),
@@ -651,7 +657,10 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
                         for k, t in enumerate(targets))
     checks = Checks(checks=check_rows, targets=target_rows or (TargetRow(command=-1, first=0, n=0, text="none"),),
                     ntargets=len(targets), tnames=tuple(tnames) or ("",),
-                    tindex=tuple(tindex) or (tuple([-1] * len(layouts)),))
+                    tindex=tuple(tindex) or (tuple([-1] * len(layouts)),),
+                    deprecated=tuple(next((i for i, ch in enumerate(spec.checks) if ch.kind == "deprecated"
+                                           and ch.deprecates_layout(c.name, lay.variant)), -1)
+                                     for c in spec.commands for lay in c.layouts) or (-1,))
     return cmds, checks
 
 

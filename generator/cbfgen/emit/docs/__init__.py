@@ -21,7 +21,7 @@ import struct
 from pathlib import Path
 from typing import Any
 
-from ... import __version__
+from ... import __version__, registry
 from ...diff import version_steps
 from ...model import Check, Command, Layout, Spec, ident
 from ...render import environment
@@ -486,6 +486,10 @@ def _why(k: Check, c: Command) -> str | None:
             return None
         missing = [v for v in k.versions if not c.available_in(v)]
         return f"{c.name} is not in version {', '.join(missing)}" if missing else None
+    if k.kind == "deprecated":  # issue 25, point 5: the command, or which of its layouts, since when
+        lays = [lay.variant or "primary" for lay in c.layouts if k.deprecates_layout(c.name, lay.variant)]
+        what = c.name if len(lays) == len(c.layouts) else f"{c.name} layout {', '.join(lays)}"
+        return f"deprecated: {what}, since version {k.since}" if lays else None
     reasons = {
         "continuity": "a motion command" if c.motion else None,
         "orientation": "a 5-axis command" if c.orientation else None,
@@ -498,6 +502,23 @@ def _why(k: Check, c: Command) -> str | None:
     return reasons.get(k.kind)
 
 
+def _scope(k: Check) -> str:
+    """What a check's parameters add to its prose: the versions it judges (issue 25, point 4; an
+    availability check's versions are its subject, said in its text) and a range's open or closed
+    bounds."""
+    out = []
+    if k.versions and not registry.kind(k.kind).gates and k.kind != "deprecated":
+        out.append(f"Judges files of version {', '.join(k.versions)} only.")
+    if k.kind == "range":
+        lo = "-inf" if k.min is None else f"{k.min:g}"
+        hi = "inf" if k.max is None else f"{k.max:g}"
+        out.append(f"Range {'(' if k.min_exclusive or k.min is None else '['}{lo}, {hi}"
+                   f"{')' if k.max_exclusive or k.max is None else ']'}.")
+    if k.kind == "deprecated":
+        out.append(f"Deprecates {', '.join(k.deprecates)} in files of version {', '.join(k.versions)}.")
+    return (" " + " ".join(out)) if out else ""
+
+
 def _checks_of(spec: Spec, c: Command) -> list[tuple[Check, str]]:
     return [(k, why) for k in spec.checks if (why := _why(k, c)) is not None]
 
@@ -505,6 +526,7 @@ def _checks_of(spec: Spec, c: Command) -> list[tuple[Check, str]]:
 def _environment(spec: Spec) -> Any:
     env = environment(HERE / "templates")
     env.filters["anchor"] = _anchor
+    env.filters["scope"] = _scope
     env.filters["page"] = command_page
     env.filters["case_page"] = case_page
     env.filters["layout_svg"] = layout_svg

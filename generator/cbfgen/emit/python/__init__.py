@@ -68,7 +68,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "record": {"head_size": spec.record.head_size, "fields": [_field_data(f) for f in spec.record.fields]},
         "commands": [
             {
-                "name": c.name, "code": c.code, "motion": c.motion, "orientation": c.orientation, "shape": c.shape,
+                "name": c.name, "former_names": list(c.former_names), "code": c.code, "motion": c.motion,
+                "orientation": c.orientation, "shape": c.shape,
                 "cutter": c.cutter, "progress": c.progress, "sets": c.sets,
                 "layouts": [
                     {"variant": lay.variant, "class": lay.class_name, "versions": list(lay.versions),
@@ -98,7 +99,9 @@ def spec_data(spec: Spec) -> dict[str, Any]:
             {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
              "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
-             "min": c.min, "max": c.max, "input": c.input, "input_severity": c.input_severity,
+             "min": c.min, "max": c.max, "min_exclusive": c.min_exclusive, "max_exclusive": c.max_exclusive,
+             "since": c.since, "deprecates": list(c.deprecates),
+             "input": c.input, "input_severity": c.input_severity,
              "field": c.checksum_field,
              "accepts": None if (a := check_kind(c.kind).accepted(c)) is None else asdict(a)}
             for c in spec.checks

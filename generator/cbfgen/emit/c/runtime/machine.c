@@ -48,6 +48,8 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][out] : NULL;
         char msg[256];
         cbf_finding fd;
+        if (cbf__checks[r->check].versions && !(cbf__checks[r->check].versions & CBF__VBIT(v->eff)))
+            return; /* scoped to other versions (versions:) */
         (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
                        cbf__commands[cmd].name, f ? f->name : "?", axis ? " " : "", axis ? axis : "", (double)x[out],
                        cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[out],

@@ -68,6 +68,7 @@ typedef struct cbf__check {
     size_t first_target, ntargets;
     int has_min; double min;
     int has_max; double max;
+    int min_open, max_open; /* range: the bound excludes its value (> min, < max) */
 } cbf__check;
 
 static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;

@@ -198,6 +198,9 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                          cbf__commands[cmd].name, cbf__versions[v.eff].id);
             if (!seen[cmd].accepted)
                 cbf__arg_size(&v, cmd, profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
+            if (layout != CBF_LAYOUT__NONE && cbf__deprecated[layout] >= 0)
+                cbf__say(&v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
+                         cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
             if (layout != CBF_LAYOUT__NONE)
                 cbf__decoded_checks(&v, layout, args, rec, pos);
         }

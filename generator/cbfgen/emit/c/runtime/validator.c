@@ -30,6 +30,9 @@ static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fm
 {
     char msg[256];
     cbf_finding f;
+    unsigned scope = cbf__checks[ci].versions;
+    if (scope && !(scope & CBF__VBIT(v->eff)))
+        return; /* a check scoped to other versions (versions:) judges nothing in this file */
     (void)vsnprintf(msg, sizeof msg, fmt, ap);
     f.check = cbf__checks[ci].id;
     f.severity = cbf__checks[ci].severity;
@@ -49,6 +52,17 @@ static void cbf__say(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt
     va_start(ap, fmt);
     cbf__vsay(v, ci, rec, off, fmt, ap);
     va_end(ap);
+}
+
+/* A deprecation check's first version: the lowest bit of its mask (the loader makes the mask
+ * since and every version after it). */
+static int cbf__deprecation_since(int ci)
+{
+    int i;
+    for (i = 0; i < CBF__NVERSIONS; i++)
+        if (cbf__checks[ci].versions & CBF__VBIT(i))
+            return i;
+    return 0;
 }
 
 /* A finding for every check of a kind. */
@@ -512,13 +526,18 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
             cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
         break;
     case CBF__KIND_RANGE:
-        if ((ch->has_min && x < ch->min) || (ch->has_max && x > ch->max)) {
+        if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
+            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
+            /* findings.range_text's words */
             if (ch->has_min && ch->has_max)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %g..%g", cbf__commands[cmd].name,
-                         f->name, x, ch->min, ch->max);
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+            else if (ch->has_min)
+                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
             else
                 cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->has_min ? ">=" : "<=", ch->has_min ? ch->min : ch->max);
+                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
         }
         break;
     case CBF__KIND_NONDECREASING:
@@ -534,6 +553,7 @@ CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const c
      * machine_limits here). */
     case CBF__KIND_ORDERED:          /* cbf__ordered */
     case CBF__KIND_MACHINE_LIMITS:   /* cbf__machine_at (machine.h.j2) */
+    case CBF__KIND_DEPRECATED:       /* cbf_validate's record loop (cbf__deprecated) */
     case CBF__KIND_FINITE:           /* the layout function (validator_layouts.c.j2) */
     case CBF__KIND_STRING_TAIL:      /* cbf__check_string */
     case CBF__KIND_STRING_ASCII:     /* cbf__check_string */

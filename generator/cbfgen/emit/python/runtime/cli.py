@@ -351,8 +351,27 @@ def cmd_encode(a: argparse.Namespace) -> int:
     if len(a.files) > 1:
         raise _Usage("cbf encode: one FILE with -o; several only with --check (see cbf encode --help)")
     a.file = a.files[0]
-    _write(a.output, _encode_one(a))
+    data = _encode_one(a)
+    _write(a.output, data)
+    _warn_deprecated(a.output, data)
     return EXIT_OK
+
+
+def _warn_deprecated(label: str, data: bytes, most: int = 10) -> None:
+    """Writers warn (stderr, exit status unchanged) for each record of a command or layout the
+    written version deprecates: the spec's deprecated checks, as validate reports them."""
+    from . import tables as T
+    from .validation import iter_findings
+
+    ids = {c["id"] for c in T.checks_of("deprecated")}
+    if not ids:
+        return
+    found = [f for f in iter_findings(data) if f.check in ids]
+    for f in found[:most]:
+        sys.stderr.write(f"cbf: warning: {label}: record {f.record} at offset {f.offset}: {f.message} "
+                         f"(check {f.check}, {f.severity})\n")
+    if len(found) > most:
+        sys.stderr.write(f"cbf: warning: {label}: {len(found) - most} more deprecated record(s)\n")
 
 
 def _cut_line_of(text: str, message: str) -> int | None:
@@ -756,6 +775,7 @@ def cmd_convert(a: argparse.Namespace) -> int:
     except CbfError as exc:
         raise _Fail(f"{a.file}: {exc}") from None
     _write(a.output, out)
+    _warn_deprecated(a.output, out)
     report = sys.stderr if a.output == "-" else sys.stdout
     report.write(f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
                  f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "

@@ -276,8 +276,12 @@ def _line_target(src: T.CommandInfo, version: str) -> tuple[T.CommandInfo, T.Lay
         if not m or m["kind"] != "line" or "through" in m or not c.layouts_for(version):
             continue
         has_path = bool(c.orientation and c.orientation["kind"] == "path")
-        if has_path == want_path:
-            return c, c.layouts_for(version)[0]
+        # a layout whose every argument the segments give: the motion's start and end, the path's ends
+        given = {m.get("start"), m.get("end")} | ({c.orientation.get("start"), c.orientation.get("end")}
+                                                  if has_path and c.orientation else set())
+        lay = next((x for x in c.layouts_for(version) if all(f.reserved or f.name in given for f in x.args)), None)
+        if has_path == want_path and lay is not None:
+            return c, lay
     return None
 
 
@@ -461,7 +465,10 @@ def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill
             segments += len(pts) - 1
             if shape_open is not None:
                 extra += len(pts) - 2
-            out.extend(_segments(target, cmd, args, pts, r.reserved))
+            try:
+                out.extend(_segments(target, cmd, args, pts, r.reserved))
+            except ConvertError as exc:  # the record and the reason
+                raise ConvertError(f"{where}: {exc}", offset=r.offset) from None
             if len(out) > T.LIMITS["max_commands"]:
                 raise ConvertError(f"{where}: the result passes {T.LIMITS['max_commands']} records, the most the "
                                    f"count holds; raise --chord-tol", offset=r.offset)

@@ -52,6 +52,9 @@ def keyword(cmd: T.CommandInfo) -> str:
 
 
 _BY_KEYWORD = {keyword(c): c for c in T.COMMANDS}
+# a former name's keyword reads as the command (issue 25, point 6); to_cut writes the new keyword
+_BY_KEYWORD.update({(n.lower() if C["keyword_case"] == "lower" else n): c for n, c in T.BY_ANY_NAME.items()
+                    if n != c.name})
 
 
 def _show(text: str) -> str:

@@ -61,9 +61,12 @@ def availability_checks() -> dict[tuple[str, str], Check]:
 def range_text(ch: Mapping[str, Any]) -> str:
     """How a value fails a range check; either bound may be absent from the spec."""
     lo, hi = ch["min"], ch["max"]
+    lo_open, hi_open = ch.get("min_exclusive", False), ch.get("max_exclusive", False)
     if lo is not None and hi is not None:
-        return f"outside {lo:g}..{hi:g}"
-    return f"must be >= {lo:g}" if lo is not None else f"must be <= {hi:g}"
+        return f"outside {'(' if lo_open else '['}{lo:g}..{hi:g}{')' if hi_open else ']'}"
+    if lo is not None:
+        return f"must be {'>' if lo_open else '>='} {lo:g}"
+    return f"must be {'<' if hi_open else '<='} {hi:g}"
 
 
 def string_value(raw: bytes) -> str:

@@ -493,7 +493,9 @@ def _range(r: Records, check: Check, b: Batch) -> None:
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
             with np.errstate(invalid="ignore"):
-                bad = np.nonzero(np.isfinite(v) & ((v < lo) | (v > hi)))[0]
+                out = ((v <= lo) if check["min_exclusive"] else (v < lo)) | ((v >= hi) if check["max_exclusive"]
+                                                                           else (v > hi))
+                bad = np.nonzero(np.isfinite(v) & out)[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad,
                   _valued(f"{b.cmd.name}.{nm} is ", v, f", {range_text(check)}"))
 
@@ -835,6 +837,16 @@ def _has_rules(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
     return bool(machine_rules(check, cmd.name, lay.variant))
 
 
+def _deprecates(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
+    return cmd.name in check["deprecates"] or f"{cmd.name}/{lay.variant}" in check["deprecates"]
+
+
+def _deprecated(r: Records, check: Check, b: Batch) -> None:
+    """Every record of a deprecated command or layout (its versions: validation's scope filter)."""
+    r.add(check, b.rows, r.off[b.rows] + T.RECORD_FIELDS[T.I_CODE].offset, b.rows,
+          _const(f"{b.cmd.name} is deprecated since version {check['since']}"))
+
+
 def _moves_or_shapes(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
     return cmd.motion is not None or cmd.shape is not None
 
@@ -862,6 +874,7 @@ KERNELS: dict[str, Kernel] = {
     "orientation": Kernel(batch=_orientation, end=_orientation_end, applies=_has_role("orientation")),
     "shape": Kernel(batch=_shape, end=_shape_end, applies=_moves_or_shapes),
     "machine_limits": Kernel(batch=_machine_limits, applies=_has_rules),
+    "deprecated": Kernel(batch=_deprecated, applies=_deprecates),
 }
 
 @lru_cache(maxsize=2)

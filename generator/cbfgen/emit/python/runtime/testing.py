@@ -96,7 +96,8 @@ class _Limits:
 
     lo: float | None = None
     hi: float | None = None
-    lo_open: bool = False  # lo itself is refused
+    lo_open: bool = False  # lo itself is refused (positive; a range's min_exclusive)
+    hi_open: bool = False  # hi itself is refused (a range's max_exclusive)
     nonzero: bool = False
     monotone: list[str] = field(default_factory=list)  # keys of nondecreasing checks
 
@@ -132,7 +133,7 @@ def _rules() -> _Rules:
 
 
 def _bound(lim: _Limits, acc: Mapping[str, Any]) -> None:
-    """Narrows ``lim`` to what one check accepts (its ``accepts``: min, max, min_open, nonzero)."""
+    """Narrows ``lim`` to what one check accepts (its ``accepts``: min, max, min_open, max_open, nonzero)."""
     lo, hi = acc["min"], acc["max"]
     if lo is not None:
         if lim.lo is None or lo > lim.lo:
@@ -140,7 +141,10 @@ def _bound(lim: _Limits, acc: Mapping[str, Any]) -> None:
         elif lo == lim.lo:
             lim.lo_open = lim.lo_open or bool(acc["min_open"])
     if hi is not None:
-        lim.hi = hi if lim.hi is None else min(lim.hi, hi)
+        if lim.hi is None or hi < lim.hi:
+            lim.hi, lim.hi_open = hi, bool(acc["max_open"])
+        elif hi == lim.hi:
+            lim.hi_open = lim.hi_open or bool(acc["max_open"])
     lim.nonzero = lim.nonzero or bool(acc["nonzero"])
 
 
@@ -260,6 +264,8 @@ class _Draw:
             lo = max(lo, lim.lo)
         if lim.hi is not None:
             hi = min(hi, lim.hi)
+            if lim.hi_open and hi == lim.hi:
+                hi = _f32_step(_f32(hi), up=False)  # an open bound: the binary32 just below it
         for key in lim.monotone:
             if key in self.state.prev:
                 lo = max(lo, self.state.prev[key])
