@@ -118,7 +118,7 @@ def _every_command_file(size: int, version_id: str | None = None) -> bytes:
         for f in lay.args:
             if f.kind == "float":
                 values[f.name] = tuple([0.0] * (f.count - 1) + [1.0]) if f.count > 1 else 1.0
-            elif f.kind == "uint":
+            elif f.kind in ("uint", "sint"):  # any integer the registry carries, signed or not
                 values[f.name] = 1
             elif f.kind == "string":
                 values[f.name] = "B"
