@@ -20,11 +20,10 @@ from pathlib import Path
 from ...model import Spec
 from ...options import option_rules
 from ...render import environment
-from .cnames import cfloat, cname, comment, cstr, ctype, field_type, macro
+from .cnames import cfloat, cname, comment, cstr, ctype, macro
 from .views import CContext, context
 
-__all__ = ["CContext", "cfloat", "cname", "comment", "context", "cstr", "ctype", "emit", "field_type", "macro",
-           "runtime_section"]
+__all__ = ["CContext", "cfloat", "cname", "comment", "context", "cstr", "ctype", "emit", "macro", "runtime_section"]
 
 HERE = Path(__file__).parent
 OUT = "c"

@@ -7,7 +7,6 @@ import re
 
 from ...escape import RESERVED, c_comment, c_string, keyword_clash, one_line
 from ...model import Field
-from ...registry import TYPES, FieldType
 
 
 def cname(name: str) -> str:
@@ -48,18 +47,10 @@ def cfloat(x: float) -> str:
     return r if any(c in r for c in ".eE") else r + ".0"
 
 
-def field_type(f: Field) -> FieldType:
-    """The registry's type of a field: the one of its kind and element size."""
-    for t in TYPES.values():
-        if t.kind == f.kind and t.size in (None, f.elem_size):
-            return t
-    raise ValueError(f"C binding: {f.name}: no registered type of kind {f.kind!r} and {f.elem_size} bytes")
-
-
 def ctype(f: Field) -> tuple[str, str]:
     """(type, array suffix) of a struct member for a field: the registry type's C type, an array
     of them for a vector; a string is char[N + 1] (NUL-terminated copy), bytes uint8_t[N]."""
-    t = field_type(f)
+    t = f.ftype
     if t.c_type is not None:
         return t.c_type, (f"[{f.count}]" if f.count > 1 else "")
     if t.kind == "string":
@@ -69,7 +60,7 @@ def ctype(f: Field) -> tuple[str, str]:
 
 def member_doc(f: Field, units: dict[str, str]) -> str:
     parts = [f.doc.rstrip(".") + "."]
-    t = field_type(f)
+    t = f.ftype
     what = (f"string({f.size}), NUL-terminated copy" if t.kind == "string" else f"{f.size} raw bytes"
             if t.kind == "bytes" else t.float_format.removeprefix("IEEE-754 ") if t.float_format
             else f"{t.kind[0]}{t.bits}")  # u32, s16
