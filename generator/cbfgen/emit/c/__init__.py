@@ -20,10 +20,10 @@ from pathlib import Path
 from ...model import Spec
 from ...options import option_rules
 from ...render import environment
-from .cnames import cfloat, cname, comment, cstr, ctype, macro
+from .cnames import cfloat, cname, comment, ctype, macro
 from .views import CContext, context
 
-__all__ = ["CContext", "cfloat", "cname", "comment", "context", "cstr", "ctype", "emit", "macro", "runtime_section"]
+__all__ = ["CContext", "cfloat", "cname", "comment", "context", "ctype", "emit", "macro", "runtime_section"]
 
 HERE = Path(__file__).parent
 OUT = "c"
@@ -55,7 +55,6 @@ def _resume_lines(text: str) -> str:
 def emit(spec: Spec) -> dict[str, bytes]:
     env = environment(HERE / "templates")
     env.globals["runtime"] = runtime_section
-    env.filters["cstr"] = cstr
     env.filters["comment"] = comment
     env.filters["cname"] = cname
     env.filters["macro"] = macro

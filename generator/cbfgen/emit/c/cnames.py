@@ -1,11 +1,12 @@
-"""Spec names and text as C: identifiers, macros, string literals, comments, numbers, and the C type
-of a field (from the registry). Every spec string reaches cbf.h through these (escape.py's C rules)."""
+"""Spec names and text as C: identifiers, macros, comments, numbers, and the C type of a field (from
+the registry). Every spec string reaches cbf.h through these or render.py's c_str filter (string
+literals): escape.py's C rules."""
 
 from __future__ import annotations
 
 import re
 
-from ...escape import RESERVED, c_comment, c_string, keyword_clash, one_line
+from ...escape import RESERVED, c_comment, keyword_clash, one_line
 from ...model import Field
 
 
@@ -23,11 +24,6 @@ def cname(name: str) -> str:
 def macro(name: str) -> str:
     """An upper-case macro fragment for a spec id ("9.8.7" -> 9_8_7, "1.x" -> 1_X), ASCII only."""
     return re.sub(r"\W+", "_", name, flags=re.ASCII).strip("_").upper()
-
-
-def cstr(text: str) -> str:
-    """A C string literal (escape.c_string: quotes, backslashes, trigraphs, every other byte octal)."""
-    return c_string(text)
 
 
 # What starts a Doxygen command, an HTML tag or an entity in a /** */ comment (clang -Wdocumentation
