@@ -43,6 +43,7 @@ from .registry import (
     COMMON_CHECK_KEYS,
     FIELD_KINDS,
     GENERATED_NAMES,
+    NUMERIC_KINDS,
     ROLE_ARGS,
     SEVERITIES,
     TYPES,
@@ -390,7 +391,7 @@ def _repeat(ctx: _Ctx, lay: _Map, name: str, fixed: int, rep: Field, max_nb: int
     if lo == 0 and fixed == 0:
         ctx.fail(raw_rep, f"{name} argument {rep.name}: repeat min 0 with no fixed argument leaves nb = 0 "
                           f"ambiguous with a command that takes no arguments", "repeat")
-    if rep.kind not in ("uint", "sint", "float"):
+    if rep.kind not in NUMERIC_KINDS:
         ctx.fail(raw_rep, f"{name} argument {rep.name}: only numbers repeat (type {rep.type})", "repeat")
     if fixed + rep.size * hi > max_nb:
         ctx.fail(raw_rep, f"{name} argument {rep.name}: {fixed} + {rep.size} x {hi} = {fixed + rep.size * hi} "
