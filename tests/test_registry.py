@@ -20,18 +20,21 @@ from conftest import REPO, dump_yaml, spec_doc
 
 from cbfgen import loader, registry
 from cbfgen.loader import load
+from cbfgen.model import ALGORITHM_KINDS
 from cbfgen.registry import CHECK_KINDS, TYPES, FieldType, kinds_with, unsupported
 
 
 def test_the_schema_names_no_type_and_no_kind_itself() -> None:
     on_disk = (REPO / "generator" / "cbfgen" / "spec.schema.json").read_text(encoding="utf-8")
-    for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"'):
+    for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"', '"crc32"'):
         assert word not in on_disk, word
     schema = loader._schema()
     assert schema["$defs"]["field"]["properties"]["type"]["enum"] == list(TYPES)
     assert schema["properties"]["checks"]["items"]["properties"]["kind"]["enum"] == list(CHECK_KINDS)
     assert schema["properties"]["types"]["additionalProperties"]["properties"]["kind"]["enum"] == list(
         registry.FIELD_KINDS)
+    algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
+    assert algorithm["properties"]["kind"]["enum"] == list(ALGORITHM_KINDS)
 
 
 def test_every_kind_of_the_registry_has_one_python_implementation() -> None:

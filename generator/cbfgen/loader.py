@@ -221,13 +221,16 @@ class _Ctx:
 
 def _schema() -> dict[str, Any]:
     """spec.schema.json with its vocabulary enums filled from the registry (field types, type
-    kinds, check kinds, severities): the schema names no type and no kind itself."""
+    kinds, check kinds, severities) and the model (checksum algorithm kinds): the schema names no
+    type and no kind itself."""
     schema: dict[str, Any] = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
     schema["$defs"]["field"]["properties"]["type"] = {"enum": list(TYPES)}
     schema["properties"]["types"]["additionalProperties"]["properties"]["kind"] = {"enum": list(FIELD_KINDS)}
     check = schema["properties"]["checks"]["items"]["properties"]
     check["kind"] = {"enum": list(CHECK_KINDS)}
     check["severity"] = check["input_severity"] = {"enum": list(SEVERITIES)}
+    algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
+    algorithm["properties"]["kind"] = {"enum": list(ALGORITHM_KINDS)}
     return schema
 
 
