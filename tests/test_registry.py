@@ -26,7 +26,7 @@ from cbfgen.registry import CHECK_KINDS, TYPES, FieldType, kinds_with, unsupport
 
 def test_the_schema_names_no_type_and_no_kind_itself() -> None:
     on_disk = (REPO / "generator" / "cbfgen" / "spec.schema.json").read_text(encoding="utf-8")
-    for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"', '"crc32"'):
+    for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"', '"crc32"', '"helix"'):
         assert word not in on_disk, word
     schema = loader._schema()
     assert schema["$defs"]["field"]["properties"]["type"]["enum"] == list(TYPES)
@@ -35,6 +35,9 @@ def test_the_schema_names_no_type_and_no_kind_itself() -> None:
         registry.FIELD_KINDS)
     algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
     assert algorithm["properties"]["kind"]["enum"] == list(ALGORITHM_KINDS)
+    command = schema["properties"]["commands"]["items"]["properties"]
+    for role, kinds in registry.ROLE_KINDS.items():
+        assert command[role]["allOf"][1]["properties"]["kind"]["enum"] == list(kinds), role
 
 
 def test_every_kind_of_the_registry_has_one_python_implementation() -> None:

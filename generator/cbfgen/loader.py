@@ -45,6 +45,7 @@ from .registry import (
     GENERATED_NAMES,
     NUMERIC_KINDS,
     ROLE_ARGS,
+    ROLE_KINDS,
     SEVERITIES,
     TYPES,
     DeprecatedParams,
@@ -221,7 +222,7 @@ class _Ctx:
 
 def _schema() -> dict[str, Any]:
     """spec.schema.json with its vocabulary enums filled from the registry (field types, type
-    kinds, check kinds, severities) and the model (checksum algorithm kinds): the schema names no
+    kinds, check kinds, severities, role kinds) and the model (checksum algorithm kinds): the schema names no
     type and no kind itself."""
     schema: dict[str, Any] = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
     schema["$defs"]["field"]["properties"]["type"] = {"enum": list(TYPES)}
@@ -231,6 +232,9 @@ def _schema() -> dict[str, Any]:
     check["severity"] = check["input_severity"] = {"enum": list(SEVERITIES)}
     algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
     algorithm["properties"]["kind"] = {"enum": list(ALGORITHM_KINDS)}
+    command = schema["properties"]["commands"]["items"]["properties"]
+    for role, kinds in ROLE_KINDS.items():
+        command[role]["allOf"][1]["properties"]["kind"] = {"enum": list(kinds)}
     return schema
 
 

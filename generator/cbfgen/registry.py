@@ -196,6 +196,15 @@ ROLE_ARGS: dict[str, dict[str, RoleArg]] = {
 }
 
 
+# The kinds a command's motion, orientation and shape role may have (the schema's enums are filled
+# from here; every engine has a branch for each).
+ROLE_KINDS: dict[str, tuple[str, ...]] = {
+    "motion": ("point", "line", "circle", "helix"),
+    "orientation": ("set", "path"),
+    "shape": ("start", "end"),
+}
+
+
 def role_arg_fits(want: RoleArg, t: FieldType, count: int) -> bool:
     kind, n = want
     ok = t.kind == "float" if kind == "float" else t.kind == "string" if kind == "string" else t.is_integer

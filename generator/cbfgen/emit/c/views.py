@@ -18,13 +18,13 @@ from ...model import ALGORITHM_KINDS, Command, Field, Layout, Spec
 from .cnames import cfloat, cname, comment, ctype, macro, member_doc
 from .machine import MachineView, machine_view
 
-# The model's vocabulary the engine understands (loader.py, spec comments); the field types and
-# check kinds come from the registry (cbfgen/registry.py), never from a list here.
-MOTION_KINDS = ("point", "line", "circle", "helix")
+# The model's vocabulary the engine understands (loader.py, spec comments); the role kinds, field
+# types and check kinds come from the registry (cbfgen/registry.py), never from a list here.
+MOTION_KINDS = registry.ROLE_KINDS["motion"]
 MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length")
-ORIENT_KINDS = ("set", "path")
+ORIENT_KINDS = registry.ROLE_KINDS["orientation"]
 ORIENT_KEYS = ("start", "end")
-SHAPE_KINDS = ("start", "end")
+SHAPE_KINDS = registry.ROLE_KINDS["shape"]
 SHAPE_KEYS = ("name", "count")
 CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
