@@ -468,16 +468,13 @@ def _framing(spec: Spec) -> Framing:
     if any(f.kind != "uint" for f in spec.record.fields):
         raise ValueError("C binding: record head fields must be unsigned integers")
     rec = tuple(field_row(f, "cbf_record_head", spec.units) for f in spec.record.fields)
-    major = [f for f in next(iter(spec.headers.values())).fields if f.role == "version_major"]
-    if not major:
-        raise ValueError("C binding: the first header layout has no version_major field")
     return Framing(
         headers=headers, header_size=spec.header_size,
         record=RecordView(head_size=spec.record.head_size, fields=rec, clause=spec.record.clause,
                           doc=comment(spec.record.doc)),
         head={f.role[len("ROLE_"):]: f for f in rec if f.role != "ROLE_NONE"},
         head_checksum=next((f for f in rec if f.checksum == "CK_ARGS"), None),
-        version_major_offset=major[0].offset)
+        version_major_offset=spec.common_header_field("version_major").offset)
 
 
 def _versions(spec: Spec) -> Versions:
