@@ -11,12 +11,11 @@ is PyYAML (the expectations are YAML). `make dist` builds it next to `cbf` and `
 
 from __future__ import annotations
 
-import re
 import shutil
 import sys
 from pathlib import Path
 
-import yaml
+from conformance.runner.about import from_repo
 
 ROOT = Path(__file__).resolve().parent
 REPO = ROOT.parent
@@ -24,24 +23,14 @@ PAGE = "RUN-AGAINST-YOUR-READER.md"
 SCHEMAS = ("machine.schema.json", "canonical.schema.json")
 
 
-def toolkit_version() -> str:
-    """The toolkit version, read from its one source without importing the generator."""
-    text = (REPO / "generator" / "cbfgen" / "__init__.py").read_text(encoding="utf-8")
-    match = re.search(r'^__version__ = "([^"]+)"', text, re.M)
-    if match is None:
-        raise SystemExit("conformance.kit: no __version__ in generator/cbfgen/__init__.py")
-    return match.group(1)
-
-
-def spec_revision() -> str:
-    """The spec revision the golden cases come from, read as YAML (not as text: a revised spec written by
-    another dumper quotes its scalars its own way; the runner's about.py reads it the same way)."""
-    doc = yaml.load((REPO / "spec" / "cbf.yaml").read_text(encoding="utf-8"),
-                    Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    meta = doc.get("meta") if isinstance(doc, dict) else None
-    if not isinstance(meta, dict) or meta.get("part_number") is None or meta.get("revision") is None:
-        raise SystemExit("conformance.kit: no meta part_number / revision in spec/cbf.yaml")
-    return f"{meta['part_number']} rev {meta['revision']}"
+def _stamp() -> tuple[str, str]:
+    """The toolkit version and the spec revision, read by the runner's own reader (runner/about.py:
+    the spec as YAML, the version from its one source, without importing the generator)."""
+    found = from_repo(REPO)
+    if found is None:
+        raise SystemExit("conformance.kit: no __version__ in generator/cbfgen/__init__.py "
+                         "or no meta part_number / revision in spec/cbf.yaml")
+    return found
 
 
 def golden_files(golden: Path) -> list[Path]:
@@ -66,8 +55,9 @@ def stage(dest: Path) -> Path:
     shutil.copy2(ROOT / "PROTOCOL.md", pkg / "PROTOCOL.md")
     for schema in SCHEMAS:  # the schemas PROTOCOL.md names ship beside it
         shutil.copy2(REPO / "generated" / "python" / "cbf" / schema, pkg / schema)
+    version, revision = _stamp()
     (pkg / "_stamp.py").write_text(f'"""Written by conformance/kit.py when the kit was staged."""\n\n'
-                                   f'VERSION = {toolkit_version()!r}\nSPEC_REVISION = {spec_revision()!r}\n',
+                                   f'VERSION = {version!r}\nSPEC_REVISION = {revision!r}\n',
                                    encoding="utf-8")
     shutil.copy2(ROOT / PAGE, dest / "README.md")
     (pkg / "py.typed").write_text("", encoding="utf-8")
@@ -78,7 +68,7 @@ build-backend = "setuptools.build_meta"
 
 [project]
 name = "cbf-conformance"
-version = "{toolkit_version()}"
+version = "{version}"
 description = "Run the CBF (Cutfile Binary Format) golden cases against any reader that speaks PROTOCOL.md."
 readme = "README.md"
 requires-python = ">=3.11"

@@ -11,11 +11,12 @@ from pathlib import Path
 
 import yaml
 
-__all__ = ["SPEC_REVISION", "VERSION", "version_line"]
+__all__ = ["SPEC_REVISION", "VERSION", "from_repo", "version_line"]
 
 
-def _from_repo() -> tuple[str, str]:
-    root = Path(__file__).resolve().parents[2]
+def from_repo(root: Path) -> tuple[str, str] | None:
+    """The toolkit version and the spec revision of the repository at root, or None when either is
+    missing (the kit's stamp, conformance/kit.py, reads them here too)."""
     init = (root / "generator" / "cbfgen" / "__init__.py").read_text(encoding="utf-8")
     version = re.search(r'^__version__ = "([^"]+)"', init, re.M)
     # the spec read as YAML, not as text: a revised spec written by another dumper quotes its scalars its own way
@@ -24,7 +25,7 @@ def _from_repo() -> tuple[str, str]:
     meta = doc.get("meta") if isinstance(doc, dict) else None
     if not (version and isinstance(meta, dict) and meta.get("part_number") is not None
             and meta.get("revision") is not None):
-        return "unknown", "unknown"
+        return None
     return version.group(1), f"{meta['part_number']} rev {meta['revision']}"
 
 
@@ -32,7 +33,7 @@ def _stamped() -> tuple[str, str]:
     try:
         from . import _stamp  # type: ignore[attr-defined,unused-ignore]
     except ImportError:
-        return _from_repo()
+        return from_repo(Path(__file__).resolve().parents[2]) or ("unknown", "unknown")
     return str(_stamp.VERSION), str(_stamp.SPEC_REVISION)
 
 

@@ -69,7 +69,6 @@ __all__ = ["cutfiles", "models", "mutations", "reseal_checksums", "seal"]
 _T = TypeVar("_T")
 
 _F32 = struct.Struct("<f")
-_DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
 # Circles and helices are drawn around a centre this close to their start, so
 # that chains of them stay near the drawing box.
 _RADIUS = 10.0
@@ -375,7 +374,7 @@ def _header(draw: st.DrawFn, version: T.VersionInfo, part_number: str | None) ->
     minor = version.minor if version.minor is not None else draw(st.integers(0, (1 << (8 * T.VMINOR.size)) - 1))
     values: dict[str, Any] = {}
     for f in info.fields:
-        if f.role in _DERIVED_ROLES or f.kind != "string":
+        if f.role in T.DERIVED_ROLES or f.kind != "string":
             continue  # derived, or reserved (zero)
         if f.role == "implant_descriptor" and part_number is not None:
             rest = draw(_ascii(max(0, f.size - len(part_number) - 1), spaces=True))

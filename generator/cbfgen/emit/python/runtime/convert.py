@@ -354,7 +354,7 @@ def _carry(old: Any, src: T.LayoutInfo, dst: T.LayoutInfo, fill: Mapping[str, st
 def _header(model: Cbf, target: str) -> Any:
     src_info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
     dst_info = T.HEADERS[T.VERSION_BY_ID[target].header]
-    derived = {"start_pattern", "end_pattern", "checksum", "command_count", "version_major", "version_minor"}
+    derived = T.DERIVED_ROLES
     by_role = {f.role: f for f in src_info.fields if f.role not in derived and f.role != "reserved"}
     by_name = {f.name: f for f in src_info.fields}
     values: dict[str, Any] = {}

@@ -37,7 +37,6 @@ C = T.CUT
 EXT = C["extensions"]
 _FLOAT = re.compile(C["float_pattern"], re.ASCII)
 _SEP: str = C["arg_separator"]
-_DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
 # What a CUT line cannot hold: anything but printable ASCII, and a CR that does not end the line.
 _NOT_CUT = re.compile(r"[^\x20-\x7e\n\r]|\r(?!\n)")
 _CUT_BYTES = bytes(range(0x20, 0x7F)) + b"\n\r"
@@ -280,7 +279,7 @@ def to_cut(model: Cbf, *, profile: str = "default") -> str:
     head_line = info.by_role("implant_descriptor") is not None
     for f in info.fields:
         fb = raw[f.offset:f.end]
-        if f.role in _DERIVED_ROLES:
+        if f.role in T.DERIVED_ROLES:
             continue
         if f.role in ("implant_descriptor", "configuration_descriptor") and _plain_text(fb):
             value = fb.rstrip(T.PAD).decode("ascii")
@@ -703,7 +702,7 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
             stated.append((n, w))
         elif kw == fkw:
             name = cur.word("field name")
-            f = next((g for g in info.fields if g.name == name and g.role not in _DERIVED_ROLES), None)
+            f = next((g for g in info.fields if g.name == name and g.role not in T.DERIVED_ROLES), None)
             if f is None:
                 raise cur.fail(f"{_show(name)} is not a writable header field of layout {info.id}")
             once(cur, f.name)

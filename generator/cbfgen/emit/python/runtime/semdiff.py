@@ -37,8 +37,6 @@ from .model import Cbf, PackedRecords, Record, RecordList
 Progress = Callable[[str], None]
 _SMALL = 400  # a stretch without unique records, at most this long (both sides), goes to difflib
 
-_DERIVED = {"start_pattern", "end_pattern", "checksum", "command_count"}
-
 
 @dataclass(frozen=True)
 class ArgDelta:
@@ -118,8 +116,7 @@ def _compare(va: dict[str, Any], vb: dict[str, Any], tol: float) -> list[ArgDelt
 
 def _header_values(model: Cbf) -> dict[str, Any]:
     info = T.HEADERS[T.VERSION_BY_ID[model.version_id].header]
-    vals = {f.name: getattr(model.header, f.name) for f in info.fields if f.role not in _DERIVED
-            and f.role not in ("version_major", "version_minor")}
+    vals = {f.name: getattr(model.header, f.name) for f in info.fields if f.role not in T.DERIVED_ROLES}
     vals["version"] = "{}.{}".format(*model.version)
     return vals
 
