@@ -438,7 +438,12 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
             "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
                          "?"),
             "citing": [str(c["number"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
-            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else ""}
+            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else "",
+            # the arguments that take the rest of the line (text: true), "COMMAND's arg", once each
+            "text_args": list(dict.fromkeys(f"{c.name}'s {a.name}" for c in spec.commands for lay in c.layouts
+                                            for a in lay.args if a.text)),
+            # the header field the check line's N is compared with (the default version's file checksum)
+            "file_checksum": next((f for f in head.fields if f.checksum == "file"), None)}
 
 
 def context(spec: Spec) -> dict[str, Any]:
