@@ -173,3 +173,12 @@ def capped_run(argv: list[str], env: dict[str, str] | None, memory: int,
         resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
 
     return subprocess.run(argv, env=env, capture_output=True, text=True, preexec_fn=cap, timeout=timeout)
+
+
+def file_checksum_of(data: bytes) -> int:
+    """The file checksum an encoded CBF states in its header (the field and byte order from the model):
+    the number a CUT text's check_sum line must give."""
+    from cbf import tables as T
+
+    f = T.HEADER_CHECKSUM_FIELDS["file"]
+    return int.from_bytes(data[f.offset:f.offset + f.size], "little" if T.BO == "<" else "big")

@@ -15,6 +15,7 @@ import re
 from pathlib import Path
 
 import pytest
+from conftest import file_checksum_of
 
 import cbf
 from cbf import tables as T
@@ -24,7 +25,6 @@ from cbfgen.loader import load
 REPO = Path(__file__).resolve().parents[1]
 SPEC = load(REPO / "spec" / "cbf.yaml")
 C = T.CUT
-ORDER = "little" if T.BO == "<" else "big"
 
 
 def _page() -> str:
@@ -36,11 +36,6 @@ def _example(page: str) -> str:
     m = re.search(r"```\n(.*?)```", block, re.S)
     assert m, "the companion document has no example file"
     return m.group(1)
-
-
-def _file_checksum(data: bytes) -> int:
-    f = T.HEADER_CHECKSUM_FIELDS["file"]
-    return int.from_bytes(data[f.offset:f.offset + f.size], ORDER)
 
 
 def test_the_committed_page_is_the_generated_one() -> None:
@@ -62,7 +57,7 @@ def test_the_example_file_encodes_validates_and_decodes_back() -> None:
 
 def test_a_wrong_check_sum_is_refused_with_its_line() -> None:
     text = _example(_page())
-    good = _file_checksum(cbf.encode(cbf.from_cut(text)))
+    good = file_checksum_of(cbf.encode(cbf.from_cut(text)))
     lines = text.splitlines()
     assert cbf.from_cut("\n".join([*lines[:1], f"{C['checksum_keyword']} {good}", *lines[1:]]) + "\n")
     with pytest.raises(cbf.CutSyntaxError) as exc:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from conftest import file_checksum_of
 
 import cbf
 from cbf import tables as T
@@ -241,11 +242,6 @@ HAND_SECTIONS = [
 ]
 
 
-def _file_checksum(data: bytes) -> int:
-    f = T.HEADER_CHECKSUM_FIELDS["file"]
-    return int.from_bytes(data[f.offset:f.offset + f.size], "little" if T.BO == "<" else "big")
-
-
 def test_a_hand_written_cut_file_encodes_and_validates() -> None:
     assert len(HAND_SECTIONS) == len(HAND.splitlines())
     model = cbf.from_cut(HAND)
@@ -256,4 +252,4 @@ def test_a_hand_written_cut_file_encodes_and_validates() -> None:
     assert back.header.implant_descriptor == "PN-1234 KNEE FEMORAL SIZE 3"
     assert back.records[0].decode_args().text == "hand-written from the companion doc"
     # with the check line the document describes (section 3), the same file reads the same
-    assert cbf.from_cut(HAND + f"{T.CUT['checksum_keyword']} {_file_checksum(data)}\n") == model
+    assert cbf.from_cut(HAND + f"{T.CUT['checksum_keyword']} {file_checksum_of(data)}\n") == model
