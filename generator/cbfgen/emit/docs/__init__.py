@@ -405,9 +405,6 @@ def _document(spec: Spec) -> dict[str, Any]:
             "notes": _notes(spec)}
 
 
-DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
-
-
 def _cut_doc(spec: Spec) -> dict[str, Any]:
     """What the companion document needs beyond spec.cut: the keywords, the header fields a CUT text
     may set, the descriptor fields of the default version, the versions without a configuration
@@ -417,7 +414,7 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
     fields: list[Any] = []
     for h in spec.headers.values():
         for f in h.fields:
-            if f.role not in DERIVED_ROLES and f.name not in [g.name for g in fields]:
+            if f.role not in registry.DERIVED_HEADER_ROLES and f.name not in [g.name for g in fields]:
                 fields.append(f)
     head = spec.header_for(spec.default_version)
     by_role = {f.role: f for f in head.fields}
