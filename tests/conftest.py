@@ -6,6 +6,7 @@ import copy
 import functools
 import os
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -161,3 +162,23 @@ def clean_venv(where: Path, *wheels: Path) -> Path:
                     "--no-compile", "--disable-pip-version-check", *map(str, wheels)], check=True,
                    capture_output=True, env=env)
     return where / "bin"
+
+
+def capped_run(argv: list[str], env: dict[str, str] | None, memory: int,
+               timeout: float) -> subprocess.CompletedProcess[str]:
+    """argv under an address-space cap of ``memory`` bytes; past ``timeout`` seconds it is killed and
+    subprocess.TimeoutExpired fails the test (the time bound of the bounded-cost tests)."""
+
+    def cap() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+
+    return subprocess.run(argv, env=env, capture_output=True, text=True, preexec_fn=cap, timeout=timeout)
+
+
+def file_checksum_of(data: bytes) -> int:
+    """The file checksum an encoded CBF states in its header (the field and byte order from the model):
+    the number a CUT text's check_sum line must give."""
+    from cbf import tables as T
+
+    f = T.HEADER_CHECKSUM_FIELDS["file"]
+    return int.from_bytes(data[f.offset:f.offset + f.size], "little" if T.BO == "<" else "big")

@@ -6,6 +6,7 @@ import struct
 from pathlib import Path
 
 import pytest
+from conftest import file_checksum_of
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -58,9 +59,7 @@ comment rest of the line is the text
 check_sum {}
 """
     data = cbf.encode(cbf.from_cut(text.format(0).replace("check_sum 0\n", "")))
-    field = T.HEADER_CHECKSUM_FIELDS["file"]  # the check_sum line must state the file checksum (issue 26)
-    order = "little" if T.BO == "<" else "big"
-    model = cbf.from_cut(text.format(int.from_bytes(data[field.offset:field.offset + field.size], order)))
+    model = cbf.from_cut(text.format(file_checksum_of(data)))  # check_sum must state the file checksum (issue 26)
     assert model.header.implant_descriptor == "PN-4711 ACME KNEE 4"
     assert model.header.configuration_descriptor == "CFG-A"
     names = [r.name for r in model.records]

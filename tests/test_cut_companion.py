@@ -2,8 +2,8 @@
 
 - The document's complete example file encodes to its golden case's bytes, validates without a
   finding, and decodes back to the same text.
-- A CUT file written by hand from the document alone (HAND below, each line with the section of the
-  document it follows) encodes and validates.
+- (A CUT file written by hand from the document alone uses rev 03's commands: it is one of the rev 03
+  facts, tests/test_rev03_facts.py.)
 - What the document says the reader does: a check_sum line that is not the file checksum is refused
   (naming its line), a file without a header line is read and `validate` reports it, the version comes
   from cbf_version and not from the VERSION command, and the inputs section 6 lists are refused.
@@ -15,6 +15,7 @@ import re
 from pathlib import Path
 
 import pytest
+from conftest import file_checksum_of
 
 import cbf
 from cbf import tables as T
@@ -24,7 +25,6 @@ from cbfgen.loader import load
 REPO = Path(__file__).resolve().parents[1]
 SPEC = load(REPO / "spec" / "cbf.yaml")
 C = T.CUT
-ORDER = "little" if T.BO == "<" else "big"
 
 
 def _page() -> str:
@@ -36,11 +36,6 @@ def _example(page: str) -> str:
     m = re.search(r"```\n(.*?)```", block, re.S)
     assert m, "the companion document has no example file"
     return m.group(1)
-
-
-def _file_checksum(data: bytes) -> int:
-    f = T.HEADER_CHECKSUM_FIELDS["file"]
-    return int.from_bytes(data[f.offset:f.offset + f.size], ORDER)
 
 
 def test_the_committed_page_is_the_generated_one() -> None:
@@ -60,68 +55,9 @@ def test_the_example_file_encodes_validates_and_decodes_back() -> None:
     assert text.startswith(C["header_keyword"] + " ") and f"\n{C['header_ext_keyword']} " in text
 
 
-# Written from generated/docs/cut.md alone (rev 03's commands: a revision that drops one of them
-# rewrites this file, as it would any hand-written CUT file). Each line names the section it follows.
-HAND = """\
-header PN-1234 KNEE FEMORAL SIZE 3
-header_ext ROBODOC CFG 7
-cbf_version 4.0
-comment   hand-written from the companion doc
-cutter C6-BALL 100.5 3 12.25
-speed 0.05
-accel 1.5 2
-phase ROUGH
-point <0,0,0>
-cutter_on
-startshape SQ 2
-line < 0, 0, 0 > < 10, 0, 0 >
-line <10, 0, 0> <10, -2.5, 0>
-endshape SQ 2
-checkpoint CP1 < 10, -2.5, 0 > 50
-orient5b < 0, 0, 1 > < 0, 0.5, 1 >
-guide Remove the cutter now
-CUTTER_OFF
-version 1.0 4.0
-"""
-HAND_SECTIONS = [
-    "3 header: the implant descriptor, part number first (4.2, 6.1.1)",
-    "3 header_ext: the configuration descriptor",
-    "5 version choice: cbf_version sets the header version (4.0)",
-    "2 text: the rest of the line, spaces before it dropped (1.2)",
-    "4 cutter: word, float, float, float (the reserved bytes have no token)",
-    "4 speed: float",
-    "4 accel: float float",
-    "4 phase: word",
-    "2 vector: spaces around < , > are optional",
-    "4 cutter_on: no arguments",
-    "4 startshape: word, integer (byte)",
-    "2 vector, float: digits with an optional point",
-    "2 float: a leading minus, a point and digits",
-    "4 endshape: the same word and integer (X2)",
-    "4 checkpoint: word, vector, float",
-    "4 orient5b: two vectors (D6: need not be of unit length)",
-    "2 text: GUIDE's message is the rest of the line",
-    "1.3 command keywords in any letter case",
-    "5 the VERSION command: a record, its format string sets nothing",
-]
-
-
-def test_a_hand_written_file_encodes_and_validates() -> None:
-    assert len(HAND_SECTIONS) == len(HAND.splitlines())
-    model = cbf.from_cut(HAND)
-    assert model.version_id == "4.0"
-    data = cbf.encode(model)
-    assert [f for f in cbf.validate(data) if f.severity == "error"] == []
-    back = cbf.decode(data)
-    assert back.header.implant_descriptor == "PN-1234 KNEE FEMORAL SIZE 3"
-    assert back.records[0].decode_args().text == "hand-written from the companion doc"
-    # with the check line the document describes (section 3), the same file reads the same
-    assert cbf.from_cut(HAND + f"{C['checksum_keyword']} {_file_checksum(data)}\n") == model
-
-
 def test_a_wrong_check_sum_is_refused_with_its_line() -> None:
     text = _example(_page())
-    good = _file_checksum(cbf.encode(cbf.from_cut(text)))
+    good = file_checksum_of(cbf.encode(cbf.from_cut(text)))
     lines = text.splitlines()
     assert cbf.from_cut("\n".join([*lines[:1], f"{C['checksum_keyword']} {good}", *lines[1:]]) + "\n")
     with pytest.raises(cbf.CutSyntaxError) as exc:

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import file_checksum_of
 from hypothesis import example, given
 from hypothesis import strategies as st
 
@@ -186,9 +187,7 @@ def test_duplicate_json_keys_through_the_cli(tmp_path: Path, capsys: pytest.Capt
 ], ids=["record", "record_word", "check_sum", "field"])
 def test_trailing_text_is_refused(line: str) -> None:
     if "{}" in line:
-        f = T.HEADER_CHECKSUM_FIELDS["file"]
-        data = cbf.encode(cbf.from_cut(f"{HEADER} X\n"))[f.offset:f.offset + f.size]
-        line = line.format(int.from_bytes(data, "little" if T.BO == "<" else "big"))
+        line = line.format(file_checksum_of(cbf.encode(cbf.from_cut(f"{HEADER} X\n"))))
     _refused(f"{HEADER} X\n{line}\n", 2, "unexpected text")
     assert cbf.from_cut(f"{HEADER} X\n{line.rsplit(' ', 1)[0]}\n") is not None  # fine without it
 

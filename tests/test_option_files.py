@@ -14,10 +14,8 @@ from __future__ import annotations
 import json
 import os
 import random
-import resource
 import subprocess
 import sys
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -25,7 +23,7 @@ from typing import Any
 import pytest
 from c_programs import built
 from cli_many import run_many
-from conftest import dump_yaml, load_yaml
+from conftest import capped_run, dump_yaml, load_yaml
 
 from cbf.optfiles import RULES
 from cbfgen.emit.python.machine import machine_data
@@ -168,15 +166,6 @@ def test_both_tools_give_the_same_line_on_every_row(cbf_c: Path, tmp_path: Path)
     assert not problems, "\n".join(problems)
 
 
-def _capped(argv: list[str], env: dict[str, str] | None) -> tuple[subprocess.CompletedProcess[str], float]:
-    def cap() -> None:
-        resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP, MEMORY_CAP))
-
-    t0 = time.monotonic()
-    r = subprocess.run(argv, env=env, capture_output=True, text=True, preexec_fn=cap, timeout=TIME_CAP)
-    return r, time.monotonic() - t0
-
-
 @pytest.mark.parametrize("case", [c for c in CASES if c.get("bounded")], ids=_id)
 def test_a_bomb_costs_no_more_than_its_refusal(case: dict[str, Any], cbf_c: Path, tmp_path: Path) -> None:
     """Under a 512 MiB address-space cap, each tool refuses the row within seconds (before issue 28
@@ -185,9 +174,8 @@ def test_a_bomb_costs_no_more_than_its_refusal(case: dict[str, Any], cbf_c: Path
     argv = ["validate", f"--{case['option']}", str(path), str(TARGET)]
     for cmd, env, prefix in (([sys.executable, "-m", "cbf", *argv], ENV, "cbf: "),
                              ([str(cbf_c), *argv], None, "cbf-c: ")):
-        r, took = _capped(cmd, env)
+        r = capped_run(cmd, env, MEMORY_CAP, TIME_CAP)
         assert r.returncode == 2 and r.stderr == prefix + str(_says(case, path, extra)) + "\n", (cmd[0], r.stderr)
-        assert took < TIME_CAP
 
 
 def _random_table(rnd: random.Random) -> str:

@@ -17,7 +17,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from conftest import file_checksum_of
 
+import cbf
+from cbf import tables as T
 from cbfgen.loader import load
 from cbfgen.model import Field
 
@@ -190,3 +193,63 @@ def test_issue_13_implausible_values_fall_outside_the_default_machine() -> None:
     assert speed.max[0] < 1e30 and all(hi < 1e30 for hi in point.max) and radius.min[0] > 1e-30
     assert "0.01 millimeters" in _text()  # 6.1.2: cutter sizes in millimetres
     assert (ch.severity, ch.input_severity) == ("warning", "error")
+
+
+# The CUT companion document (issue 26): a CUT file written from generated/docs/cut.md alone, with rev
+# 03's commands and versions (so it lives here, not in tests/test_cut_companion.py). Each line names the
+# section of the document it follows.
+HAND = """\
+header PN-1234 KNEE FEMORAL SIZE 3
+header_ext ROBODOC CFG 7
+cbf_version 4.0
+comment   hand-written from the companion doc
+cutter C6-BALL 100.5 3 12.25
+speed 0.05
+accel 1.5 2
+phase ROUGH
+point <0,0,0>
+cutter_on
+startshape SQ 2
+line < 0, 0, 0 > < 10, 0, 0 >
+line <10, 0, 0> <10, -2.5, 0>
+endshape SQ 2
+checkpoint CP1 < 10, -2.5, 0 > 50
+orient5b < 0, 0, 1 > < 0, 0.5, 1 >
+guide Remove the cutter now
+CUTTER_OFF
+version 1.0 4.0
+"""
+HAND_SECTIONS = [
+    "3 header: the implant descriptor, part number first (4.2, 6.1.1)",
+    "3 header_ext: the configuration descriptor",
+    "5 version choice: cbf_version sets the header version (4.0)",
+    "2 text: the rest of the line, spaces before it dropped (1.2)",
+    "4 cutter: word, float, float, float (the reserved bytes have no token)",
+    "4 speed: float",
+    "4 accel: float float",
+    "4 phase: word",
+    "2 vector: spaces around < , > are optional",
+    "4 cutter_on: no arguments",
+    "4 startshape: word, integer (byte)",
+    "2 vector, float: digits with an optional point",
+    "2 float: a leading minus, a point and digits",
+    "4 endshape: the same word and integer (X2)",
+    "4 checkpoint: word, vector, float",
+    "4 orient5b: two vectors (D6: need not be of unit length)",
+    "2 text: GUIDE's message is the rest of the line",
+    "1.3 command keywords in any letter case",
+    "5 the VERSION command: a record, its format string sets nothing",
+]
+
+
+def test_a_hand_written_cut_file_encodes_and_validates() -> None:
+    assert len(HAND_SECTIONS) == len(HAND.splitlines())
+    model = cbf.from_cut(HAND)
+    assert model.version_id == "4.0"
+    data = cbf.encode(model)
+    assert [f for f in cbf.validate(data) if f.severity == "error"] == []
+    back = cbf.decode(data)
+    assert back.header.implant_descriptor == "PN-1234 KNEE FEMORAL SIZE 3"
+    assert back.records[0].decode_args().text == "hand-written from the companion doc"
+    # with the check line the document describes (section 3), the same file reads the same
+    assert cbf.from_cut(HAND + f"{T.CUT['checksum_keyword']} {file_checksum_of(data)}\n") == model

@@ -41,6 +41,7 @@ from .model import (
 from .registry import (
     CHECK_KINDS,
     COMMON_CHECK_KEYS,
+    DERIVED_HEADER_ROLES,
     FIELD_KINDS,
     GENERATED_NAMES,
     NUMERIC_KINDS,
@@ -423,7 +424,7 @@ def _fields(ctx: _Ctx, raws: _Seq, types: dict[str, FieldType], where: str) -> t
     return tuple(out), offset, whole
 
 
-_SHARED_ROLES = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count", "checksum")
+_SHARED_ROLES = DERIVED_HEADER_ROLES
 _HEADER_ROLES = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count")
 
 

@@ -178,6 +178,11 @@ def unsupported_in_head(t: FieldType) -> tuple[str, ...]:
     return ("c",) if t.is_integer and (t.kind == "sint" or (t.size or 0) > 4) else ()
 
 
+# The header roles the codec derives (patterns, version, count, checksums): no text or caller sets them,
+# and they sit in the same place in every header layout (the loader checks it).
+DERIVED_HEADER_ROLES = ("start_pattern", "end_pattern", "version_major", "version_minor", "command_count", "checksum")
+
+
 # What the argument a role names must be, by role and key: ("float", 3) a vector of three floats
 # (the runtimes' geometry is 3-D), ("float", 1) one float, ("string", 1) a string, ("integer", 1)
 # an integer. The loader refuses a role naming another argument (the kernels read these shapes).

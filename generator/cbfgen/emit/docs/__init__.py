@@ -405,9 +405,6 @@ def _document(spec: Spec) -> dict[str, Any]:
             "notes": _notes(spec)}
 
 
-DERIVED_ROLES = ("checksum", "command_count", "start_pattern", "end_pattern", "version_major", "version_minor")
-
-
 def _cut_doc(spec: Spec) -> dict[str, Any]:
     """What the companion document needs beyond spec.cut: the keywords, the header fields a CUT text
     may set, the descriptor fields of the default version, the versions without a configuration
@@ -417,7 +414,7 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
     fields: list[Any] = []
     for h in spec.headers.values():
         for f in h.fields:
-            if f.role not in DERIVED_ROLES and f.name not in [g.name for g in fields]:
+            if f.role not in registry.DERIVED_HEADER_ROLES and f.name not in [g.name for g in fields]:
                 fields.append(f)
     head = spec.header_for(spec.default_version)
     by_role = {f.role: f for f in head.fields}
@@ -438,7 +435,12 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
             "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
                          "?"),
             "citing": [str(c["number"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
-            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else ""}
+            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else "",
+            # the arguments that take the rest of the line (text: true), "COMMAND's arg", once each
+            "text_args": list(dict.fromkeys(f"{c.name}'s {a.name}" for c in spec.commands for lay in c.layouts
+                                            for a in lay.args if a.text)),
+            # the header field the check line's N is compared with (the default version's file checksum)
+            "file_checksum": next((f for f in head.fields if f.checksum == "file"), None)}
 
 
 def context(spec: Spec) -> dict[str, Any]:
