@@ -18,7 +18,6 @@ from pathlib import Path
 import pytest
 import yaml
 from conftest import HYPOTHESIS_PROFILE, REPO, dump_yaml, spec_doc
-from revisions import drill
 from revisions.drill import apply_edit, load_fixture, render
 
 from cbfgen import loader
@@ -193,24 +192,3 @@ def test_kaitai_reads_the_group_count_from_nb(tmp_path: Path) -> None:
     lo, hi = lay.size + rep.size * rep.repeat[0], lay.size + rep.size * rep.repeat[1]
     size_rule = next(a for a in record.values() if a.get("valid", {}).get("expr", "").count("?"))
     assert f"(_ >= {lo} and _ <= {hi} and (_ - {lay.size}) % {rep.size} == 0)" in size_rule["valid"]["expr"]
-
-
-@pytest.mark.parametrize("other", drill.fixtures(), ids=[p.stem for p in drill.fixtures()])
-def test_the_fixture_applies_with_each_other_fixture(other: Path, tmp_path: Path) -> None:
-    """The pending fixture on top of each fixture of the drill and each on top of it (the spec edits, as
-    test_revision_drill's pairwise test does): the loader accepts both (groups let through for the bindings
-    that carry them), the ids stay free and cbfgen diff says what the fixture on top states."""
-    from cbfgen.diff import diff
-
-    spec = REPO / "spec" / "cbf.yaml"
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(loader, "repeat_unsupported", lambda: ())
-        for first, second in ((other, FIXTURE), (FIXTURE, other)):
-            out = tmp_path / f"{first.stem}_then_{second.stem}"
-            base = drill.revised_spec(drill.load_fixture(first), spec, out / "a")
-            both = drill.revised_spec(drill.load_fixture(second, drill.read_spec(base)), base, out / "b")
-            revised = loader.load(both)
-            assert len({c.code for c in revised.commands}) == len(revised.commands)
-            d = diff(loader.load(base), revised)
-            fx = drill.load_fixture(second, drill.read_spec(base))
-            assert drill.judge(fx, d.exit_code, d.as_json()) == [], (first.stem, second.stem)

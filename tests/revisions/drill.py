@@ -214,6 +214,24 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     out.update({"reserve_version": str(rv["id"]), "reserve_major": str(rv["major"]),
                 "reserve_older_version": str(ro["id"]), "reserve_older_major": str(ro["major"]),
                 "reserve_older_minor": str(ro.get("minor") or 0)})
+    # Another algorithm for the default profile's file checksum: the first of the spec's algorithms, in
+    # its order, that is no plain sum, fills the file checksum field (else the first that fits it), and
+    # is not the one the default profile uses now (so the revision changes it on any spec, its own
+    # result included).
+    from cbfgen.model import ALGORITHM_KINDS  # noqa: PLC0415  (the drill runs with the generator on its path)
+
+    checksums = doc.get("checksums", {})
+    algorithms = checksums.get("algorithms", {})
+    file_field = next((f for f in checksums.get("fields", ()) if f.get("field") == "file"), {})
+    default = next((p for p in doc.get("profiles", ()) if p.get("id") == "default"), {})
+    current = default.get("file_algorithm", file_field.get("algorithm"))
+    width = 8 * next((int(doc["types"][f["type"]].get("size") or 0) for h in headers.values()
+                      for f in h.get("fields", ()) if f.get("checksum") == "file"), 0)
+    bits = {n: ALGORITHM_KINDS.get(str(a.get("kind"))) or 0 for n, a in algorithms.items()
+            if a.get("kind") != "sum" and n != current}
+    other = sorted((n for n, b in bits.items() if 0 < b <= width), key=lambda n: bits[n] != width)  # full width first
+    if other:
+        out["other_file_algorithm"] = other[0]
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
@@ -234,6 +252,12 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
             return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
         if var == "name" and arg is not None:
             return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
+        if var in ("now", "formerly") and arg is not None:  # a command as the spec calls it now, and its past names
+            cmd = next((c for c in doc["commands"] if c["name"] == arg or arg in c.get("former_names", ())), None)
+            if cmd is not None:
+                past = [str(n) for n in cmd.get("former_names", ())]
+                past += [] if cmd["name"] in past else [str(cmd["name"])]
+                return str(cmd["name"]) if var == "now" else _flow(past)
         raise FixtureError(f"{where}: {m.group(0)} names nothing in this spec")
 
     out = _VAR.sub(one, text)

@@ -731,16 +731,17 @@ def _decode_bytes(path: str, data: bytes) -> Any:
         raise _Fail(f"{path}: {exc}") from None
 
 
-def _clean(path: str, model: Any) -> None:
-    """Refuse a model that fails validation: the tools below assume a sound file."""
+def _clean(path: str, model: Any, profile: str) -> None:
+    """Refuse a model that fails validation under the profile the tool writes: the tools below
+    assume a sound file."""
     from .validation import validate
 
-    errors = [f for f in validate(model) if f.severity == "error"]
+    errors = [f for f in validate(model, profile=profile) if f.severity == "error"]
     if errors:
         e = errors[0]
         where = f"record {e.record}" if e.record is not None else "header"
         raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); "
-                    f"run cbf validate {path}")
+                    f"run cbf validate --profile {profile} {path}")
 
 
 def _mm(text: str) -> float:
@@ -768,7 +769,7 @@ def cmd_convert(a: argparse.Namespace) -> int:
             raise _Fail(f"--fill {name}: given twice")
         fill[name] = value
     model = _load_any(a.file)
-    _clean(a.file, model)
+    _clean(a.file, model, a.profile)
     try:
         conv = convert(model, a.to_version, chord_tol=a.chord_tol, fill=fill, profile=a.profile)
         out = encode(conv.model, profile=a.profile)
