@@ -842,7 +842,10 @@ def _deprecates(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
 
 
 def _deprecated(r: Records, check: Check, b: Batch) -> None:
-    """Every record of a deprecated command or layout (its versions: validation's scope filter)."""
+    """Every record of a deprecated command or layout (its versions: validation's scope filter).
+    Like every batch kernel it judges the layout itself: `applies` only spares the call."""
+    if not _deprecates(check, b.lay, b.cmd):
+        return
     r.add(check, b.rows, r.off[b.rows] + T.RECORD_FIELDS[T.I_CODE].offset, b.rows,
           _const(f"{b.cmd.name} is deprecated since version {check['since']}"))
 
