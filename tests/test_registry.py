@@ -64,6 +64,26 @@ def test_the_loader_refuses_a_role_by_the_registrys_needs(monkeypatch: pytest.Mo
         assert f"{name}: {role} kind {kind} needs fixture_key" in str(err.value), role
 
 
+def test_the_python_runtime_spells_no_list_of_the_derived_header_roles() -> None:
+    """tables.DERIVED_ROLES is registry.DERIVED_HEADER_ROLES (through spec_data.json), and no runtime
+    module writes a literal of three or more of those roles: cut.py, testing.py, convert.py and
+    semdiff.py each kept a copy once, and tables.py one after them."""
+    import ast
+
+    tables = importlib.import_module("cbf.tables")
+    derived = set(registry.DERIVED_HEADER_ROLES)
+    assert tables.DERIVED_ROLES == derived
+    runtime = REPO / "generator" / "cbfgen" / "emit" / "python" / "runtime"
+    copies = []
+    for path in sorted(runtime.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Tuple | ast.List | ast.Set):
+                words = {e.value for e in node.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)}
+                if len(words & derived) >= 3:
+                    copies.append(f"{path.name}:{node.lineno}")
+    assert not copies, f"a copy of registry.DERIVED_HEADER_ROLES: {copies}"
+
+
 def test_every_kind_of_the_registry_has_one_python_implementation() -> None:
     """records.KERNELS holds the record kinds, validation.FILE_KINDS the file kinds: together the
     registry's kinds, each once (a registered kind without a kernel fails here)."""
