@@ -18,14 +18,13 @@ from typing import Any
 
 import pytest
 from cli_many import run_many
-from conftest import file_maker, locked_file, unprivileged_prefix
+from conftest import ENV, file_maker, locked_file, unprivileged_prefix
 
 from cbf import tables as T
 from cbf.cli import EXIT_FINDINGS, EXIT_USAGE, parser
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 VALID = GOLDEN / "valid.v3.small.cbf"
 def _subcommands() -> dict[str, argparse.ArgumentParser]:
     for action in parser()._actions:

@@ -12,7 +12,6 @@ than the refusal.
 from __future__ import annotations
 
 import json
-import os
 import random
 import subprocess
 import sys
@@ -23,7 +22,7 @@ from typing import Any
 import pytest
 from c_programs import built
 from cli_many import run_many
-from conftest import capped_run, dump_yaml, load_yaml
+from conftest import ENV, capped_run, dump_yaml, load_yaml
 
 from cbf.optfiles import RULES
 from cbfgen.emit.python.machine import machine_data
@@ -33,7 +32,6 @@ REPO = Path(__file__).resolve().parents[1]
 HERE = REPO / "tests" / "option_files"
 CASES: list[dict[str, Any]] = load_yaml(HERE / "cases.yaml")
 TARGET = REPO / "conformance" / "golden" / "valid.v3.small.cbf"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 SPEC = load(REPO / "spec" / "cbf.yaml")
 CUT, MACHINE = RULES["cutter_table"], RULES["machine_file"]
 HEADER = ",".join(CUT["columns"]) + "\n"  # a CSV table's first line: the spec's columns (options.cutter_columns)
