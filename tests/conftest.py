@@ -61,6 +61,30 @@ settings.load_profile(HYPOTHESIS_PROFILE)
 REPO = Path(__file__).resolve().parents[1]
 SPEC = REPO / "spec" / "cbf.yaml"
 
+# -- the environments tests run tools in -------------------------------------------------------
+# `python -m cbf` of this checkout's generated package, as `make test` runs it
+ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
+# a consumer's environment: none of this checkout's paths (the packages used from outside, issue 14)
+CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
+
+
+def run_clean(*cmd: str | Path, cwd: Path, check: bool = True,
+              env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    """A command (its text captured) in a consumer's environment (``env``: another one)."""
+    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check,
+                          env=CLEAN_ENV if env is None else env)
+
+
+@pytest.fixture(scope="session")
+def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The HTML site of spec/cbf.yaml as `make docs` builds it, built once a session: tests only read it."""
+    from cbfgen.emit.docs import site
+    from cbfgen.loader import load
+
+    out = tmp_path_factory.mktemp("site")
+    site.build(load(SPEC), out)
+    return out
+
 
 def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iterable[str] = ()) -> None:
     """Name a command added to a parsed spec in one availability check for each version it lacks (loader.py):
@@ -155,7 +179,7 @@ def clean_venv(where: Path, *wheels: Path) -> Path:
     This checkout's pinned pip installs into it (``pip --python``), so the venv gets no pip of its
     own (ensurepip costs about 8 CPU seconds a venv), and no bytecode is compiled (about 3 more):
     what the consumer tests check (which modules import, which commands run) is the same."""
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
+    env = CLEAN_ENV
     subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(where)], check=True, capture_output=True,
                    env=env)
     subprocess.run([sys.executable, "-m", "pip", "--python", str(where / "bin" / "python"), "install", "-q",

@@ -3,19 +3,18 @@
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 from cli_many import run_many
+from conftest import ENV
 
 from cbf import tables as T
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 
 
 def cbf(*args: str, stdin: bytes | None = None) -> subprocess.CompletedProcess[str]:

@@ -18,14 +18,14 @@ from typing import Any
 
 import pytest
 from cli_many import run_many
-from conftest import file_maker, locked_file, unprivileged_prefix
+from conftest import ENV, file_maker, locked_file, unprivileged_prefix
 
 from cbf import tables as T
 from cbf.cli import EXIT_FINDINGS, EXIT_USAGE, parser
+from cbf.optfiles import RULES
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 VALID = GOLDEN / "valid.v3.small.cbf"
 def _subcommands() -> dict[str, argparse.ArgumentParser]:
     for action in parser()._actions:
@@ -155,7 +155,10 @@ def _ran(made: dict[str, tuple[Path, Path]], results: list[Result]) -> dict[str,
     return {name: (path, out, results[k * n:(k + 1) * n]) for k, (name, (path, out)) in enumerate(made.items())}
 
 
-CUTTER_TABLE = "name,length,radius\nBALL6,50,3\nFLAT4,forty,2\n"
+# a cutter table of the spec's columns (the name's first) whose second row holds a word for a number
+_COLUMNS: list[str] = RULES["cutter_table"]["columns"]
+CUTTER_TABLE = "".join(",".join(row) + "\n" for row in (_COLUMNS, ["BALL6"] + ["3"] * (len(_COLUMNS) - 1),
+                                                         ["FLAT4", "forty"] + ["2"] * (len(_COLUMNS) - 2)))
 JSON_CHOKES = [
     ("deep", "[" * 100_000 + "]" * 100_000, "nested too deep"),
     ("long_number", '{"header": ' + "1" * 5000 + "}", "digits"),

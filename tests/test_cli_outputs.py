@@ -16,11 +16,11 @@ import threading
 from pathlib import Path
 
 import pytest
+from conftest import ENV
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 SMALL = GOLDEN / "valid.v3.small.cbf"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 
 
 def cbf(*args: str, stdout: int | None = None) -> subprocess.CompletedProcess[str]:

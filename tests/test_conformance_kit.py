@@ -6,7 +6,6 @@ testee that stops answering."""
 from __future__ import annotations
 
 import json
-import os
 import re
 import shutil
 import subprocess
@@ -16,12 +15,12 @@ from pathlib import Path
 
 import pytest
 from conftest import clean_venv, load_yaml
+from conftest import run_clean as _run
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 C_TESTEE = REPO / "build" / "c" / "cbf_testee"
 PY_TESTEE = REPO / "conformance" / "testees" / "python" / "testee.py"
-CLEAN_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
 
 # A testee that answers validate with no findings: every case expecting one must fail.
 NO_FINDINGS = """
@@ -34,10 +33,6 @@ for line in sys.stdin:
 """
 # A testee that never answers.
 SILENT = "import sys, time\nfor line in sys.stdin:\n    time.sleep(3600)\n"
-
-
-def _run(*cmd: str | Path, cwd: Path, check: bool = True) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check, env=CLEAN_ENV)
 
 
 @pytest.fixture(scope="module")

@@ -8,19 +8,17 @@ adds one, and this test runs in the drill's copy of the tree."""
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
-from conftest import load_yaml
+from conftest import ENV, load_yaml
 
 from cbf import tables as T
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 IDS = {c["id"] for c in T.checks_of("deprecated")}
 
 

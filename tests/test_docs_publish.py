@@ -19,7 +19,7 @@ from conftest import load_yaml
 from markdown_it import MarkdownIt
 
 import cbfgen.emit.docs as docs
-from cbfgen.emit.docs import golden, hexdump, site, svg, text
+from cbfgen.emit.docs import golden, hexdump, svg, text
 from cbfgen.loader import SpecError, load
 
 REPO = Path(__file__).resolve().parents[1]
@@ -31,13 +31,6 @@ SVG_NS = "{http://www.w3.org/2000/svg}"
 @pytest.fixture(scope="module")
 def md_pages() -> dict[str, str]:
     return {rel[len("docs/"):]: data.decode() for rel, data in docs.emit(SPEC).items() if rel.endswith(".md")}
-
-
-@pytest.fixture(scope="module")
-def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("site")
-    site.build(SPEC, out)
-    return out
 
 
 def _free_texts() -> list[str]:

@@ -117,13 +117,6 @@ def _text(tree: ET.Element) -> str:
     return " ".join("".join(tree.itertext()).split())
 
 
-@pytest.fixture(scope="module")
-def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("site")
-    site.build(SPEC, out)
-    return out
-
-
 # -- Markdown --------------------------------------------------------------------
 
 def test_every_markdown_link_and_anchor_resolves() -> None:

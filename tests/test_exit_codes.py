@@ -8,7 +8,6 @@ model (cbf.tables, the codec) and the golden files; each row has exactly one bui
 from __future__ import annotations
 
 import json
-import os
 import re
 import subprocess
 import sys
@@ -20,7 +19,7 @@ from typing import Any
 import pytest
 from c_programs import built
 from cli_many import run_many
-from conftest import file_maker, locked_file, unprivileged_prefix
+from conftest import ENV, file_maker, locked_file, unprivileged_prefix
 
 import cbf
 from cbf import tables as T
@@ -31,7 +30,6 @@ REPO = Path(__file__).resolve().parents[1]
 README = REPO / "README.md"
 GOLDEN = REPO / "conformance" / "golden"
 VALID = GOLDEN / "valid.v3.small.cbf"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 CBF_C = REPO / "build" / "c" / "cbf-c"
 OK, FINDINGS, USAGE = 0, 1, 2
 LIMIT = T.HEADER_SIZE + (T.LIMITS["max_commands"] + 1) * (T.HEAD_SIZE + T.LIMITS["max_arg_size"])

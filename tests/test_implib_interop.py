@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import base64
 import json
-import os
 import re
 import subprocess
 import sys
@@ -23,6 +22,7 @@ from pathlib import Path
 import pytest
 from c_programs import built
 from cli_many import run_many
+from conftest import ENV
 
 import cbf
 from cbf import tables as T
@@ -31,7 +31,6 @@ from cbf.cut import keyword
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 SMALL = GOLDEN / "valid.v3.small.cbf"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:

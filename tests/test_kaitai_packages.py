@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from conftest import clean_venv
+from conftest import CLEAN_ENV, clean_venv, run_clean
 
 import cbf
 from cbf import tables
@@ -26,13 +26,8 @@ GOLDEN = next(p for p in sorted((REPO / "conformance" / "golden").glob("valid.v3
 CODES = [r.code for r in cbf.decode(GOLDEN.read_bytes()).records]
 
 
-# A consumer's environment: none of this checkout's paths.
-CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
-
-
 def _run(*cmd: str | Path, cwd: Path, env: dict[str, str] | None = None) -> str:
-    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=True,
-                          env=CLEAN_ENV if env is None else env).stdout
+    return run_clean(*cmd, cwd=cwd, env=env).stdout
 
 
 @pytest.mark.skipif(not (KAITAI / "python" / "cbf_kaitai" / "cbf.py").exists(), reason="ksc output missing")

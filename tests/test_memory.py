@@ -13,16 +13,15 @@ The peak is VmHWM, read by the child itself: ru_maxrss of a child carries over t
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from conftest import ENV
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 
 # Runs the cbf command line in-process, then prints its peak RSS (kB) as the last stderr line.
 # Both the measured run and the baseline import the same modules first.

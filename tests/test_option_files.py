@@ -12,7 +12,6 @@ than the refusal.
 from __future__ import annotations
 
 import json
-import os
 import random
 import subprocess
 import sys
@@ -23,7 +22,7 @@ from typing import Any
 import pytest
 from c_programs import built
 from cli_many import run_many
-from conftest import capped_run, dump_yaml, load_yaml
+from conftest import ENV, capped_run, dump_yaml, load_yaml
 
 from cbf.optfiles import RULES
 from cbfgen.emit.python.machine import machine_data
@@ -33,9 +32,14 @@ REPO = Path(__file__).resolve().parents[1]
 HERE = REPO / "tests" / "option_files"
 CASES: list[dict[str, Any]] = load_yaml(HERE / "cases.yaml")
 TARGET = REPO / "conformance" / "golden" / "valid.v3.small.cbf"
-ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 SPEC = load(REPO / "spec" / "cbf.yaml")
 CUT, MACHINE = RULES["cutter_table"], RULES["machine_file"]
+HEADER = ",".join(CUT["columns"]) + "\n"  # a CSV table's first line: the spec's columns (options.cutter_columns)
+
+
+def _row(name: str, value: str = "10") -> str:
+    """A CSV row: the name, then ``value`` in each number column."""
+    return ",".join([name] + [value] * (len(CUT["columns"]) - 1)) + "\n"
 MEMORY_CAP = 512 << 20
 TIME_CAP = 10.0
 
@@ -70,19 +74,19 @@ def _write(text: str, extra: dict[str, Any] | None = None) -> Callable[[Path], t
 
 def _rows(p: Path) -> tuple[str, dict[str, Any]]:
     n = CUT["max_rows"] + 4
-    p.write_text("name,length,radius\n" + "".join(f"C{i},10,1\n" for i in range(n)), encoding="utf-8")
+    p.write_text(HEADER + "".join(_row(f"C{i}") for i in range(n)), encoding="utf-8")
     return p.name, {"line": CUT["max_rows"] + 2}  # the header, then the rows: the one beyond the limit
 
 
 def _long_name(p: Path) -> tuple[str, dict[str, Any]]:
     chars = max(200, CUT["max_name"] + 1)
-    p.write_text(f"name,length,radius\n{'N' * chars},10,1\n", encoding="utf-8")
+    p.write_text(HEADER + _row("N" * chars), encoding="utf-8")
     return p.name, {"chars": chars}
 
 
 def _huge_csv(p: Path) -> tuple[str, dict[str, Any]]:
     with p.open("wb") as fh:  # 100 MiB, sparse: the header, then zeros
-        fh.write(b"name,length,radius\n")
+        fh.write(HEADER.encode())
         fh.truncate(100 << 20)
     return p.name, {}
 
@@ -98,7 +102,7 @@ MAKERS: dict[str, tuple[str, Callable[[Path], tuple[str, dict[str, Any]]]]] = {
     "rows": ("rows.csv", _rows),
     "long_name": ("long_name.csv", _long_name),
     "huge_csv": ("huge.csv", _huge_csv),
-    "wide_csv": ("wide.csv", _write("name,length,radius\n" + ",".join(["1"] * (CUT["max_columns"] + 1)) + "\n")),
+    "wide_csv": ("wide.csv", _write(HEADER + ",".join(["1"] * (CUT["max_columns"] + 1)) + "\n")),
     "deep_yaml": ("deep.yaml", _write("[" * 1000 + "]" * 1000 + "\n")),
     "missing": ("missing.csv", lambda p: (p.name, {})),
     "machine_json": ("machine.json", _write(_machine_text())),
@@ -128,7 +132,8 @@ def _input(case: dict[str, Any], tmp: Path) -> tuple[Path, dict[str, Any]]:
 def _says(case: dict[str, Any], path: Path, extra: dict[str, Any]) -> str | None:
     if "says" not in case:
         return None
-    return str(case["says"]).format(file=path, cutter=CUT, machine=MACHINE, yaml=RULES["yaml"], extra=extra)
+    return str(case["says"]).format(file=path, cutter=CUT, machine=MACHINE, yaml=RULES["yaml"], extra=extra,
+                                    columns=", ".join(CUT["columns"]))
 
 
 def test_the_table_covers_every_file_and_maker() -> None:
@@ -182,12 +187,13 @@ def _random_table(rnd: random.Random) -> str:
     """A YAML cutter table, block or flow rows, with odd values, keys and lines mixed in."""
     odd = ["C 1", "'q x'", '"d\\"q"', "-2", "0", ".nan", "nan", "1_00", "1e400", "", "~", "null", "true", "[1]",
            "{a: 1}", "&a 1", "*a", "!!str 5", "|", "'open", "x: y", "1.5e1"]
-    keys = ["name", "length", "radius", "diameter", "? x"]
+    keys = [*CUT["columns"], "diameter", "? x"]
     lines = ["cutters:"] if rnd.random() < 0.5 else []
     ind = "  " if lines and rnd.random() < 0.5 else ""
     for _ in range(rnd.randint(0, 4)):
-        ks = list(COLUMNS_) if rnd.random() < 0.7 else rnd.sample(keys, rnd.randint(1, 4))
-        vals = [rnd.choice(odd) if rnd.random() < 0.3 else {"name": f"C{rnd.randint(0, 5)}"}.get(k, "2") for k in ks]
+        ks = list(CUT["columns"]) if rnd.random() < 0.7 else rnd.sample(keys, rnd.randint(1, 4))
+        vals = [rnd.choice(odd) if rnd.random() < 0.3 else {CUT["name"]: f"C{rnd.randint(0, 5)}"}.get(k, "2")
+                for k in ks]
         if rnd.random() < 0.5:
             lines.append(ind + "- {" + ", ".join(f"{k}: {v}" for k, v in zip(ks, vals, strict=True)) + "}")
         else:
@@ -196,9 +202,6 @@ def _random_table(rnd: random.Random) -> str:
         if rnd.random() < 0.1:
             lines.append(rnd.choice(["# note", "", "---", "  x", "- ", "key: v"]))
     return "\n".join(lines) + "\n"
-
-
-COLUMNS_ = ("name", "length", "radius")
 
 
 def test_random_tables_get_the_same_verdict_from_both_tools(cbf_c: Path, tmp_path: Path) -> None:

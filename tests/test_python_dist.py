@@ -5,7 +5,6 @@ given on its command line, with no checkout around it."""
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 import sys
@@ -13,7 +12,8 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from conftest import clean_venv
+from conftest import CLEAN_ENV, clean_venv
+from conftest import run_clean as _run
 
 import cbf
 import cbfgen
@@ -23,12 +23,6 @@ REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 
 
-# A consumer's environment: none of this checkout's paths.
-CLEAN_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
-
-
-def _run(*cmd: str | Path, cwd: Path, check: bool = True) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([str(c) for c in cmd], cwd=cwd, capture_output=True, text=True, check=check, env=CLEAN_ENV)
 
 
 def _build(src: Path, work: Path) -> Path:

@@ -40,6 +40,50 @@ def test_the_schema_names_no_type_and_no_kind_itself() -> None:
         assert command[role]["allOf"][1]["properties"]["kind"]["enum"] == list(kinds), role
 
 
+def test_each_role_kind_needs_keys_the_role_has() -> None:
+    """registry.ROLE_NEEDS names, per role kind, keys of that role (ROLE_ARGS): nothing to misspell."""
+    for role, needs in registry.ROLE_NEEDS.items():
+        assert needs, role
+        for kind, keys in needs.items():
+            assert set(keys) <= set(registry.ROLE_ARGS[role]), (role, kind)
+
+
+def test_the_loader_refuses_a_role_by_the_registrys_needs(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A need added to registry.ROLE_NEEDS is a refusal of every command whose role kind lacks it: the
+    loader keeps no list of its own (it had _MOTION_NEEDS, keyed apart from ROLE_KINDS)."""
+    spec = load(REPO / "spec" / "cbf.yaml")
+    load_errors = loader.SpecError
+    for role, needs in registry.ROLE_NEEDS.items():
+        used = [(c.name, r["kind"]) for c in spec.commands if (r := getattr(c, role))]
+        assert used, role  # the spec has a command of this role: the check sees the needs it guards
+        name, kind = used[0]
+        monkeypatch.setitem(needs, kind, (*needs[kind], "fixture_key"))
+        with pytest.raises(load_errors) as err:
+            load(REPO / "spec" / "cbf.yaml")
+        monkeypatch.undo()
+        assert f"{name}: {role} kind {kind} needs fixture_key" in str(err.value), role
+
+
+def test_the_python_runtime_spells_no_list_of_the_derived_header_roles() -> None:
+    """tables.DERIVED_ROLES is registry.DERIVED_HEADER_ROLES (through spec_data.json), and no runtime
+    module writes a literal of three or more of those roles: cut.py, testing.py, convert.py and
+    semdiff.py each kept a copy once, and tables.py one after them."""
+    import ast
+
+    tables = importlib.import_module("cbf.tables")
+    derived = set(registry.DERIVED_HEADER_ROLES)
+    assert tables.DERIVED_ROLES == derived
+    runtime = REPO / "generator" / "cbfgen" / "emit" / "python" / "runtime"
+    copies = []
+    for path in sorted(runtime.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Tuple | ast.List | ast.Set):
+                words = {e.value for e in node.elts if isinstance(e, ast.Constant) and isinstance(e.value, str)}
+                if len(words & derived) >= 3:
+                    copies.append(f"{path.name}:{node.lineno}")
+    assert not copies, f"a copy of registry.DERIVED_HEADER_ROLES: {copies}"
+
+
 def test_every_kind_of_the_registry_has_one_python_implementation() -> None:
     """records.KERNELS holds the record kinds, validation.FILE_KINDS the file kinds: together the
     registry's kinds, each once (a registered kind without a kernel fails here)."""

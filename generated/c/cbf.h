@@ -188,6 +188,11 @@ enum cbf_header_layout {
 #define CBF_TOLERANCE_POSITION_MM 0.001
 #define CBF_TOLERANCE_CUTTER_MM 0.01
 #define CBF_TOLERANCE_ORIENTATION_DEG 0.1
+/* A cutter table's columns (check 6.1.2): the keys of the spec's cutter role, the name's and
+ * CBF_CUTTER_VALUES numbers; cbf_cutter.value[CBF_CUTTER_<COLUMN>] holds each number. */
+#define CBF_CUTTER_VALUES 2
+#define CBF_CUTTER_LENGTH 0 /**< cbf_cutter.value[] of the column length */
+#define CBF_CUTTER_RADIUS 1 /**< cbf_cutter.value[] of the column radius */
 
 /* Header field offsets and sizes, per header layout. */
 #define CBF_HEADER_V2_START_PATTERN_OFFSET 0
@@ -946,11 +951,12 @@ typedef struct cbf_finding {
 
 typedef void (*cbf_finding_fn)(void *user, const cbf_finding *finding);
 
-/** One entry of the robot's cutter table (6.1.2). */
+/** One entry of the robot's cutter table (6.1.2): its name and its numbers, value[CBF_CUTTER_<COLUMN>]
+ * for each column of the table beside the name (the keys of the spec's cutter role: CBF_CUTTER_LENGTH,
+ * CBF_CUTTER_RADIUS in rev 03). */
 typedef struct cbf_cutter {
     const char *name;
-    double length;
-    double radius;
+    double value[CBF_CUTTER_VALUES];
 } cbf_cutter;
 
 typedef struct cbf_options {
@@ -961,7 +967,7 @@ typedef struct cbf_options {
     const cbf_machine *machine; /**< machine_limits input (L1), or NULL: the default machine, warnings */
 } cbf_options;
 /* ==== END runtime/types.h ==== */
-#line 965 "cbf.h"
+#line 971 "cbf.h"
 /* ==== BEGIN runtime/api.h: verbatim from generator/cbfgen/emit/c/runtime/api.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/api.h"
 /* ================================================================ prototypes */
@@ -1055,7 +1061,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1059 "cbf.h"
+#line 1065 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1107,7 +1113,12 @@ enum { CBF__ORIENT_NONE = 0, CBF__ORIENT_SET, CBF__ORIENT_PATH };
 enum { CBF__O_START = 0, CBF__O_END = 1, CBF__O__COUNT };
 enum { CBF__SHAPE_NONE = 0, CBF__SHAPE_START, CBF__SHAPE_END };
 enum { CBF__S_NAME = 0, CBF__S_COUNT = 1, CBF__S__COUNT };
+/* The cutter role's keys: the table's columns, the name's first, then value[0..CBF_CUTTER_VALUES). */
 enum { CBF__C_NAME = 0, CBF__C_LENGTH = 1, CBF__C_RADIUS = 2, CBF__C__COUNT };
+#if 3 != CBF_CUTTER_VALUES + 1
+#error "the cutter role's keys are the name and the cutter table's values"
+#endif
+static const char *const cbf__cutter_keys[CBF__C__COUNT] = { "name", "length", "radius" };
 /* The check kinds of the spec language's registry (cbfgen/registry.py), in its order. The engine
  * dispatches on them with switches that have no default: under -Wswitch-enum a kind the registry
  * gains and the engine lacks fails the build. */
@@ -1213,7 +1224,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1217 "cbf.h"
+#line 1228 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1293,7 +1304,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1297 "cbf.h"
+#line 1308 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -2301,7 +2312,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2305 "cbf.h"
+#line 2316 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2526,7 +2537,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2530 "cbf.h"
+#line 2541 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2697,7 +2708,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2701 "cbf.h"
+#line 2712 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2858,7 +2869,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2862 "cbf.h"
+#line 2873 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3111,7 +3122,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3115 "cbf.h"
+#line 3126 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4027,15 +4038,13 @@ static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, l
 
 static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec, size_t off)
 {
+    /* the cutter role's keys: the name's first, then the table's values (cbfgen/options.py) */
     const cbf__layout *L = &cbf__layouts[layout];
-    const cbf_field_info *fn = cbf__layout_arg(layout, L->cutter[CBF__C_NAME]);
-    const cbf_field_info *fv[2];
+    const cbf_field_info *fn = cbf__layout_arg(layout, L->cutter[0]);
     size_t i, n, found = (size_t)-1;
     int k;
     if (!v->opt || !v->opt->cutters || !fn)
         return;
-    fv[0] = cbf__layout_arg(layout, L->cutter[CBF__C_LENGTH]);
-    fv[1] = cbf__layout_arg(layout, L->cutter[CBF__C_RADIUS]);
     n = cbf__strvalue_len(args + fn->offset, (size_t)fn->elem * fn->count);
     for (i = 0; i < v->opt->ncutters; i++) {
         const char *name = v->opt->cutters[i].name;
@@ -4051,16 +4060,17 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
         cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         return;
     }
-    for (k = 0; k < 2; k++) {
-        double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
-        if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv[k], &x))
+    for (k = 0; k < CBF_CUTTER_VALUES; k++) {
+        const cbf_field_info *fv = cbf__layout_arg(layout, L->cutter[1 + k]);
+        double ref = v->opt->cutters[found].value[k], x;
+        if (!fv || fv->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv, &x))
             continue;
         if (fabs(x - ref) > cbf__tol_cutter) { /* named by the cutter role's key, as cbf validate does */
             char msg[256];
             size_t at = 0;
             cbf__cat(msg, sizeof msg, &at, "cutter ");
             cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
-            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", k == 0 ? "length" : "radius", x, ref);
+            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", cbf__cutter_keys[1 + k], x, ref);
             cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         }
     }
@@ -4225,7 +4235,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4229 "cbf.h"
+#line 4239 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4377,7 +4387,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4381 "cbf.h"
+#line 4391 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5237,7 +5247,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5241 "cbf.h"
+#line 5251 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -91,9 +91,15 @@ static long read_file(const char *path, uint8_t *buf, size_t cap, const char **w
 #define OPT_CUTTER_NAME_BYTES (4u * OPT_CUTTER_MAX_NAME + 1u) /* UTF-8: up to 4 bytes a character */
 static const char opt_cutter_what[] = "cutter table";
 static const char opt_machine_what[] = "machine file";
-static const char *const opt_cutter_columns[3] = { "name", "length", "radius" };
+/* A cutter table's columns (cbfgen/options.py: the keys of the spec's cutter role): the name's
+ * first, then the numbers, value[k] of cbf_cutter, in the order of opt_cutter_values. */
+#define OPT_CUTTER_COLUMNS 3
+#if OPT_CUTTER_COLUMNS != CBF_CUTTER_VALUES + 1
+#error "a cutter table's columns are the name and cbf_cutter's values"
+#endif
+static const char *const opt_cutter_columns[OPT_CUTTER_COLUMNS] = { "name", "length", "radius" };
 static const char *const opt_columns_list = "name, length, radius";
-static const struct { const char *column; int positive; const char *check; } opt_cutter_values[2] = {
+static const struct { const char *column; int positive; const char *check; } opt_cutter_values[CBF_CUTTER_VALUES] = {
     { "length", 1, "cutter_positive" },
     { "radius", 1, "cutter_positive" },
 };
@@ -711,10 +717,12 @@ static char cutter_text[OPT_CUTTER_MAX_BYTES + 1u];
 static char cutter_json[4u * OPT_CUTTER_MAX_BYTES + 64u];
 static const char *cutter_file;
 
-static int cutter_add(unsigned long line, const char *name, const char *const value[2])
+/* A row: cell[0] the name, cell[1 + k] the text of value k. */
+static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLUMNS])
 {
+    const char *name = cell[0];
     size_t k, chars = opt_chars(name);
-    double v[2];
+    double v[CBF_CUTTER_VALUES];
     if (ncutters >= OPT_CUTTER_MAX_ROWS)
         return opt_fail("%s: line %lu: more than %u cutters (limit max_rows)", cutter_file, line, OPT_CUTTER_MAX_ROWS);
     if (!*name)
@@ -722,14 +730,13 @@ static int cutter_add(unsigned long line, const char *name, const char *const va
     if (chars > OPT_CUTTER_MAX_NAME)
         return opt_fail("%s: line %lu: cutter name of %lu characters, longer than the %u a cutter record holds "
                         "(limit max_name)", cutter_file, line, (unsigned long)chars, OPT_CUTTER_MAX_NAME);
-    for (k = 0; k < 2; k++) {
-        const char *why = opt_number(value[k], &v[k]);
+    for (k = 0; k < CBF_CUTTER_VALUES; k++) {
+        const char *text = cell[1 + k], *why = opt_number(text, &v[k]);
         if (why)
-            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, value[k],
-                            why);
+            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, text, why);
         if (opt_cutter_values[k].positive && v[k] <= 0.0)
             return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
-                            opt_cutter_values[k].column, value[k], opt_cutter_values[k].check);
+                            opt_cutter_values[k].column, text, opt_cutter_values[k].check);
     }
     for (k = 0; k < ncutters; k++)
         if (strcmp(cutter_names[k], name) == 0)
@@ -738,8 +745,8 @@ static int cutter_add(unsigned long line, const char *name, const char *const va
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
     cutters[ncutters].name = cutter_names[ncutters];
-    cutters[ncutters].length = v[0];
-    cutters[ncutters].radius = v[1];
+    for (k = 0; k < CBF_CUTTER_VALUES; k++)
+        cutters[ncutters].value[k] = v[k];
     ncutters++;
     return 1;
 }
@@ -762,15 +769,17 @@ static char *opt_cell(char *s)
     return s;
 }
 
-/* CSV: the first non-blank line names the columns (name, length, radius in any order). */
+/* CSV: the first non-blank line names the columns (opt_cutter_columns, in any order). */
 static int cutters_csv(char *text)
 {
     char *line = text;
-    int col[3] = { -1, -1, -1 }, header = 1;
+    int col[OPT_CUTTER_COLUMNS], header = 1, i;
     unsigned long n = 0;
+    for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
+        col[i] = -1;
     while (line) {
         char *cells[OPT_CUTTER_MAX_COLUMNS], *p = line, *next = strchr(line, '\n');
-        int nc = 1, k, i, blank = 1;
+        int nc = 1, k, blank = 1;
         n++;
         if (next)
             *next++ = 0;
@@ -794,19 +803,22 @@ static int cutters_csv(char *text)
             cells[k] = opt_cell(cells[k]);
         if (header) {
             header = 0;
-            for (i = 0; i < 3; i++)
+            for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
                 for (k = 0; k < nc && col[i] < 0; k++)
                     if (strcmp(cells[k], opt_cutter_columns[i]) == 0)
                         col[i] = k;
-            if (col[0] < 0 || col[1] < 0 || col[2] < 0)
-                return opt_fail("%s: line %lu: the header row needs the columns %s", cutter_file, n, opt_columns_list);
+            for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
+                if (col[i] < 0)
+                    return opt_fail("%s: line %lu: the header row needs the columns %s", cutter_file, n,
+                                    opt_columns_list);
         } else {
-            const char *values[2];
-            if (col[0] >= nc || col[1] >= nc || col[2] >= nc)
-                return opt_fail("%s: line %lu: needs %s", cutter_file, n, opt_columns_list);
-            values[0] = cells[col[1]];
-            values[1] = cells[col[2]];
-            if (!cutter_add(n, cells[col[0]], values))
+            const char *row[OPT_CUTTER_COLUMNS];
+            for (i = 0; i < OPT_CUTTER_COLUMNS; i++) {
+                if (col[i] >= nc)
+                    return opt_fail("%s: line %lu: needs %s", cutter_file, n, opt_columns_list);
+                row[i] = cells[col[i]];
+            }
+            if (!cutter_add(n, row))
                 return 0;
         }
         line = next;
@@ -881,8 +893,8 @@ static int cutters_rows(cj *j)
     j->i++;
     for (;;) {
         unsigned long row;
-        char got[3][OPT_CUTTER_NAME_BYTES + 64];
-        int have[3] = { 0, 0, 0 }, k;
+        char got[OPT_CUTTER_COLUMNS][OPT_CUTTER_NAME_BYTES + 64];
+        int have[OPT_CUTTER_COLUMNS] = { 0 }, k;
         cj_ws(j);
         if (j->s[j->i] == ']') {
             j->i++;
@@ -910,9 +922,9 @@ static int cutters_rows(cj *j)
             }
             kline = cj_line(j);
             cj_scalar(j, key, sizeof key);
-            for (k = 0; k < 3 && strcmp(key, opt_cutter_columns[k]) != 0; k++)
+            for (k = 0; k < OPT_CUTTER_COLUMNS && strcmp(key, opt_cutter_columns[k]) != 0; k++)
                 ;
-            if (k == 3)
+            if (k == OPT_CUTTER_COLUMNS)
                 return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
                                 opt_columns_list);
             if (have[k])
@@ -926,13 +938,14 @@ static int cutters_rows(cj *j)
             cj_scalar(j, got[k], sizeof got[k]);
             have[k] = 1;
         }
-        if (!have[0] || !have[1] || !have[2])
-            return opt_fail("%s: line %lu: needs %s", cutter_file, row, opt_columns_list);
         {
-            const char *values[2];
-            values[0] = got[1];
-            values[1] = got[2];
-            if (!cutter_add(row, got[0], values))
+            const char *cell[OPT_CUTTER_COLUMNS];
+            for (k = 0; k < OPT_CUTTER_COLUMNS; k++) {
+                if (!have[k])
+                    return opt_fail("%s: line %lu: needs %s", cutter_file, row, opt_columns_list);
+                cell[k] = got[k];
+            }
+            if (!cutter_add(row, cell))
                 return 0;
         }
     }

@@ -47,6 +47,7 @@ from .registry import (
     NUMERIC_KINDS,
     ROLE_ARGS,
     ROLE_KINDS,
+    ROLE_NEEDS,
     SEVERITIES,
     TYPES,
     DeprecatedParams,
@@ -1012,17 +1013,15 @@ def _require_arg(ctx: _Ctx, node: Any, cmd: Command, argname: str, what: str, wa
             break
 
 
-_MOTION_NEEDS = {"point": ("end",), "line": ("start", "end"), "circle": ("start", "center", "normal", "degrees"),
-                 "helix": ("start", "center", "normal", "degrees", "length")}
-
-
 def _check_roles(ctx: _Ctx, node: Any, cmd: Command) -> None:
-    if cmd.motion:
-        for key in _MOTION_NEEDS[cmd.motion["kind"]]:
-            if key not in cmd.motion:
-                ctx.fail(node, f"{cmd.name}: motion kind {cmd.motion['kind']} needs {key}", "motion")
-    if cmd.orientation and cmd.orientation["kind"] == "path" and "start" not in cmd.orientation:
-        ctx.fail(node, f"{cmd.name}: orientation path needs start", "orientation")
+    """Each kinded role names every key its kind needs (registry.ROLE_NEEDS, the one list)."""
+    for role, needs in ROLE_NEEDS.items():
+        value: dict[str, str] | None = getattr(cmd, role)
+        if not value:
+            continue
+        for key in needs[value["kind"]]:
+            if key not in value:
+                ctx.fail(node, f"{cmd.name}: {role} kind {value['kind']} needs {key}", role)
 
 
 def _plain(x: Any) -> Any:

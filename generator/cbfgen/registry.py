@@ -201,13 +201,17 @@ ROLE_ARGS: dict[str, dict[str, RoleArg]] = {
 }
 
 
-# The kinds a command's motion, orientation and shape role may have (the schema's enums are filled
-# from here; every engine has a branch for each).
-ROLE_KINDS: dict[str, tuple[str, ...]] = {
-    "motion": ("point", "line", "circle", "helix"),
-    "orientation": ("set", "path"),
-    "shape": ("start", "end"),
+# The kinds a command's motion, orientation and shape role may have, and for each kind the keys
+# (of ROLE_ARGS[role]) the role must name for the engines to follow it: a circle needs its start,
+# centre, normal and angle. The schema's enums are filled from here and the loader refuses a role
+# that lacks a key its kind needs; every engine has a branch for each kind.
+ROLE_NEEDS: dict[str, dict[str, tuple[str, ...]]] = {
+    "motion": {"point": ("end",), "line": ("start", "end"), "circle": ("start", "center", "normal", "degrees"),
+               "helix": ("start", "center", "normal", "degrees", "length")},
+    "orientation": {"set": ("end",), "path": ("start", "end")},
+    "shape": {"start": ("name", "count"), "end": ("name", "count")},
 }
+ROLE_KINDS: dict[str, tuple[str, ...]] = {role: tuple(kinds) for role, kinds in ROLE_NEEDS.items()}
 
 
 def role_arg_fits(want: RoleArg, t: FieldType, count: int) -> bool:

@@ -1,23 +1,38 @@
-"""Cutter tables for check 6.1.2: CSV or YAML rows of name, length, radius (mm).
+"""Cutter tables for check 6.1.2: CSV or YAML rows of a cutter's name and its numbers (mm).
 
-The rules are the option-file rules both tools share (optfiles.py, cbf/option_files.json): at
-most max_bytes and max_rows; a name the spec's cutter record can hold, given once; a length and
-a radius that are finite numbers (RFC 8259 syntax) and, where the spec's positive check targets
-them, greater than 0: a NaN would switch check 6.1.2 off (it compares finite values only), so
-it is refused with its line, never read. CSV: the first non-blank line names the columns (name,
-length, radius in any order), cells are split at commas and trimmed of blanks and one pair of
-quotes. YAML: a list of {name, length, radius} mappings, or a mapping whose one key `cutters`
-holds that list.
+The columns are the keys of the spec's cutter role (cbf/option_files.json's cutter_table.columns:
+today name, length, radius): ``NAME`` the cutter's name, ``VALUES`` the numbers check 6.1.2
+compares. The rules are the option-file rules both tools share (optfiles.py): at most max_bytes
+and max_rows; a name the spec's cutter record can hold, given once; values that are finite
+numbers (RFC 8259 syntax) and, where the spec's positive check targets them, greater than 0: a
+NaN would switch check 6.1.2 off (it compares finite values only), so it is refused with its
+line, never read. CSV: the first non-blank line names the columns (in any order), cells are
+split at commas and trimmed of blanks and one pair of quotes. YAML: a list of mappings of the
+columns, or a mapping whose one key `cutters` holds that list.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from .optfiles import RULES, Mapping, OptionFileError, Scalar, Sequence, is_yaml, number, read_text, yaml_tree
+from .optfiles import (
+    CUTTER_NAME,
+    CUTTER_VALUES,
+    RULES,
+    Mapping,
+    OptionFileError,
+    Scalar,
+    Sequence,
+    is_yaml,
+    number,
+    read_text,
+    yaml_tree,
+)
 
 TABLE = RULES["cutter_table"]
 COLUMNS: tuple[str, ...] = tuple(TABLE["columns"])
+NAME = CUTTER_NAME
+VALUES = CUTTER_VALUES
 BLANKS = " \t\r\n\f\v"
 
 
@@ -26,13 +41,15 @@ class _Rows:
 
     def __init__(self, where: str) -> None:
         self.where = where
-        self.table: dict[str, tuple[float, float]] = {}
+        self.table: dict[str, tuple[float, ...]] = {}
         self.lines: dict[str, int] = {}
 
     def fail(self, line: int, what: str) -> OptionFileError:
         return OptionFileError(f"{self.where}: line {line}: {what}", line=line, kind="cutters")
 
-    def add(self, line: int, name: str, length: str, radius: str) -> None:
+    def add(self, line: int, cells: dict[str, str]) -> None:
+        """A row: ``cells`` holds a text for each column."""
+        name = cells[NAME]
         if len(self.table) >= TABLE["max_rows"]:
             raise self.fail(line, f"more than {TABLE['max_rows']} cutters (limit max_rows)")
         if not name:
@@ -41,7 +58,8 @@ class _Rows:
             raise self.fail(line, f"cutter name of {len(name)} characters, longer than the {TABLE['max_name']} "
                                   f"a cutter record holds (limit max_name)")
         values = []
-        for rule, text in zip(TABLE["values"], (length, radius), strict=True):
+        for rule in TABLE["values"]:
+            text = cells[rule["column"]]
             v = number(text)
             if isinstance(v, str):
                 raise self.fail(line, f"{rule['column']} '{text}' is {v}")
@@ -51,9 +69,9 @@ class _Rows:
         if name in self.lines:
             raise self.fail(line, f"cutter '{name}' given twice (first on line {self.lines[name]})")
         self.lines[name] = line
-        self.table[name] = (values[0], values[1])
+        self.table[name] = tuple(values)
 
-    def result(self) -> dict[str, tuple[float, float]]:
+    def result(self) -> dict[str, tuple[float, ...]]:
         if not self.table:
             raise OptionFileError(f"{self.where}: no cutters (the table is empty)", kind="cutters")
         return self.table
@@ -82,7 +100,7 @@ def _csv(text: str, rows: _Rows) -> None:
             continue
         if any(k >= len(cells) for k in col.values()):
             raise rows.fail(n, f"needs {', '.join(COLUMNS)}")
-        rows.add(n, *(cells[col[name]] for name in COLUMNS))
+        rows.add(n, {name: cells[col[name]] for name in COLUMNS})
 
 
 def _text(node: Scalar) -> str:
@@ -122,11 +140,12 @@ def _rows(node: Scalar | Mapping | Sequence, rows: _Rows) -> None:
             got[key.text] = _text(value)
         if len(got) != len(COLUMNS):
             raise rows.fail(item.line, f"needs {', '.join(COLUMNS)}")
-        rows.add(item.line, *(got[name] for name in COLUMNS))
+        rows.add(item.line, got)
 
 
-def load_cutter_table(path: str | Path) -> dict[str, tuple[float, float]]:
-    """{name: (length, radius)}. Raises OptionFileError (a CbfError) naming the line and the limit."""
+def load_cutter_table(path: str | Path) -> dict[str, tuple[float, ...]]:
+    """{name: (value, ...)}, the values in the order of ``VALUES`` (today length, radius). Raises
+    OptionFileError (a CbfError) naming the line and the limit."""
     p = Path(path)
     text = read_text(p, TABLE["what"], TABLE["max_bytes"])
     rows = _Rows(str(p))

@@ -24,6 +24,10 @@ from typing import Any
 from .errors import CbfError
 
 RULES: dict[str, Any] = json.loads(Path(__file__).with_name("option_files.json").read_text(encoding="utf-8"))
+# A cutter table's columns (options.cutter_columns): the cutter role's key of the name, and the
+# numbers of a row in the order a table's values hold them (today length and radius).
+CUTTER_NAME: str = RULES["cutter_table"]["name"]
+CUTTER_VALUES: tuple[str, ...] = tuple(v["column"] for v in RULES["cutter_table"]["values"])
 
 # RFC 8259's number grammar (RULES["number"] == "rfc8259"); words for the non-finite values
 NUMBER = re.compile(r"-?(?:0|[1-9][0-9]*)(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?")

@@ -231,9 +231,9 @@ VMAJOR = _common("version_major")
 VMINOR = _common("version_minor")
 COUNT = _common("command_count")
 # The header roles whose values the writer derives (patterns, checksums, count, version): a model,
-# a CUT file or a diff never sets or compares them field by field.
-DERIVED_ROLES = frozenset(("start_pattern", "end_pattern", "checksum", "command_count", "version_major",
-                           "version_minor"))
+# a CUT file or a diff never sets or compares them field by field. The generator's list
+# (registry.DERIVED_HEADER_ROLES), as spec_data.json carries it: no second copy here.
+DERIVED_ROLES: frozenset[str] = frozenset(SPEC["derived_roles"])
 HEADER_CHECKSUM_FIELDS = {f.checksum: f for f in _H0.fields if f.checksum}
 # Each header layout's checksum fields by tag: a new version's header may carry its own.
 LAYOUT_CHECKSUM_FIELDS: dict[str, dict[str, FieldInfo]] = {

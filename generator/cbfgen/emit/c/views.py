@@ -15,6 +15,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ... import registry
 from ...model import ALGORITHM_KINDS, Command, Field, Layout, Spec
+from ...options import cutter_columns
 from .cnames import cfloat, cname, comment, ctype, macro, member_doc
 from .machine import MachineView, machine_view
 
@@ -26,7 +27,6 @@ ORIENT_KINDS = registry.ROLE_KINDS["orientation"]
 ORIENT_KEYS = ("start", "end")
 SHAPE_KINDS = registry.ROLE_KINDS["shape"]
 SHAPE_KEYS = ("name", "count")
-CUTTER_KEYS = ("name", "length", "radius")
 REGIONS = ("file", "header", "records", "args")
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
 CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own tags follow (_tags)
@@ -456,7 +456,7 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         roles=m(_roles(spec)), tags=m(_tags(spec)), algorithms=m(ALGORITHMS), regions=m(REGIONS),
         motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
-        cutter_keys=m(CUTTER_KEYS), check_kinds=m(list(registry.CHECK_KINDS)),
+        cutter_keys=cutter_columns(spec).all, check_kinds=m(list(registry.CHECK_KINDS)),
         field_kinds=m(registry.FIELD_KINDS))
 
 
@@ -569,7 +569,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
             pmask=" | ".join(f"CBF__PBIT({profiles.index(p)})" for p in lay.profiles) or "0",
             profiles=tuple(lay.profiles), first_arg=first_arg, nargs=len(args), args=args, motion=motion,
             orient=orient, shape=_role_index(lay, c.shape, SHAPE_KEYS),
-            cutter=_role_index(lay, c.cutter, CUTTER_KEYS),
+            cutter=_role_index(lay, c.cutter, cutter_columns(spec).all),
             progress=_role_index(lay, {"p": c.progress} if c.progress else None, ("p",))[0],
             doc=comment(lay.doc or c.doc), clause=lay.clause or c.clause,
             plan=_plan(args, first_arg, motion, orient, planned.get(first + j, []))))

@@ -13,6 +13,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...options import option_rules
+from ...registry import DERIVED_HEADER_ROLES
 from ...registry import kind as check_kind
 from ...render import environment
 from .machine import machine_data, machine_schema
@@ -65,6 +66,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "headers": {
             h.id: {"size": h.size, "fields": [_field_data(f) for f in h.fields]} for h in spec.headers.values()
         },
+        # the header roles the codec derives (registry.DERIVED_HEADER_ROLES): tables.DERIVED_ROLES
+        "derived_roles": list(DERIVED_HEADER_ROLES),
         "record": {"head_size": spec.record.head_size, "fields": [_field_data(f) for f in spec.record.fields]},
         "commands": [
             {

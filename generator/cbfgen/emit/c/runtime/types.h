@@ -64,11 +64,12 @@ typedef struct cbf_finding {
 
 typedef void (*cbf_finding_fn)(void *user, const cbf_finding *finding);
 
-/** One entry of the robot's cutter table (6.1.2). */
+/** One entry of the robot's cutter table (6.1.2): its name and its numbers, value[CBF_CUTTER_<COLUMN>]
+ * for each column of the table beside the name (the keys of the spec's cutter role: CBF_CUTTER_LENGTH,
+ * CBF_CUTTER_RADIUS in rev 03). */
 typedef struct cbf_cutter {
     const char *name;
-    double length;
-    double radius;
+    double value[CBF_CUTTER_VALUES];
 } cbf_cutter;
 
 typedef struct cbf_options {

@@ -460,15 +460,13 @@ static void cbf__shape(cbf__vctx *v, int cmd, int layout, const uint8_t *args, l
 
 static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec, size_t off)
 {
+    /* the cutter role's keys: the name's first, then the table's values (cbfgen/options.py) */
     const cbf__layout *L = &cbf__layouts[layout];
-    const cbf_field_info *fn = cbf__layout_arg(layout, L->cutter[CBF__C_NAME]);
-    const cbf_field_info *fv[2];
+    const cbf_field_info *fn = cbf__layout_arg(layout, L->cutter[0]);
     size_t i, n, found = (size_t)-1;
     int k;
     if (!v->opt || !v->opt->cutters || !fn)
         return;
-    fv[0] = cbf__layout_arg(layout, L->cutter[CBF__C_LENGTH]);
-    fv[1] = cbf__layout_arg(layout, L->cutter[CBF__C_RADIUS]);
     n = cbf__strvalue_len(args + fn->offset, (size_t)fn->elem * fn->count);
     for (i = 0; i < v->opt->ncutters; i++) {
         const char *name = v->opt->cutters[i].name;
@@ -484,16 +482,17 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
         cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         return;
     }
-    for (k = 0; k < 2; k++) {
-        double ref = k == 0 ? v->opt->cutters[found].length : v->opt->cutters[found].radius, x;
-        if (!fv[k] || fv[k]->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv[k], &x))
+    for (k = 0; k < CBF_CUTTER_VALUES; k++) {
+        const cbf_field_info *fv = cbf__layout_arg(layout, L->cutter[1 + k]);
+        double ref = v->opt->cutters[found].value[k], x;
+        if (!fv || fv->kind != CBF__K_FLOAT || !cbf__ffirst(args, fv, &x))
             continue;
         if (fabs(x - ref) > cbf__tol_cutter) { /* named by the cutter role's key, as cbf validate does */
             char msg[256];
             size_t at = 0;
             cbf__cat(msg, sizeof msg, &at, "cutter ");
             cbf__repr(msg, sizeof msg, &at, args + fn->offset, n);
-            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", k == 0 ? "length" : "radius", x, ref);
+            cbf__cat(msg, sizeof msg, &at, " %s %g mm, the table says %g mm", cbf__cutter_keys[1 + k], x, ref);
             cbf__each(v, CBF__KIND_CUTTER_TABLE, rec, off, "%s", msg);
         }
     }

@@ -921,7 +921,11 @@ def parser() -> argparse.ArgumentParser:
     v.add_argument("files", nargs="+", metavar="file", help="CBF file, folder (its *.cbf files), or - for stdin")
     v.add_argument("--profile", choices=profiles, default=profiles[0])
     v.add_argument("--part-number", help="implant part number to compare (check 6.1.1)")
-    v.add_argument("--cutters", help="cutter table, CSV or YAML: name, length, radius (check 6.1.2)")
+    from .optfiles import RULES
+
+    table = ", ".join(RULES["cutter_table"]["columns"])  # the spec's cutter role keys (cbfgen/options.py)
+    checks = "/".join(c["id"] for c in T.checks_of("cutter_table"))
+    v.add_argument("--cutters", help=f"cutter table, CSV or YAML: {table} (check {checks})")
     v.add_argument("--machine", metavar="FILE",
                    help=f"machine limits, JSON or YAML (schema: {_schema_path('machine')}): breaches become "
                         f"errors; without it the spec's default machine gives warnings (check machine_limits)")

@@ -31,7 +31,7 @@ class Finding:
         return f"{self.severity} {self.check} {where}{at}: {self.message}"
 
 
-Cutters = Mapping[str, tuple[float, float]]
+Cutters = Mapping[str, tuple[float, ...]]  # name: the values, in the order of optfiles.CUTTER_VALUES
 Check = dict[str, Any]
 
 _CHECK_ORDER = {c["id"]: i for i, c in enumerate(T.CHECKS)}

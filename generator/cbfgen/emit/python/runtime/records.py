@@ -36,6 +36,7 @@ from .findings import (
 )
 from .machine import DEFAULT as DEFAULT_MACHINE
 from .machine import Limit, Machine, breach, machine_rules
+from .optfiles import CUTTER_NAME, CUTTER_VALUES
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -543,16 +544,15 @@ def _cutter_table(r: Records, check: Check, b: Batch) -> None:
     if not role or cutters is None:
         return
     tol = T.TOL["cutter_mm"]
-    names = b.cols[role["name"]]
+    names = b.cols[role[CUTTER_NAME]]
     for k, row in enumerate(b.rows.tolist()):
         at = int(b.aoff[k])
         name = string_value(bytes(names[k]))
         if name not in cutters:
             r.found(check, row, at, f"cutter {name!r} is not in the cutter table")
             continue
-        length, radius = cutters[name]
-        for key, ref in (("length", length), ("radius", radius)):
-            col = b.cols.get(role[key])
+        for key, ref in zip(CUTTER_VALUES, cutters[name], strict=True):  # the table's columns
+            col = b.cols.get(role.get(key, ""))
             if col is None or col.ndim != 1 or col.dtype.kind != "f":
                 continue
             v = float(col[k])

@@ -63,6 +63,7 @@ from . import tables as T
 from .codec import field_checksum, file_algorithm, fill_header, frame, header_info, pack_file
 from .geometry import motion_end
 from .model import Cbf, Record, new_header
+from .optfiles import CUTTER_NAME, CUTTER_VALUES
 
 __all__ = ["cutfiles", "models", "mutations", "reseal_checksums", "seal"]
 
@@ -238,7 +239,7 @@ class _Draw:
     """Draws the records of one file: keeps the motion, orientation and progress state."""
 
     def __init__(self, draw: st.DrawFn, version: str, profile: str, bound: float, continuous: bool,
-                 cutters: Mapping[str, tuple[float, float]] | None, rules: _Rules) -> None:
+                 cutters: Mapping[str, tuple[float, ...]] | None, rules: _Rules) -> None:
         self.draw, self.version, self.profile, self.bound = draw, version, profile, bound
         self.continuous, self.cutters, self.rules = continuous, cutters, rules
         self.state = _State()
@@ -288,12 +289,10 @@ class _Draw:
         if self.cutters is not None and cmd.cutter is not None:
             role = cmd.cutter
             name = _pick(self.draw, self._cutter_names(cmd, lay))
-            length, radius = self.cutters[name]
-            a[role["name"]] = name.encode("ascii")
-            if role.get("length") in a:
-                a[role["length"]] = _f32(length)
-            if role.get("radius") in a:
-                a[role["radius"]] = _f32(radius)
+            a[role[CUTTER_NAME]] = name.encode("ascii")
+            for key, ref in zip(CUTTER_VALUES, self.cutters[name], strict=True):  # the table's columns
+                if role.get(key) in a:
+                    a[role[key]] = _f32(ref)
         self._geometry(cmd, lay, a)
         for f in lay.args:
             if f.kind == "float":
@@ -309,7 +308,7 @@ class _Draw:
 
     def _cutter_names(self, cmd: T.CommandInfo, lay: T.LayoutInfo) -> list[str]:
         role = cmd.cutter or {}
-        size = next((f.size for f in lay.args if f.name == role.get("name")), 0)
+        size = next((f.size for f in lay.args if f.name == role.get(CUTTER_NAME)), 0)
         return [n for n in sorted(self.cutters or {}) if n.isascii() and n.isprintable() and 0 < len(n) <= size]
 
     def usable(self, cmd: T.CommandInfo, lay: T.LayoutInfo) -> bool:
@@ -425,7 +424,7 @@ def _check_args(profile: str, min_records: int, max_records: int, bound: float,
 
 def models(*, versions: Sequence[str] | None = None, profile: str = "default", min_records: int = 0,
            max_records: int = 30, continuous: bool = True, bound: float = 1000.0, part_number: str | None = None,
-           cutters: Mapping[str, tuple[float, float]] | None = None) -> st.SearchStrategy[Cbf]:
+           cutters: Mapping[str, tuple[float, ...]] | None = None) -> st.SearchStrategy[Cbf]:
     """Models of valid files (see the module doc), before the derived values are filled:
     records carry code and arguments only. ``seal(model, profile)`` gives the bytes."""
     chosen = _check_args(profile, min_records, max_records, bound, versions, part_number)
@@ -483,7 +482,7 @@ def _shape(draw: st.DrawFn, d: _Draw, plain: list[tuple[T.CommandInfo, T.LayoutI
 
 def cutfiles(*, versions: Sequence[str] | None = None, profile: str = "default", min_records: int = 0,
              max_records: int = 30, continuous: bool = True, bound: float = 1000.0, part_number: str | None = None,
-             cutters: Mapping[str, tuple[float, float]] | None = None) -> st.SearchStrategy[bytes]:
+             cutters: Mapping[str, tuple[float, ...]] | None = None) -> st.SearchStrategy[bytes]:
     """Valid CBF files (bytes): ``validate(data, profile=profile, part_number=part_number,
     cutters=cutters)`` finds nothing. Every version of the spec unless ``versions`` names
     some (ids such as "3.0"); floats within +-``bound`` mm; see the module doc."""
