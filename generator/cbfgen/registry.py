@@ -393,7 +393,8 @@ def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = F
 # In the order of the C engine's kind enum (and of the schema's list).
 _KINDS = (
     _k("truncated_header", NoParams, "file", "the file is shorter than the header"),
-    _k("truncated_record", ScopedParams, "file", "the file ends inside a record"),
+    # not scoped by version: a file that ends inside a record cannot be read, whatever its version
+    _k("truncated_record", NoParams, "file", "the file ends inside a record"),
     _k("part_number", PartNumberParams, "file", "the implant descriptor's first word is the given part number"),
     _k("descriptor_word", ScopedParams, "file", "the implant descriptor holds a word"),
     _k("cutter_table", CutterTableParams, "record", "cutters agree with the given cutter table"),
