@@ -395,7 +395,7 @@ for n in (LO - 1, HI + 1):
     for k in ("arg_size", "arg_checksum"):
         one["records"][1].pop(k, None)
     e = ask({"op": "encode", "json": one, "keep_stored": False, "profile": "default"})
-    assert not e["ok"], (n, e)
+    assert not e["ok"] and f"{lay.repeated.name}: {n} items; the group holds {LO} to {HI}" in e["error"]["message"], e
 p.stdin.write(json.dumps({"op": "quit"}) + "\n"); p.stdin.close(); p.wait()
 print(json.dumps(sorted(seen)))
 """
@@ -422,3 +422,36 @@ def test_c_reads_writes_and_judges_the_group_as_python_does(revised: Revised, c_
     seen = {tuple(x) for x in __import__("json").loads(run.stdout.strip().splitlines()[-1])}
     # the group's own findings: not finite, a machine limit item by item (named group[i]), arg_size
     assert {("finite", False), ("machine_limits", True), ("arg_size", False)} <= seen, seen
+
+
+def test_cbf_c_dumps_each_item_and_validates_the_group(revised: Revised, tmp_path: Path) -> None:
+    """cbf-c of the revised spec: `dump` prints the group's n items, group[0] .. group[n-1], and nothing
+    past them; `validate` of a file with a polyline through valid points finds nothing (exit 0)."""
+    exe = tmp_path / "cbf-c"
+    subprocess.run([_cc(), "-std=c99", "-O1", "-o", str(exe), str(revised.gen / "c" / "cbf_tool.c"), "-lm"],
+                   check=True, capture_output=True)
+    script = (
+        "import sys, cbf\n"
+        "from cbf import tables as T\n"
+        "from cbf.layouts import Point\n"
+        "from cbf.model import Cbf, Record, new_header\n"
+        "cmd = T.BY_NAME[sys.argv[1]]\n"
+        "lay = next(lay for lay in cmd.layouts if lay.n is not None and lay.n > 1)\n"
+        "v = next(v for v in T.VERSIONS if v.writable and cmd.layouts_for(v.id))\n"
+        "pts = tuple((float(i), 0.0, 1.0) for i in range(lay.n))\n"
+        "m = Cbf(new_header(f'{v.major}.{v.minor or 0}', implant_descriptor='PN-1'),\n"
+        "        (Record.of(Point(point=(0.0, 0.0, 0.0))), Record.of(lay.cls(points=pts))))\n"
+        "open(sys.argv[2], 'wb').write(cbf.encode(m))\n"
+        "print(lay.n, lay.repeated.name)\n")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(revised.gen / "python"), *sys.path]))
+    made = subprocess.run([sys.executable, "-c", script, revised.name, str(tmp_path / "p.cbf")], env=env,
+                          capture_output=True, text=True, check=True)
+    n_text, group = made.stdout.split()
+    n = int(n_text)
+    dump = subprocess.run([str(exe), "dump", str(tmp_path / "p.cbf")], capture_output=True, text=True)
+    assert dump.returncode == 0, dump.stderr
+    line = next(x for x in dump.stdout.splitlines() if x.startswith("1 @"))
+    assert all(f" {group}[{i}]=" in line for i in range(n)) and f" {group}[{n}]=" not in line, line
+    assert f" {group}[{n - 1}]={n - 1},0,1" in line, line
+    valid = subprocess.run([str(exe), "validate", str(tmp_path / "p.cbf")], capture_output=True, text=True)
+    assert valid.returncode == 0, valid.stdout + valid.stderr

@@ -2369,6 +2369,31 @@ static int choose_layout(int code, int version, int32_t args, int has_size, uint
     return CBF_LAYOUT__NONE;
 }
 
+/* Why an args object whose keys name a layout with a repeated group fits none: its group is no list,
+ * or a list of an n outside min..max (the message names both); 1 when that is it (the message set). */
+static int group_misfit(int code, int version, int32_t args, const char *where)
+{
+    int cands[CBF_LAYOUT__COUNT + 1], n, k;
+    n = cbf_args_candidates(code, version, cands, CBF_LAYOUT__COUNT);
+    for (k = 0; k < n; k++) {
+        const cbf_field_info *af;
+        size_t lo = 0, hi = 0;
+        int32_t g;
+        const int group = cbf_layout_group(cands[k], &lo, &hi, NULL);
+        if (group < 0 || !keys_match(cands[k], args))
+            continue;
+        (void)cbf_layout_fields(cands[k], &af);
+        g = jget(args, af[group].name);
+        if (nodes[g].type != J_ARR)
+            (void)fail("%s.args.%s: expected a list of items", where, af[group].name);
+        else
+            (void)fail("%s.args.%s: %lu items; the group holds %lu to %lu", where, af[group].name,
+                       (unsigned long)jcount(g), (unsigned long)lo, (unsigned long)hi);
+        return 1;
+    }
+    return 0;
+}
+
 /* A repeated group from its JSON list into a byte image: each item packed as the group's field
  * row (one item) says, at its place. */
 static int pack_group(const cbf_field_info *f, int32_t v, uint8_t *base, size_t item)
@@ -2529,7 +2554,8 @@ static int encode(int32_t doc, int keep, int profile, long *size)
                 return fail("%s.args: an unknown code takes raw_args only", where);
             lay = choose_layout((int)code, version, a, has_size, want_size);
             if (lay == CBF_LAYOUT__NONE)
-                return fail("%s.args: the keys match no layout of the command", where);
+                return group_misfit((int)code, version, a, where)
+                       ? 0 : fail("%s.args: the keys match no layout of the command", where);
             na = cbf_layout_fields(lay, &af);
             nargs = json_nb(lay, a);
             group = cbf_layout_group(lay, NULL, NULL, &item);
