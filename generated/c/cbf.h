@@ -1163,6 +1163,9 @@ enum cbf__kind {
 #define CBF__NCHECKS 33
 #define CBF__NTARGETS 25
 #define CBF__MAX_CANDIDATES 2
+/* 1 when a layout has a repeated argument group (issue 25, point 3): with 0, the group's branches
+ * fold away and a file of fixed layouts is read exactly as before groups existed. */
+#define CBF__HAS_GROUPS 0
 #define CBF__MAX_COVERAGES 1
 
 #define CBF__LITTLE_ENDIAN 1
@@ -1226,7 +1229,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1230 "cbf.h"
+#line 1233 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1313,7 +1316,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1317 "cbf.h"
+#line 1320 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1442,95 +1445,65 @@ static const cbf_field_info cbf__args[74] = {
 
 static const cbf__layout cbf__layouts[30] = {
     { 0, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 0, 3, offsetof(cbf_args, checkpoint),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2,
--1, 0u, 0u, 0u, 0u }, /* CHECKPOINT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT */
     { 0, "v1", CBF__VBIT(CBF_V1_X), 0, 16, 3, 1, offsetof(cbf_args, checkpoint_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CHECKPOINT_V1 */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT_V1 */
     { 1, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 4, 5, offsetof(cbf_args, cutter),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CUTTER */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER */
     { 1, "v1", CBF__VBIT(CBF_V1_X), 0, 32, 9, 4, offsetof(cbf_args, cutter_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CUTTER_V1 */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_V1 */
     { 2, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 13, 2, offsetof(cbf_args, orient),
-      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ORIENT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT */
     { 3, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 15, 2, offsetof(cbf_args, orient5b),
-      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ORIENT5B */
+      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT5B */
     { 4, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 17, 1, offsetof(cbf_args, phase),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* PHASE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* PHASE */
     { 5, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 18, 1, offsetof(cbf_args, enable_skip),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ENABLE_SKIP */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENABLE_SKIP */
     { 6, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 19, 2, offsetof(cbf_args, startshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* STARTSHAPE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* STARTSHAPE */
     { 7, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 21, 2, offsetof(cbf_args, endshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ENDSHAPE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENDSHAPE */
     { 8, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* DECEL_OFF */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_OFF */
     { 9, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* DECEL_ON */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_ON */
     { 10, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 12, 23, 1, offsetof(cbf_args, point),
-      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* POINT */
+      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* POINT */
     { 11, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 24, 2, offsetof(cbf_args, line),
-      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* LINE */
+      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE */
     { 12, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 48, 26, 4, offsetof(cbf_args, line5b),
-      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* LINE5B */
+      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE5B */
     { 13, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 36, 30, 3, offsetof(cbf_args, arc),
-      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ARC */
+      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC */
     { 14, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 60, 33, 5, offsetof(cbf_args, arc5b),
-      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ARC5B */
+      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC5B */
     { 15, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 40, 38, 4, offsetof(cbf_args, circle),
-      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CIRCLE */
+      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE */
     { 16, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 64, 42, 6, offsetof(cbf_args, circle5b),
-      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CIRCLE5B */
+      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE5B */
     { 17, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 44, 48, 5, offsetof(cbf_args, helix),
-      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* HELIX */
+      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX */
     { 18, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 68, 53, 7, offsetof(cbf_args, helix5b),
-      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* HELIX5B */
+      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX5B */
     { 19, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 4, 60, 1, offsetof(cbf_args, speed),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* SPEED */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* SPEED */
     { 20, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 8, 61, 2, offsetof(cbf_args, accel),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* ACCEL */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ACCEL */
     { 21, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CUTTER_ON */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_ON */
     { 22, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* CUTTER_OFF */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_OFF */
     { 23, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 63, 1, offsetof(cbf_args, guide),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* GUIDE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* GUIDE */
     { 24, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 64, 4, offsetof(cbf_args, fcparms),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* FCPARMS */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* FCPARMS */
     { 25, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 68, 3, offsetof(cbf_args, version),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* VERSION */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION */
     { 25, "implib", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__PBIT(1), 16, 71, 2, offsetof(cbf_args, version_implib),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* VERSION_IMPLIB */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION_IMPLIB */
     { 26, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 40, 73, 1, offsetof(cbf_args, comment),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1,
--1, 0u, 0u, 0u, 0u }, /* COMMENT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* COMMENT */
 };
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
@@ -2351,10 +2324,17 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2355 "cbf.h"
+#line 2328 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
+/* The group's own paths stay out of line: a file of fixed layouts decodes as fast as before. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__GROUP_PATH __attribute__((noinline, cold))
+#else
+#define CBF__GROUP_PATH
+#endif
+
 /* n for nb argument bytes of layout L: how many items of its group a record of nb bytes holds,
  * -1 when no n in group_min..group_max tiles nb (a layout without a group: 0 for its size, else -1). */
 static inline long cbf__group_n(const cbf__layout *L, size_t nb)
@@ -2371,7 +2351,9 @@ static inline long cbf__group_n(const cbf__layout *L, size_t nb)
 /* Whether layout L decodes nb argument bytes (its size; with a group, one of its sizes). */
 static inline int cbf__layout_takes(const cbf__layout *L, size_t nb)
 {
-    return L->group < 0 ? nb == L->size : cbf__group_n(L, nb) >= 0;
+    if (!CBF__HAS_GROUPS || L->group < 0)
+        return nb == L->size; /* the common case first: a fixed layout */
+    return cbf__group_n(L, nb) >= 0;
 }
 
 /* The smallest nb layout L takes above `above` (-1: its smallest), or -1 when it takes none. */
@@ -2388,7 +2370,7 @@ static long cbf__layout_next_size(const cbf__layout *L, long above)
 
 /* The group's items of a record (n of them, after the fixed arguments) into the decoded struct,
  * one item a time through the item's field row, and n beside them. */
-static void cbf__load_group(const cbf__layout *L, const uint8_t *args, size_t n, cbf_args *out)
+CBF__GROUP_PATH static void cbf__load_group(const cbf__layout *L, const uint8_t *args, size_t n, cbf_args *out)
 {
     cbf_field_info item = cbf__args[L->first_arg + (size_t)L->group];
     size_t i;
@@ -2410,7 +2392,7 @@ static size_t cbf__group_items(const cbf__layout *L, const cbf_args *in)
 }
 
 /* The group's n items of a decoded struct into argument bytes, after the fixed arguments. */
-static void cbf__store_group(const cbf__layout *L, const cbf_args *in, size_t n, uint8_t *out)
+CBF__GROUP_PATH static void cbf__store_group(const cbf__layout *L, const cbf_args *in, size_t n, uint8_t *out)
 {
     cbf_field_info item = cbf__args[L->first_arg + (size_t)L->group];
     size_t i;
@@ -2459,7 +2441,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2463 "cbf.h"
+#line 2445 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2684,7 +2666,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2688 "cbf.h"
+#line 2670 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2855,7 +2837,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2859 "cbf.h"
+#line 2841 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2946,13 +2928,19 @@ long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out)
     if (!cbf__layout_ok(layout) || !out || (!args && n))
         return CBF_ERR_ARGUMENT;
     L = &cbf__layouts[layout];
-    items = cbf__group_n(L, n); /* a repeated group: n from nb; else 0 when nb is the size */
-    if (items < 0)
+    if (CBF__HAS_GROUPS && L->group >= 0) { /* a repeated group: n from nb, the items after the fixed arguments */
+        items = cbf__group_n(L, n);
+        if (items < 0)
+            return CBF_ERR_RANGE;
+        memset(out, 0, sizeof *out);
+        cbf__load(&cbf__args[L->first_arg], L->nargs - 1u, args, (unsigned char *)out + L->member);
+        cbf__load_group(L, args, (size_t)items, out);
+        return (long)n;
+    }
+    if (n != L->size)
         return CBF_ERR_RANGE;
     memset(out, 0, sizeof *out);
-    cbf__load(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), args, (unsigned char *)out + L->member);
-    if (L->group >= 0)
-        cbf__load_group(L, args, (size_t)items, out);
+    cbf__load(&cbf__args[L->first_arg], L->nargs, args, (unsigned char *)out + L->member);
     return (long)n;
 }
 
@@ -2963,15 +2951,15 @@ long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
     if (!cbf__layout_ok(layout) || !in || !out)
         return CBF_ERR_ARGUMENT;
     L = &cbf__layouts[layout];
-    items = cbf__group_items(L, in);
-    if (L->group >= 0 && (items < L->group_min || items > L->group_max))
+    items = CBF__HAS_GROUPS ? cbf__group_items(L, in) : 0u;
+    if (CBF__HAS_GROUPS && L->group >= 0 && (items < L->group_min || items > L->group_max))
         return CBF_ERR_RANGE; /* a group of n items outside its min..max: no nb says it */
-    n = L->size + (L->group >= 0 ? L->group_item * items : 0u);
+    n = L->size + (CBF__HAS_GROUPS && L->group >= 0 ? L->group_item * items : 0u);
     if (cap < n)
         return CBF_ERR_BUFFER;
     memset(out, 0, n);
     cbf__store(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), (const unsigned char *)in + L->member, out);
-    if (L->group >= 0)
+    if (CBF__HAS_GROUPS && L->group >= 0)
         cbf__store_group(L, in, items, out);
     return (long)n;
 }
@@ -3027,7 +3015,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3031 "cbf.h"
+#line 3019 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3280,7 +3268,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3284 "cbf.h"
+#line 3272 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4394,7 +4382,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4398 "cbf.h"
+#line 4386 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4493,8 +4481,8 @@ static void cbf__machine_start(cbf__vctx *v)
  * targets the argument and a value is <= 0 (that check's). item: which item of a repeated
  * group x is (named argument[item]), -1 for an argument. 1 when it found a breach. Off the
  * fast path: cold. */
-CBF__COLD static int cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
-                                         int finite, long rec, size_t off, long item)
+CBF__COLD static int cbf__machine_breach_item(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x,
+                                              unsigned n, int finite, long rec, size_t off, long item)
 {
     const cbf__mrule *r = &cbf__mrules[j];
     const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
@@ -4539,6 +4527,13 @@ CBF__COLD static int cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsi
     return 1;
 }
 
+/* cbf__machine_breach_item for an argument (not an item of a group): the fast path's call. */
+CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
+                                          int finite, long rec, size_t off)
+{
+    (void)cbf__machine_breach_item(v, cmd, layout, j, x, n, finite, rec, off, -1);
+}
+
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
  * function, finite: whether all are), called with j and n as constants: one branch-free
  * test of the box or range (CBF__MACHINE_OUT, written out per axis by machine.h.j2), the
@@ -4550,10 +4545,10 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
     int out = 0;
     CBF__MACHINE_OUT(out, x, lo, hi, n);
     if (out)
-        (void)cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off, -1);
+        cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4557 "cbf.h"
+#line 4552 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4569,7 +4564,7 @@ static inline int cbf__group_finite(const uint8_t *p, size_t m)
 }
 
 /* machine_limits rule j on a group of n items at g (count floats, item_size bytes each): each
- * item is judged as an argument of its own (cbf__machine_breach: not when a value is not finite
+ * item is judged as an argument of its own (cbf__machine_breach_item: not when a value is not finite
  * or a positive check's); one finding a record, at the first item out, named group[item]. */
 static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigned j, const uint8_t *g, size_t n,
                                       unsigned count, size_t item_size, long rec, size_t off)
@@ -4585,12 +4580,12 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
         for (e = 0; e < count && e < CBF_MACHINE_MAX_AXES; e++)
             finite &= cbf__float_at(g + item_size * i + 4u * e, &x[e]);
         CBF__MACHINE_OUT(out, x, lo, hi, count);
-        if (out && cbf__machine_breach(v, cmd, layout, j, x, count, finite, rec, off + item_size * i, (long)i))
+        if (out && cbf__machine_breach_item(v, cmd, layout, j, x, count, finite, rec, off + item_size * i, (long)i))
             return;
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4594 "cbf.h"
+#line 4589 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5454,7 +5449,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5458 "cbf.h"
+#line 5453 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -11,7 +11,7 @@ static inline int cbf__group_finite(const uint8_t *p, size_t m)
 }
 
 /* machine_limits rule j on a group of n items at g (count floats, item_size bytes each): each
- * item is judged as an argument of its own (cbf__machine_breach: not when a value is not finite
+ * item is judged as an argument of its own (cbf__machine_breach_item: not when a value is not finite
  * or a positive check's); one finding a record, at the first item out, named group[item]. */
 static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigned j, const uint8_t *g, size_t n,
                                       unsigned count, size_t item_size, long rec, size_t off)
@@ -27,7 +27,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
         for (e = 0; e < count && e < CBF_MACHINE_MAX_AXES; e++)
             finite &= cbf__float_at(g + item_size * i + 4u * e, &x[e]);
         CBF__MACHINE_OUT(out, x, lo, hi, count);
-        if (out && cbf__machine_breach(v, cmd, layout, j, x, count, finite, rec, off + item_size * i, (long)i))
+        if (out && cbf__machine_breach_item(v, cmd, layout, j, x, count, finite, rec, off + item_size * i, (long)i))
             return;
     }
 }

@@ -28,8 +28,8 @@ static void cbf__machine_start(cbf__vctx *v)
  * targets the argument and a value is <= 0 (that check's). item: which item of a repeated
  * group x is (named argument[item]), -1 for an argument. 1 when it found a breach. Off the
  * fast path: cold. */
-CBF__COLD static int cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
-                                         int finite, long rec, size_t off, long item)
+CBF__COLD static int cbf__machine_breach_item(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x,
+                                              unsigned n, int finite, long rec, size_t off, long item)
 {
     const cbf__mrule *r = &cbf__mrules[j];
     const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
@@ -74,6 +74,13 @@ CBF__COLD static int cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsi
     return 1;
 }
 
+/* cbf__machine_breach_item for an argument (not an item of a group): the fast path's call. */
+CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
+                                          int finite, long rec, size_t off)
+{
+    (void)cbf__machine_breach_item(v, cmd, layout, j, x, n, finite, rec, off, -1);
+}
+
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
  * function, finite: whether all are), called with j and n as constants: one branch-free
  * test of the box or range (CBF__MACHINE_OUT, written out per axis by machine.h.j2), the
@@ -85,5 +92,5 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
     int out = 0;
     CBF__MACHINE_OUT(out, x, lo, hi, n);
     if (out)
-        (void)cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off, -1);
+        cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }

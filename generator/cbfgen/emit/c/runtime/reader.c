@@ -86,13 +86,19 @@ long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out)
     if (!cbf__layout_ok(layout) || !out || (!args && n))
         return CBF_ERR_ARGUMENT;
     L = &cbf__layouts[layout];
-    items = cbf__group_n(L, n); /* a repeated group: n from nb; else 0 when nb is the size */
-    if (items < 0)
+    if (CBF__HAS_GROUPS && L->group >= 0) { /* a repeated group: n from nb, the items after the fixed arguments */
+        items = cbf__group_n(L, n);
+        if (items < 0)
+            return CBF_ERR_RANGE;
+        memset(out, 0, sizeof *out);
+        cbf__load(&cbf__args[L->first_arg], L->nargs - 1u, args, (unsigned char *)out + L->member);
+        cbf__load_group(L, args, (size_t)items, out);
+        return (long)n;
+    }
+    if (n != L->size)
         return CBF_ERR_RANGE;
     memset(out, 0, sizeof *out);
-    cbf__load(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), args, (unsigned char *)out + L->member);
-    if (L->group >= 0)
-        cbf__load_group(L, args, (size_t)items, out);
+    cbf__load(&cbf__args[L->first_arg], L->nargs, args, (unsigned char *)out + L->member);
     return (long)n;
 }
 
@@ -103,15 +109,15 @@ long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
     if (!cbf__layout_ok(layout) || !in || !out)
         return CBF_ERR_ARGUMENT;
     L = &cbf__layouts[layout];
-    items = cbf__group_items(L, in);
-    if (L->group >= 0 && (items < L->group_min || items > L->group_max))
+    items = CBF__HAS_GROUPS ? cbf__group_items(L, in) : 0u;
+    if (CBF__HAS_GROUPS && L->group >= 0 && (items < L->group_min || items > L->group_max))
         return CBF_ERR_RANGE; /* a group of n items outside its min..max: no nb says it */
-    n = L->size + (L->group >= 0 ? L->group_item * items : 0u);
+    n = L->size + (CBF__HAS_GROUPS && L->group >= 0 ? L->group_item * items : 0u);
     if (cap < n)
         return CBF_ERR_BUFFER;
     memset(out, 0, n);
     cbf__store(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), (const unsigned char *)in + L->member, out);
-    if (L->group >= 0)
+    if (CBF__HAS_GROUPS && L->group >= 0)
         cbf__store_group(L, in, items, out);
     return (long)n;
 }
