@@ -353,10 +353,14 @@ def test_the_kernel_agrees_with_a_record_by_record_reading(tmp_path: Path) -> No
             for ch in T.checks_of("machine_limits"):
                 for f, limit, positive in machine_rules(ch, cmd.name, lay.variant):
                     v = getattr(values, f.name)
-                    text = breach(tuple(v) if isinstance(v, tuple) else (v,), m.limits[limit], positive)
-                    if text is not None:
-                        sev = ch["input_severity"] if machine is not None else ch["severity"]
-                        expected.append((ch["id"], sev, i, offsets[i] + T.HEAD_SIZE + f.offset))
+                    # a repeated group (issue 25, point 3): each item an argument, the first out reported
+                    for k, item in enumerate(v if f.per else (v,)):
+                        text = breach(tuple(item) if isinstance(item, tuple) else (item,), m.limits[limit], positive)
+                        if text is not None:
+                            sev = ch["input_severity"] if machine is not None else ch["severity"]
+                            at = offsets[i] + T.HEAD_SIZE + f.offset + k * f.elem_size * max(f.per, 1)
+                            expected.append((ch["id"], sev, i, at))
+                            break
         assert len(expected) > 10
         assert _machine_of(cbf.validate(data, machine=machine)) == expected
 

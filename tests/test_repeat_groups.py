@@ -1,18 +1,23 @@
-"""Repeated argument groups (issue 25, point 3): the drill fixture tests/revisions/pending/polyline.yaml
-(a command whose argument is n points, nb = 12 n) applied to a copy of the spec, the Python package
-generated from it, and, in that package: binary, CUT and canonical JSON round trips for random n
-(hypothesis, derandomised under the ci profile), the nb that no n tiles refused by the writer and
-refused by the writer and the CUT reader, and continuity through the polyline's last point.
+"""Repeated argument groups (issue 25, point 3): the drill fixture tests/revisions/polyline.yaml (a
+command whose argument is n points, nb = 12 n) applied to a copy of the spec, the Python package and
+the C binding generated from it, and, in that package: binary, CUT and canonical JSON round trips for
+random n (hypothesis, derandomised under the ci profile), the nb that no n tiles refused by the
+writer and the CUT reader, and continuity through the polyline's last point; in C: the struct's
+bounded array and n (encode refuses n out of range, decode leaves an untiled nb raw), and the C
+testee against the Python binding on files with non-finite points, points out of the machine's
+workspace and untiled nb (decode, validate with every finding's words, encode back to the bytes).
 
-The loader refuses groups while a binding lacks them (registry.REPEAT_BINDINGS); the Python
-binding carries them, so this test lets the loader through for Python alone.
+The loader refuses groups while a binding lacks them (registry.REPEAT_BINDINGS): every binding of
+registry.BINDINGS carries them now, and the gate still refuses one that would not.
 """
 
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
@@ -21,10 +26,11 @@ from conftest import HYPOTHESIS_PROFILE, REPO, dump_yaml, spec_doc
 from revisions.drill import apply_edit, load_fixture, render
 
 from cbfgen import loader
+from cbfgen.emit import c as c_emit
 from cbfgen.emit import python as py_emit
 from cbfgen.model import Spec
 
-FIXTURE = REPO / "tests" / "revisions" / "pending" / "polyline.yaml"
+FIXTURE = REPO / "tests" / "revisions" / "polyline.yaml"
 
 SCRIPT = r"""
 import math, struct, sys
@@ -113,25 +119,40 @@ def _revised_spec(tmp: Path) -> Path:
     return path
 
 
+@dataclass(frozen=True)
+class Revised:
+    spec: Spec
+    gen: Path  # the Python package (gen/python) and the C binding (gen/c) of the revised spec
+    name: str  # the fixture's variable-length command
+
+
 @pytest.fixture(scope="module")
-def package(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str]:
+def revised(tmp_path_factory: pytest.TempPathFactory) -> Revised:
     tmp = tmp_path_factory.mktemp("polyline")
-    spec_path = _revised_spec(tmp)
-    with pytest.MonkeyPatch.context() as mp:
-        # every binding but Python is still refused by the gate: let it through for Python alone
-        mp.setattr(loader, "repeat_unsupported", lambda: ())
-        spec: Spec = loader.load(spec_path)
-    for rel, data in py_emit.emit(spec).items():
+    spec: Spec = loader.load(_revised_spec(tmp))
+    for rel, data in [*py_emit.emit(spec).items(), *c_emit.emit(spec).items()]:
         out = tmp / "gen" / rel
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_bytes(data)
-    name = render("${name:POLYLINE}", spec_doc(), "test")
-    return tmp / "gen" / "python", name
+    return Revised(spec, tmp / "gen", render("${name:POLYLINE}", spec_doc(), "test"))
 
 
-def test_the_gate_refuses_groups_while_a_binding_lacks_them(tmp_path: Path) -> None:
-    with pytest.raises(loader.SpecError, match="a repeated argument group is not implemented by the"):
-        loader.load(_revised_spec(tmp_path))
+@pytest.fixture(scope="module")
+def package(revised: Revised) -> tuple[Path, str]:
+    return revised.gen / "python", revised.name
+
+
+def test_every_binding_carries_groups_and_the_gate_refuses_one_that_would_not(tmp_path: Path) -> None:
+    from cbfgen import registry
+
+    assert registry.repeat_unsupported() == ()
+    spec = loader.load(_revised_spec(tmp_path))  # no binding is missing: the loader lets the group through
+    assert any(lay.repeated is not None for c in spec.commands for lay in c.layouts)
+    for missing in registry.BINDINGS:
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(registry, "REPEAT_BINDINGS", tuple(b for b in registry.BINDINGS if b != missing))
+            with pytest.raises(loader.SpecError, match=f"not implemented by the binding\\(s\\) {missing} "):
+                loader.load(_revised_spec(tmp_path))
 
 
 def test_round_trips_for_random_n(package: tuple[Path, str]) -> None:
@@ -158,9 +179,7 @@ def test_diff_classifies_groups(tmp_path: Path) -> None:
     group["repeat"]["max"] -= 1
     narrow_path = tmp_path / "narrow.yaml"
     narrow_path.write_text(dump_yaml(narrowed), encoding="utf-8")
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(loader, "repeat_unsupported", lambda: ())
-        old, new, narrow = loader.load(REPO / "spec" / "cbf.yaml"), loader.load(new_path), loader.load(narrow_path)
+    old, new, narrow = loader.load(REPO / "spec" / "cbf.yaml"), loader.load(new_path), loader.load(narrow_path)
     added = [c for c in diff(old, new).changes if c.kind == "command_added"]
     assert added and all(" n (" in c.detail for c in added)
     changed = [c for c in diff(new, narrow).changes if c.kind == "field_repeat_changed"]
@@ -172,9 +191,7 @@ def test_kaitai_reads_the_group_count_from_nb(tmp_path: Path) -> None:
     nb the group takes, and the arg_size rule accepting exactly nb = fixed + k n for n in min..max."""
     from cbfgen.emit.kaitai import build
 
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(loader, "repeat_unsupported", lambda: ())
-        spec = loader.load(_revised_spec(tmp_path))
+    spec = loader.load(_revised_spec(tmp_path))
     ksy = build(spec)
     cmd = next(c for c in spec.commands if any(lay.repeated is not None for lay in c.layouts))
     lay = next(lay for lay in cmd.layouts if lay.repeated is not None)
@@ -192,3 +209,249 @@ def test_kaitai_reads_the_group_count_from_nb(tmp_path: Path) -> None:
     lo, hi = lay.size + rep.size * rep.repeat[0], lay.size + rep.size * rep.repeat[1]
     size_rule = next(a for a in record.values() if a.get("valid", {}).get("expr", "").count("?"))
     assert f"(_ >= {lo} and _ <= {hi} and (_ - {lay.size}) % {rep.size} == 0)" in size_rule["valid"]["expr"]
+
+
+# -- the C binding ----------------------------------------------------------------------------
+def _cc() -> str:
+    cc = shutil.which("gcc")
+    if cc is None:
+        pytest.skip("gcc not installed")
+    return cc
+
+
+C_PROGRAM = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#define LAY CBF_LAYOUT_%(layout)s
+#define FAIL(what) do { printf("FAIL %%s\n", what); fails++; } while (0)
+static cbf_args a, b;
+static uint8_t buf[CBF_MAX_ARG_SIZE + 64];
+
+/* a group of n items whose bytes are i * 7 + 1 (any bits: encode and decode copy them exactly) */
+static void fill(size_t n)
+{
+    unsigned char *p = (unsigned char *)&a.%(member)s.%(group)s.items;
+    size_t i;
+    memset(&a, 0, sizeof a);
+    for (i = 0; i < n * %(item)du; i++)
+        p[i] = (unsigned char)(i * 7u + 1u);
+    a.%(member)s.%(group)s.n = n;
+}
+
+int main(void)
+{
+    size_t mn = 0, mx = 0, item = 0, ns[2] = { %(lo)du, %(hi)du }, k;
+    int fails = 0;
+    long nb;
+    if (cbf_layout_group(LAY, &mn, &mx, &item) != %(index)d || mn != %(lo)du || mx != %(hi)du || item != %(item)du)
+        FAIL("cbf_layout_group");
+    if (sizeof a.%(member)s.%(group)s.items != %(hi)du * sizeof a.%(member)s.%(group)s.items[0])
+        FAIL("the array is not bounded by max n");
+    for (k = 0; k < 2; k++) {
+        fill(ns[k]);
+        nb = cbf_args_encode(LAY, &a, buf, sizeof buf);
+        if (nb != (long)(%(fixed)du + %(item)du * ns[k]) || cbf_layout_nb(LAY, ns[k]) != nb)
+            FAIL("encode: nb = fixed + k n");
+        if (cbf_args_decode(LAY, buf, (size_t)nb, &b) != nb || memcmp(&a, &b, sizeof a) != 0)
+            FAIL("decode(encode(a)) == a");
+        if (cbf_args_layout(CBF_CMD_%(command)s, CBF_V%(version)s, (size_t)nb) != LAY
+            || cbf_layout_items(LAY, (size_t)nb) != (long)ns[k])
+            FAIL("n from nb");
+    }
+    fill(%(hi)du + 1u);
+    if (cbf_args_encode(LAY, &a, buf, sizeof buf) != CBF_ERR_RANGE || cbf_layout_nb(LAY, %(hi)du + 1u) != CBF_ERR_RANGE)
+        FAIL("n above max written");
+    if (%(lo)du > 0u) {
+        fill(%(lo)du - 1u);
+        if (cbf_args_encode(LAY, &a, buf, sizeof buf) != CBF_ERR_RANGE)
+            FAIL("n below min written");
+    }
+    fill(%(hi)du);
+    if (cbf_args_encode(LAY, &a, buf, %(fixed)du + %(item)du * %(hi)du - 1u) != CBF_ERR_BUFFER)
+        FAIL("a buffer one byte short");
+    /* an nb no n tiles: not a layout of the command, the arguments stay raw */
+    nb = (long)(%(fixed)du + %(item)du * %(hi)du + 1u);
+    if (cbf_args_decode(LAY, buf, (size_t)nb, &b) != CBF_ERR_RANGE
+        || cbf_args_layout(CBF_CMD_%(command)s, CBF_V%(version)s, (size_t)nb) != CBF_LAYOUT__NONE
+        || cbf_layout_items(LAY, (size_t)nb) != -1)
+        FAIL("an untiled nb decoded");
+    if (!fails)
+        puts("ok");
+    return fails != 0;
+}
+"""
+
+
+def test_c_struct_holds_a_bounded_group_and_the_codec_keeps_n(revised: Revised, tmp_path: Path) -> None:
+    """The C API on the fixture's group, every name and number from the model: the struct's items
+    bounded by max n, encode writing exactly n items (nb = fixed + k n) and refusing n outside min..max,
+    decode(encode(a)) == a, n from nb, an nb no n tiles left undecoded."""
+    from cbfgen.emit.c import cname, macro
+
+    cmd = next(c for c in revised.spec.commands if c.name == revised.name)
+    lay = next(lay for lay in cmd.layouts if lay.repeated is not None)
+    rep = lay.repeated
+    assert rep is not None and rep.repeat is not None
+    version = next(v for v in revised.spec.versions if v.writable and v.id in lay.versions)
+    src = tmp_path / "group.c"
+    src.write_text(C_PROGRAM % {
+        "layout": macro(cmd.name) + (("_" + macro(lay.variant)) if lay.variant else ""),
+        "member": cname(cmd.name) + (("_" + cname(lay.variant)) if lay.variant else ""), "group": cname(rep.name),
+        "command": macro(cmd.name), "version": macro(version.id), "index": len(lay.args) - 1, "lo": rep.repeat[0],
+        "hi": rep.repeat[1], "item": rep.size, "fixed": lay.size}, encoding="utf-8")
+    exe = tmp_path / "group"
+    subprocess.run([_cc(), "-std=c99", "-O1", "-Wall", "-Wextra", "-Werror", "-I", str(revised.gen / "c"), "-o",
+                    str(exe), str(src), "-lm"], check=True, capture_output=True)
+    run = subprocess.run([str(exe)], capture_output=True, text=True)
+    assert run.returncode == 0 and run.stdout.strip() == "ok", run.stdout + run.stderr
+
+
+CMP_SCRIPT = r"""
+import base64, json, random, struct, subprocess, sys, tempfile, os
+import cbf
+from cbf import tables as T
+from cbf.errors import CbfError
+from cbf.machine import DEFAULT
+from cbf.layouts import Line, Point
+from cbf.model import Cbf, Record, new_header
+
+NAME, TESTEE, COUNT = sys.argv[1], sys.argv[2], int(sys.argv[3])
+cmd = T.BY_NAME[NAME]
+lay = next(lay for lay in cmd.layouts if lay.n is not None)
+LO, HI = lay.repeated.repeat
+K = lay.repeated.size // lay.repeated.items
+FIXED = lay.size - K * lay.n
+version = next(v for v in T.VERSIONS if v.writable and cmd.layouts_for(v.id))
+vtext = f"{version.major}.{version.minor or 0}"
+kind = {c["id"]: c["kind"] for c in T.CHECKS}
+# a value beyond every machine limit's bounds, from the default machine
+far = 2.0 * max(abs(b) for lim in DEFAULT.limits.values() for b in (*lim.lo, *lim.hi) if abs(b) < 1e30)
+rng = random.Random(int(sys.argv[4]))
+p = subprocess.Popen([TESTEE], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+
+def ask(req):
+    p.stdin.write(json.dumps(req) + "\n"); p.stdin.flush()
+    return json.loads(p.stdout.readline())
+
+def val():
+    r = rng.random()
+    return (float("nan") if r < 0.02 else float("inf") if r < 0.04 else rng.uniform(-far, far) if r < 0.1
+            else rng.uniform(-1.0, 1.0))
+
+def f32(x):
+    return struct.unpack("<f", struct.pack("<f", x))[0] if abs(x) < 3e38 else x
+
+def norm(x):  # canonical JSON compared as binary32 values
+    if isinstance(x, bool) or x is None or isinstance(x, str): return x
+    if isinstance(x, (int, float)): return f32(float(x))
+    if isinstance(x, list): return [norm(y) for y in x]
+    return {k: norm(v) for k, v in x.items()}
+
+seen = set()
+tmp = tempfile.mkdtemp()
+good = (1.0, 1.0, 1.0)[:K // 4] if K // 4 > 1 else 1.0
+for t in range(COUNT):
+    n = rng.randint(LO, HI)
+    recs = [Record.of(Point(point=(0.0, 0.0, 0.0))), Record.of(lay.cls(points=(good,) * n))]
+    if rng.random() < 0.7:
+        recs.append(Record.of(Line(start=good, end=(0.5, 0.5, 0.5))))
+    clean = cbf.encode(Cbf(new_header(vtext, implant_descriptor="PN-1"), tuple(recs)))
+    data = bytearray(clean)
+    off = cbf.decode(clean).records[1].offset + T.HEAD_SIZE
+    for i in range(n * K // 4):
+        data[off + FIXED + 4 * i: off + FIXED + 4 * i + 4] = struct.pack(T.BO + "f", val())
+    if rng.random() < 0.3:  # an nb that no n tiles, or a group of n past max (when the file holds it)
+        data[off - T.HEAD_SIZE + T.RECORD_FIELDS[T.I_SIZE].offset] = rng.choice([FIXED + K * n + 1, FIXED + K * n - 1])
+    data = bytes(data)
+    path = os.path.join(tmp, f"{t}.cbf")
+    open(path, "wb").write(data)
+    for prof in ("default", "implib"):
+        c = ask({"op": "validate", "file": path, "profile": prof, "part_number": None, "cutters": None,
+                 "machine": None})
+        py = sorted((f.check, f.severity, f.record, f.offset, f.message) for f in cbf.validate(data, profile=prof))
+        cc = sorted((f["check"], f["severity"], f["record"], f["offset"], f["message"]) for f in c["findings"])
+        assert cc == py, (t, prof, cc, py)
+        seen |= {(kind[f[0]], "[" in f[4]) for f in py if f[2] == 1}
+    c = ask({"op": "decode", "file": path})
+    try:
+        py = cbf.to_canonical(cbf.decode(data))
+    except CbfError:
+        assert not c["ok"], t
+        continue
+    assert norm(c["result"]) == norm(py), (t, c["result"]["records"][1], py["records"][1])
+    e = ask({"op": "encode", "json": c["result"], "keep_stored": True, "profile": "default"})
+    assert e["ok"] and base64.b64decode(e["bytes"]) == data, (t, e)
+    # the filling writer: from the JSON of the file Python wrote, the same bytes
+    e = ask({"op": "encode", "json": cbf.to_canonical(cbf.decode(clean)), "keep_stored": False, "profile": "default"})
+    assert e["ok"] and base64.b64decode(e["bytes"]) == clean, (t, e)
+# a JSON group of n items outside min..max: no layout fits, the testee refuses it
+one = json.loads(json.dumps(cbf.to_canonical(cbf.decode(clean))))
+for n in (LO - 1, HI + 1):
+    if n < 0:
+        continue
+    grp = cbf.to_canonical(cbf.decode(clean))["records"][1]["args"][lay.repeated.name]
+    one["records"][1]["args"][lay.repeated.name] = (grp * (n // len(grp) + 1))[:n]
+    for k in ("arg_size", "arg_checksum"):
+        one["records"][1].pop(k, None)
+    e = ask({"op": "encode", "json": one, "keep_stored": False, "profile": "default"})
+    assert not e["ok"] and f"{lay.repeated.name}: {n} items; the group holds {LO} to {HI}" in e["error"]["message"], e
+p.stdin.write(json.dumps({"op": "quit"}) + "\n"); p.stdin.close(); p.wait()
+print(json.dumps(sorted(seen)))
+"""
+
+
+@pytest.fixture(scope="module")
+def c_testee(revised: Revised, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The revised spec's C testee, with AddressSanitizer and UBSan (the group's reads and writes)."""
+    exe = tmp_path_factory.mktemp("testee") / "cbf_testee"
+    subprocess.run([_cc(), "-std=c99", "-O1", "-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all",
+                    "-o", str(exe), str(revised.gen / "c" / "cbf_testee.c"), "-lm"], check=True, capture_output=True)
+    return exe
+
+
+def test_c_reads_writes_and_judges_the_group_as_python_does(revised: Revised, c_testee: Path) -> None:
+    """The C testee and the Python binding on files whose group holds non-finite values, values beyond
+    every machine limit and an nb no n tiles: the same findings (check, severity, record, offset and
+    words) under every profile, the same canonical JSON, the bytes back from it; a group of n outside
+    min..max refused. The run must reach the group's findings, or it proves nothing."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(revised.gen / "python"), *sys.path]))
+    run = subprocess.run([sys.executable, "-c", CMP_SCRIPT, revised.name, str(c_testee), "120", "25"], env=env,
+                         capture_output=True, text=True, cwd=revised.gen)
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-4000:]
+    seen = {tuple(x) for x in __import__("json").loads(run.stdout.strip().splitlines()[-1])}
+    # the group's own findings: not finite, a machine limit item by item (named group[i]), arg_size
+    assert {("finite", False), ("machine_limits", True), ("arg_size", False)} <= seen, seen
+
+
+def test_cbf_c_dumps_each_item_and_validates_the_group(revised: Revised, tmp_path: Path) -> None:
+    """cbf-c of the revised spec: `dump` prints the group's n items, group[0] .. group[n-1], and nothing
+    past them; `validate` of a file with a polyline through valid points finds nothing (exit 0)."""
+    exe = tmp_path / "cbf-c"
+    subprocess.run([_cc(), "-std=c99", "-O1", "-o", str(exe), str(revised.gen / "c" / "cbf_tool.c"), "-lm"],
+                   check=True, capture_output=True)
+    script = (
+        "import sys, cbf\n"
+        "from cbf import tables as T\n"
+        "from cbf.layouts import Point\n"
+        "from cbf.model import Cbf, Record, new_header\n"
+        "cmd = T.BY_NAME[sys.argv[1]]\n"
+        "lay = next(lay for lay in cmd.layouts if lay.n is not None and lay.n > 1)\n"
+        "v = next(v for v in T.VERSIONS if v.writable and cmd.layouts_for(v.id))\n"
+        "pts = tuple((float(i), 0.0, 1.0) for i in range(lay.n))\n"
+        "m = Cbf(new_header(f'{v.major}.{v.minor or 0}', implant_descriptor='PN-1'),\n"
+        "        (Record.of(Point(point=(0.0, 0.0, 0.0))), Record.of(lay.cls(points=pts))))\n"
+        "open(sys.argv[2], 'wb').write(cbf.encode(m))\n"
+        "print(lay.n, lay.repeated.name)\n")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(revised.gen / "python"), *sys.path]))
+    made = subprocess.run([sys.executable, "-c", script, revised.name, str(tmp_path / "p.cbf")], env=env,
+                          capture_output=True, text=True, check=True)
+    n_text, group = made.stdout.split()
+    n = int(n_text)
+    dump = subprocess.run([str(exe), "dump", str(tmp_path / "p.cbf")], capture_output=True, text=True)
+    assert dump.returncode == 0, dump.stderr
+    line = next(x for x in dump.stdout.splitlines() if x.startswith("1 @"))
+    assert all(f" {group}[{i}]=" in line for i in range(n)) and f" {group}[{n}]=" not in line, line
+    assert f" {group}[{n - 1}]={n - 1},0,1" in line, line
+    valid = subprocess.run([str(exe), "validate", str(tmp_path / "p.cbf")], capture_output=True, text=True)
+    assert valid.returncode == 0, valid.stdout + valid.stderr

@@ -21,7 +21,6 @@ import yaml
 from conftest import YAML_LOADER, load_yaml
 from revisions import drill
 
-from cbfgen import loader
 from cbfgen.diff import diff
 from cbfgen.loader import load
 
@@ -344,29 +343,3 @@ def test_the_bench_file_of_every_writable_version_validates() -> None:
         assert cbf.validate(data) == [], v.id
         codes = {r.code for r in cbf.decode(data).records}
         assert codes == {c.code for c in T.COMMANDS if c.layouts_for(v.id)}, v.id
-
-
-# Fixtures whose spec language not every binding carries yet (tests/revisions/pending/: the loader refuses
-# them until it does, registry.REPEAT_BINDINGS for repeated groups); their spec edits are held to the same
-# rule as the drill's own fixtures.
-PENDING = sorted((drill.HERE / "pending").glob("*.yaml"))
-
-
-@pytest.mark.parametrize("pending", PENDING, ids=[p.stem for p in PENDING])
-@pytest.mark.parametrize("other", FIXTURES, ids=[p.stem for p in FIXTURES])
-def test_a_pending_fixture_applies_with_each_other_fixture(pending: Path, other: Path, tmp_path: Path) -> None:
-    """A pending fixture on top of each fixture of the drill and each on top of it (the spec edits, as
-    test_each_fixture_applies_on_top_of_each_other does): the loader accepts both (groups let through for
-    the bindings that carry them), the ids stay free and cbfgen diff says what the fixture on top states.
-    Here with the drill's own tests: in a tree a fixture revised, that fixture would be applied twice."""
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(loader, "repeat_unsupported", lambda: ())
-        for first, second in ((other, pending), (pending, other)):
-            out = tmp_path / f"{first.stem}_then_{second.stem}"
-            base = drill.revised_spec(drill.load_fixture(first), SPEC, out / "a")
-            both = drill.revised_spec(drill.load_fixture(second, drill.read_spec(base)), base, out / "b")
-            revised = loader.load(both)
-            assert len({c.code for c in revised.commands}) == len(revised.commands)
-            d = diff(loader.load(base), revised)
-            fx = drill.load_fixture(second, drill.read_spec(base))
-            assert drill.judge(fx, d.exit_code, d.as_json()) == [], (first.stem, second.stem)

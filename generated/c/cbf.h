@@ -184,7 +184,7 @@ enum cbf_header_layout {
 #define CBF_RECORD_HEAD_SIZE 8
 #define CBF_LIMIT_MAX_COMMANDS 65535
 #define CBF_LIMIT_MAX_ARG_SIZE 255
-#define CBF_MAX_ARG_SIZE 68 /**< the largest layout */
+#define CBF_MAX_ARG_SIZE 68 /**< the largest layout (a repeated group at its most items) */
 #define CBF_TOLERANCE_POSITION_MM 0.001
 #define CBF_TOLERANCE_CUTTER_MM 0.01
 #define CBF_TOLERANCE_ORIENTATION_DEG 0.1
@@ -989,6 +989,7 @@ int cbf_profile_find(const char *name);
 const char *cbf_layout_command_name(int layout);
 const char *cbf_layout_variant(int layout);
 int cbf_layout_code(int layout);
+/** A layout's argument bytes (with a repeated group: its fixed arguments', n = 0). */
 long cbf_layout_size(int layout);
 /** Field tables: number of fields, *out set to the first. */
 size_t cbf_layout_fields(int layout, const cbf_field_info **out);
@@ -1029,10 +1030,22 @@ int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len);
  *  CBF_ERR_TRUNCATED_RECORD when the last record is cut before the header count is reached. */
 int cbf_next_record(cbf_reader *r, cbf_record *rec);
 
-/** Decode argument bytes with a layout: returns the layout size or an error. */
+/** Decode argument bytes with a layout: returns n (the argument bytes) or an error (CBF_ERR_RANGE when
+ *  the layout does not take n bytes: a repeated group of no n in its min..max). */
 long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out);
-/** Encode a layout's struct into bytes: returns the layout size or an error. */
+/** Encode a layout's struct into bytes: returns the bytes written (a repeated group: its n items after
+ *  the fixed arguments) or an error (CBF_ERR_RANGE when the group's n is outside its min..max). */
 long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap);
+/** A layout's repeated argument group (issue 25, point 3; nb = cbf_layout_size + item * n): its index
+ *  among the layout's fields (cbf_layout_fields: that row describes one item), with *min and *max n and
+ *  *item the bytes an item (each pointer may be NULL); -1 when the layout has none. */
+int cbf_layout_group(int layout, size_t *min, size_t *max, size_t *item);
+/** The argument bytes of a record of the layout with n items of its group (0 for a layout without
+ *  one), or CBF_ERR_RANGE when n is outside the group's min..max. */
+long cbf_layout_nb(int layout, size_t n);
+/** How many items of its group a record of the layout with nb argument bytes holds (0 without a
+ *  group), or -1 when the layout does not take nb bytes. */
+long cbf_layout_items(int layout, size_t nb);
 /** Checksum of argument bytes, as the spec computes the record's argument checksum. */
 uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
 
@@ -1061,7 +1074,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1065 "cbf.h"
+#line 1078 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1161,6 +1174,9 @@ enum cbf__kind {
 #define CBF__NCHECKS 33
 #define CBF__NTARGETS 25
 #define CBF__MAX_CANDIDATES 2
+/* 1 when a layout has a repeated argument group (issue 25, point 3): with 0, the group's branches
+ * fold away and a file of fixed layouts is read exactly as before groups existed. */
+#define CBF__HAS_GROUPS 0
 #define CBF__MAX_COVERAGES 1
 
 #define CBF__LITTLE_ENDIAN 1
@@ -1224,7 +1240,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1228 "cbf.h"
+#line 1244 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1255,6 +1271,13 @@ typedef struct cbf__layout {
     signed char shape[CBF__S__COUNT];
     signed char cutter[CBF__C__COUNT];
     signed char progress;
+    /* A repeated argument group (issue 25, point 3): its index in the layout (the last argument; -1:
+     * none); a record holds n items, group_min <= n <= group_max, nb = size + group_item * n; the
+     * decoded struct keeps them in a bounded array and n at offset group_n of cbf_args. */
+    signed char group;
+    unsigned group_min, group_max;
+    size_t group_item;
+    size_t group_n;
 } cbf__layout;
 
 typedef struct cbf__command {
@@ -1304,7 +1327,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1308 "cbf.h"
+#line 1331 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1433,65 +1456,65 @@ static const cbf_field_info cbf__args[74] = {
 
 static const cbf__layout cbf__layouts[30] = {
     { 0, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 0, 3, offsetof(cbf_args, checkpoint),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2 }, /* CHECKPOINT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT */
     { 0, "v1", CBF__VBIT(CBF_V1_X), 0, 16, 3, 1, offsetof(cbf_args, checkpoint_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CHECKPOINT_V1 */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT_V1 */
     { 1, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 4, 5, offsetof(cbf_args, cutter),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1 }, /* CUTTER */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER */
     { 1, "v1", CBF__VBIT(CBF_V1_X), 0, 32, 9, 4, offsetof(cbf_args, cutter_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1 }, /* CUTTER_V1 */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_V1 */
     { 2, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 13, 2, offsetof(cbf_args, orient),
-      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ORIENT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT */
     { 3, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 15, 2, offsetof(cbf_args, orient5b),
-      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ORIENT5B */
+      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT5B */
     { 4, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 17, 1, offsetof(cbf_args, phase),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* PHASE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* PHASE */
     { 5, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 18, 1, offsetof(cbf_args, enable_skip),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ENABLE_SKIP */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENABLE_SKIP */
     { 6, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 19, 2, offsetof(cbf_args, startshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1 }, /* STARTSHAPE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* STARTSHAPE */
     { 7, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 21, 2, offsetof(cbf_args, endshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1 }, /* ENDSHAPE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENDSHAPE */
     { 8, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* DECEL_OFF */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_OFF */
     { 9, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* DECEL_ON */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_ON */
     { 10, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 12, 23, 1, offsetof(cbf_args, point),
-      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* POINT */
+      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* POINT */
     { 11, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 24, 2, offsetof(cbf_args, line),
-      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* LINE */
+      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE */
     { 12, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 48, 26, 4, offsetof(cbf_args, line5b),
-      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* LINE5B */
+      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE5B */
     { 13, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 36, 30, 3, offsetof(cbf_args, arc),
-      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ARC */
+      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC */
     { 14, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 60, 33, 5, offsetof(cbf_args, arc5b),
-      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ARC5B */
+      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC5B */
     { 15, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 40, 38, 4, offsetof(cbf_args, circle),
-      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CIRCLE */
+      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE */
     { 16, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 64, 42, 6, offsetof(cbf_args, circle5b),
-      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CIRCLE5B */
+      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE5B */
     { 17, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 44, 48, 5, offsetof(cbf_args, helix),
-      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* HELIX */
+      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX */
     { 18, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 68, 53, 7, offsetof(cbf_args, helix5b),
-      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* HELIX5B */
+      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX5B */
     { 19, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 4, 60, 1, offsetof(cbf_args, speed),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* SPEED */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* SPEED */
     { 20, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 8, 61, 2, offsetof(cbf_args, accel),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* ACCEL */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ACCEL */
     { 21, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CUTTER_ON */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_ON */
     { 22, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* CUTTER_OFF */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_OFF */
     { 23, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 63, 1, offsetof(cbf_args, guide),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* GUIDE */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* GUIDE */
     { 24, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 64, 4, offsetof(cbf_args, fcparms),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* FCPARMS */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* FCPARMS */
     { 25, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 68, 3, offsetof(cbf_args, version),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* VERSION */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION */
     { 25, "implib", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__PBIT(1), 16, 71, 2, offsetof(cbf_args, version_implib),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* VERSION_IMPLIB */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION_IMPLIB */
     { 26, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 40, 73, 1, offsetof(cbf_args, comment),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1 }, /* COMMENT */
+      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* COMMENT */
 };
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
@@ -2312,7 +2335,124 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2316 "cbf.h"
+#line 2339 "cbf.h"
+/* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/groups.c"
+/* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
+/* The group's own paths stay out of line: a file of fixed layouts decodes as fast as before. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__GROUP_PATH __attribute__((noinline, cold))
+#else
+#define CBF__GROUP_PATH
+#endif
+
+/* n for nb argument bytes of layout L: how many items of its group a record of nb bytes holds,
+ * -1 when no n in group_min..group_max tiles nb (a layout without a group: 0 for its size, else -1). */
+static inline long cbf__group_n(const cbf__layout *L, size_t nb)
+{
+    size_t n;
+    if (L->group < 0)
+        return nb == L->size ? 0 : -1;
+    if (nb < L->size || (nb - L->size) % L->group_item != 0u)
+        return -1;
+    n = (nb - L->size) / L->group_item;
+    return (n >= L->group_min && n <= L->group_max) ? (long)n : -1;
+}
+
+/* Whether layout L decodes nb argument bytes (its size; with a group, one of its sizes). */
+static inline int cbf__layout_takes(const cbf__layout *L, size_t nb)
+{
+    if (!CBF__HAS_GROUPS || L->group < 0)
+        return nb == L->size; /* the common case first: a fixed layout */
+    return cbf__group_n(L, nb) >= 0;
+}
+
+/* The smallest nb layout L takes above `above` (-1: its smallest), or -1 when it takes none. */
+static long cbf__layout_next_size(const cbf__layout *L, long above)
+{
+    size_t n;
+    if (L->group < 0)
+        return (long)L->size > above ? (long)L->size : -1;
+    n = L->group_min;
+    if ((long)(L->size + L->group_item * n) <= above)
+        n = ((size_t)above - L->size) / L->group_item + 1u;
+    return n <= L->group_max ? (long)(L->size + L->group_item * n) : -1;
+}
+
+/* The group's items of a record (n of them, after the fixed arguments) into the decoded struct,
+ * one item a time through the item's field row, and n beside them. */
+CBF__GROUP_PATH static void cbf__load_group(const cbf__layout *L, const uint8_t *args, size_t n, cbf_args *out)
+{
+    cbf_field_info item = cbf__args[L->first_arg + (size_t)L->group];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        cbf__load(&item, 1, args, (unsigned char *)out + L->member);
+        item.offset = (unsigned short)(item.offset + L->group_item);
+        item.member += L->group_item; /* an item's C elements are as wide as its stored ones */
+    }
+    memcpy((unsigned char *)out + L->group_n, &n, sizeof n);
+}
+
+/* How many items of its group a decoded struct holds (0 for a layout without a group). */
+static size_t cbf__group_items(const cbf__layout *L, const cbf_args *in)
+{
+    size_t n = 0;
+    if (L->group >= 0)
+        memcpy(&n, (const unsigned char *)in + L->group_n, sizeof n);
+    return n;
+}
+
+/* The group's n items of a decoded struct into argument bytes, after the fixed arguments. */
+CBF__GROUP_PATH static void cbf__store_group(const cbf__layout *L, const cbf_args *in, size_t n, uint8_t *out)
+{
+    cbf_field_info item = cbf__args[L->first_arg + (size_t)L->group];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        cbf__store(&item, 1, (const unsigned char *)in + L->member, out);
+        item.offset = (unsigned short)(item.offset + L->group_item);
+        item.member += L->group_item;
+    }
+}
+
+int cbf_layout_group(int layout, size_t *min, size_t *max, size_t *item)
+{
+    const cbf__layout *L;
+    if (layout < 0 || layout >= CBF_LAYOUT__COUNT || cbf__layouts[layout].group < 0)
+        return -1;
+    L = &cbf__layouts[layout];
+    if (min)
+        *min = L->group_min;
+    if (max)
+        *max = L->group_max;
+    if (item)
+        *item = L->group_item;
+    return L->group;
+}
+
+long cbf_layout_nb(int layout, size_t n)
+{
+    const cbf__layout *L;
+    if (layout < 0 || layout >= CBF_LAYOUT__COUNT)
+        return CBF_ERR_ARGUMENT;
+    L = &cbf__layouts[layout];
+    if (L->group < 0) {
+        if (n != 0u)
+            return CBF_ERR_RANGE;
+        return (long)L->size;
+    }
+    if (n < L->group_min || n > L->group_max)
+        return CBF_ERR_RANGE;
+    return (long)(L->size + L->group_item * n);
+}
+
+long cbf_layout_items(int layout, size_t nb)
+{
+    if (layout < 0 || layout >= CBF_LAYOUT__COUNT)
+        return CBF_ERR_ARGUMENT;
+    return cbf__group_n(&cbf__layouts[layout], nb);
+}
+/* ==== END runtime/groups.c ==== */
+#line 2456 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2516,7 +2656,7 @@ int cbf_args_layout(int code, int version, size_t nb)
         int lay = cbf__commands[ci].candidates[version][k];
         if (lay < 0)
             break;
-        if (cbf__layouts[lay].size == nb)
+        if (cbf__layout_takes(&cbf__layouts[lay], nb))
             return lay;
     }
     return CBF_LAYOUT__NONE;
@@ -2537,7 +2677,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2541 "cbf.h"
+#line 2681 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2708,7 +2848,7 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2712 "cbf.h"
+#line 2852 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -2794,27 +2934,44 @@ int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len)
 
 long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out)
 {
+    const cbf__layout *L;
+    long items;
     if (!cbf__layout_ok(layout) || !out || (!args && n))
         return CBF_ERR_ARGUMENT;
-    if (n != cbf__layouts[layout].size)
+    L = &cbf__layouts[layout];
+    if (CBF__HAS_GROUPS && L->group >= 0) { /* a repeated group: n from nb, the items after the fixed arguments */
+        items = cbf__group_n(L, n);
+        if (items < 0)
+            return CBF_ERR_RANGE;
+        memset(out, 0, sizeof *out);
+        cbf__load(&cbf__args[L->first_arg], L->nargs - 1u, args, (unsigned char *)out + L->member);
+        cbf__load_group(L, args, (size_t)items, out);
+        return (long)n;
+    }
+    if (n != L->size)
         return CBF_ERR_RANGE;
     memset(out, 0, sizeof *out);
-    cbf__load(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs, args,
-              (unsigned char *)out + cbf__layouts[layout].member);
+    cbf__load(&cbf__args[L->first_arg], L->nargs, args, (unsigned char *)out + L->member);
     return (long)n;
 }
 
 long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
 {
-    size_t n;
+    const cbf__layout *L;
+    size_t n, items;
     if (!cbf__layout_ok(layout) || !in || !out)
         return CBF_ERR_ARGUMENT;
-    n = cbf__layouts[layout].size;
+    L = &cbf__layouts[layout];
+    items = CBF__HAS_GROUPS ? cbf__group_items(L, in) : 0u;
+    if (CBF__HAS_GROUPS && L->group >= 0 && (items < L->group_min || items > L->group_max))
+        return CBF_ERR_RANGE; /* a group of n items outside its min..max: no nb says it */
+    n = L->size + (CBF__HAS_GROUPS && L->group >= 0 ? L->group_item * items : 0u);
     if (cap < n)
         return CBF_ERR_BUFFER;
     memset(out, 0, n);
-    cbf__store(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs,
-               (const unsigned char *)in + cbf__layouts[layout].member, out);
+    cbf__store(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), (const unsigned char *)in + L->member, out);
+    if (CBF__HAS_GROUPS && L->group >= 0)
+        cbf__store_group(L, in, items, out);
     return (long)n;
 }
 
@@ -2869,7 +3026,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 2873 "cbf.h"
+#line 3030 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -2984,8 +3141,8 @@ static long cbf__profile_size(int version, int code, const uint8_t *args, size_t
         return (long)nb;
     L = &cbf__layouts[own];
     H = &cbf__layouts[have];
-    if (L->nargs > H->nargs || L->size > H->size)
-        return -1;
+    if (L->nargs > H->nargs || L->size > H->size || L->group >= 0 || H->group >= 0)
+        return -1; /* a repeated group is never cut */
     for (i = 0; i < L->nargs; i++)
         if (!cbf__same_field(&cbf__args[L->first_arg + i], &cbf__args[H->first_arg + i]))
             return -1;
@@ -3122,7 +3279,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3126 "cbf.h"
+#line 3283 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4235,7 +4392,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4239 "cbf.h"
+#line 4396 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4331,9 +4488,11 @@ static void cbf__machine_start(cbf__vctx *v)
 
 /* Rule j of cbf__mrules on an argument found outside its limit: one finding, naming the first
  * component out, unless a value is not finite (the finite check's) or the positive check
- * targets the argument and a value is <= 0 (that check's). Off the fast path: cold. */
-CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
-                                          int finite, long rec, size_t off)
+ * targets the argument and a value is <= 0 (that check's). item: which item of a repeated
+ * group x is (named argument[item]), -1 for an argument. 1 when it found a breach. Off the
+ * fast path: cold. */
+CBF__COLD static int cbf__machine_breach_item(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x,
+                                              unsigned n, int finite, long rec, size_t off, long item)
 {
     const cbf__mrule *r = &cbf__mrules[j];
     const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
@@ -4343,21 +4502,25 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         if (x[i] < lo[i] || x[i] > hi[i])
             out = i;
     if (out == n)
-        return; /* inside (a NaN compares false: the finite check's) */
+        return 0; /* inside (a NaN compares false: the finite check's) */
     for (i = 0; i < n; i++)
         le_zero |= x[i] <= 0.0f;
     if (!finite || (r->positive && le_zero))
-        return; /* the finite check's, or the positive check's */
+        return 0; /* the finite check's, or the positive check's */
     {
         const cbf_field_info *f = cbf__layout_arg(layout, r->arg);
         const cbf_machine_range *lim = &v->machine->limit[r->limit];
         const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][out] : NULL;
-        char msg[256];
+        char msg[256], name[128];
         cbf_finding fd;
         if (cbf__checks[r->check].versions && !(cbf__checks[r->check].versions & CBF__VBIT(v->eff)))
-            return; /* scoped to other versions (versions:) */
+            return 1; /* scoped to other versions (versions:) */
+        if (item >= 0)
+            (void)snprintf(name, sizeof name, "%s[%ld]", f ? f->name : "?", item);
+        else
+            (void)snprintf(name, sizeof name, "%s", f ? f->name : "?");
         (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
-                       cbf__commands[cmd].name, f ? f->name : "?", axis ? " " : "", axis ? axis : "", (double)x[out],
+                       cbf__commands[cmd].name, name, axis ? " " : "", axis ? axis : "", (double)x[out],
                        cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[out],
                        lim->max[out], cbf_machine_limit_units[r->limit]);
         fd.check = cbf__checks[r->check].id;
@@ -4371,6 +4534,14 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         if (v->fn)
             v->fn(v->user, &fd);
     }
+    return 1;
+}
+
+/* cbf__machine_breach_item for an argument (not an item of a group): the fast path's call. */
+CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
+                                          int finite, long rec, size_t off)
+{
+    (void)cbf__machine_breach_item(v, cmd, layout, j, x, n, finite, rec, off, -1);
 }
 
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout
@@ -4387,7 +4558,44 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4391 "cbf.h"
+#line 4562 "cbf.h"
+/* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
+/* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
+/* Whether the m binary32 values at p are all finite (the finite check judges a group as one
+ * argument: one finding a record, at the group's first byte, as every binding says it). */
+static inline int cbf__group_finite(const uint8_t *p, size_t m)
+{
+    size_t i;
+    int finite = 1;
+    for (i = 0; i < m; i++)
+        finite &= cbf__bits_finite(cbf__get_u(p + 4u * i, 4));
+    return finite;
+}
+
+/* machine_limits rule j on a group of n items at g (count floats, item_size bytes each): each
+ * item is judged as an argument of its own (cbf__machine_breach_item: not when a value is not finite
+ * or a positive check's); one finding a record, at the first item out, named group[item]. */
+static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigned j, const uint8_t *g, size_t n,
+                                      unsigned count, size_t item_size, long rec, size_t off)
+{
+    const float *lo = v->mlo[cbf__mrules[j].limit], *hi = v->mhi[cbf__mrules[j].limit];
+    size_t i;
+    for (i = 0; i < n; i++) {
+        float x[CBF_MACHINE_MAX_AXES];
+        unsigned e;
+        int finite = 1, out = 0;
+        for (e = 0; e < CBF_MACHINE_MAX_AXES; e++)
+            x[e] = 0.0f;
+        for (e = 0; e < count && e < CBF_MACHINE_MAX_AXES; e++)
+            finite &= cbf__float_at(g + item_size * i + 4u * e, &x[e]);
+        CBF__MACHINE_OUT(out, x, lo, hi, count);
+        if (out && cbf__machine_breach_item(v, cmd, layout, j, x, count, finite, rec, off + item_size * i, (long)i))
+            return;
+    }
+}
+/* ==== END runtime/group_checks.c ==== */
+#line 4599 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4999,28 +5207,32 @@ static int cbf__file_sum_folds(int profile, size_t *start)
 CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec, size_t off, size_t nb)
 {
     char msg[256];
-    size_t at = 0, sizes[CBF__MAX_CANDIDATES], n = 0, i, j;
-    int k;
-    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
-        int lay = cbf__commands[cmd].candidates[v->eff][k];
-        if (lay < 0)
-            break;
-        if (!cbf__profile_accepts(lay, profile))
-            continue;
-        for (i = 0; i < n && sizes[i] != cbf__layouts[lay].size; i++) {}
-        if (i == n)
-            sizes[n++] = cbf__layouts[lay].size;
-    }
-    for (i = 1; i < n; i++) /* insertion sort: a handful of sizes */
-        for (j = i; j > 0 && sizes[j - 1] > sizes[j]; j--) {
-            size_t t = sizes[j];
-            sizes[j] = sizes[j - 1];
-            sizes[j - 1] = t;
-        }
+    size_t at = 0;
+    long size = -1;
+    int k, first = 1;
     cbf__cat(msg, sizeof msg, &at, "%s with %lu argument bytes; expected ", cbf__commands[cmd].name,
              (unsigned long)nb);
-    for (i = 0; i < n; i++)
-        cbf__cat(msg, sizeof msg, &at, "%s%lu", i ? " or " : "", (unsigned long)sizes[i]);
+    /* ascending: each time the least size above the last of any layout (a repeated group takes
+     * many, nb = size + k n), until none is left or the message is full */
+    while (at + 1u < sizeof msg) {
+        long next = -1;
+        for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+            int lay = cbf__commands[cmd].candidates[v->eff][k];
+            long s;
+            if (lay < 0)
+                break;
+            if (!cbf__profile_accepts(lay, profile))
+                continue;
+            s = cbf__layout_next_size(&cbf__layouts[lay], size);
+            if (s >= 0 && (next < 0 || s < next))
+                next = s;
+        }
+        if (next < 0)
+            break;
+        cbf__cat(msg, sizeof msg, &at, "%s%ld", first ? "" : " or ", next);
+        first = 0;
+        size = next;
+    }
     cbf__each(v, CBF__KIND_ARG_SIZE, rec, off, "%s", msg);
 }
 
@@ -5134,7 +5346,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                 int lay = cbf__commands[cmd].candidates[v.eff][k];
                 if (lay < 0)
                     break;
-                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                if (cbf__layout_takes(&cbf__layouts[lay], nb) && cbf__profile_accepts(lay, profile))
                     seen[cmd].accepted = 1;
             }
             seen[cmd].layout = cbf_args_layout((int)code, v.eff, nb);
@@ -5247,7 +5459,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5251 "cbf.h"
+#line 5463 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

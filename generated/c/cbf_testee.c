@@ -1545,12 +1545,11 @@ static void put_int(const cbf_field_info *f, const uint8_t *base, unsigned i)
         putchar(d[--n]);
 }
 
-/* One field of a byte image, as canonical JSON (PROTOCOL.md). */
-static void put_field(const cbf_field_info *f, const uint8_t *base)
+/* One field's value of a byte image, as canonical JSON (PROTOCOL.md). */
+static void put_value(const cbf_field_info *f, const uint8_t *base)
 {
     size_t size = (size_t)f->elem * f->count;
     unsigned i;
-    printf("\"%s\": ", f->name);
     switch (f->kind) {
     case CBF_KIND_UINT:
     case CBF_KIND_SINT:
@@ -1578,6 +1577,29 @@ static void put_field(const cbf_field_info *f, const uint8_t *base)
         put_hex(base + f->offset, size);
         break;
     }
+}
+
+/* One field of a byte image, as canonical JSON: "name": value. */
+static void put_field(const cbf_field_info *f, const uint8_t *base)
+{
+    printf("\"%s\": ", f->name);
+    put_value(f, base);
+}
+
+/* A repeated argument group (issue 25, point 3) of n items, item bytes each: "name": [item, ...],
+ * each item as its field row (the row describes one) says, one after another. */
+static void put_group(const cbf_field_info *f, const uint8_t *base, size_t n, size_t item)
+{
+    cbf_field_info one = *f;
+    size_t i;
+    printf("\"%s\": [", f->name);
+    for (i = 0; i < n; i++) {
+        if (i)
+            put(", ");
+        put_value(&one, base);
+        one.offset = (unsigned short)(one.offset + item);
+    }
+    putchar(']');
 }
 
 static void put_error(const char *kind, long offset, const char *message)
@@ -2190,12 +2212,17 @@ static void op_decode(int32_t req)
         else
             put("null");
         if (rec.layout != CBF_LAYOUT__NONE) {
+            size_t item = 0;
+            const long group = cbf_layout_group(rec.layout, NULL, NULL, &item);
             put(", \"args\": {");
             na = cbf_layout_fields(rec.layout, &af);
             for (i = 0; i < na; i++) {
                 if (i)
                     put(", ");
-                put_field(&af[i], rec.args);
+                if ((long)i == group)
+                    put_group(&af[i], rec.args, (size_t)cbf_layout_items(rec.layout, rec.nargs), item);
+                else
+                    put_field(&af[i], rec.args);
             }
             put("}}");
         } else {
@@ -2322,18 +2349,78 @@ static int keys_match(int lay, int32_t args)
     return 1;
 }
 
+/* The argument bytes an args object makes in a layout: its size, or with a repeated group (issue
+ * 25, point 3) size + item * n for the n items of the object's list; -1 when the list is not one of
+ * n items the group takes (the reference's layouts are made one per n: none fits). */
+static long json_nb(int lay, int32_t args)
+{
+    const cbf_field_info *af;
+    int32_t g;
+    const int group = cbf_layout_group(lay, NULL, NULL, NULL);
+    if (group < 0)
+        return cbf_layout_size(lay);
+    (void)cbf_layout_fields(lay, &af);
+    g = jget(args, af[group].name);
+    if (g < 0 || nodes[g].type != J_ARR)
+        return -1;
+    return cbf_layout_nb(lay, jcount(g));
+}
+
 static int choose_layout(int code, int version, int32_t args, int has_size, uint32_t want_size)
 {
     int cands[CBF_LAYOUT__COUNT + 1], n, k, lay;
+    long nb;
     n = cbf_args_candidates(code, version, cands, CBF_LAYOUT__COUNT);
     for (k = 0; k < n; k++)
-        if (keys_match(cands[k], args) && (!has_size || (uint32_t)cbf_layout_size(cands[k]) == want_size))
+        if (keys_match(cands[k], args) && (nb = json_nb(cands[k], args)) >= 0
+            && (!has_size || (uint32_t)nb == want_size))
             return cands[k];
     for (lay = 0; lay < CBF_LAYOUT__COUNT; lay++)
-        if (cbf_layout_code(lay) == code && keys_match(lay, args)
-            && (!has_size || (uint32_t)cbf_layout_size(lay) == want_size))
+        if (cbf_layout_code(lay) == code && keys_match(lay, args) && (nb = json_nb(lay, args)) >= 0
+            && (!has_size || (uint32_t)nb == want_size))
             return lay;
     return CBF_LAYOUT__NONE;
+}
+
+/* Why an args object whose keys name a layout with a repeated group fits none: its group is no list,
+ * or a list of an n outside min..max (the message names both); 1 when that is it (the message set). */
+static int group_misfit(int code, int version, int32_t args, const char *where)
+{
+    int cands[CBF_LAYOUT__COUNT + 1], n, k;
+    n = cbf_args_candidates(code, version, cands, CBF_LAYOUT__COUNT);
+    for (k = 0; k < n; k++) {
+        const cbf_field_info *af;
+        size_t lo = 0, hi = 0;
+        int32_t g;
+        const int group = cbf_layout_group(cands[k], &lo, &hi, NULL);
+        if (group < 0 || !keys_match(cands[k], args))
+            continue;
+        (void)cbf_layout_fields(cands[k], &af);
+        g = jget(args, af[group].name);
+        if (nodes[g].type != J_ARR)
+            (void)fail("%s.args.%s: expected a list of items", where, af[group].name);
+        else
+            (void)fail("%s.args.%s: %lu items; the group holds %lu to %lu", where, af[group].name,
+                       (unsigned long)jcount(g), (unsigned long)lo, (unsigned long)hi);
+        return 1;
+    }
+    return 0;
+}
+
+/* A repeated group from its JSON list into a byte image: each item packed as the group's field
+ * row (one item) says, at its place. */
+static int pack_group(const cbf_field_info *f, int32_t v, uint8_t *base, size_t item)
+{
+    cbf_field_info one = *f;
+    int32_t e;
+    if (v < 0 || nodes[v].type != J_ARR)
+        return fail("field %s: expected a list of items", f->name);
+    for (e = nodes[v].first; e >= 0; e = nodes[e].next) {
+        if (!pack_field(&one, e, base))
+            return 0;
+        one.offset = (unsigned short)(one.offset + item);
+    }
+    return 1;
 }
 
 /* 1 when every key of object o is one of names[0..n) or of the fields. */
@@ -2472,19 +2559,23 @@ static int encode(int32_t doc, int keep, int profile, long *size)
         if (a >= 0 && nodes[a].type != J_NULL) {
             int lay;
             const cbf_field_info *af;
-            size_t na;
+            size_t na, item = 0;
+            long group;
             if (nodes[a].type != J_OBJ)
                 return fail("%s.args: expected an object", where);
             if (!cbf_command_name((int)code))
                 return fail("%s.args: an unknown code takes raw_args only", where);
             lay = choose_layout((int)code, version, a, has_size, want_size);
             if (lay == CBF_LAYOUT__NONE)
-                return fail("%s.args: the keys match no layout of the command", where);
+                return group_misfit((int)code, version, a, where)
+                       ? 0 : fail("%s.args: the keys match no layout of the command", where);
             na = cbf_layout_fields(lay, &af);
-            nargs = cbf_layout_size(lay);
+            nargs = json_nb(lay, a);
+            group = cbf_layout_group(lay, NULL, NULL, &item);
             memset(args, 0, (size_t)nargs);
             for (i = 0; i < na; i++)
-                if (!pack_field(&af[i], jget(a, af[i].name), args))
+                if (!((long)i == group ? pack_group(&af[i], jget(a, af[i].name), args, item)
+                                       : pack_field(&af[i], jget(a, af[i].name), args)))
                     return 0;
         } else {
             int32_t raw = jget(r, "raw_args");

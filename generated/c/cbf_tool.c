@@ -1776,6 +1776,20 @@ static void dump_field(const cbf_field_info *f, const uint8_t *base)
     }
 }
 
+/* A repeated argument group (issue 25, point 3): each of its n items as a field, name[i]=value. */
+static void dump_group(const cbf_field_info *f, const uint8_t *base, size_t n, size_t item)
+{
+    cbf_field_info one = *f;
+    char name[160];
+    size_t k;
+    one.name = name;
+    for (k = 0; k < n; k++) {
+        (void)snprintf(name, sizeof name, "%s[%lu]", f->name, (unsigned long)k);
+        dump_field(&one, base);
+        one.offset = (unsigned short)(one.offset + item);
+    }
+}
+
 static int cmd_dump(const char *path)
 {
     size_t n;
@@ -1810,10 +1824,16 @@ static int cmd_dump(const char *path)
         for (i = 0; i < nf; i++)
             dump_field(&fields[i], file_buf + rec.offset);
         if (rec.layout != CBF_LAYOUT__NONE) {
+            size_t item = 0;
+            const long group = cbf_layout_group(rec.layout, NULL, NULL, &item);
             nf = cbf_layout_fields(rec.layout, &fields);
             printf(" |");
-            for (i = 0; i < nf; i++)
-                dump_field(&fields[i], rec.args);
+            for (i = 0; i < nf; i++) {
+                if ((long)i == group)
+                    dump_group(&fields[i], rec.args, (size_t)cbf_layout_items(rec.layout, rec.nargs), item);
+                else
+                    dump_field(&fields[i], rec.args);
+            }
         } else {
             printf(" | raw=");
             for (i = 0; i < rec.nargs; i++)

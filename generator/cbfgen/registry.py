@@ -152,7 +152,7 @@ BINDINGS = ("python", "kaitai", "c")
 
 # The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
 # fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
-REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai")
+REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai", "c")
 
 
 def repeat_unsupported() -> tuple[str, ...]:

@@ -287,8 +287,8 @@ def _line_target(src: T.CommandInfo, version: str) -> tuple[T.CommandInfo, T.Lay
 
 def _layout_in(cmd: T.CommandInfo, src: T.LayoutInfo, version: str, profile: str) -> T.LayoutInfo | None:
     lays = [lay for lay in cmd.layouts_for(version) if lay.accepted_under(profile)]
-    for lay in lays:
-        if lay.variant == src.variant or lay.size == src.size:
+    for lay in lays:  # a layout with a repeated group is made once per n: the one of the record's n
+        if (lay.variant == src.variant and lay.n == src.n) or lay.size == src.size:
             return lay
     return lays[0] if lays else None
 

@@ -190,10 +190,11 @@ def _rules() -> dict[tuple[str, str], list[_Rule]]:
         for t in ch["targets"]:
             cmd = T.BY_NAME[t["command"]]
             for lay in cmd.layouts:
+                rules = out.setdefault((cmd.name, lay.variant), [])
                 for f in lay.args:
-                    if f.name in t["args"]:
-                        out.setdefault((cmd.name, lay.variant), []).append(
-                            (ch["id"], f, t["limit"], (cmd.name, f.name) in positive))
+                    # a layout with a repeated group is made once per n, all of one variant: one rule
+                    if f.name in t["args"] and not any(r[0] == ch["id"] and r[1].name == f.name for r in rules):
+                        rules.append((ch["id"], f, t["limit"], (cmd.name, f.name) in positive))
     return out
 
 

@@ -63,6 +63,14 @@ class FieldRow:
     unit: str | None
     macro: str
     doc: str
+    # A repeated argument group (issue 25, point 3): (min n, max n); the row describes one item
+    # (count: its elements), the struct member a bounded array of max n items beside their count n.
+    repeat: tuple[int, int] | None = None
+
+    @property
+    def designator(self) -> str:
+        """The member designator of the field's values in its struct (offsetof): a group's items."""
+        return f"{self.member}.items" if self.repeat else self.member
 
 
 def field_row(f: Field, struct: str | None, units: dict[str, str]) -> FieldRow:
@@ -74,7 +82,7 @@ def field_row(f: Field, struct: str | None, units: dict[str, str]) -> FieldRow:
         role=("ROLE_" + macro(f.role)) if f.role else "ROLE_NONE", offset=f.offset, elem=f.elem_size,
         count=f.count, size=f.size, struct=struct, magic=f.magic,
         checksum=("CK_" + macro(f.checksum)) if f.checksum else "CK_NONE", flags=flags, unit=f.unit,
-        macro=macro(f.name), doc=member_doc(f, units))
+        macro=macro(f.name), doc=member_doc(f, units), repeat=f.repeat)
 
 
 @dataclass(frozen=True)
@@ -152,6 +160,21 @@ class Orientation:
 
 
 @dataclass(frozen=True)
+class Group:
+    """A layout's repeated argument group (issue 25, point 3): nb = size + item_size * n, min <= n <= max.
+    The group is the layout's last argument (arg); its row in cbf__args describes one item."""
+
+    arg: int  # index in the layout
+    name: str
+    offset: int  # of the first item, in the argument bytes (the fixed arguments' size)
+    item_size: int
+    count: int  # elements an item
+    kind: str  # FLOAT, UINT, SINT
+    min: int
+    max: int
+
+
+@dataclass(frozen=True)
 class Plan:
     """What a record of a layout checks, as constants (templates/cbf/validator_layouts.c.j2)."""
 
@@ -186,6 +209,12 @@ class LayoutRow:
     doc: str
     clause: str
     plan: Plan
+    group: Group | None = None  # the repeated argument group (issue 25, point 3), None: a fixed layout
+
+    @property
+    def max_size(self) -> int:
+        """The most argument bytes a record of the layout holds (its size when it has no group)."""
+        return self.size + (self.group.item_size * self.group.max if self.group else 0)
 
 
 @dataclass(frozen=True)
@@ -548,6 +577,17 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
     return tuple(rows), targets
 
 
+def _group(lay: Layout) -> Group | None:
+    """The layout's repeated argument group as the C engine reads it (issue 25, point 3), else None."""
+    rep = lay.repeated
+    if rep is None or rep.repeat is None:
+        return None
+    if rep.kind not in ("float", "uint", "sint"):
+        raise ValueError(f"C binding: {lay.command} {rep.name}: only numbers repeat (the loader refuses it first)")
+    return Group(arg=len(lay.args) - 1, name=rep.name, offset=rep.offset, item_size=rep.size, count=rep.count,
+                 kind=macro(rep.kind), min=rep.repeat[0], max=rep.repeat[1])
+
+
 def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, profiles: list[str],
                  planned: dict[int, list[PlannedCheck]]) -> list[LayoutRow]:
     out: list[LayoutRow] = []
@@ -559,6 +599,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
                 raise ValueError(f"C binding: {c.name} {a.name}: the C validator reads binary32 arguments only "
                                  "(registry.unsupported says so; the loader refuses it first)")
         args = tuple(field_row(a, struct, spec.units) for a in lay.args)
+        group = _group(lay)
         motion = _role_index(lay, c.motion, MOTION_KEYS)
         orient = _role_index(lay, c.orientation, ORIENT_KEYS)
         out.append(LayoutRow(
@@ -572,7 +613,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
             cutter=_role_index(lay, c.cutter, cutter_columns(spec).all),
             progress=_role_index(lay, {"p": c.progress} if c.progress else None, ("p",))[0],
             doc=comment(lay.doc or c.doc), clause=lay.clause or c.clause,
-            plan=_plan(args, first_arg, motion, orient, planned.get(first + j, []))))
+            plan=_plan(args, first_arg, motion, orient, planned.get(first + j, [])), group=group))
         first_arg += len(args)
     return out
 
@@ -607,6 +648,11 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
             kernel = OWN_KERNEL.get(check_rows[ct.check].kind_name, "cbf__target_at")
             if kernel == "cbf__machine_at":
                 continue  # its own rules (machine.py), called from the layout function too
+            if lay.repeated is not None and len(lay.args) - 1 in rows:
+                # a repeated group is judged item by item by the kinds that know items (machine_limits)
+                raise ValueError(f"C binding: check {check_rows[ct.check].id} ({check_rows[ct.check].kind_name}) "
+                                 f"targets the repeated argument group {lay.command} {lay.args[-1].name}: only "
+                                 "machine_limits judges a group, item by item")
             # a check finds nothing in a layout without its float arguments (ordered: without all of them)
             if floats if kernel == "cbf__target_at" else len(floats) == len(rows):
                 planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kernel=kernel,
@@ -649,7 +695,7 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
         index_by_code=tuple(code_of[k].index if k in code_of else -1 for k in range(256)),
         names_by_code=tuple(code_of[k].name if k in code_of else None for k in range(256)),
         layouts=tuple(layouts), arg_rows=tuple(a for lay in layouts for a in lay.args), max_layouts=max_layouts,
-        max_arg=max([lay.size for lay in layouts] + [0]))
+        max_arg=max([lay.max_size for lay in layouts] + [0]))
     target_rows = tuple(TargetRow(command=t[0], first=tfirst[k], n=len(t[3]), text=t[2])
                         for k, t in enumerate(targets))
     checks = Checks(checks=check_rows, targets=target_rows or (TargetRow(command=-1, first=0, n=0, text="none"),),

@@ -17,6 +17,7 @@ int cbf_profile_find(const char *name);
 const char *cbf_layout_command_name(int layout);
 const char *cbf_layout_variant(int layout);
 int cbf_layout_code(int layout);
+/** A layout's argument bytes (with a repeated group: its fixed arguments', n = 0). */
 long cbf_layout_size(int layout);
 /** Field tables: number of fields, *out set to the first. */
 size_t cbf_layout_fields(int layout, const cbf_field_info **out);
@@ -57,10 +58,22 @@ int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len);
  *  CBF_ERR_TRUNCATED_RECORD when the last record is cut before the header count is reached. */
 int cbf_next_record(cbf_reader *r, cbf_record *rec);
 
-/** Decode argument bytes with a layout: returns the layout size or an error. */
+/** Decode argument bytes with a layout: returns n (the argument bytes) or an error (CBF_ERR_RANGE when
+ *  the layout does not take n bytes: a repeated group of no n in its min..max). */
 long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out);
-/** Encode a layout's struct into bytes: returns the layout size or an error. */
+/** Encode a layout's struct into bytes: returns the bytes written (a repeated group: its n items after
+ *  the fixed arguments) or an error (CBF_ERR_RANGE when the group's n is outside its min..max). */
 long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap);
+/** A layout's repeated argument group (issue 25, point 3; nb = cbf_layout_size + item * n): its index
+ *  among the layout's fields (cbf_layout_fields: that row describes one item), with *min and *max n and
+ *  *item the bytes an item (each pointer may be NULL); -1 when the layout has none. */
+int cbf_layout_group(int layout, size_t *min, size_t *max, size_t *item);
+/** The argument bytes of a record of the layout with n items of its group (0 for a layout without
+ *  one), or CBF_ERR_RANGE when n is outside the group's min..max. */
+long cbf_layout_nb(int layout, size_t n);
+/** How many items of its group a record of the layout with nb argument bytes holds (0 without a
+ *  group), or -1 when the layout does not take nb bytes. */
+long cbf_layout_items(int layout, size_t nb);
 /** Checksum of argument bytes, as the spec computes the record's argument checksum. */
 uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
 

@@ -199,7 +199,7 @@ int cbf_args_layout(int code, int version, size_t nb)
         int lay = cbf__commands[ci].candidates[version][k];
         if (lay < 0)
             break;
-        if (cbf__layouts[lay].size == nb)
+        if (cbf__layout_takes(&cbf__layouts[lay], nb))
             return lay;
     }
     return CBF_LAYOUT__NONE;

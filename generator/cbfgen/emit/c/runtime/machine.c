@@ -25,9 +25,11 @@ static void cbf__machine_start(cbf__vctx *v)
 
 /* Rule j of cbf__mrules on an argument found outside its limit: one finding, naming the first
  * component out, unless a value is not finite (the finite check's) or the positive check
- * targets the argument and a value is <= 0 (that check's). Off the fast path: cold. */
-CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
-                                          int finite, long rec, size_t off)
+ * targets the argument and a value is <= 0 (that check's). item: which item of a repeated
+ * group x is (named argument[item]), -1 for an argument. 1 when it found a breach. Off the
+ * fast path: cold. */
+CBF__COLD static int cbf__machine_breach_item(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x,
+                                              unsigned n, int finite, long rec, size_t off, long item)
 {
     const cbf__mrule *r = &cbf__mrules[j];
     const float *lo = v->mlo[r->limit], *hi = v->mhi[r->limit];
@@ -37,21 +39,25 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         if (x[i] < lo[i] || x[i] > hi[i])
             out = i;
     if (out == n)
-        return; /* inside (a NaN compares false: the finite check's) */
+        return 0; /* inside (a NaN compares false: the finite check's) */
     for (i = 0; i < n; i++)
         le_zero |= x[i] <= 0.0f;
     if (!finite || (r->positive && le_zero))
-        return; /* the finite check's, or the positive check's */
+        return 0; /* the finite check's, or the positive check's */
     {
         const cbf_field_info *f = cbf__layout_arg(layout, r->arg);
         const cbf_machine_range *lim = &v->machine->limit[r->limit];
         const char *axis = cbf_machine_limit_axes[r->limit] ? cbf_machine_limit_axis_names[r->limit][out] : NULL;
-        char msg[256];
+        char msg[256], name[128];
         cbf_finding fd;
         if (cbf__checks[r->check].versions && !(cbf__checks[r->check].versions & CBF__VBIT(v->eff)))
-            return; /* scoped to other versions (versions:) */
+            return 1; /* scoped to other versions (versions:) */
+        if (item >= 0)
+            (void)snprintf(name, sizeof name, "%s[%ld]", f ? f->name : "?", item);
+        else
+            (void)snprintf(name, sizeof name, "%s", f ? f->name : "?");
         (void)snprintf(msg, sizeof msg, "%s.%s%s%s is %.9g %s, outside the machine's %s %.9g..%.9g %s",
-                       cbf__commands[cmd].name, f ? f->name : "?", axis ? " " : "", axis ? axis : "", (double)x[out],
+                       cbf__commands[cmd].name, name, axis ? " " : "", axis ? axis : "", (double)x[out],
                        cbf_machine_limit_units[r->limit], cbf_machine_limit_names[r->limit], lim->min[out],
                        lim->max[out], cbf_machine_limit_units[r->limit]);
         fd.check = cbf__checks[r->check].id;
@@ -65,6 +71,14 @@ CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, uns
         if (v->fn)
             v->fn(v->user, &fd);
     }
+    return 1;
+}
+
+/* cbf__machine_breach_item for an argument (not an item of a group): the fast path's call. */
+CBF__COLD static void cbf__machine_breach(cbf__vctx *v, int cmd, int layout, unsigned j, const float *x, unsigned n,
+                                          int finite, long rec, size_t off)
+{
+    (void)cbf__machine_breach_item(v, cmd, layout, j, x, n, finite, rec, off, -1);
 }
 
 /* Rule j of cbf__mrules on its argument x (n floats, decoded once by the generated layout

@@ -81,27 +81,44 @@ int cbf_reader_init(cbf_reader *r, const uint8_t *buf, size_t len)
 
 long cbf_args_decode(int layout, const uint8_t *args, size_t n, cbf_args *out)
 {
+    const cbf__layout *L;
+    long items;
     if (!cbf__layout_ok(layout) || !out || (!args && n))
         return CBF_ERR_ARGUMENT;
-    if (n != cbf__layouts[layout].size)
+    L = &cbf__layouts[layout];
+    if (CBF__HAS_GROUPS && L->group >= 0) { /* a repeated group: n from nb, the items after the fixed arguments */
+        items = cbf__group_n(L, n);
+        if (items < 0)
+            return CBF_ERR_RANGE;
+        memset(out, 0, sizeof *out);
+        cbf__load(&cbf__args[L->first_arg], L->nargs - 1u, args, (unsigned char *)out + L->member);
+        cbf__load_group(L, args, (size_t)items, out);
+        return (long)n;
+    }
+    if (n != L->size)
         return CBF_ERR_RANGE;
     memset(out, 0, sizeof *out);
-    cbf__load(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs, args,
-              (unsigned char *)out + cbf__layouts[layout].member);
+    cbf__load(&cbf__args[L->first_arg], L->nargs, args, (unsigned char *)out + L->member);
     return (long)n;
 }
 
 long cbf_args_encode(int layout, const cbf_args *in, uint8_t *out, size_t cap)
 {
-    size_t n;
+    const cbf__layout *L;
+    size_t n, items;
     if (!cbf__layout_ok(layout) || !in || !out)
         return CBF_ERR_ARGUMENT;
-    n = cbf__layouts[layout].size;
+    L = &cbf__layouts[layout];
+    items = CBF__HAS_GROUPS ? cbf__group_items(L, in) : 0u;
+    if (CBF__HAS_GROUPS && L->group >= 0 && (items < L->group_min || items > L->group_max))
+        return CBF_ERR_RANGE; /* a group of n items outside its min..max: no nb says it */
+    n = L->size + (CBF__HAS_GROUPS && L->group >= 0 ? L->group_item * items : 0u);
     if (cap < n)
         return CBF_ERR_BUFFER;
     memset(out, 0, n);
-    cbf__store(&cbf__args[cbf__layouts[layout].first_arg], cbf__layouts[layout].nargs,
-               (const unsigned char *)in + cbf__layouts[layout].member, out);
+    cbf__store(&cbf__args[L->first_arg], L->nargs - (L->group >= 0), (const unsigned char *)in + L->member, out);
+    if (CBF__HAS_GROUPS && L->group >= 0)
+        cbf__store_group(L, in, items, out);
     return (long)n;
 }
 

@@ -26,6 +26,13 @@ typedef struct cbf__layout {
     signed char shape[CBF__S__COUNT];
     signed char cutter[CBF__C__COUNT];
     signed char progress;
+    /* A repeated argument group (issue 25, point 3): its index in the layout (the last argument; -1:
+     * none); a record holds n items, group_min <= n <= group_max, nb = size + group_item * n; the
+     * decoded struct keeps them in a bounded array and n at offset group_n of cbf_args. */
+    signed char group;
+    unsigned group_min, group_max;
+    size_t group_item;
+    size_t group_n;
 } cbf__layout;
 
 typedef struct cbf__command {

@@ -20,28 +20,32 @@ static int cbf__file_sum_folds(int profile, size_t *start)
 CBF__COLD static void cbf__arg_size(cbf__vctx *v, int cmd, int profile, long rec, size_t off, size_t nb)
 {
     char msg[256];
-    size_t at = 0, sizes[CBF__MAX_CANDIDATES], n = 0, i, j;
-    int k;
-    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
-        int lay = cbf__commands[cmd].candidates[v->eff][k];
-        if (lay < 0)
-            break;
-        if (!cbf__profile_accepts(lay, profile))
-            continue;
-        for (i = 0; i < n && sizes[i] != cbf__layouts[lay].size; i++) {}
-        if (i == n)
-            sizes[n++] = cbf__layouts[lay].size;
-    }
-    for (i = 1; i < n; i++) /* insertion sort: a handful of sizes */
-        for (j = i; j > 0 && sizes[j - 1] > sizes[j]; j--) {
-            size_t t = sizes[j];
-            sizes[j] = sizes[j - 1];
-            sizes[j - 1] = t;
-        }
+    size_t at = 0;
+    long size = -1;
+    int k, first = 1;
     cbf__cat(msg, sizeof msg, &at, "%s with %lu argument bytes; expected ", cbf__commands[cmd].name,
              (unsigned long)nb);
-    for (i = 0; i < n; i++)
-        cbf__cat(msg, sizeof msg, &at, "%s%lu", i ? " or " : "", (unsigned long)sizes[i]);
+    /* ascending: each time the least size above the last of any layout (a repeated group takes
+     * many, nb = size + k n), until none is left or the message is full */
+    while (at + 1u < sizeof msg) {
+        long next = -1;
+        for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+            int lay = cbf__commands[cmd].candidates[v->eff][k];
+            long s;
+            if (lay < 0)
+                break;
+            if (!cbf__profile_accepts(lay, profile))
+                continue;
+            s = cbf__layout_next_size(&cbf__layouts[lay], size);
+            if (s >= 0 && (next < 0 || s < next))
+                next = s;
+        }
+        if (next < 0)
+            break;
+        cbf__cat(msg, sizeof msg, &at, "%s%ld", first ? "" : " or ", next);
+        first = 0;
+        size = next;
+    }
     cbf__each(v, CBF__KIND_ARG_SIZE, rec, off, "%s", msg);
 }
 
@@ -155,7 +159,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                 int lay = cbf__commands[cmd].candidates[v.eff][k];
                 if (lay < 0)
                     break;
-                if (cbf__layouts[lay].size == nb && cbf__profile_accepts(lay, profile))
+                if (cbf__layout_takes(&cbf__layouts[lay], nb) && cbf__profile_accepts(lay, profile))
                     seen[cmd].accepted = 1;
             }
             seen[cmd].layout = cbf_args_layout((int)code, v.eff, nb);

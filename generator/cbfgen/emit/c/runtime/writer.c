@@ -110,8 +110,8 @@ static long cbf__profile_size(int version, int code, const uint8_t *args, size_t
         return (long)nb;
     L = &cbf__layouts[own];
     H = &cbf__layouts[have];
-    if (L->nargs > H->nargs || L->size > H->size)
-        return -1;
+    if (L->nargs > H->nargs || L->size > H->size || L->group >= 0 || H->group >= 0)
+        return -1; /* a repeated group is never cut */
     for (i = 0; i < L->nargs; i++)
         if (!cbf__same_field(&cbf__args[L->first_arg + i], &cbf__args[H->first_arg + i]))
             return -1;

@@ -269,6 +269,8 @@ class _Draw:
         for key in lim.monotone:
             if key in self.state.prev:
                 lo = max(lo, self.state.prev[key])
+        if f.per > 1:  # a repeated group of vectors: its n items, each a vector (a polyline's points)
+            return tuple(_vector(draw, f.per, lo, hi, lim.nonzero) for _ in range(f.items))
         if f.count > 1:
             return _vector(draw, f.count, lo, hi, lim.nonzero)
         return draw(_floats(lo, max(lo, hi), exclude_lo=lim.lo_open and lim.lo is not None and lo <= lim.lo))
@@ -303,7 +305,10 @@ class _Draw:
             v = a[f.name]
             if f.kind == "string":
                 v = v + T.PAD * (f.size - len(v))
-            vals.extend(v if f.kind == "float" and f.count > 1 else [v])
+            if f.per > 1:
+                vals.extend(x for item in v for x in item)
+            else:
+                vals.extend(v if f.kind == "float" and f.count > 1 else [v])
         return lay.struct.pack(*vals)
 
     def _cutter_names(self, cmd: T.CommandInfo, lay: T.LayoutInfo) -> list[str]:
