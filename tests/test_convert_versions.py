@@ -57,7 +57,7 @@ def test_convert_between_two_versions_carries_or_refuses_by_the_model(src: str, 
             conv = convert(model, dst, chord_tol=0.5, fill=_fills(model, dst))
         except ConvertError as exc:
             msg = str(exc)
-            m = re.match(r"record (\d+)\b", msg)
+            m = re.search(r"\brecord (\d+)\b", msg)
             assert m, f"{path.name} -> {dst}: the refusal names no record: {msg}"
             cmd = model.records[int(m.group(1))].command
             assert cmd is not None and cmd.name in msg, msg
