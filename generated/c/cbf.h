@@ -1562,7 +1562,7 @@ static const cbf__coverage cbf__coverages[4] = {
 };
 
 static const cbf__ckfield cbf__ckfields[3] = {
-    { CBF__CK_ARGS, CBF__ALG_SUM, 0, 12, "args" },
+    { CBF__CK_ARGS, CBF__ALG_SUM, 0, -1, "args" },
     { CBF__CK_HEADER, CBF__ALG_SUM, 1, 7, "header" },
     { CBF__CK_FILE, CBF__ALG_SUM, 2, -1, "file" },
 };

@@ -591,9 +591,11 @@ class Spec:
         return tuple(v.id for v in self.versions if tag in self.header_checksum_tags(v.header))
 
     def checksum_check(self, tag: str) -> Check | None:
-        """The header_checksum or arg_checksum check that judges the checksum field ``tag``."""
-        return next((c for c in self.checks if c.kind in ("header_checksum", "arg_checksum")
-                     and (c.checksum_field or ("header" if c.kind == "header_checksum" else "args")) == tag), None)
+        """The check that judges the checksum field ``tag``: a header_checksum check for a header
+        field, an arg_checksum check for a field among command arguments; None for the file and the
+        record head's checksums (judged by their own kinds)."""
+        kind = "arg_checksum" if tag in self.record_checksum_tags() else "header_checksum"
+        return next((c for c in self.checks if c.kind == kind and c.checksum_field == tag), None)
 
     def record_checksum_tags(self) -> tuple[str, ...]:
         """The tags of the checksum fields among command arguments (issue 25, point 1)."""
