@@ -1177,7 +1177,7 @@ def _repeat_pass(ctx: _Ctx, st: _State) -> None:
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
     _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
-    _checks_pass, _checksum_fields_pass, _named_coverage_pass, _arg_checksum_checks_pass, _fill_order_pass,
+    _checks_pass, _named_coverage_pass, _checksum_fields_pass, _arg_checksum_checks_pass, _fill_order_pass,
     _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass,
     _former_names_pass, _repeat_pass,
 )
