@@ -9,6 +9,7 @@ tests/revisions/drill.py run tests/revisions/record_crc.yaml, runs every binding
 
 from __future__ import annotations
 
+import base64
 import binascii
 import json
 import shutil
@@ -243,3 +244,20 @@ def test_c_validates_the_field_at_its_offset(record: Revised, tmp_path: Path) ->
     assert len(lines) == 1 and f":{pos + hs + ck.field.offset}: error {judge.id} " in lines[0], fail.stdout
     stored = struct.unpack_from("<H", bad, pos + hs + ck.field.offset)[0]
     assert f"stored {ck.tag} checksum {stored}," in lines[0]
+    # the C writer fills the field: the bad file decoded and encoded with derived values filled
+    # gives the good one (the CRC, then the head's argument checksum over it, then the file's)
+    testee = tmp_path / "cbf_testee"
+    built = subprocess.run(["gcc", "-std=c99", "-O0", "-o", str(testee), str(tmp_path / "gen" / "c" / "cbf_testee.c"),
+                            "-lm"], capture_output=True, text=True, check=False)
+    assert built.returncode == 0, built.stderr
+    asks = [{"op": "decode", "file": str(tmp_path / "bad.cbf")}]
+    first = subprocess.run([str(testee)], input=json.dumps(asks[0]) + "\n", capture_output=True, text=True,
+                           check=False, timeout=60)
+    decoded = json.loads(first.stdout.splitlines()[0])
+    assert decoded["ok"], decoded
+    ask = {"op": "encode", "json": decoded["result"], "keep_stored": False, "profile": "default"}
+    second = subprocess.run([str(testee)], input=json.dumps(ask) + "\n", capture_output=True, text=True,
+                            check=False, timeout=60)
+    encoded = json.loads(second.stdout.splitlines()[0])
+    assert encoded["ok"], encoded
+    assert base64.b64decode(encoded["bytes"]) == good
