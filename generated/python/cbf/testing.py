@@ -395,8 +395,28 @@ def seal(model: Cbf, profile: str = "default") -> bytes:
                     for i, r in enumerate(model.records))
     out = bytearray(pack_file(Cbf(model.header, records, model.trailing), keep_stored=True))
     offsets, _ = frame(out)
+    _fill_records(out, offsets, head_sums=False)
     fill_header(out, list(offsets), len(records), profile)
     return bytes(out)
+
+
+def _fill_records(b: bytearray, offsets: Sequence[int], head_sums: bool) -> None:
+    """Fill the checksum fields among each record's arguments (issue 25, point 1; the layout of
+    its code and nb for the file's version), then the head's argument checksum over them: of every
+    record with ``head_sums``, else of those whose arguments carry one."""
+    chk = T.ARG_CHECKSUM
+    vid = header_info(b)[0] or T.FALLBACK_VERSION
+    code_at = T.RECORD_BY_ROLE["code"].offset
+    for o in offsets:
+        start = o + T.HEAD_SIZE
+        nb = b[o + T.ARG_SIZE_OFFSET]
+        cmd = T.BY_CODE.get(b[o + code_at])
+        lay = cmd.layout_for_size(vid, nb) if cmd is not None else None
+        carries = lay is not None and bool(lay.checksums)
+        if lay is not None and carries:
+            b[start:start + nb] = fill_arg_checksums(lay, bytes(b[o:start]), b[start:start + nb])
+        if head_sums or carries:
+            _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + nb])))
 
 
 def _check_args(profile: str, min_records: int, max_records: int, bound: float,
@@ -599,17 +619,7 @@ def reseal_checksums(data: bytes | bytearray, profile: str = "default") -> bytes
     if len(b) < T.HEADER_SIZE:
         return bytes(b)
     offsets, _ = frame(b)
-    chk = T.ARG_CHECKSUM
-    vid = header_info(b)[0] or T.FALLBACK_VERSION
-    code_at = T.RECORD_BY_ROLE["code"].offset
-    for o in offsets:
-        start = o + T.HEAD_SIZE
-        nb = b[o + T.ARG_SIZE_OFFSET]
-        cmd = T.BY_CODE.get(b[o + code_at])
-        lay = cmd.layout_for_size(vid, nb) if cmd is not None else None
-        if lay is not None and lay.checksums:  # checksum fields among the arguments first (issue 25, point 1)
-            b[start:start + nb] = fill_arg_checksums(lay, bytes(b[o:start]), b[start:start + nb])
-        _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + nb])))
+    _fill_records(b, offsets, head_sums=True)
     own = T.LAYOUT_CHECKSUM_FIELDS[header_info(b)[1].id]  # this version's header's checksum fields
     for tag in T.CHECKSUMS["fill_order"]:
         if tag in own:
