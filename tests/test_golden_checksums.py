@@ -83,8 +83,11 @@ def _fitting(doc: Doc, bits: int, avoid: set[str]) -> str:
 
 
 def every_field_another_algorithm(doc: Doc) -> None:
-    """Each checksum field switches to another, non-sum algorithm (profiles follow the file field)."""
-    widths, used = _widths(doc), set()
+    """Each checksum field switches to another, non-sum algorithm (profiles follow the file field),
+    one no profile names either: a profile's own file algorithm stays apart from the field's (else
+    the two coverages of an empty file would sum alike again)."""
+    widths = _widths(doc)
+    used = {p["file_algorithm"] for p in doc["profiles"] if p.get("file_algorithm")}
     for f in doc["checksums"]["fields"]:
         f["algorithm"] = _fitting(doc, widths[f["field"]], used | {f["algorithm"]})
         used.add(f["algorithm"])
@@ -93,7 +96,8 @@ def every_field_another_algorithm(doc: Doc) -> None:
 def last_profile_another_algorithm(doc: Doc) -> None:
     """The last profile computes the file checksum with another, non-sum algorithm."""
     file_alg = next(f["algorithm"] for f in doc["checksums"]["fields"] if f["field"] == "file")
-    doc["profiles"][-1]["file_algorithm"] = _fitting(doc, _widths(doc)["file"], {file_alg})
+    named = {p["file_algorithm"] for p in doc["profiles"] if p.get("file_algorithm")}
+    doc["profiles"][-1]["file_algorithm"] = _fitting(doc, _widths(doc)["file"], {file_alg} | named)
 
 
 def header_coverage_moves(doc: Doc) -> None:

@@ -740,8 +740,8 @@ def _clean(path: str, model: Any, profile: str) -> None:
     if errors:
         e = errors[0]
         where = f"record {e.record}" if e.record is not None else "header"
-        raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); "
-                    f"run cbf validate --profile {profile} {path}")
+        again = f"cbf validate {path}" if profile == "default" else f"cbf validate --profile {profile} {path}"
+        raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); run {again}")
 
 
 def _mm(text: str) -> float:
