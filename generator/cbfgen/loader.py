@@ -942,11 +942,12 @@ def _named_coverage_pass(ctx: _Ctx, st: _State) -> None:
                                                      f"(header {h.id} field {n})", "fields")
                     segs.append(Segment("header", hf.offset, hf.end, fields=(n,)))
             resolved[h.id] = tuple(segs)
-        if len({tuple((x.start, x.end) for x in v) for v in resolved.values()}) > 1:
-            ids = list(resolved)
+        spans = {hid: tuple((x.start, x.end) for x in v) for hid, v in resolved.items()}
+        other = next((hid for hid in spans if spans[hid] != next(iter(spans.values()))), None)
+        if other is not None:
             ctx.fail(seg_node(cov.name), f"coverage {cov.name}: its named fields sit at other bytes in header "
-                                         f"{ids[0]} than in header {ids[-1]} (a header checksum covers the same bytes "
-                                         f"in every header that carries it)", "fields")
+                                         f"{next(iter(spans))} than in header {other} (a header checksum covers the "
+                                         f"same bytes in every header that carries it)", "fields")
         elif resolved:
             coverages[cov.name] = replace(cov, segments=next(iter(resolved.values())))
     st.checksums = replace(cs, coverages=coverages)
