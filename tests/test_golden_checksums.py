@@ -71,6 +71,7 @@ def _widths(doc: Doc) -> dict[str, int]:
     """Bits of the field that stores each checksum tag, read from the YAML."""
     sizes = {n: t.get("size") for n, t in doc["types"].items()}
     fields = [f for h in doc["headers"].values() for f in h["fields"]] + doc["record"]["fields"]
+    fields += [a for c in doc["commands"] for lay in c["layouts"] for a in lay["args"]]  # issue 25, point 1
     return {f["checksum"]: 8 * sizes[f["type"]] for f in fields if "checksum" in f}
 
 

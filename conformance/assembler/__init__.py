@@ -292,11 +292,16 @@ def _coverage(st: _State, hole: _Hole, coverage: str) -> bytes:
     bo: Any = sp.byte_order
     parts: list[bytes] = []
     for seg in sp.coverages[coverage]:
-        region = seg["region"]
+        region = seg.get("region")
         if region == "file":
             parts.append(bytes(buf[seg["start"]:]))
         elif region == "header":
             parts.append(bytes(buf[seg["start"]:seg["end"]]))
+        elif "fields" in seg and hole.tag in sp.arg_sums:
+            parts.extend(_arg_fields(st, hole))
+            break  # an argument's checksum covers its named fields only (the loader says so)
+        elif "fields" in seg:
+            parts.extend(_header_fields(st, hole, seg["fields"]))
         elif region == "args":
             rec = hole.offset - sp.slots["args"].offset
             nb = int.from_bytes(buf[rec + sp.arg_size.offset:rec + sp.arg_size.offset + sp.arg_size.width], bo)
@@ -321,6 +326,46 @@ def _coverage(st: _State, hole: _Hole, coverage: str) -> bytes:
         else:
             raise ValueError(f"coverage {coverage}: unknown region {region!r}")
     return b"".join(parts)
+
+
+def _arg_fields(st: _State, hole: _Hole) -> list[bytes]:
+    """The bytes an argument's checksum covers: its record found by framing from the header, its
+    layout by the record's code and nb and the checksum's place, its named fields in order."""
+    sp, buf = st.spec, st.out
+    bo: Any = sp.byte_order
+    if sp.code is None:
+        raise ValueError("the record has no code field")
+    pos = sp.header_size
+    while pos + sp.head_size <= len(buf):
+        nb = int.from_bytes(buf[pos + sp.arg_size.offset:pos + sp.arg_size.offset + sp.arg_size.width], bo)
+        if pos + sp.head_size <= hole.offset < pos + sp.head_size + nb:
+            code = int.from_bytes(buf[pos + sp.code.offset:pos + sp.code.offset + sp.code.width], bo)
+            at = hole.offset - pos - sp.head_size
+            found = {a.ranges for a in sp.arg_sums[hole.tag] if (a.code, a.size, a.offset) == (code, nb, at)}
+            if len(found) != 1:
+                raise ValueError(f"no single layout of code 0x{code:02X} with {nb} argument bytes carries "
+                                 f"{hole.tag} at argument offset {at}")
+            ranges = next(iter(found))
+            if pos + max(e for _, e in ranges) > len(buf):
+                raise ValueError(f"the record at {pos} ends before its {hole.tag} coverage")
+            return [bytes(buf[pos + s:pos + e]) for s, e in ranges]
+        pos += sp.head_size + nb
+    raise ValueError(f"checksum {hole.tag} at {hole.offset} lies in no record's arguments")
+
+
+def _header_fields(st: _State, hole: _Hole, names: list[str]) -> list[bytes]:
+    """The bytes of named header fields, as the header layouts that carry the checksum at the hole
+    place them (they must agree)."""
+    sp, buf = st.spec, st.out
+    placed = set()
+    for hid in sp.header_tags.get(hole.tag, ()):
+        fields = sp.header_fields[hid]
+        if all(n in fields for n in names):
+            placed.add(tuple((fields[n].offset, fields[n].offset + fields[n].width) for n in names))
+    if len(placed) != 1:
+        raise ValueError(f"the header fields {', '.join(names)} of checksum {hole.tag} sit in "
+                         f"{'no' if not placed else 'more than one'} place")
+    return [bytes(buf[s:e]) for s, e in next(iter(placed))]
 
 
 def _fill(st: _State, path: str) -> None:

@@ -1119,7 +1119,7 @@ int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args);
 /* ---- the model's vocabulary, numbered --------------------------------- */
 enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C, CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32 };
-enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS };
+enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS, CBF__REGION_FIELDS };
 enum { CBF__MOTION_NONE = 0, CBF__MOTION_POINT, CBF__MOTION_LINE, CBF__MOTION_CIRCLE, CBF__MOTION_HELIX };
 enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M__COUNT };
 enum { CBF__ORIENT_NONE = 0, CBF__ORIENT_SET, CBF__ORIENT_PATH };
@@ -1298,6 +1298,12 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
+/* A checksum field among a layout's arguments (issue 25, point 1): layout (cbf__layouts), its row
+ * of cbf__ckfields (algorithm, judging check, tag), the argument's offset and width, and the record
+ * byte ranges (cbf__argck_ranges[first .. first + n)) it covers, fed in order. */
+typedef struct cbf__argck { int layout; int ckfield; unsigned offset, elem; size_t first, n; } cbf__argck;
+typedef struct cbf__range { unsigned start, end; } cbf__range;
+
 /* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
 typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 
@@ -1327,7 +1333,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1331 "cbf.h"
+#line 1337 "cbf.h"
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -1593,6 +1599,14 @@ static const cbf__ckfield cbf__ckfields[3] = {
     { CBF__CK_ARGS, CBF__ALG_SUM, 0, -1, "args" },
     { CBF__CK_HEADER, CBF__ALG_SUM, 1, 7, "header" },
     { CBF__CK_FILE, CBF__ALG_SUM, 2, -1, "file" },
+};
+/* checksum fields among a layout's arguments (issue 25, point 1), in fill order within a layout;
+ * their ranges are offsets from the record's first byte (head, then arguments); a layout of -1: none */
+static const cbf__argck cbf__argcks[1] = {
+    { -1, -1, 0u, 0u, 0u, 0u }, /* none: the spec has no checksum among arguments */
+};
+static const cbf__range cbf__argck_ranges[1] = {
+    { 0u, 0u },
 };
 static const int cbf__fill_order[3] = { CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 
@@ -2335,7 +2349,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2339 "cbf.h"
+#line 2353 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2452,7 +2466,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2456 "cbf.h"
+#line 2470 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2677,7 +2691,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2681 "cbf.h"
+#line 2695 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -2847,8 +2861,53 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
         return 0u;
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
+
+
+/* ---- checksum fields among a layout's arguments (issue 25, point 1) --------
+ * cbf__argcks lists them per layout, in the spec's fill order; each covers byte ranges of its
+ * record (offsets from the record's first byte: the head, then the arguments), fed in order. */
+
+/* The value of argument checksum a over the record rec of nb argument bytes (nb is its layout's size). */
+static uint32_t cbf__argck_value(const cbf__argck *a, const uint8_t *rec, size_t nb)
+{
+    cbf__ck c;
+    size_t r;
+    cbf__ck_init(&c, cbf__ckfields[a->ckfield].alg);
+    for (r = a->first; r < a->first + a->n; r++) {
+        const cbf__range *g = &cbf__argck_ranges[r];
+        if (g->start < g->end && (size_t)g->end <= CBF_RECORD_HEAD_SIZE + nb)
+            cbf__ck_feed(&c, rec + g->start, (size_t)(g->end - g->start));
+    }
+    return cbf__ck_value(&c, a->elem);
+}
+
+/* Whether check ci judges a checksum field among arguments (not the head's argument checksum). */
+static int cbf__judges_argck(int ci)
+{
+    size_t i;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++)
+        if (cbf__argcks[i].ckfield >= 0 && cbf__ckfields[cbf__argcks[i].ckfield].check == ci)
+            return 1;
+    return 0;
+}
+
+/* Fills layout's checksum fields among the arguments of the record rec (nb argument bytes), in
+ * fill order; returns whether one was written (the head's argument checksum covers them). */
+static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
+{
+    size_t i;
+    int any = 0;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++) {
+        const cbf__argck *a = &cbf__argcks[i];
+        if (layout < 0 || a->layout != layout || (size_t)a->offset + a->elem > nb)
+            continue;
+        cbf__put_u(rec + CBF_RECORD_HEAD_SIZE + a->offset, cbf__argck_value(a, rec, nb), a->elem);
+        any = 1;
+    }
+    return any;
+}
 /* ==== END runtime/checksums.c ==== */
-#line 2852 "cbf.h"
+#line 2911 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3026,7 +3085,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3030 "cbf.h"
+#line 3089 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3246,6 +3305,9 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
             layout = cbf_args_layout(code, w->version, nb);
             if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
                 return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+            /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
+            if (cbf__fill_argcks(layout, p, nb) && f_ck)
+                cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
             pos += CBF_RECORD_HEAD_SIZE + nb;
         }
     }
@@ -3279,7 +3341,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3283 "cbf.h"
+#line 3345 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4392,7 +4454,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4396 "cbf.h"
+#line 4458 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4558,7 +4620,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4562 "cbf.h"
+#line 4624 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4595,7 +4657,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4599 "cbf.h"
+#line 4661 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5252,6 +5314,39 @@ CBF__COLD static void cbf__shape_unclosed(cbf__vctx *v)
  * command almost always share one size). */
 typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
 
+/* The head's argument checksum (6.4.4) differs: a finding of every arg_checksum check that judges
+ * it (not those of a checksum field among a command's arguments, issue 25 point 1). */
+static void cbf__head_sum_findings(cbf__vctx *v, long rec, size_t off, uint32_t got, uint32_t want)
+{
+    int ci;
+    for (ci = 0; ci < CBF__NCHECKS; ci++)
+        if (cbf__checks[ci].kind == CBF__KIND_ARG_CHECKSUM && !cbf__judges_argck(ci))
+            cbf__say(v, ci, rec, off, "stored argument checksum %lu, computed %lu", (unsigned long)got,
+                     (unsigned long)want);
+}
+
+/* Each checksum field among the arguments of the record at pos (rec, its nb argument bytes, of
+ * layout), judged by its arg_checksum check at the field's offset (issue 25, point 1). */
+static void cbf__check_argcks(cbf__vctx *v, int layout, const uint8_t *rec, size_t nb, long recno, size_t pos)
+{
+    size_t i;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++) {
+        const cbf__argck *a = &cbf__argcks[i];
+        const cbf__ckfield *k;
+        uint32_t want, got;
+        if (a->layout != layout || a->ckfield < 0 || (size_t)a->offset + a->elem > nb)
+            continue;
+        k = &cbf__ckfields[a->ckfield];
+        if (k->check < 0)
+            continue;
+        want = cbf__argck_value(a, rec, nb);
+        got = cbf__get_u(rec + CBF_RECORD_HEAD_SIZE + a->offset, a->elem);
+        if (got != want)
+            cbf__say(v, k->check, recno, pos + CBF_RECORD_HEAD_SIZE + a->offset, "stored %s checksum %lu, computed %lu",
+                     k->name, (unsigned long)got, (unsigned long)want);
+    }
+}
+
 CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn,
                           void *user)
 {
@@ -5373,10 +5468,11 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                                   : 0u;
             uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
             if (got != want)
-                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + CBF__HEAD_CK_OFFSET,
-                          "stored argument checksum %lu, computed %lu", (unsigned long)got, (unsigned long)want);
+                cbf__head_sum_findings(&v, rec, pos + CBF__HEAD_CK_OFFSET, got, want);
         }
 #endif
+        if (layout >= 0)
+            cbf__check_argcks(&v, layout, p, nb, rec, pos);
         if (res != 0u)
             cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
                       (unsigned long)res);
@@ -5459,7 +5555,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5463 "cbf.h"
+#line 5559 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

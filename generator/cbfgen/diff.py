@@ -152,6 +152,9 @@ def _coverage_text(cov: Coverage | None) -> str:
     for s in cov.segments:
         rng = f"{'' if s.start is None else s.start}..{'' if s.end is None else s.end}"
         ex = f" without {', '.join(s.exclude)}" if s.exclude else ""
+        if s.region == "fields":  # named fields of each layout that carries it (issue 25, point 1)
+            parts.append(f"fields({', '.join(s.fields)})")
+            continue
         parts.append(f"{s.region}[{rng}]{ex}")
     return f"{cov.name} = " + " + ".join(parts)
 

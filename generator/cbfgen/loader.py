@@ -21,6 +21,7 @@ from .escape import keyword_clash
 from .model import (
     ALGORITHM_KINDS,
     Algorithm,
+    ArgChecksum,
     Check,
     ChecksumField,
     Checksums,
@@ -559,6 +560,9 @@ def _checksums_pass(ctx: _Ctx, st: _State) -> None:
     for k, cov in cs["coverages"].items():
         segs = []
         for s in cov["segments"]:
+            if "fields" in s:  # named fields: resolved per layout by _named_coverage_pass
+                segs.append(Segment("fields", fields=tuple(str(n) for n in s["fields"])))
+                continue
             seg = Segment(s["region"], s.get("start"), s.get("end"), tuple(s.get("exclude", [])))
             if seg.region == "header" and (seg.start is None or seg.end is None or seg.end > first.size
                                            or seg.start >= seg.end):
@@ -573,6 +577,8 @@ def _checksums_pass(ctx: _Ctx, st: _State) -> None:
     # the stored field of each checksum tag: its width bounds the algorithm's result
     widths = {f.checksum: f.size for h in st.headers.values() for f in h.fields if f.checksum}
     widths.update({f.checksum: f.size for f in rfields if f.checksum})
+    arg_fields = [a for c in st.commands for lay in c.layouts for a in lay.args if a.checksum]
+    widths.update({str(a.checksum): a.size for a in arg_fields if a.checksum not in widths})
 
     def fits(node: _Map, key: str, tag: str, alg_name: str, what: str) -> None:
         bits = ALGORITHM_KINDS[algorithms[alg_name].kind]
@@ -598,10 +604,9 @@ def _checksums_pass(ctx: _Ctx, st: _State) -> None:
     for tag in ("args", "header", "file"):
         if tag not in tags:
             ctx.fail(cs, f"checksums: no definition for the {tag} checksum", "fields")
-    for h in st.headers.values():
-        for hf in h.fields:
-            if hf.checksum and hf.checksum not in tags:
-                ctx.at(hf.line, f"field {hf.name}: checksum {hf.checksum} is not defined")
+    for hf in [f for h in st.headers.values() for f in h.fields] + arg_fields:
+        if hf.checksum and hf.checksum not in tags:
+            ctx.at(hf.line, f"field {hf.name}: checksum {hf.checksum} is not defined")
     if sorted(cs["fill_order"]) != sorted(tags):
         ctx.fail(cs, "checksums.fill_order must name every checksum once", "fill_order")
     st.checksums = Checksums(algorithms, coverages, tuple(cfields), tuple(cs["fill_order"]))
@@ -817,6 +822,228 @@ def _checksum_fields_pass(ctx: _Ctx, st: _State) -> None:
                            f"would read it and none check it)")
 
 
+def _named_coverage_pass(ctx: _Ctx, st: _State) -> None:
+    """Checksum fields among command arguments and coverage by named fields (issue 25, point 1).
+
+    An argument with ``checksum: TAG`` is a checksum field: role checksum, one unsigned integer,
+    one width for its tag, a tag no header or record head field uses, in a layout of fixed size,
+    and a coverage made of named fields only. A ``fields`` segment names fields of the checksum's
+    own place: for an argument's checksum, arguments of its layout or record head fields (resolved
+    per layout to byte ranges of the record); for a header checksum, fields of each header layout
+    that carries it (resolved to header segments, the same bytes in every such layout). A name a
+    layout lacks, a field covering itself, and a named coverage that serves another checksum or a
+    profile are refused."""
+    if st.record is None or st.checksums is None:
+        return
+    cs, raw_cov = st.checksums, st.raw["checksums"]["coverages"]
+    defined = {f.field: f for f in cs.fields}
+    head_tags = {f.checksum for f in st.record.fields if f.checksum}
+    header_tags = {f.checksum for h in st.headers.values() for f in h.fields if f.checksum}
+    head = {f.name: f for f in st.record.fields}
+    hs = st.record.head_size
+    named = {k for k, cov in cs.coverages.items() if any(seg.region == "fields" for seg in cov.segments)}
+    users: dict[str, list[str]] = {}
+    for f in cs.fields:
+        users.setdefault(f.coverage, []).append(f.field)
+    for p in st.profiles:
+        for k in (*p.file_coverages, *p.hint_coverages):
+            users.setdefault(k, []).append(f"profile {p.id}")
+    for k in sorted(named):
+        if len(users.get(k, [])) > 1 or any(u in head_tags for u in users.get(k, [])):
+            ctx.fail(raw_cov[k], f"coverage {k}: a coverage by named fields serves one header or argument checksum "
+                                 f"field (used by {', '.join(users[k])})", "segments")
+
+    def seg_node(cov: str) -> Any:
+        return next((s for s in raw_cov[cov]["segments"] if "fields" in s), raw_cov[cov])
+
+    arg_first: dict[str, Field] = {}
+    commands: list[Command] = []
+    for cmd in st.commands:
+        layouts: list[Layout] = []
+        for lay in cmd.layouts:
+            found: list[ArgChecksum] = []
+            for a in lay.args:
+                if a.role == "checksum" and not a.checksum:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: role checksum needs a checksum tag (`checksum:`)")
+                if not a.checksum:
+                    continue
+                if a.role != "checksum" or a.kind != "uint" or a.count != 1:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: a checksum field needs role checksum and one "
+                                   f"unsigned integer")
+                    continue
+                if a.checksum in head_tags or a.checksum in header_tags:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: checksum {a.checksum} is the tag of a header or "
+                                   f"record head field")
+                    continue
+                if lay.repeated is not None:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: a checksum field in a layout with a repeated "
+                                   f"group (its coverage would move with n) is not supported")
+                    continue
+                first = arg_first.setdefault(a.checksum, a)
+                if first.size != a.size:
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: checksum {a.checksum} is {a.size} bytes here, "
+                                   f"{first.size} at line {first.line}")
+                cf = defined.get(a.checksum)
+                cov = cs.coverages.get(cf.coverage) if cf is not None else None
+                if cf is None or cov is None:
+                    continue  # _checksums_pass said so
+                if any(seg.region != "fields" for seg in cov.segments):
+                    ctx.at(a.line, f"{cmd.name} argument {a.name}: checksum {a.checksum} has coverage {cov.name}, "
+                                   f"not made of named fields (an argument's checksum covers named fields of its "
+                                   f"record)")
+                    continue
+                names: list[str] = []
+                ranges: list[tuple[int, int]] = []
+                for seg in cov.segments:
+                    for n in seg.fields:
+                        arg, hf = lay.arg(n), head.get(n)
+                        if arg is not None and hf is not None:
+                            ctx.fail(seg_node(cov.name), f"coverage {cov.name}: {n} names both an argument of "
+                                                         f"{cmd.name} and a record head field", "fields")
+                        elif arg is None and hf is None:
+                            ctx.fail(seg_node(cov.name), f"coverage {cov.name}: {cmd.name} {'/'.join(lay.versions)} "
+                                                         f"has no argument or record head field {n}", "fields")
+                        else:
+                            got = (hs + arg.offset, hs + arg.end) if arg is not None else (hf.offset, hf.end)  # type: ignore[union-attr]
+                            names.append(n)
+                            ranges.append(got)
+                own = (hs + a.offset, hs + a.end)
+                if any(lo < own[1] and own[0] < hi for lo, hi in ranges):
+                    ctx.fail(seg_node(cov.name), f"coverage {cov.name}: checksum {a.checksum} covers itself "
+                                                 f"({cmd.name} argument {a.name})", "fields")
+                found.append(ArgChecksum(a.checksum, a, cf.algorithm, tuple(names), tuple(ranges)))
+            layouts.append(replace(lay, checksums=tuple(found)))
+        commands.append(replace(cmd, layouts=tuple(layouts)))
+    st.commands[:] = commands
+    # header checksums: named fields become header segments, the same bytes in every layout
+    coverages = dict(cs.coverages)
+    for f in cs.fields:
+        cov = cs.coverages.get(f.coverage)
+        if cov is None or cov.name not in named or f.field in head_tags or f.field in arg_first:
+            continue
+        if f.field not in header_tags:
+            continue  # no field carries it: the checks of _checksum_fields_pass say so
+        resolved: dict[str, tuple[Segment, ...]] = {}
+        for h in st.headers.values():
+            holder = next((x for x in h.fields if x.checksum == f.field), None)
+            if holder is None:
+                continue
+            segs: list[Segment] = []
+            for seg in cov.segments:
+                if seg.region != "fields":
+                    segs.append(seg)
+                    continue
+                for n in seg.fields:
+                    hf = h.field(n)
+                    if hf is None:
+                        ctx.fail(seg_node(cov.name), f"coverage {cov.name}: header {h.id} has no field {n}", "fields")
+                        continue
+                    if hf.offset < holder.end and holder.offset < hf.end:
+                        ctx.fail(seg_node(cov.name), f"coverage {cov.name}: checksum {f.field} covers itself "
+                                                     f"(header {h.id} field {n})", "fields")
+                    segs.append(Segment("header", hf.offset, hf.end, fields=(n,)))
+            resolved[h.id] = tuple(segs)
+        spans = {hid: tuple((x.start, x.end) for x in v) for hid, v in resolved.items()}
+        other = next((hid for hid in spans if spans[hid] != next(iter(spans.values()))), None)
+        if other is not None:
+            ctx.fail(seg_node(cov.name), f"coverage {cov.name}: its named fields sit at other bytes in header "
+                                         f"{next(iter(spans))} than in header {other} (a header checksum covers the "
+                                         f"same bytes in every header that carries it)", "fields")
+        elif resolved:
+            coverages[cov.name] = replace(cov, segments=next(iter(resolved.values())))
+    st.checksums = replace(cs, coverages=coverages)
+
+
+def _arg_checksum_checks_pass(ctx: _Ctx, st: _State) -> None:
+    """Every checksum field among command arguments is judged by exactly one arg_checksum check
+    (its ``field``); an arg_checksum check names a record checksum field (the head's or an argument's)."""
+    if st.record is None:
+        return
+    head_tags = {f.checksum for f in st.record.fields if f.checksum}
+    arg_tags = {ck.tag: ck.field for c in st.commands for lay in c.layouts for ck in lay.checksums}
+    judged: dict[str, Check] = {}
+    for ch in st.checks:
+        if ch.kind != "arg_checksum":
+            continue
+        tag = ch.checksum_field or "args"
+        if tag not in head_tags and tag not in arg_tags:
+            ctx.at(ch.line, f"check {ch.id}: field {tag} is no record checksum field (the record head's, or a "
+                            f"checksum among a command's arguments)")
+            continue
+        if tag in arg_tags and tag in judged:
+            ctx.at(ch.line, f"check {ch.id}: checksum {tag} is judged by check {judged[tag].id} already")
+        judged.setdefault(tag, ch)
+    for tag, f in arg_tags.items():
+        if tag not in judged:
+            ctx.at(f.line, f"argument {f.name}: no arg_checksum check judges checksum {tag} (every binding would "
+                           f"read it and none check it)")
+
+
+def _fill_order_pass(ctx: _Ctx, st: _State) -> None:
+    """A writer fills the checksums in fill_order: a checksum that covers another checksum's stored
+    bytes comes after it, and no checksum covers its own. Header byte ranges, the file region and
+    the records region (less the head fields it excludes) and the args region are followed as
+    each binding computes them, with each profile's file coverages for the file checksum."""
+    if st.record is None or st.checksums is None:
+        return
+    cs, raw_cs = st.checksums, st.raw["checksums"]
+    order = list(cs.fill_order)
+    if sorted(order) != sorted(f.field for f in cs.fields):
+        return  # _checksums_pass said so
+    head = [f for f in st.record.fields if f.checksum]
+    arg_tags = {ck.tag for c in st.commands for lay in c.layouts for ck in lay.checksums}
+    covers: dict[str, set[str]] = {f.field: set() for f in cs.fields}
+
+    def by_coverage(tag: str, cov: Coverage) -> None:
+        for seg in cov.segments:
+            if seg.region == "header" and seg.start is not None and seg.end is not None:
+                for h in st.headers.values():
+                    covers[tag].update(x.checksum for x in h.fields
+                                       if x.checksum and x.offset < seg.end and seg.start < x.end)
+            elif seg.region == "file" and seg.start is not None:
+                for h in st.headers.values():
+                    covers[tag].update(x.checksum for x in h.fields if x.checksum and x.end > seg.start)
+                covers[tag].update(x.checksum for x in head if x.checksum)
+                covers[tag].update(arg_tags)
+            elif seg.region == "records":
+                covers[tag].update(x.checksum for x in head if x.checksum and x.name not in seg.exclude)
+                covers[tag].update(arg_tags)
+            elif seg.region == "args":
+                covers[tag].update(arg_tags)
+
+    for f in cs.fields:
+        if f.coverage in cs.coverages:
+            by_coverage(f.field, cs.coverages[f.coverage])
+        if f.field == "file":
+            for p in st.profiles:
+                for k in p.file_coverages:
+                    if k in cs.coverages:
+                        by_coverage("file", cs.coverages[k])
+    hs = st.record.head_size
+    for c in st.commands:
+        for lay in c.layouts:
+            for ck in lay.checksums:
+                for lo, hi in ck.ranges:
+                    covers[ck.tag].update(x.checksum for x in head if x.checksum and x.offset < hi and lo < x.end)
+                    covers[ck.tag].update(o.tag for o in lay.checksums
+                                          if hs + o.field.offset < hi and lo < hs + o.field.end)
+    covers = {t: {x for x in got if x is not None} for t, got in covers.items()}
+    for tag in order:
+        if tag in covers[tag]:
+            node = next((x for x in raw_cs["fields"] if x["field"] == tag), raw_cs)
+            ctx.fail(node, f"checksum {tag} covers its own stored bytes", "coverage")
+        for other in sorted(covers[tag] - {tag}):
+            if other not in covers:
+                continue
+            if tag in covers[other]:
+                if order.index(tag) < order.index(other):
+                    ctx.fail(raw_cs, f"checksums {tag} and {other} cover each other: no fill order computes both",
+                             "fill_order")
+            elif order.index(other) > order.index(tag):
+                ctx.fail(raw_cs, f"checksums.fill_order: {tag} covers {other}, so {other} must be filled before it",
+                         "fill_order")
+
+
 def _capabilities_pass(ctx: _Ctx, st: _State) -> None:
     """What every binding can implement: each field's type in each binding (registry.unsupported),
     and a header every reader can pick a layout for: Kaitai reads the version in the fields all
@@ -952,7 +1179,8 @@ def _repeat_pass(ctx: _Ctx, st: _State) -> None:
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (
     _types_pass, _versions_pass, _headers_pass, _record_pass, _commands_pass, _checksums_pass, _machine_pass,
-    _checks_pass, _checksum_fields_pass, _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass,
+    _checks_pass, _named_coverage_pass, _checksum_fields_pass, _arg_checksum_checks_pass, _fill_order_pass,
+    _deprecations_pass, _availability_pass, _capabilities_pass, _names_pass,
     _former_names_pass, _repeat_pass,
 )
 

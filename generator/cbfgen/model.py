@@ -73,6 +73,20 @@ class Field:
 
 
 @dataclass(frozen=True)
+class ArgChecksum:
+    """A checksum field among a command layout's arguments (issue 25, point 1): the argument that
+    stores it, its tag (a key of checksums.fields), its algorithm, and the byte ranges of the record
+    (offsets from the record's first byte: the head, then the arguments) its named-field coverage
+    resolves to in this layout, fed in order."""
+
+    tag: str
+    field: Field  # the argument (offset within the arguments)
+    algorithm: str
+    covers: tuple[str, ...]  # the named fields, in order
+    ranges: tuple[tuple[int, int], ...]  # (start, end) from the record's first byte
+
+
+@dataclass(frozen=True)
 class Layout:
     command: str
     variant: str  # "" for the primary layout
@@ -83,6 +97,8 @@ class Layout:
     doc: str
     clause: str | None
     line: int
+    # Checksum fields among the arguments (issue 25, point 1), each resolved to the bytes it covers.
+    checksums: tuple[ArgChecksum, ...] = ()
 
     @property
     def class_name(self) -> str:
@@ -252,10 +268,16 @@ class RecordLayout:
 
 @dataclass(frozen=True)
 class Segment:
-    region: str  # file | header | records | args
+    """A part of a coverage. ``fields``: named fields (issue 25, point 1). In a header checksum's
+    coverage the loader resolves them to one header segment a field (``fields`` keeps its name);
+    in a record checksum's coverage the region stays ``fields`` and each layout that carries the
+    checksum holds its own byte ranges (Layout.checksums)."""
+
+    region: str  # file | header | records | args | fields
     start: int | None = None
     end: int | None = None
     exclude: tuple[str, ...] = ()
+    fields: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -447,7 +469,8 @@ class Check:
 
     @property
     def checksum_field(self) -> str | None:
-        """header_checksum: the checksum tag of the header field it judges."""
+        """header_checksum: the checksum tag of the header field it judges; arg_checksum: the tag of
+        the record checksum field it judges (``args``, the head's, or an argument's)."""
         return self._param("field", None)  # type: ignore[no-any-return]
 
     @property
@@ -558,14 +581,36 @@ class Spec:
         return {f.checksum: f for f in self.headers[hid].fields if f.checksum}
 
     def checksum_versions(self, tag: str) -> tuple[str, ...]:
-        """The versions whose header carries the checksum field ``tag`` (the record's: every one)."""
+        """The versions that carry the checksum field ``tag``: every one for the record head's, the
+        versions of the layouts that carry it for an argument's, else those whose header holds it."""
         if any(f.checksum == tag for f in self.record.fields):
             return tuple(v.id for v in self.versions)
+        lays = self.checksum_layouts(tag)
+        if lays:
+            return tuple(v.id for v in self.versions if any(v.id in lay.versions for _, lay, _ in lays))
         return tuple(v.id for v in self.versions if tag in self.header_checksum_tags(v.header))
 
     def checksum_check(self, tag: str) -> Check | None:
-        """The header_checksum check that judges the header checksum field ``tag``."""
-        return next((c for c in self.checks if c.kind == "header_checksum" and c.checksum_field == tag), None)
+        """The check that judges the checksum field ``tag``: a header_checksum check for a header
+        field, an arg_checksum check for a field among command arguments; None for the file and the
+        record head's checksums (judged by their own kinds)."""
+        kind = "arg_checksum" if tag in self.record_checksum_tags() else "header_checksum"
+        return next((c for c in self.checks if c.kind == kind and c.checksum_field == tag), None)
+
+    def record_checksum_tags(self) -> tuple[str, ...]:
+        """The tags of the checksum fields among command arguments (issue 25, point 1)."""
+        seen: list[str] = []
+        for c in self.commands:
+            for lay in c.layouts:
+                for ck in lay.checksums:
+                    if ck.tag not in seen:
+                        seen.append(ck.tag)
+        return tuple(seen)
+
+    def checksum_layouts(self, tag: str) -> tuple[tuple[Command, Layout, ArgChecksum], ...]:
+        """Every command layout that carries the argument checksum field ``tag``."""
+        return tuple((c, lay, ck) for c in self.commands for lay in c.layouts for ck in lay.checksums
+                     if ck.tag == tag)
 
     def header_checksum_field(self, tag: str) -> Field:
         for f in next(iter(self.headers.values())).fields:

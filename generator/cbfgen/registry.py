@@ -275,6 +275,15 @@ class HeaderChecksumParams:
 
 
 @dataclass(frozen=True)
+class ArgChecksumParams:
+    """A record checksum (issue 25, point 1): ``field`` is the tag of the checksum field it judges,
+    the record head's (``args``, 6.4.4) or one a command layout carries among its arguments."""
+
+    field: str = "args"  # the checksum tag (checksums.fields) of the record's field it judges
+    versions: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class AvailabilityParams:
     versions: tuple[str, ...]  # the versions it covers
     commands: tuple[str, ...]  # the commands missing from them
@@ -319,7 +328,7 @@ class DeprecatedParams:
 
 
 Params = (NoParams | DeprecatedParams | ScopedParams | PartNumberParams | CutterTableParams | HeaderChecksumParams
-          | AvailabilityParams | TargetParams | RangeParams | MachineLimitsParams)
+          | ArgChecksumParams | AvailabilityParams | TargetParams | RangeParams | MachineLimitsParams)
 
 Scope = Literal["file", "record"]
 
@@ -406,7 +415,9 @@ _KINDS = (
     _k("sequence", ScopedParams, "record", "record i carries sequence number i"),
     _k("code_copy", ScopedParams, "record", "the code copy equals the code", kaitai=True),
     _k("arg_size", ScopedParams, "record", "nb is the size of a layout of the version", kaitai=True),
-    _k("arg_checksum", ScopedParams, "record", "the argument checksum matches"),
+    _k("arg_checksum", ArgChecksumParams, "record",
+       "the record checksum field it names (its `field`: the head's argument checksum, or a checksum among "
+       "a command's arguments) matches"),
     _k("continuity", ScopedParams, "record", "a motion starts where the last one ended"),
     _k("availability", AvailabilityParams, "record", "the version has the command", kaitai=True),
     _k("version", NoParams, "file", "the header's version is a version of the spec"),

@@ -211,6 +211,22 @@ def arg_checksum(raw: Buffer) -> int:
     return field_checksum("args", b"", (), args=raw)
 
 
+def record_checksum(ck: T.ArgChecksumInfo, rec: Buffer) -> int:
+    """A checksum field among the arguments (issue 25, point 1) over the record ``rec`` (its head,
+    then its arguments): the record's byte ranges its named fields resolve to, in order."""
+    mv = memoryview(rec)
+    return checksum(ck.algorithm, (mv[a:b] for a, b in ck.ranges), ck.arg.size)
+
+
+def fill_arg_checksums(lay: T.LayoutInfo, head: bytes, raw: Buffer) -> bytes:
+    """The arguments with the layout's checksum fields filled, in the spec's fill order (the head's
+    argument checksum, which covers them, is computed after)."""
+    rec = bytearray(head) + bytes(raw)
+    for ck in lay.checksums:
+        struct.pack_into(T.BO + ck.arg.fmt, rec, T.HEAD_SIZE + ck.arg.offset, record_checksum(ck, rec))
+    return bytes(rec[T.HEAD_SIZE:])
+
+
 # -- encode --------------------------------------------------------------------
 def pack_file(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -> bytes:
     """The bytes of a Cbf, NOT validated: ``cbf.encode`` (writer.py) is the writer, which
@@ -266,9 +282,17 @@ def pack_file(model: Cbf, *, keep_stored: bool = False, profile: str = "default"
                 raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
             check_strings(lay.args, bytes(raw), len(out) + T.HEAD_SIZE, f"record {i}: {cmd.name}")
             raw = _profile_layout(cmd, vid or "", profile, raw, i)
-            chk = arg_checksum(raw)
+            chk = 0
         head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
         head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk
+        if not keep_stored:
+            written = T.BY_CODE[r.code].layout_for_size(vid or "", len(raw))
+            if written is not None and written.checksums:
+                try:
+                    raw = fill_arg_checksums(written, pack_head(*head_vals), raw)
+                except struct.error as exc:
+                    raise EncodeError(f"record {i}: head field out of range ({exc})") from None
+            head_vals[T.I_CHK] = arg_checksum(raw)
         try:
             offsets.append(len(out))
             out += pack_head(*head_vals)

@@ -27,7 +27,7 @@ ORIENT_KINDS = registry.ROLE_KINDS["orientation"]
 ORIENT_KEYS = ("start", "end")
 SHAPE_KINDS = registry.ROLE_KINDS["shape"]
 SHAPE_KEYS = ("name", "count")
-REGIONS = ("file", "header", "records", "args")
+REGIONS = ("file", "header", "records", "args", "fields")  # fields: an argument checksum's named fields (cbf__argcks)
 ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
 CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own tags follow (_tags)
 
@@ -405,11 +405,27 @@ class Commands:
 
 
 @dataclass(frozen=True)
+class ArgCkRow:
+    """A checksum field among a layout's arguments (issue 25, point 1): its layout (index in
+    cbf__layouts), its row of cbf__ckfields, its argument's offset and width, its record ranges."""
+
+    layout: int
+    ckfield: int
+    offset: int
+    elem: int
+    first: int
+    n: int
+    what: str
+
+
+@dataclass(frozen=True)
 class Checksums:
     segments: tuple[SegmentRow, ...]
     coverages: tuple[CoverageRow, ...]
     ckfields: tuple[CkFieldRow, ...]
     fill: tuple[str, ...]
+    argcks: tuple[ArgCkRow, ...] = ()  # in fill order within each layout
+    ranges: tuple[tuple[int, int], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -728,8 +744,25 @@ def _checksums(spec: Spec) -> Checksums:
         judge = spec.checksum_check(tag)
         ckfields.append(CkFieldRow(tag=tag, alg="ALG_" + macro(kind), coverage=cov_names.index(cf.coverage),
                                    check=-1 if judge is None else check_index[judge.id]))
+    argcks, ranges = _arg_checksum_rows(spec)
     return Checksums(segments=tuple(segments), coverages=tuple(coverages), ckfields=tuple(ckfields),
-                     fill=tuple("CK_" + macro(t) for t in spec.checksums.fill_order))
+                     fill=tuple("CK_" + macro(t) for t in spec.checksums.fill_order), argcks=argcks, ranges=ranges)
+
+
+def _arg_checksum_rows(spec: Spec) -> tuple[tuple[ArgCkRow, ...], tuple[tuple[int, int], ...]]:
+    """Each layout's checksum fields among its arguments, in fill order, and their record ranges."""
+    tags = list(_tags(spec))
+    order = list(spec.checksums.fill_order)
+    rows: list[ArgCkRow] = []
+    ranges: list[tuple[int, int]] = []
+    flat = [(c, lay) for c in spec.commands for lay in c.layouts]
+    for li, (c, lay) in enumerate(flat):
+        for ck in sorted(lay.checksums, key=lambda k: order.index(k.tag)):
+            rows.append(ArgCkRow(layout=li, ckfield=tags.index(ck.tag), offset=ck.field.offset,
+                                 elem=ck.field.size, first=len(ranges), n=len(ck.ranges),
+                                 what=f"{c.name} {ck.field.name}: {ck.tag} over {', '.join(ck.covers)}"))
+            ranges.extend(ck.ranges)
+    return tuple(rows), tuple(ranges)
 
 
 def _profiles(spec: Spec) -> Profiles:

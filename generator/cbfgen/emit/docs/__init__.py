@@ -488,6 +488,10 @@ def _why(k: Check, c: Command) -> str | None:
             return None
         missing = [v for v in k.versions if not c.available_in(v)]
         return f"{c.name} is not in version {', '.join(missing)}" if missing else None
+    if k.kind == "arg_checksum" and k.checksum_field:  # issue 25, point 1: a checksum among its arguments
+        carried = [ck for lay in c.layouts for ck in lay.checksums if ck.tag == k.checksum_field]
+        return (f"its argument {carried[0].field.name} holds checksum {k.checksum_field} over "
+                f"{', '.join(carried[0].covers)}") if carried else None
     if k.kind == "deprecated":  # issue 25, point 5: the command, or which of its layouts, since when
         lays = [lay.variant or "primary" for lay in c.layouts if k.deprecates_layout(c.name, lay.variant)]
         what = c.name if len(lays) == len(c.layouts) else f"{c.name} layout {', '.join(lays)}"
@@ -521,6 +525,21 @@ def _scope(k: Check) -> str:
     return (" " + " ".join(out)) if out else ""
 
 
+def _checksum_places(spec: Spec, tag: str) -> str:
+    """Where the checksum field ``tag`` is stored, for the docs' checksum table: the header layouts
+    (name and offset), the record head, or the command layouts whose arguments carry it, with the
+    byte ranges of the record its named fields resolve to (issue 25, point 1)."""
+    out = [f"header {h.id} `{f.name}` at {f.offset}" for h in spec.headers.values() for f in h.fields
+           if f.checksum == tag]
+    out += [f"record head `{f.name}` at {f.offset}" for f in spec.record.fields if f.checksum == tag]
+    for c, lay, ck in spec.checksum_layouts(tag):
+        spans = ", ".join(f"{a}..{b - 1}" for a, b in ck.ranges)
+        out.append(f"[{c.name}]({command_page(c)}){f' layout {lay.variant}' if lay.variant else ''} "
+                   f"argument `{ck.field.name}` at record byte {spec.record.head_size + ck.field.offset}, "
+                   f"over {', '.join(f'`{n}`' for n in ck.covers)} (record bytes {spans})")
+    return "; ".join(out)
+
+
 def _checks_of(spec: Spec, c: Command) -> list[tuple[Check, str]]:
     return [(k, why) for k in spec.checks if (why := _why(k, c)) is not None]
 
@@ -536,6 +555,7 @@ def _environment(spec: Spec) -> Any:
     env.filters["prose"] = lambda value, index="": text.prose(spec, value, index)
     env.filters["md"] = text.md_escape
     env.globals["repo_link"] = repo_link
+    env.globals["checksum_places"] = lambda tag: _checksum_places(spec, tag)
     return env
 
 

@@ -76,7 +76,10 @@ def spec_data(spec: Spec) -> dict[str, Any]:
                 "cutter": c.cutter, "progress": c.progress, "sets": c.sets,
                 "layouts": [
                     {"variant": lay.variant, "class": lay.class_name, "versions": list(lay.versions),
-                     "size": lay.size, "profiles": list(lay.profiles), "args": [_field_data(a) for a in lay.args]}
+                     "size": lay.size, "profiles": list(lay.profiles), "args": [_field_data(a) for a in lay.args],
+                     # checksum fields among the arguments, each with the record's byte ranges it covers
+                     "checksums": [{"tag": ck.tag, "arg": ck.field.name, "algorithm": ck.algorithm,
+                                    "ranges": [list(r) for r in ck.ranges]} for ck in lay.checksums]}
                     for lay in c.layouts
                 ],
             }
@@ -85,8 +88,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "checksums": {
             "algorithms": {k: a.kind for k, a in spec.checksums.algorithms.items()},
             "coverages": {
-                k: [{"region": s.region, "start": s.start, "end": s.end, "exclude": list(s.exclude)}
-                    for s in cov.segments]
+                k: [{"region": s.region, "start": s.start, "end": s.end, "exclude": list(s.exclude),
+                     "fields": list(s.fields)} for s in cov.segments]
                 for k, cov in spec.checksums.coverages.items()
             },
             "fields": {f.field: {"algorithm": f.algorithm, "coverage": f.coverage} for f in spec.checksums.fields},

@@ -166,3 +166,47 @@ uint32_t cbf_args_checksum(const uint8_t *args, size_t n)
     return cbf__cover(k->coverage, k->alg, f->elem, NULL, 0, 0, args, n);
 }
 
+
+/* ---- checksum fields among a layout's arguments (issue 25, point 1) --------
+ * cbf__argcks lists them per layout, in the spec's fill order; each covers byte ranges of its
+ * record (offsets from the record's first byte: the head, then the arguments), fed in order. */
+
+/* The value of argument checksum a over the record rec of nb argument bytes (nb is its layout's size). */
+static uint32_t cbf__argck_value(const cbf__argck *a, const uint8_t *rec, size_t nb)
+{
+    cbf__ck c;
+    size_t r;
+    cbf__ck_init(&c, cbf__ckfields[a->ckfield].alg);
+    for (r = a->first; r < a->first + a->n; r++) {
+        const cbf__range *g = &cbf__argck_ranges[r];
+        if (g->start < g->end && (size_t)g->end <= CBF_RECORD_HEAD_SIZE + nb)
+            cbf__ck_feed(&c, rec + g->start, (size_t)(g->end - g->start));
+    }
+    return cbf__ck_value(&c, a->elem);
+}
+
+/* Whether check ci judges a checksum field among arguments (not the head's argument checksum). */
+static int cbf__judges_argck(int ci)
+{
+    size_t i;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++)
+        if (cbf__argcks[i].ckfield >= 0 && cbf__ckfields[cbf__argcks[i].ckfield].check == ci)
+            return 1;
+    return 0;
+}
+
+/* Fills layout's checksum fields among the arguments of the record rec (nb argument bytes), in
+ * fill order; returns whether one was written (the head's argument checksum covers them). */
+static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
+{
+    size_t i;
+    int any = 0;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++) {
+        const cbf__argck *a = &cbf__argcks[i];
+        if (layout < 0 || a->layout != layout || (size_t)a->offset + a->elem > nb)
+            continue;
+        cbf__put_u(rec + CBF_RECORD_HEAD_SIZE + a->offset, cbf__argck_value(a, rec, nb), a->elem);
+        any = 1;
+    }
+    return any;
+}

@@ -53,6 +53,12 @@ typedef struct cbf__segment {
 
 typedef struct cbf__coverage { const char *name; size_t first, n; } cbf__coverage;
 
+/* A checksum field among a layout's arguments (issue 25, point 1): layout (cbf__layouts), its row
+ * of cbf__ckfields (algorithm, judging check, tag), the argument's offset and width, and the record
+ * byte ranges (cbf__argck_ranges[first .. first + n)) it covers, fed in order. */
+typedef struct cbf__argck { int layout; int ckfield; unsigned offset, elem; size_t first, n; } cbf__argck;
+typedef struct cbf__range { unsigned start, end; } cbf__range;
+
 /* check: the header_checksum check that judges the field (index in cbf__checks), -1 none; name: its tag */
 typedef struct cbf__ckfield { int tag; int alg; int coverage; int check; const char *name; } cbf__ckfield;
 

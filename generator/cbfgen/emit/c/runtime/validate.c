@@ -65,6 +65,39 @@ CBF__COLD static void cbf__shape_unclosed(cbf__vctx *v)
  * command almost always share one size). */
 typedef struct cbf__seen { long nb; int accepted, layout, avail; } cbf__seen;
 
+/* The head's argument checksum (6.4.4) differs: a finding of every arg_checksum check that judges
+ * it (not those of a checksum field among a command's arguments, issue 25 point 1). */
+static void cbf__head_sum_findings(cbf__vctx *v, long rec, size_t off, uint32_t got, uint32_t want)
+{
+    int ci;
+    for (ci = 0; ci < CBF__NCHECKS; ci++)
+        if (cbf__checks[ci].kind == CBF__KIND_ARG_CHECKSUM && !cbf__judges_argck(ci))
+            cbf__say(v, ci, rec, off, "stored argument checksum %lu, computed %lu", (unsigned long)got,
+                     (unsigned long)want);
+}
+
+/* Each checksum field among the arguments of the record at pos (rec, its nb argument bytes, of
+ * layout), judged by its arg_checksum check at the field's offset (issue 25, point 1). */
+static void cbf__check_argcks(cbf__vctx *v, int layout, const uint8_t *rec, size_t nb, long recno, size_t pos)
+{
+    size_t i;
+    for (i = 0; i < sizeof cbf__argcks / sizeof cbf__argcks[0]; i++) {
+        const cbf__argck *a = &cbf__argcks[i];
+        const cbf__ckfield *k;
+        uint32_t want, got;
+        if (a->layout != layout || a->ckfield < 0 || (size_t)a->offset + a->elem > nb)
+            continue;
+        k = &cbf__ckfields[a->ckfield];
+        if (k->check < 0)
+            continue;
+        want = cbf__argck_value(a, rec, nb);
+        got = cbf__get_u(rec + CBF_RECORD_HEAD_SIZE + a->offset, a->elem);
+        if (got != want)
+            cbf__say(v, k->check, recno, pos + CBF_RECORD_HEAD_SIZE + a->offset, "stored %s checksum %lu, computed %lu",
+                     k->name, (unsigned long)got, (unsigned long)want);
+    }
+}
+
 CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn,
                           void *user)
 {
@@ -186,10 +219,11 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
                                   : 0u;
             uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
             if (got != want)
-                cbf__each(&v, CBF__KIND_ARG_CHECKSUM, rec, pos + CBF__HEAD_CK_OFFSET,
-                          "stored argument checksum %lu, computed %lu", (unsigned long)got, (unsigned long)want);
+                cbf__head_sum_findings(&v, rec, pos + CBF__HEAD_CK_OFFSET, got, want);
         }
 #endif
+        if (layout >= 0)
+            cbf__check_argcks(&v, layout, p, nb, rec, pos);
         if (res != 0u)
             cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
                       (unsigned long)res);

@@ -215,6 +215,9 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
             layout = cbf_args_layout(code, w->version, nb);
             if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
                 return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+            /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
+            if (cbf__fill_argcks(layout, p, nb) && f_ck)
+                cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
             pos += CBF_RECORD_HEAD_SIZE + nb;
         }
     }

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import tables as T
-from .codec import field_checksum
+from .codec import field_checksum, record_checksum
 from .findings import (
     Check,
     Cutters,
@@ -334,6 +334,40 @@ def _arg_checksum(r: Records, check: Check) -> None:
     bad = np.nonzero(chk != want)[0]
     r.add(check, bad, off[bad] + T.ARG_CHECKSUM.offset, bad,
           lambda i: f"stored argument checksum {chk[i]}, computed {want[i]}")
+
+
+def _judges_head(check: Check) -> bool:
+    """An arg_checksum check of the record head's argument checksum (6.4.4), not of a checksum
+    field among a command's arguments (issue 25, point 1)."""
+    return check["field"] in (None, T.ARG_CHECKSUM.checksum)
+
+
+def _record_checksum_batch(r: Records, check: Check, b: Batch) -> None:
+    if _judges_head(check):
+        _arg_checksum_batch(r, check, b)
+        return
+    hs, buf = T.HEAD_SIZE, r.buf
+    for ck in b.lay.checksums:
+        if ck.tag != check["field"]:
+            continue
+        got = b.raw[ck.arg.name].astype(np.int64)
+        starts = (b.aoff - hs).tolist()
+        want = np.array([record_checksum(ck, buf[o:o + hs + b.lay.size]) for o in starts], dtype=np.int64)
+        bad = np.nonzero(got != want)[0]  # a batch's rows are in file order
+        r.add(check, b.rows[bad], b.aoff[bad] + ck.arg.offset, bad, _stored_vs(ck.tag, got, want))
+
+
+def _stored_vs(tag: str, got: Any, want: Any) -> Message:
+    return lambda k: f"stored {tag} checksum {got[k]}, computed {want[k]}"
+
+
+def _record_checksum_end(r: Records, check: Check) -> None:
+    if _judges_head(check):
+        _arg_checksum(r, check)
+
+
+def _carries(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
+    return _judges_head(check) or any(ck.tag == check["field"] for ck in lay.checksums)
 
 
 def _unknown_code(r: Records, check: Check) -> None:
@@ -860,7 +894,7 @@ KERNELS: dict[str, Kernel] = {
     "sequence": Kernel(every=_sequence),
     "reserved_byte": Kernel(every=_reserved),
     "code_copy": Kernel(every=_code_copy),
-    "arg_checksum": Kernel(batch=_arg_checksum_batch, end=_arg_checksum),
+    "arg_checksum": Kernel(batch=_record_checksum_batch, end=_record_checksum_end, applies=_carries),
     "unknown_code": Kernel(every=_unknown_code),
     "availability": Kernel(every=_availability),
     "arg_size": Kernel(every=_arg_size),

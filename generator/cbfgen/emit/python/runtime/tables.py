@@ -106,6 +106,18 @@ def _struct(fields: tuple[FieldInfo, ...], bits: bool = False) -> struct.Struct:
 
 
 @dataclass(frozen=True, slots=True)
+class ArgChecksumInfo:
+    """A checksum field among a layout's arguments (issue 25, point 1): its tag, the argument that
+    stores it, its algorithm (a key of checksums.algorithms), and the byte ranges of the record
+    (from its first byte: head, then arguments) it covers, fed in order."""
+
+    tag: str
+    arg: FieldInfo
+    algorithm: str
+    ranges: tuple[tuple[int, int], ...]
+
+
+@dataclass(frozen=True, slots=True)
 class LayoutInfo:
     command: str
     code: int
@@ -118,6 +130,7 @@ class LayoutInfo:
     bits: Struct
     # A layout with a repeated group is made once per n it takes (nb = fixed + k*n): n, else None.
     n: int | None = None
+    checksums: tuple[ArgChecksumInfo, ...] = ()  # in the spec's fill order
 
     @property
     def repeated(self) -> FieldInfo | None:
@@ -256,6 +269,15 @@ I_CHK = RECORD_FIELDS.index(ARG_CHECKSUM)
 # Sequence numbers count modulo the width of their field.
 SEQ_MASK = (1 << (8 * RECORD_FIELDS[I_SEQ].size)) - 1
 
+def _arg_checksums(lay: dict[str, Any], args: tuple[FieldInfo, ...]) -> tuple[ArgChecksumInfo, ...]:
+    """A layout's argument checksum fields, in the spec's fill order (each later one may cover an
+    earlier one)."""
+    order = SPEC["checksums"]["fill_order"]
+    found = [ArgChecksumInfo(ck["tag"], next(a for a in args if a.name == ck["arg"]), ck["algorithm"],
+                             tuple((r[0], r[1]) for r in ck["ranges"])) for ck in lay.get("checksums", ())]
+    return tuple(sorted(found, key=lambda ck: order.index(ck.tag)))
+
+
 def _command(c: dict[str, Any]) -> CommandInfo:
     lays = []
     for lay in c["layouts"]:
@@ -269,7 +291,8 @@ def _command(c: dict[str, Any]) -> CommandInfo:
                                        _struct(nargs), _struct(nargs, bits=True), n))
             continue
         lays.append(LayoutInfo(c["name"], c["code"], lay["variant"], frozenset(lay["versions"]), lay["size"],
-                               frozenset(lay["profiles"]), args, _struct(args), _struct(args, bits=True)))
+                               frozenset(lay["profiles"]), args, _struct(args), _struct(args, bits=True),
+                               checksums=_arg_checksums(lay, args)))
     by_version = {v["id"]: tuple(x for x in lays if v["id"] in x.versions) for v in SPEC["versions"]}
     return CommandInfo(c["name"], c["code"], tuple(lays), c["motion"], c["orientation"], c["shape"], c["cutter"],
                        c["progress"], {k: v for k, v in by_version.items() if v}, c.get("sets"))

@@ -60,7 +60,7 @@ except ImportError as exc:  # pragma: no cover - depends on the environment
     raise ImportError("cbf.testing needs hypothesis: pip install hypothesis") from exc
 
 from . import tables as T
-from .codec import field_checksum, file_algorithm, fill_header, frame, header_info, pack_file
+from .codec import field_checksum, file_algorithm, fill_arg_checksums, fill_header, frame, header_info, pack_file
 from .geometry import motion_end
 from .model import Cbf, Record, new_header
 from .optfiles import CUTTER_NAME, CUTTER_VALUES
@@ -399,8 +399,28 @@ def seal(model: Cbf, profile: str = "default") -> bytes:
                     for i, r in enumerate(model.records))
     out = bytearray(pack_file(Cbf(model.header, records, model.trailing), keep_stored=True))
     offsets, _ = frame(out)
+    _fill_records(out, offsets, head_sums=False)
     fill_header(out, list(offsets), len(records), profile)
     return bytes(out)
+
+
+def _fill_records(b: bytearray, offsets: Sequence[int], head_sums: bool) -> None:
+    """Fill the checksum fields among each record's arguments (issue 25, point 1; the layout of
+    its code and nb for the file's version), then the head's argument checksum over them: of every
+    record with ``head_sums``, else of those whose arguments carry one."""
+    chk = T.ARG_CHECKSUM
+    vid = header_info(b)[0] or T.FALLBACK_VERSION
+    code_at = T.RECORD_BY_ROLE["code"].offset
+    for o in offsets:
+        start = o + T.HEAD_SIZE
+        nb = b[o + T.ARG_SIZE_OFFSET]
+        cmd = T.BY_CODE.get(b[o + code_at])
+        lay = cmd.layout_for_size(vid, nb) if cmd is not None else None
+        carries = lay is not None and bool(lay.checksums)
+        if lay is not None and carries:
+            b[start:start + nb] = fill_arg_checksums(lay, bytes(b[o:start]), b[start:start + nb])
+        if head_sums or carries:
+            _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + nb])))
 
 
 def _check_args(profile: str, min_records: int, max_records: int, bound: float,
@@ -596,16 +616,14 @@ MUTATORS: tuple[Mutator, ...] = (_flip, _set_byte, _truncate, _delete, _insert, 
 
 
 def reseal_checksums(data: bytes | bytearray, profile: str = "default") -> bytes:
-    """Recompute the argument and header checksums of whatever frames, and nothing else
+    """Recompute the argument checksums (those among a command's arguments, then the head's) and
+    the header checksums of whatever frames, and nothing else
     (a mutation then reaches the checks behind the checksums)."""
     b = bytearray(data)
     if len(b) < T.HEADER_SIZE:
         return bytes(b)
     offsets, _ = frame(b)
-    chk = T.ARG_CHECKSUM
-    for o in offsets:
-        start = o + T.HEAD_SIZE
-        _put(b, chk, o, field_checksum("args", b"", (), args=bytes(b[start:start + b[o + T.ARG_SIZE_OFFSET]])))
+    _fill_records(b, offsets, head_sums=True)
     own = T.LAYOUT_CHECKSUM_FIELDS[header_info(b)[1].id]  # this version's header's checksum fields
     for tag in T.CHECKSUMS["fill_order"]:
         if tag in own:
