@@ -9,7 +9,9 @@
 #                             chosen for the spec it meets, applied to a temporary copy of
 #                             the tree, then `cbfgen diff` (the classification the fixture
 #                             states), `make generate`, `make golden`, generated/ fresh,
-#                             `make conformance` (every binding) and the whole pytest suite.
+#                             `make conformance` (every binding) and the whole pytest suite;
+#                             then every fixture applied on top of the others in ONE copy
+#                             (`drill.py run --together`) and the same steps, the whole suite, there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
 #                             whose kind no in-tree test makes (IN_TREE: a new command is made
 #                             by tests/test_new_command.py, another checksum algorithm by
@@ -54,6 +56,7 @@ breaking: venv  ## cbfgen diff of spec/cbf.yaml at BASE=<git ref> (default HEAD)
 
 revision-drill: venv kaitai-setup  ## apply every tests/revisions/ fixture in a temp copy: generate, golden, conformance, tests
 	$(PY) tests/revisions/drill.py run --jobs $(DRILL_JOBS)
+	$(PY) tests/revisions/drill.py run --together
 
 revision-drill-quick: venv kaitai-setup
 	$(PY) tests/revisions/drill.py run --quick

@@ -7,7 +7,7 @@ adds (a golden case for a new check, a new expectation for a golden whose
 meaning changes), and what `cbfgen diff` must say about it.
 
     python tests/revisions/drill.py apply FIXTURE ROOT     apply to the tree at ROOT
-    python tests/revisions/drill.py run [--quick] [FIXTURE ...]
+    python tests/revisions/drill.py run [--quick] [--together] [FIXTURE ...]
 
 `run` copies the working tree (tracked and untracked files, not ignored
 ones) into a temporary folder per fixture, applies the fixture there, and
@@ -20,7 +20,8 @@ leaves nothing to regenerate), `make conformance`
 as a commit of the revision would track it). `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
 the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
-then applies them all to ONE tree, where the steps run once (drill_together).
+then applies them all to ONE tree, where the steps run once (drill_together);
+`--together` does that with every step in full (every fixture on top of the others).
 It prints one line per step with its time and exits 1 when a step fails,
 showing the end of that step's output.
 
@@ -630,6 +631,8 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--keep", action="store_true", help="keep the temporary trees")
     r.add_argument("--keep-going", action="store_true", help="report every failing test, not the first")
     r.add_argument("--jobs", type=int, default=1, help="fixtures drilled at once (each in its own process)")
+    r.add_argument("--together", action="store_true",
+                   help="apply the fixtures (default: all) to one tree and run every step there once")
     args = ap.parse_args(argv)
     try:
         if args.cmd == "apply":
@@ -642,7 +645,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"drill: {exc}", file=sys.stderr)
         return 2
     t0 = time.monotonic()
-    if args.quick and not args.fixture and len(chosen) > 1:
+    if (args.together or (args.quick and not args.fixture)) and len(chosen) > 1:
         results = drill_together(chosen, args.quick, args.keep, args.keep_going)
     elif args.jobs > 1 and len(chosen) > 1:
         results = _in_parallel(chosen, args)
