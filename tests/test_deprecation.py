@@ -14,8 +14,11 @@ from pathlib import Path
 
 import pytest
 from conftest import ENV, load_yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from cbf import tables as T
+from cbf import testing, validate
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
@@ -59,3 +62,14 @@ def test_every_deprecation_has_a_golden_case() -> None:
     """A deprecation the spec adds comes with its golden case (the issue's rule for a new check)."""
     have = {check for _, check in _cases()}
     assert IDS <= have, sorted(IDS - have)
+
+
+@pytest.mark.skipif(not IDS, reason="the spec deprecates nothing")
+@settings(max_examples=60)
+@given(st.data())
+def test_the_valid_file_drawer_draws_no_deprecated_record(data: st.DataObject) -> None:
+    """cbf.testing's files validate with no finding: a deprecated command or layout (a warning) is
+    never drawn, in any version and profile (found when every drill fixture was applied together)."""
+    profile = data.draw(st.sampled_from(sorted(T.PROFILES)))
+    raw = data.draw(testing.cutfiles(profile=profile, min_records=1, max_records=30))
+    assert not [f for f in validate(raw, profile=profile) if f.check in IDS]

@@ -362,13 +362,21 @@ class _Draw:
             st_.orient = e if all(math.isfinite(x) for x in e) and math.sqrt(sum(x * x for x in e)) > 0.0 else None
 
 
+def _deprecated(version: str, cmd: T.CommandInfo, lay: T.LayoutInfo) -> bool:
+    """Whether a check of kind deprecated reports this layout's records in files of this version."""
+    return any(version in c["versions"] and (cmd.name in c["deprecates"] or f"{cmd.name}/{lay.variant}"
+                                             in c["deprecates"]) for c in T.checks_of("deprecated"))
+
+
 def _pool(version: str, profile: str) -> list[tuple[T.CommandInfo, T.LayoutInfo]]:
-    """Every (command, layout) a file of this version may hold under this profile."""
+    """Every (command, layout) a file of this version may hold under this profile without a finding
+    (a deprecated one draws a warning: it is left out)."""
     out = []
     for cmd in T.COMMANDS:
         own = [lay for lay in cmd.layouts_for(version) if profile in lay.profiles]
         for lay in own or cmd.layouts_for(version):  # the profile's writers write its own layout (N8)
-            if lay.accepted_under(profile) and cmd.layout_for_size(version, lay.size) is lay:
+            if (lay.accepted_under(profile) and cmd.layout_for_size(version, lay.size) is lay
+                    and not _deprecated(version, cmd, lay)):
                 out.append((cmd, lay))
     return out
 
