@@ -673,7 +673,11 @@ def _checks_pass(ctx: _Ctx, st: _State) -> None:
         for key in ch:
             if key in COMMON_CHECK_KEYS or key in ck.keys:
                 continue
-            if key == "versions":
+            if key == "versions" and ck.kaitai:
+                ctx.fail(ch, f"check {cid}: versions on a check of kind {kname}, which the Kaitai parsers state "
+                             f"as a valid: rule in every version (a file of another version would pass Python "
+                             f"and C and fail Kaitai)", key)
+            elif key == "versions":
                 ctx.fail(ch, f"check {cid}: versions on a check of kind {kname}, which no runtime scopes by "
                              f"version (only {', '.join(k.name for k in CHECK_KINDS.values() if k.versioned)} does)",
                          key)

@@ -411,10 +411,12 @@ _KINDS = (
     _k("command_count", ScopedParams, "file", "the header's count is the number of records"),
     _k("header_checksum", HeaderChecksumParams, "file",
        "the header checksum field it names (its `field`, a checksum tag) matches"),
-    _k("magic", ScopedParams, "file", "the start and end patterns hold their values", kaitai=True),
+    # Not scoped by version, like every kind the .ksy states as a `valid:` rule (kaitai=True) but
+    # availability (whose rule is per version): a Kaitai parser applies the rule in every version.
+    _k("magic", NoParams, "file", "the start and end patterns hold their values", kaitai=True),
     _k("sequence", ScopedParams, "record", "record i carries sequence number i"),
-    _k("code_copy", ScopedParams, "record", "the code copy equals the code", kaitai=True),
-    _k("arg_size", ScopedParams, "record", "nb is the size of a layout of the version", kaitai=True),
+    _k("code_copy", NoParams, "record", "the code copy equals the code", kaitai=True),
+    _k("arg_size", NoParams, "record", "nb is the size of a layout of the version", kaitai=True),
     _k("arg_checksum", ArgChecksumParams, "record",
        "the record checksum field it names (its `field`: the head's argument checksum, or a checksum among "
        "a command's arguments) matches"),
