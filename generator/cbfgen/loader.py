@@ -1179,6 +1179,17 @@ def _repeat_pass(ctx: _Ctx, st: _State) -> None:
                 if arg == rep.name and not point_end:
                     ctx.at(rep.line, f"{cmd.name}: {what} names the repeated argument {rep.name} (only a point "
                                      f"motion's end may: the group's last element)")
+    # a check's target may be a group only where its kind judges items (registry CheckKind.items)
+    groups = {(cmd.name, lay.repeated.name) for cmd in st.commands for lay in cmd.layouts if lay.repeated is not None}
+    for ch in st.checks:
+        if CHECK_KINDS[ch.kind].items:
+            continue
+        for t in ch.targets:
+            for arg_name in t.args:
+                if (t.command, arg_name) in groups:
+                    judges = ", ".join(k.name for k in CHECK_KINDS.values() if k.items)
+                    ctx.at(ch.line, f"check {ch.id}: kind {ch.kind} targets the repeated argument group "
+                                    f"{t.command} {arg_name}; only {judges} judges a group, item by item")
 
 
 PASSES: tuple[Callable[[_Ctx, _State], None], ...] = (

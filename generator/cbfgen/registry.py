@@ -364,6 +364,7 @@ class CheckKind:
     kaitai: bool = False
     target_shape: RoleArg | None = None  # what each target argument must be (None: the kind checks it itself)
     accepts: Callable[[Any], Accepts] | None = None  # a check (model.Check) -> the values it accepts
+    items: bool = False  # a target may be a repeated argument group, judged item by item in every binding
 
     def accepted(self, check: Any) -> Accepts | None:
         """What ``check`` (of this kind) accepts in its targets; None: the kind bounds no value."""
@@ -439,7 +440,8 @@ _KINDS = (
     _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
     _k("orientation", ScopedParams, "record", "a 5-axis command starts at the current orientation"),
     _k("shape", ScopedParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
-    _k("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits"),
+    CheckKind("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits",
+              items=True),
     _k("deprecated", DeprecatedParams, "record", "a deprecated command or layout draws a finding"),
 )
 
