@@ -872,7 +872,7 @@ def _has_rules(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
 
 
 def _deprecates(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
-    return cmd.name in check["deprecates"] or f"{cmd.name}/{lay.variant}" in check["deprecates"]
+    return T.deprecates(check, cmd.name, lay.variant)
 
 
 def _deprecated(r: Records, check: Check, b: Batch) -> None:

@@ -330,6 +330,11 @@ def checks_of(kind: str) -> tuple[dict[str, Any], ...]:
     return _CHECKS_BY_KIND.get(kind, ())
 
 
+def deprecates(check: dict[str, Any], command: str, variant: str) -> bool:
+    """Whether a check of kind deprecated names this command, or this layout (NAME/variant) of it."""
+    return command in check["deprecates"] or f"{command}/{variant}" in check["deprecates"]
+
+
 PROFILES: dict[str, dict[str, Any]] = SPEC["profiles"]
 TOL: dict[str, float] = SPEC["tolerances"]
 LIMITS: dict[str, int] = SPEC["limits"]

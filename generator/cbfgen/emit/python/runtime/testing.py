@@ -364,8 +364,8 @@ class _Draw:
 
 def _deprecated(version: str, cmd: T.CommandInfo, lay: T.LayoutInfo) -> bool:
     """Whether a check of kind deprecated reports this layout's records in files of this version."""
-    return any(version in c["versions"] and (cmd.name in c["deprecates"] or f"{cmd.name}/{lay.variant}"
-                                             in c["deprecates"]) for c in T.checks_of("deprecated"))
+    return any(version in c["versions"] and T.deprecates(c, cmd.name, lay.variant)
+               for c in T.checks_of("deprecated"))
 
 
 def _pool(version: str, profile: str) -> list[tuple[T.CommandInfo, T.LayoutInfo]]:
