@@ -20,7 +20,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import cbf
-from cbf import records, testing
+from cbf import records, rowsums, testing
 from cbf import tables as T
 
 CUTTERS = {"C1": (100.0, 3.0), "C2": (50.0, 1.5)}
@@ -101,5 +101,5 @@ def test_gather_and_row_sums_are_exact() -> None:
         starts[0], starts[-1] = 0, len(a) - width
         rows = records._gather(a, starts, width)
         assert rows.tolist() == [a[s:s + width].tolist() for s in starts.tolist()]
-        assert records._row_sums(rows).tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
+        assert rowsums.row_checksums("sum", rows, 8).tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
     assert records._gather(a, np.zeros(0, dtype=np.int64), 8).shape == (0, 8)

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import tables as T
-from .codec import field_checksum, record_checksum
+from .codec import field_checksum
 from .findings import (
     Check,
     Cutters,
@@ -37,6 +37,7 @@ from .findings import (
 from .machine import DEFAULT as DEFAULT_MACHINE
 from .machine import Limit, Machine, breach, machine_rules
 from .optfiles import CUTTER_NAME, CUTTER_VALUES
+from .rowsums import row_checksums
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -275,44 +276,43 @@ def _code_copy(r: Records, check: Check) -> None:
 
 
 @lru_cache(maxsize=1)
-def _plain_arg_sum() -> bool:
-    """The argument checksum is a plain byte sum of the arguments alone (asked once a batch)."""
+def _head_coverage() -> tuple[str, int] | None:
+    """The head's argument checksum (6.4.4) as (algorithm kind, how many times its coverage feeds
+    the arguments), computed for every record of a layout at once; None when its coverage also
+    feeds bytes outside the record (a header or file range: then one record at a time, as
+    codec.field_checksum feeds them). A ``records`` segment feeds nothing here: the head's sum
+    is taken over one record's arguments, with no record offsets (as codec.arg_checksum)."""
     spec = T.CHECKSUMS["fields"]["args"]
-    return bool(T.CHECKSUMS["algorithms"][spec["algorithm"]] == "sum" and T.CHECKSUMS["coverages"][spec["coverage"]]
-                == [{"region": "args", "start": None, "end": None, "exclude": []}])
+    segs = T.CHECKSUMS["coverages"][spec["coverage"]]
+    if any(s["region"] in ("header", "file") for s in segs):
+        return None
+    return str(T.CHECKSUMS["algorithms"][spec["algorithm"]]), sum(1 for s in segs if s["region"] == "args")
 
 
-def _row_sums(rows: NDArray[np.uint8]) -> NDArray[np.int64]:
-    """The byte sum of each row. einsum's loop is about three times faster than numpy's row
-    reduction on rows of a few bytes; it adds in the type of its input, so the rows are widened
-    to the narrowest type that holds 255 x the row width (exact), a block of rows at a time
-    (memory: a few hundred KiB however large the batch)."""
-    wide = np.uint16 if rows.shape[1] * 255 < 1 << 16 else np.int64
-    out = np.empty(rows.shape[0], dtype=np.int64)
-    for s in range(0, rows.shape[0], _SUM_ROWS):
-        out[s:s + _SUM_ROWS] = np.einsum("ij->i", rows[s:s + _SUM_ROWS].astype(wide))
-    return out
-
-
-_SUM_ROWS = 1 << 13  # rows widened at once
+def _arg_sums(cov: tuple[str, int], rows: NDArray[np.uint8]) -> NDArray[np.int64]:
+    """The head's argument checksum of each row of argument bytes (all rows at once)."""
+    kind, copies = cov
+    fed = rows if copies == 1 else np.tile(rows, (1, copies))
+    return row_checksums(kind, fed, T.ARG_CHECKSUM.size)
 
 
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
-    """The sums of the records of a layout, from the argument bytes the batch gathered."""
-    if not _plain_arg_sum():
+    """The checksums of the records of a layout, from the argument bytes the batch gathered."""
+    cov = _head_coverage()
+    if cov is None:
         return
     held = r.state.get(check["id"])
     if held is None:
         held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=np.int64), np.zeros(len(r.off), dtype=bool))
     sums, done = held
-    if b.lay.size:
-        sums[b.rows] = _row_sums(b.bytes_)
+    sums[b.rows] = _arg_sums(cov, b.bytes_)
     done[b.rows] = True
 
 
 def _arg_checksum(r: Records, check: Check) -> None:
     nb, chk, off, a, hs = r.head["arg_size"], r.head["checksum"], r.off, r.a, T.HEAD_SIZE
-    if _plain_arg_sum():
+    cov = _head_coverage()
+    if cov is not None:
         # The batches summed the records of each layout; the others (no layout fits) are
         # summed here, one argument size at a time, their arguments gathered as rows
         # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
@@ -322,12 +322,11 @@ def _arg_checksum(r: Records, check: Check) -> None:
         if left.size:
             nbl = nb[left]
             for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
-                if size:
-                    rows = left[nbl == size]
-                    sums[rows] = _row_sums(_gather(a, off[rows] + hs, size))
-        want = (sums & ((1 << (8 * T.ARG_CHECKSUM.size)) - 1)).astype(chk.dtype)  # fits the field
+                rows = left[nbl == size]
+                sums[rows] = _arg_sums(cov, _gather(a, off[rows] + hs, size))
+        want = sums.astype(chk.dtype)  # row_checksums gave each in the field's width
         del sums, done
-    else:
+    else:  # a coverage reaching outside the record (no spec has one): a record at a time
         buf = r.buf
         want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
                          for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
@@ -346,13 +345,19 @@ def _record_checksum_batch(r: Records, check: Check, b: Batch) -> None:
     if _judges_head(check):
         _arg_checksum_batch(r, check, b)
         return
-    hs, buf = T.HEAD_SIZE, r.buf
+    hs = T.HEAD_SIZE
     for ck in b.lay.checksums:
         if ck.tag != check["field"]:
             continue
         got = b.raw[ck.arg.name].astype(np.int64)
-        starts = (b.aoff - hs).tolist()
-        want = np.array([record_checksum(ck, buf[o:o + hs + b.lay.size]) for o in starts], dtype=np.int64)
+        # the byte ranges its named fields resolve to are the same in every record of the layout:
+        # those columns of the records' bytes (the arguments the batch gathered, or whole records
+        # when a range lies in the head), in order, are what the checksum is fed
+        whole = any(lo < hs for lo, _ in ck.ranges)
+        rec, base = (_gather(r.a, b.aoff - hs, hs + b.lay.size), 0) if whole else (b.bytes_, hs)
+        cols = np.concatenate([np.arange(lo - base, hi - base, dtype=np.intp) for lo, hi in ck.ranges]
+                              or [np.zeros(0, dtype=np.intp)])
+        want = row_checksums(str(T.CHECKSUMS["algorithms"][ck.algorithm]), rec[:, cols], ck.arg.size)
         bad = np.nonzero(got != want)[0]  # a batch's rows are in file order
         r.add(check, b.rows[bad], b.aoff[bad] + ck.arg.offset, bad, _stored_vs(ck.tag, got, want))
 
