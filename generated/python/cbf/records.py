@@ -85,12 +85,17 @@ class Records:
         """The findings of ``check`` at ``rows`` (ascending), the k-th message msg(keys[k])."""
         if check is None or not len(rows):
             return
-        narrow = np.int32 if len(self.buf) < 1 << 31 else np.int64  # 4 bytes a row and offset
+        narrow = _narrow(self)
         held = np.asarray(rows).astype(narrow)
         self.groups.append(_lazy(check, held, np.asarray(offs).astype(narrow), held if keys is rows else keys, msg))
 
     def found(self, check: Check, record: int, offset: int, message: str) -> None:
         self.pending.append(finding(check, record, offset, message))
+
+
+def _narrow(r: Records) -> type[np.signedinteger[Any]]:
+    """The integer type that holds every row number and offset of the file (4 bytes under 2 GiB)."""
+    return np.int32 if len(r.buf) < 1 << 31 else np.int64
 
 
 def _lazy(check: Check, rows: Any, offs: Any, keys: Any, msg: Message) -> Iterator[Finding]:
@@ -303,7 +308,8 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
         return
     held = r.state.get(check["id"])
     if held is None:
-        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=np.int64), np.zeros(len(r.off), dtype=bool))
+        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=r.head["checksum"].dtype),
+                                       np.zeros(len(r.off), dtype=bool))
     sums, done = held
     sums[b.rows] = _arg_sums(cov, b.bytes_)
     done[b.rows] = True
@@ -317,14 +323,14 @@ def _arg_checksum(r: Records, check: Check) -> None:
         # summed here, one argument size at a time, their arguments gathered as rows
         # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
         held = r.state.pop(check["id"], None)
-        sums, done = held if held is not None else (np.zeros(len(off), dtype=np.int64), np.zeros(len(off), dtype=bool))
+        sums, done = held if held is not None else (np.zeros(len(off), dtype=chk.dtype), np.zeros(len(off), dtype=bool))
         left = np.flatnonzero(~done)
         if left.size:
             nbl = nb[left]
             for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
                 rows = left[nbl == size]
                 sums[rows] = _arg_sums(cov, _gather(a, off[rows] + hs, size))
-        want = sums.astype(chk.dtype)  # row_checksums gave each in the field's width
+        want = sums  # in the field's type: row_checksums gave each in the field's width
         del sums, done
     else:  # a coverage reaching outside the record (no spec has one): a record at a time
         buf = r.buf
@@ -706,7 +712,10 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
     start = np.full((n, 3), np.nan, dtype=np.float32 if plain else np.float64) if m["kind"] == "point" \
         else cols[m["start"]]
     at = b.aoff + next((f.offset for f in b.lay.args if f.name == m.get("start")), 0)
-    r.state.setdefault(check["id"], []).append((b.rows, start, _ends(m, cols, n), at, b.cmd.name))
+    # rows and offsets narrowed as Records.add keeps them (held until the end: 4 bytes each, not 8)
+    narrow = _narrow(r)
+    r.state.setdefault(check["id"], []).append((b.rows.astype(narrow), start, _ends(m, cols, n), at.astype(narrow),
+                                                b.cmd.name))
 
 
 def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
@@ -795,10 +804,10 @@ def _shape_end(r: Records, check: Check) -> None:
     held = r.state.pop(check["id"], None)
     if held is None or not held["parts"]:
         return
-    motion = np.zeros(len(r.off), dtype=np.int64)
+    motion = np.zeros(len(r.off) + 1, dtype=np.int32)  # 4 bytes a record: counts stay below 2**31 records
     for rows in held["motion"]:
-        motion[rows] = 1
-    cm = np.concatenate((np.zeros(1, dtype=np.int64), np.cumsum(motion)))
+        motion[rows + 1] = 1
+    cm = np.cumsum(motion, out=motion)  # motions before each record
     parts = held["parts"]
     if _shapes_balanced(parts, cm):
         return
