@@ -149,7 +149,8 @@ def _columns(records: Sequence[Record]) -> Columns:
                 T.HEAD_SIZE * len(off):  # the records lie end to end (decode made them): drop the heads
             keep = np.zeros(len(buf), dtype=bool)
             keep[int(off[0]):int(off[-1]) + T.HEAD_SIZE + int(sizes[-1])] = True
-            keep[(off[:, None] + np.arange(T.HEAD_SIZE)).ravel()] = False
+            for k in range(T.HEAD_SIZE):  # a head byte column at a time: no records x head-size index matrix
+                keep[off + k] = False
             return codes, buf[keep], bounds
         gather = np.repeat(off + T.HEAD_SIZE - bounds[:-1], sizes) + np.arange(int(bounds[-1]), dtype=np.int64)
         return codes, buf[gather], bounds
