@@ -22,6 +22,7 @@ comes from ``cbf.tables`` of the binding on the path, so the probe runs on any r
 
 from __future__ import annotations
 
+import gc
 import json
 import sys
 from collections.abc import Callable
@@ -142,11 +143,16 @@ def count(fn: Callable[[], Any]) -> tuple[Counts, Any]:
         if event in seen:
             seen[event] += 1
 
+    # The collector's finalizers (a generator closed, a weakref callback) of garbage left by earlier
+    # code would be counted at random points: collected before, and off while counting.
+    gc.collect()
+    gc.disable()
     sys.setprofile(hook)
     try:
         got = fn()
     finally:
         sys.setprofile(None)
+        gc.enable()
     return {"py": seen["call"], "c": seen["c_call"]}, got
 
 

@@ -620,14 +620,12 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
         if f.name not in b.raw:
             continue
         lim = m.limits[limit]
-        lo, hi = _bounds(lim)
         stored = b.raw[f.name]  # binary32 as stored: compared exactly with the binary32 bounds
         if f.per:
             _machine_limits_group(r, check, b, f, lim, positive)
             continue
-        out = (stored < lo) | (stored > hi)  # NaN compares false: the finite check's
-        if out.ndim > 1:
-            out = out.any(axis=1)
+        lo, hi = _bounds32(lim) if stored.dtype == np.float32 else _bounds(lim)
+        out = _outside(stored, lo, hi)  # NaN compares false: the finite check's
         if not out.any():
             continue
         v = np.asarray(b.cols[f.name], dtype=np.float64).reshape(len(b.rows), -1)
@@ -665,6 +663,29 @@ def _machine_limits_group(r: Records, check: Check, b: Batch, f: T.FieldInfo, li
 def _bounds(lim: Limit) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """A limit's bounds as arrays (one per axis), rounded to binary32 as machine.Limit keeps them."""
     return np.asarray(lim.lo32, dtype=np.float64), np.asarray(lim.hi32, dtype=np.float64)
+
+
+@lru_cache(maxsize=64)
+def _bounds32(lim: Limit) -> tuple[NDArray[np.float32], NDArray[np.float32]]:
+    """The bounds as binary32 (they are binary32 values: comparing binary32 columns with them is
+    exact, and spares widening every value to float64)."""
+    return np.asarray(lim.lo32, dtype=np.float32), np.asarray(lim.hi32, dtype=np.float32)
+
+
+def _outside(v: Any, lo: Any, hi: Any) -> Any:
+    """Per row: some component below lo or above hi (a column a component: numpy's row reductions
+    pay a loop set-up a row)."""
+    if v.ndim == 1:
+        out: Any = v < lo
+        out |= v > hi
+        return out
+    lo, hi = np.broadcast_to(lo, v.shape[1:]), np.broadcast_to(hi, v.shape[1:])
+    out = v[:, 0] < lo[0]
+    out |= v[:, 0] > hi[0]
+    for j in range(1, v.shape[1]):
+        out |= v[:, j] < lo[j]
+        out |= v[:, j] > hi[j]
+    return out
 
 
 def _breach(before: str, v: Any, lim: Limit, positive: bool) -> Message:
@@ -720,11 +741,17 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
 
 def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
     """The rows of every part (one per layout) in file order, and each field of the parts
-    concatenated in that order (field j of a part is part[j + 1])."""
+    concatenated in that order (field j of a part is part[j + 1]). The rows are distinct record
+    numbers, so their order comes from a scatter into a table of the records, not a sort."""
     if len(parts) == 1:
         return parts[0][0], list(parts[0][1:])
     rows = np.concatenate([p[0] for p in parts])
-    order = np.argsort(rows, kind="stable")
+    at: Any = np.full(int(rows.max()) + 1, -1, dtype=np.int32 if rows.size < 1 << 31 else np.int64)
+    at[rows] = np.arange(rows.size, dtype=at.dtype)
+    order = at[at >= 0]
+    del at
+    if order.size != rows.size:  # a row twice (two targets naming one argument): sorted, stably
+        order = np.argsort(rows, kind="stable")
     return rows[order], [np.concatenate([p[j] for p in parts])[order] for j in range(1, len(parts[0]))]
 
 

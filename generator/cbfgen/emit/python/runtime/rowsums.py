@@ -35,6 +35,8 @@ _BLOCK = 1 << 13  # rows widened at once (memory: a few hundred KiB however many
 
 
 def _blocks(rows: Rows, fn: Callable[[Rows], Any]) -> NDArray[np.int64]:
+    if rows.shape[0] <= _BLOCK:
+        return fn(rows).astype(np.int64, copy=False)  # type: ignore[no-any-return]
     out = np.empty(rows.shape[0], dtype=np.int64)
     for s in range(0, rows.shape[0], _BLOCK):
         out[s:s + _BLOCK] = fn(rows[s:s + _BLOCK])
@@ -156,6 +158,6 @@ def row_checksums(kind: str, rows: Rows, width: int) -> NDArray[np.int64]:
     if n == 0:
         return np.zeros(0, dtype=np.int64)
     got = fn(np.ascontiguousarray(rows, dtype=np.uint8))
-    if width < 8:
+    if width < 8 and not (kind == "sum" and 255 * rows.shape[1] < 1 << (8 * width)):  # a sum that fits: as is
         got &= (1 << (8 * width)) - 1
     return got
