@@ -6,8 +6,10 @@ Rows: the Kaitai-generated Python parser (the 1x reference), the Python codec
 its yardstick), `cbf validate` as a whole process, and
 `make generate` without and with the ksc step; and two ratios (bench/ci_rows.py):
 `cbf diff` against GNU diff, and `cbf validate` on a folder in one call against a
-call per file. Targets are reported, never
-enforced: a slow machine does not fail CI.
+call per file; and two reported ratios (bench/ratio_rows.py): SARIF against text output of the
+same findings, `cbfgen diff` against `cbfgen --check-spec`. A target that says NO makes `make
+bench` exit 1, naming it (issue 32); `make bench` is not part of CI, whose guards are the
+structural tests of `make test` (tests/test_engine_scaling.py, tests/test_engine_footprint.py).
 """
 
 from __future__ import annotations
@@ -183,6 +185,7 @@ def _load_kaitai(path: Path) -> Any:
     return mod.Cbf
 
 
+CLI_NUMPY_RATIO = 2.0  # issue 32, point 4
 MEMORY_BOUND = 4  # issue 8: Python peak of decode + validate, times the file (tests/test_engine_footprint.py too)
 C_BYTESUM = "C byte sum (baseline)"
 C_RATIO_TARGET = 2.5  # issue 17: C validate within 2.5x of a plain one-pass byte sum
@@ -205,6 +208,19 @@ def _time(fn: Callable[..., Any], *args: Any) -> float:
     t0 = time.perf_counter()
     fn(*args)
     return time.perf_counter() - t0
+
+
+def _child_cpu(argv: list[str], **kw: Any) -> tuple[float, float]:
+    """(wall, CPU) seconds of one child process: user + system time of the process and its own
+    children (resource.getrusage), which a shared machine's load changes much less than wall time."""
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    subprocess.run(argv, capture_output=True, check=True, **kw)
+    wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
 def _kaitai_parse(kaitai: Any, data: bytes) -> int:
@@ -327,16 +343,24 @@ def run(reps: int) -> dict[str, Any]:
     # As a user runs it: the `cbf` command of the built wheel, installed with numpy into a clean
     # venv (no editable-install finders, no PYTHONPATH); pip compiled the modules to bytecode.
     argv, env, how = _user_cbf(files["small (30)"])
+    # issue 32: the same interpreter importing numpy alone, alternating with the command: what the
+    # command does beyond the interpreter and numpy is the toolkit's cost
+    numpy_argv = [argv[0].rsplit("/", 1)[0] + "/python" if how.startswith("wheel") else PY, "-c", "import numpy"]
     subprocess.run(argv, env=env, capture_output=True, check=True)  # one untimed run (page cache)
-    cli = [_time(lambda: subprocess.run(argv, env=env, capture_output=True, check=True))
-           for _ in range(max(reps, 5))]
-    result["rows"]["cbf validate (process, small)"] = {"small (30)": _stats(cli)}
+    cli, numpy_only = [], []
+    for _ in range(max(reps, 5)):
+        cli.append(_child_cpu(argv, env=env))
+        numpy_only.append(_child_cpu(numpy_argv, env=env))
+    result["rows"]["cbf validate (process, small)"] = {"small (30)": _stats([w for w, _ in cli])}
+    result["rows"]["cbf validate (process, small), CPU"] = {"small (30)": _stats([c for _, c in cli])}
+    result["rows"]["python -c 'import numpy' (process), CPU"] = {"small (30)": _stats([c for _, c in numpy_only])}
     result["cli_process"] = how
     genv = dict(os.environ, PYTHONPATH=str(REPO / "generator"))
     tmp = WORK / "gen"
-    gen = [_time(lambda: subprocess.run([PY, "-m", "cbfgen", "--no-ksc", "--out", str(tmp)], cwd=REPO, env=genv,
-                                        capture_output=True, check=True)) for _ in range(3)]
-    result["rows"]["generate without ksc"] = {"spec": _stats(gen)}
+    gen_runs = [_child_cpu([PY, "-m", "cbfgen", "--no-ksc", "--out", str(tmp)], cwd=REPO, env=genv) for _ in range(3)]
+    result["rows"]["generate without ksc"] = {"spec": _stats([w for w, _ in gen_runs])}
+    result["rows"]["generate without ksc, CPU"] = {"spec": _stats([c for _, c in gen_runs])}
+    gen = [w for w, _ in gen_runs]
     if (REPO / "node_modules" / "kaitai-struct-compiler").exists():
         ksc = [g + _time(lambda: subprocess.run(
             ["node", "generator/cbfgen/emit/kaitai/ksc_driver.js", str(tmp / "kaitai" / "cbf.ksy.json"),
@@ -345,8 +369,11 @@ def run(reps: int) -> dict[str, Any]:
         result["rows"]["generate with ksc"] = {"spec": _stats(ksc)}
     _helix_convert_row(result, reps)
     from .ci_rows import diff_rows, validate_rows  # issue 27: the CI users' ratios
+    from .ratio_rows import sarif_rows, spec_diff_rows  # issue 32
 
     result["diff_vs_gnu"] = diff_rows(files["65535 records"], WORK / "diff", max(reps, 5))
+    result["sarif_vs_text"] = sarif_rows(argv[:-2], env, files["65535 records"], WORK / "sarif", max(reps, 3))
+    result["spec_diff_vs_check"] = spec_diff_rows(WORK / "specdiff", genv, max(reps, 3))
     result["validate_folder"] = validate_rows(argv[:-2], env, REPO / "conformance" / "golden", WORK,
                                               int(os.environ.get("BENCH_VALIDATE_CALLS", "100")))
     big = files["65535 records"]
@@ -426,10 +453,15 @@ def _targets(r: dict[str, Any]) -> dict[str, Any]:
             speed = k["median"] / t["median"] / before
             out[f"{row} >= 3x before #17 (65535 records)"] = {"value": round(speed, 1), "unit": "x",
                                                               "met": speed >= 3.0}
-    cli = rows["cbf validate (process, small)"]["small (30)"]["median"]
-    out["cbf validate small < 80 ms"] = {"value": round(cli * 1000, 1), "unit": "ms", "met": cli < 0.080}
-    g = rows["generate without ksc"]["spec"]["median"]
-    out["generate without ksc < 2 s"] = {"value": round(g, 2), "unit": "s", "met": g < 2.0}
+    # issue 32 (bench/NOTES.md, "Targets changed"): the command's CPU time against the same interpreter
+    # importing numpy alone, in the same run; an absolute 80 ms was below numpy's own import here
+    cli = rows["cbf validate (process, small), CPU"]["small (30)"]["median"]
+    npy = rows["python -c 'import numpy' (process), CPU"]["small (30)"]["median"]
+    out[f"cbf validate small <= {CLI_NUMPY_RATIO}x python -c 'import numpy' (CPU)"] = {
+        "value": round(cli / npy, 2), "unit": "x", "met": cli / npy <= CLI_NUMPY_RATIO,
+        "why": f"{cli * 1000:.0f} ms against {npy * 1000:.0f} ms"}
+    g = rows["generate without ksc, CPU"]["spec"]["median"]
+    out["generate without ksc < 2 s (CPU)"] = {"value": round(g, 2), "unit": "s", "met": g < 2.0}
     for name, d in r.get("diff_vs_gnu", {}).items():
         out[f"cbf diff 65535 records ({name}) <= 3x GNU diff of the CUT texts"] = {
             "value": round(d["ratio"], 2), "unit": "x", "met": d["ratio"] <= 3.0}
@@ -437,6 +469,12 @@ def _targets(r: dict[str, Any]) -> dict[str, Any]:
     if v:
         out[f"cbf validate: {v['files']} files in 1 call vs {v['files']} calls (timed {v['calls_timed']}, "
             f"scaled)"] = {"value": round(v["ratio"], 1), "unit": "x faster", "met": v["ratio"] >= 10.0}
+    for name, d in r.get("sarif_vs_text", {}).items():
+        out[f"cbf validate --format sarif vs text, {name} (report only)"] = {
+            "value": round(d["ratio"], 2), "unit": "x", "met": None}
+    for name, d in r.get("spec_diff_vs_check", {}).items():
+        out[f"cbfgen diff of two specs vs --check-spec of one, {name} (report only)"] = {
+            "value": round(d["ratio"], 2), "unit": "x", "met": None}
     mem = r["memory"]
     ratio = mem["python_decode_validate_peak_extra_bytes"] / mem["file_bytes"]
     out[f"python peak RSS of decode+validate <= {MEMORY_BOUND}x file"] = {
@@ -457,7 +495,7 @@ def table(r: dict[str, Any]) -> str:
                 cells.append("")
                 continue
             cell = f"{st['median'] * 1000:.2f} ms ({st['min'] * 1000:.2f}-{st['max'] * 1000:.2f})"
-            if n in ref and not row.startswith(("generate", "cbf validate")):
+            if n in ref and not row.startswith(("generate", "cbf validate", "python -c")):
                 cell += f", {ref[n]['median'] / st['median']:.1f}x"
             if "MB/s" in st:
                 cell += f", {st['MB/s']:.0f} MB/s, {st['records/s'] / 1e6:.1f} M rec/s"
@@ -467,7 +505,8 @@ def table(r: dict[str, Any]) -> str:
     lines.append("| target | value | met |")
     lines.append("|---|---|---|")
     for name, t in r["targets"].items():
-        lines.append(f"| {name} | {t['value']} {t.get('unit', 'x')} | {'yes' if t['met'] else 'NO'} |")
+        met = "-" if t["met"] is None else "yes" if t["met"] else "NO"
+        lines.append(f"| {name} | {t['value']} {t.get('unit', 'x')} | {met} |")
     if "cli_process" in r:
         lines += ["", f"`cbf validate (process, small)` runs the `cbf` command: {r['cli_process']}."]
     return "\n".join(lines)
@@ -527,4 +566,15 @@ def main(argv: list[str] | None = None) -> int:
     args.out.write_text(json.dumps(result, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     (args.out.parent / "TABLE.md").write_text(readme_block(result, text).split("\n", 1)[1].rsplit("\n", 1)[0] + "\n",
                                                encoding="utf-8")
-    return 0
+    missed = misses(result)
+    for line in missed:
+        print(f"bench: {line}", file=sys.stderr)
+    return 1 if missed else 0
+
+
+def misses(r: dict[str, Any]) -> list[str]:
+    """One line per target the run did not meet (issue 32: a NO fails `make bench`), with the load."""
+    load = (r.get("machine") or {}).get("load_1min_at_end")
+    at = f"; load {load:.2f} at the end of the run" if isinstance(load, float) else ""
+    return [f"target NO: {name}: {t['value']} {t.get('unit', 'x')}" + (f" ({t['why']})" if t.get("why") else "") + at
+            for name, t in r.get("targets", {}).items() if t["met"] is False]
