@@ -364,9 +364,9 @@ def run(reps: int) -> dict[str, Any]:
     result["rows"]["generate without ksc, CPU"] = {"spec": _stats([c for _, c in gen_runs])}
     gen = [w for w, _ in gen_runs]
     if (REPO / "node_modules" / "kaitai-struct-compiler").exists():
-        driver = ["node", "generator/cbfgen/emit/kaitai/ksc_driver.js", str(tmp / "kaitai" / "cbf.ksy.json"),
+        ksc_argv = ["node", "generator/cbfgen/emit/kaitai/ksc_driver.js", str(tmp / "kaitai" / "cbf.ksy.json"),
                   str(tmp / "kaitai"), "python", "javascript", "java", "go"]
-        ksc = [g + _child_cpu(driver, cwd=REPO)[0] for g in gen]
+        ksc = [g + _child_cpu(ksc_argv, cwd=REPO)[0] for g in gen]
         result["rows"]["generate with ksc"] = {"spec": _stats(ksc)}
     _helix_convert_row(result, reps)
     from .ci_rows import diff_rows, validate_rows  # issue 27: the CI users' ratios
