@@ -206,3 +206,14 @@ def file_checksum_of(data: bytes) -> int:
 
     f = T.HEADER_CHECKSUM_FIELDS["file"]
     return int.from_bytes(data[f.offset:f.offset + f.size], "little" if T.BO == "<" else "big")
+
+
+def cite_clause(spec: dict[str, Any], number: str, text: str, section_title: str = "Revisions") -> None:
+    """Give a parsed spec the text of a clause a new check cites (the loader refuses a citation the
+    document cannot quote): the clause in meta.clauses and, when new, its section in meta.sections."""
+    meta = spec["meta"]
+    section = str(number).split(".")[0]
+    if not any(str(s["id"]) == section for s in meta["sections"]):
+        meta["sections"].append({"id": section, "title": section_title})
+    if not any(str(c["number"]) == str(number) for c in meta["clauses"]):
+        meta["clauses"].append({"number": str(number), "text": text})

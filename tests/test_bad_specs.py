@@ -29,7 +29,7 @@ from cbfgen import loader
 from cbfgen.loader import SpecError, SpecErrors, load
 
 BAD = sorted((REPO / "tests" / "bad_specs").glob("*.yaml"))
-LOADER = Path(loader.__file__)
+LOADER = Path(loader.__file__).parent  # the package: every pass module
 
 # Refusals no spec file can make, and why.
 EXEMPT = {
@@ -48,7 +48,7 @@ def _problems(exc: SpecError) -> tuple[tuple[int, str], ...]:
 
 def _line_of(text: str, path: str, at: str | None) -> int:
     """The line the loader names for the node at path of the YAML text (see the module doc)."""
-    ld = loader._Loader(text)
+    ld = loader.Loader(text)
     try:
         node: Any = ld.get_single_data()
     finally:
@@ -147,7 +147,8 @@ def _template(node: ast.expr) -> str:
 def refusals() -> dict[str, str]:
     """Every message the loader can refuse a spec with: template -> regular expression."""
     out: dict[str, str] = {}
-    for node in ast.walk(ast.parse(LOADER.read_text(encoding="utf-8"))):
+    trees = [ast.parse(p.read_text(encoding="utf-8")) for p in sorted(LOADER.rglob("*.py"))]
+    for node in (n for tree in trees for n in ast.walk(tree)):
         if not isinstance(node, ast.Call):
             continue
         name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")

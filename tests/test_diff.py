@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import dump_yaml, load_yaml
+from conftest import cite_clause, dump_yaml, load_yaml
 
 from cbfgen.__main__ import main as cbfgen_main
 from cbfgen.diff import Diff, diff
@@ -106,6 +106,7 @@ def _add_version(doc: dict[str, Any], drop: str | None = None) -> str:
     missing = [c.name for c in SPEC.commands if not c.available_in(base)] + ([drop] if drop else [])
     if missing:
         named = any("commands" in ch for ch in doc["checks"] if ch["kind"] == "availability")
+        cite_clause(doc, GATE, f"Version {vid} lacks some commands.")
         doc["checks"].append({"id": GATE, "kind": "availability", "severity": "error", "clause": GATE,
                               "versions": [vid], "commands": missing, "text": f"{vid} lacks {missing}.",
                               "fails": "A record's command has no layout for the file's version."})
@@ -185,6 +186,7 @@ def _dwell(versions: list[str]) -> dict[str, Any]:
 
 def _gate(doc: dict[str, Any], versions: list[str], command: str) -> None:
     if versions:
+        cite_clause(doc, DWELL_GATE, "DRILL_DWELL was added later.")
         check = {"id": DWELL_GATE, "kind": "availability", "severity": "error", "clause": DWELL_GATE,
                  "versions": versions,
                  "commands": [command], "text": "added later.", "fails": "no layout for the version."}

@@ -259,10 +259,11 @@ def test_the_bounds_hold_without_libyaml(monkeypatch: pytest.MonkeyPatch, tmp_pa
     """The same reader over PyYAML's pure-Python parser (a Python without libyaml): the same
     refusals, and the real spec still loads."""
     from cbfgen import loader
+    from cbfgen.loader import yaml_reader
 
-    pure = type("PureLoader", (loader._BoundedComposer, yaml.SafeLoader),
-                {"yaml_constructors": loader._Loader.yaml_constructors})
-    monkeypatch.setattr(loader, "_Loader", pure)
+    pure = type("PureLoader", (yaml_reader.BoundedComposer, yaml.SafeLoader),
+                {"yaml_constructors": loader.Loader.yaml_constructors})
+    monkeypatch.setattr(loader, "Loader", pure)
     for case, (text, message) in BAD_YAML.items():
         (tmp_path / f"{case}.yaml").write_text(text, encoding="utf-8")
         with pytest.raises(SpecError, match=message):

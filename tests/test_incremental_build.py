@@ -48,7 +48,7 @@ def test_make_steps_are_stamped() -> None:
         assert f"$(STAMPS)/{stamp}:" in text, stamp
 
 
-@pytest.mark.parametrize("changed", ["spec/cbf.yaml", "generator/cbfgen/loader.py", "conformance/report.json",
+@pytest.mark.parametrize("changed", ["spec/cbf.yaml", "generator/cbfgen/loader/__init__.py", "conformance/report.json",
                                      "generated/c/cbf.h"])
 def test_generate_runs_when_what_it_reads_changed(changed: str) -> None:
     """`make -n -W FILE` (as if FILE had just changed) plans the cbfgen run: the generator's

@@ -20,6 +20,7 @@ from conftest import REPO, dump_yaml, spec_doc
 
 from cbfgen import loader, registry
 from cbfgen.loader import load
+from cbfgen.loader.passes import bindings as capabilities  # the pass that asks registry.unsupported
 from cbfgen.model import ALGORITHM_KINDS, camel
 from cbfgen.registry import CHECK_KINDS, TYPES, FieldType, kinds_with, unsupported
 
@@ -28,7 +29,7 @@ def test_the_schema_names_no_type_and_no_kind_itself() -> None:
     on_disk = (REPO / "generator" / "cbfgen" / "spec.schema.json").read_text(encoding="utf-8")
     for word in ('"u4"', '"f4"', '"finite"', '"range"', '"uint"', '"warning"', '"crc32"', '"helix"'):
         assert word not in on_disk, word
-    schema = loader._schema()
+    schema = loader.schema()
     assert schema["$defs"]["field"]["properties"]["type"]["enum"] == list(TYPES)
     assert schema["properties"]["checks"]["items"]["properties"]["kind"]["enum"] == list(CHECK_KINDS)
     assert schema["properties"]["types"]["additionalProperties"]["properties"]["kind"]["enum"] == list(
@@ -173,7 +174,7 @@ def _spec_using(t: FieldType, tmp: Path) -> Path:
 
 def _generate(t: FieldType, tmp: Path, binding: str, monkeypatch: pytest.MonkeyPatch) -> Path:
     """Generate one binding for a spec that uses t: the loader answers for that binding alone."""
-    monkeypatch.setattr(loader, "unsupported",
+    monkeypatch.setattr(capabilities, "unsupported",
                         lambda ft, count=1: tuple(b for b in unsupported(ft, count) if b == binding))
     spec = load(_spec_using(t, tmp))
     out = tmp / "out"
@@ -286,7 +287,7 @@ def _file_with(t: FieldType, value: Any) -> bytes:
 def test_the_docs_emitter_writes_every_type_a_binding_carries(name: str, tmp_path: Path,
                                                               monkeypatch: pytest.MonkeyPatch) -> None:
     """The reference pages (field tables, layout pictures, golden pages) of a spec using the type."""
-    monkeypatch.setattr(loader, "unsupported", lambda ft, count=1: ())
+    monkeypatch.setattr(capabilities, "unsupported", lambda ft, count=1: ())
     spec = load(_spec_using(TYPES[name], tmp_path))
     files = importlib.import_module("cbfgen.emit.docs").emit(spec)
     assert any(PROBE.encode() in data for rel, data in files.items() if rel.endswith(".md"))

@@ -1,7 +1,7 @@
 """The typed model of spec/cbf.yaml.
 
 Every emitter reads the format from these frozen dataclasses and from
-nothing else. The loader (loader.py) builds them and refuses a spec that
+nothing else. The loader (the package loader/) builds them and refuses a spec that
 contradicts itself. `line` attributes point back into the YAML.
 """
 

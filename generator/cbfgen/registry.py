@@ -462,3 +462,39 @@ def kinds_with(scope: Scope) -> tuple[str, ...]:
 
 def targeted_kinds() -> tuple[str, ...]:
     return tuple(k.name for k in _KINDS if k.targeted)
+
+
+# -- the loader's rules per check kind (issue 33, point 3) ------------------------------------
+# What the loader checks of a check beyond the parameters its kind takes, as flags of the kind:
+# the loader (cbfgen/loader/passes/) branches on these flags, never on a kind's name. A new kind
+# with one of these rules is a line here; a kind with none needs no line.
+
+@dataclass(frozen=True)
+class LoaderRules:
+    """``bounds``: ``min``/``max`` with ``min_exclusive``/``max_exclusive``: at least one bound,
+    min <= max, an open bound needs its bound and leaves a value. ``limits``: each target names a
+    machine limit (only these kinds' targets do) whose unit and shape fit its arguments, and every
+    position argument is bounded by one. ``judges``: ``field`` names a checksum tag of the header
+    (``header``) or of the record, head or arguments (``record``), and each such checksum field is
+    judged by exactly one check. ``since``: the check gives ``since`` (a version), not
+    ``versions``, which become since and every version after it; what it ``deprecates`` (commands
+    or layouts) exists there and is deprecated by no other check."""
+
+    bounds: bool = False
+    limits: bool = False
+    judges: Literal["header", "record"] | None = None
+    since: bool = False
+
+
+LOADER_RULES: dict[str, LoaderRules] = {
+    "range": LoaderRules(bounds=True),
+    "machine_limits": LoaderRules(limits=True),
+    "header_checksum": LoaderRules(judges="header"),
+    "arg_checksum": LoaderRules(judges="record"),
+    "deprecated": LoaderRules(since=True),
+}
+
+
+def loader_rules(kind_name: str) -> LoaderRules:
+    """The loader's rules for checks of the kind (none: ``LoaderRules()``)."""
+    return LOADER_RULES.get(kind_name, LoaderRules())

@@ -179,6 +179,7 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     code = next(c for c in [*range(_FIRST_FREE_CODE, 256), *range(1, _FIRST_FREE_CODE)] if c not in used_codes)
     ids = {str(x.get(k)) for group in ("checks", "versions", "commands") for x in doc.get(group, ())
            for k in ("id", "clause")} | {str(lay.get("clause")) for c in cmds for lay in c.get("layouts", ())}
+    ids |= {str(c.get("number")) for c in doc.get("meta", {}).get("clauses", ())}  # a clause the document has
     clause = next(f"9.{n}" for n in range(1, 1000) if f"9.{n}" not in ids)
     # The command a new version drops: the first of the newest version whose arguments are all f4 in one layout.
     drop = next((c for c in cmds for lay in c["layouts"] if nid in lay["versions"]
@@ -327,6 +328,10 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     elif op == "append":
         for c, k in slots:
             c[k].append(value)
+    elif op == "append_new":  # unless an item with the same `key` is there (a section a revision may have added)
+        for c, k in slots:
+            if not any(isinstance(x, dict) and x.get(edit["key"]) == value[edit["key"]] for x in c[k]):
+                c[k].append(value)
     elif op == "extend_where":
         hits = 0
         for c, k in slots:
