@@ -19,7 +19,6 @@ import yaml
 
 from .escape import keyword_clash
 from .model import (
-    ALGORITHM_KINDS,
     Algorithm,
     ArgChecksum,
     Check,
@@ -40,6 +39,7 @@ from .model import (
     Version,
 )
 from .registry import (
+    ALGORITHMS,
     CHECK_KINDS,
     COMMON_CHECK_KEYS,
     DERIVED_HEADER_ROLES,
@@ -234,7 +234,7 @@ def _schema() -> dict[str, Any]:
     check["kind"] = {"enum": list(CHECK_KINDS)}
     check["severity"] = check["input_severity"] = {"enum": list(SEVERITIES)}
     algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
-    algorithm["properties"]["kind"] = {"enum": list(ALGORITHM_KINDS)}
+    algorithm["properties"]["kind"] = {"enum": list(ALGORITHMS)}
     command = schema["properties"]["commands"]["items"]["properties"]
     for role, kinds in ROLE_KINDS.items():
         command[role]["allOf"][1]["properties"]["kind"] = {"enum": list(kinds)}
@@ -581,7 +581,7 @@ def _checksums_pass(ctx: _Ctx, st: _State) -> None:
     widths.update({str(a.checksum): a.size for a in arg_fields if a.checksum not in widths})
 
     def fits(node: _Map, key: str, tag: str, alg_name: str, what: str) -> None:
-        bits = ALGORITHM_KINDS[algorithms[alg_name].kind]
+        bits = algorithms[alg_name].bits
         if tag in widths and bits is not None and bits > 8 * widths[tag]:
             ctx.fail(node, f"{what}: algorithm {alg_name} gives {bits} bits, the {tag} checksum field "
                            f"holds {8 * widths[tag]}", key)

@@ -462,3 +462,90 @@ def kinds_with(scope: Scope) -> tuple[str, ...]:
 
 def targeted_kinds() -> tuple[str, ...]:
     return tuple(k.name for k in _KINDS if k.targeted)
+
+
+# -- checksum algorithms (issue 33, point 1) ------------------------------------------------------
+# Every algorithm kind a spec's `checksums.algorithms` may name (its `kind:`), as parameters: each
+# runtime has ONE implementation per family, driven by them (the Python runtime's checksums.py, the
+# C runtime's checksums.c with the tables cbfgen/emit/c/algorithms.py computes, the golden
+# assembler's checksums.py). A new CRC is one line here with its catalogue check value, nothing
+# else; tests/test_checksum_algorithms.py runs `check` through every runtime.
+
+AlgorithmFamily = Literal["sum", "crc", "fletcher"]
+# The families, in the order of the C runtime's family enum (its switches have no default).
+ALGORITHM_FAMILIES: tuple[AlgorithmFamily, ...] = ("sum", "crc", "fletcher")
+CHECK_INPUT = b"123456789"  # what `check` is the checksum of (the CRC catalogue's "check")
+MAX_ALGORITHM_BITS = 32  # every runtime holds a result in 32 bits (the C runtime's uint32_t)
+
+
+@dataclass(frozen=True)
+class ChecksumAlgorithm:
+    """One algorithm kind.
+
+    ``family``
+        ``sum``: the unsigned sum of the bytes, reduced to the width of the field that stores it
+        (``width`` None). ``crc``: the Rocksoft model of the CRC catalogue (reveng): ``width``
+        bits, ``poly`` (normal form, top bit implied), ``init``, ``refin`` (bytes fed least
+        significant bit first), ``refout`` (the register reflected before ``xorout``).
+        ``fletcher``: ``width`` 16 or 32; the data as little-endian words of ``width/16`` bytes
+        (an odd tail padded with zeros), two running sums modulo ``2^(width/2) - 1``, the result
+        ``sum2 << width/2 | sum1``.
+    ``check``
+        The algorithm's value over ASCII "123456789" (CHECK_INPUT; a sum unreduced): the CRC
+        catalogue's check for a CRC, a fact of the algorithm that every runtime is tested with.
+    """
+
+    name: str
+    family: AlgorithmFamily
+    width: int | None
+    check: int
+    doc: str
+    poly: int = 0
+    init: int = 0
+    refin: bool = False
+    refout: bool = False
+    xorout: int = 0
+
+    def __post_init__(self) -> None:
+        fits = self.width is None if self.family == "sum" else (
+            self.width in (16, 32) if self.family == "fletcher" else 1 <= (self.width or 0) <= MAX_ALGORITHM_BITS)
+        if not fits:
+            raise ValueError(f"checksum algorithm {self.name}: width {self.width} does not fit family {self.family}")
+        mask = (1 << (self.width or 0)) - 1
+        if self.family == "crc" and any(v & ~mask for v in (self.poly, self.init, self.xorout, self.check)):
+            raise ValueError(f"checksum algorithm {self.name}: a parameter is wider than {self.width} bits")
+
+    @property
+    def bits(self) -> int | None:
+        """Width of the result; None for a sum (it takes its field's width)."""
+        return self.width
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        """The parameters as plain data (what the runtimes' tables carry), check value included."""
+        return {"family": self.family, "width": self.width, "poly": self.poly, "init": self.init,
+                "refin": self.refin, "refout": self.refout, "xorout": self.xorout, "check": self.check}
+
+
+def _crc(name: str, width: int, poly: int, init: int, refin: bool, refout: bool, xorout: int, check: int,
+         catalogue: str) -> ChecksumAlgorithm:
+    return ChecksumAlgorithm(name, "crc", width, check, f"{catalogue}: poly 0x{poly:X}, init 0x{init:X}, "
+                             f"refin {str(refin).lower()}, refout {str(refout).lower()}, xorout 0x{xorout:X}",
+                             poly, init, refin, refout, xorout)
+
+
+_ALGORITHMS = (
+    ChecksumAlgorithm("sum", "sum", None, 0x1DD, "unsigned byte sum, reduced to the width of its field"),
+    _crc("crc16_ccitt", 16, 0x1021, 0xFFFF, False, False, 0x0000, 0x29B1, "CRC-16/CCITT-FALSE (CRC-16/IBM-3740)"),
+    _crc("crc32", 32, 0x04C11DB7, 0xFFFFFFFF, True, True, 0xFFFFFFFF, 0xCBF43926, "CRC-32/ISO-HDLC"),
+    _crc("crc32c", 32, 0x1EDC6F41, 0xFFFFFFFF, True, True, 0xFFFFFFFF, 0xE3069283, "CRC-32/ISCSI (Castagnoli)"),
+    ChecksumAlgorithm("fletcher16", "fletcher", 16, 0x1EDE, "Fletcher-16: bytes, sums modulo 255"),
+    ChecksumAlgorithm("fletcher32", "fletcher", 32, 0xDF09D509,
+                      "Fletcher-32: 16-bit little-endian words (odd tail padded with 0), sums modulo 65535"),
+)
+
+ALGORITHMS: dict[str, ChecksumAlgorithm] = {a.name: a for a in _ALGORITHMS}
+
+
+def algorithm(name: str) -> ChecksumAlgorithm:
+    return ALGORITHMS[name]
