@@ -549,3 +549,46 @@ ALGORITHMS: dict[str, ChecksumAlgorithm] = {a.name: a for a in _ALGORITHMS}
 
 def algorithm(name: str) -> ChecksumAlgorithm:
     return ALGORITHMS[name]
+
+
+# -- bindings (issue 33, point 2) -----------------------------------------------------------------
+# Every binding as data: what it is made of and what it implements. conformance/bindings.yaml (its
+# testees), conformance/failures/ (a failure list per testee), mk/ (its make fragment) and
+# escape.RESERVED (the reserved words of the languages its identifiers land in) are checked against
+# it (tests/test_bindings.py), and generated/BINDINGS.md (cbfgen/emit/checklist) says, per binding,
+# which check kinds, algorithm kinds and role kinds it implements. tests/test_bindings.py fails when
+# a binding claims something it lacks (a Python kernel, a C kernel symbol, a Kaitai `valid:` rule).
+
+
+@dataclass(frozen=True)
+class Binding:
+    """One binding. ``check_kinds``, ``algorithms`` and ``roles`` ("role/kind") are what it
+    implements; a new binding starts with all three empty and its testees' failure lists full."""
+
+    name: str
+    doc: str
+    emitter: str  # its emitter: cbfgen/emit/<emitter>/
+    languages: tuple[str, ...]  # keys of escape.RESERVED: the languages its identifiers land in
+    testees: tuple[str, ...]  # names in conformance/bindings.yaml; each has conformance/failures/<name>.txt
+    make: str | None  # mk/<make>.mk builds and tests it (None: `make generate` alone)
+    check_kinds: tuple[str, ...]
+    algorithms: tuple[str, ...]
+    roles: tuple[str, ...]
+
+
+def _all_roles() -> tuple[str, ...]:
+    return tuple(f"{role}/{k}" for role, kinds in ROLE_KINDS.items() for k in kinds)
+
+
+BINDING_LIST: tuple[Binding, ...] = (
+    Binding("python", "the Python codec, validator and CLI (package cbf)", "python", ("Python",), ("python",), None,
+            tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
+    Binding("kaitai", "the .ksy and the parsers ksc 0.11 compiles from it (Python, JavaScript, Java, Go): it decodes, "
+            "and states as valid: rules the kinds it can express", "kaitai",
+            ("Kaitai", "Python", "JavaScript", "Java", "Go"),
+            ("kaitai-python", "kaitai-javascript", "kaitai-go", "kaitai-java"), "kaitai",
+            tuple(k.name for k in _KINDS if k.kaitai), (), ()),
+    Binding("c", "the single-header C codec and validator (cbf.h), the testee and cbf-c", "c", ("C", "C++"), ("c",),
+            "c", tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
+)
+BINDING: dict[str, Binding] = {b.name: b for b in BINDING_LIST}
