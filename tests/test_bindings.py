@@ -128,3 +128,12 @@ def test_kaitai_states_what_it_claims() -> None:
                     assert "validation" in line, f"{testee} claims {kind} but decodes {case}"
                 seen += 1
     assert seen or not b.check_kinds
+
+
+def test_per_kind_wording_lives_with_the_kind() -> None:
+    """issue 33, point 3: the docs emitter names no check kind; the registry's KIND_WORDING does,
+    for registered kinds only."""
+    assert set(registry.KIND_WORDING) <= set(registry.CHECK_KINDS)
+    docs = (ROOT / "generator" / "cbfgen" / "emit" / "docs" / "__init__.py").read_text(encoding="utf-8")
+    named = [k for k in registry.CHECK_KINDS if re.search(rf"""kind\s*(==|!=)\s*["']{k}["']|["']{k}["']\s*:\s*f?["']""", docs)]
+    assert not named, f"the docs emitter has per-kind branches or text: {named}"

@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from .registry import ALGORITHMS, TYPES, FieldType, Params, Target
+from .registry import ALGORITHMS, CHECK_KINDS, TYPES, FieldType, Params, Target
 
 __all__ = ["FieldType", "PrimitiveType", "Target"]
 
@@ -532,7 +532,7 @@ class Spec:
         """The one availability check that covers a command missing from a version (the loader
         guarantees exactly one); None when the version has the command."""
         for c in self.checks:
-            if c.kind == "availability" and version in c.versions and command in c.commands:
+            if CHECK_KINDS[c.kind].gates and version in c.versions and command in c.commands:
                 return c
         return None
 

@@ -592,3 +592,72 @@ BINDING_LIST: tuple[Binding, ...] = (
             "c", tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
 )
 BINDING: dict[str, Binding] = {b.name: b for b in BINDING_LIST}
+
+
+# -- per-kind wording of the docs (issue 33, point 3) ---------------------------------------------
+# What the format documentation says of a check beyond its spec text, by kind: why it reads a
+# command's records (`reads`: (check, command) -> a phrase, None when it does not read them, for
+# the command pages) and what its parameters add to its prose (`scope`: check -> sentences). The
+# docs emitter asks here and names no kind; a kind with no entry is listed per command only when
+# one of its targets names the command. `own_versions`: the kind says its versions itself.
+
+
+@dataclass(frozen=True)
+class KindWording:
+    reads: Callable[[Any, Any], str | None] | None = None
+    scope: Callable[[Any], str | None] | None = None
+    own_versions: bool = False
+
+
+def _arg_kinds(c: Any) -> set[str]:
+    return {a.kind for lay in c.layouts for a in lay.args}
+
+
+def _availability_reads(k: Any, c: Any) -> str | None:
+    if c.name not in k.commands:  # another availability check covers this command
+        return None
+    missing = [v for v in k.versions if not c.available_in(v)]
+    return f"{c.name} is not in version {', '.join(missing)}" if missing else None
+
+
+def _arg_checksum_reads(k: Any, c: Any) -> str | None:
+    if not k.checksum_field:
+        return None
+    carried = [ck for lay in c.layouts for ck in lay.checksums if ck.tag == k.checksum_field]
+    return (f"its argument {carried[0].field.name} holds checksum {k.checksum_field} over "
+            f"{', '.join(carried[0].covers)}") if carried else None
+
+
+def _deprecated_reads(k: Any, c: Any) -> str | None:
+    lays = [lay.variant or "primary" for lay in c.layouts if k.deprecates_layout(c.name, lay.variant)]
+    what = c.name if len(lays) == len(c.layouts) else f"{c.name} layout {', '.join(lays)}"
+    return f"deprecated: {what}, since version {k.since}" if lays else None
+
+
+def _range_scope(k: Any) -> str:
+    lo = "-inf" if k.min is None else f"{k.min:g}"
+    hi = "inf" if k.max is None else f"{k.max:g}"
+    return (f"Range {'(' if k.min_exclusive or k.min is None else '['}{lo}, {hi}"
+            f"{')' if k.max_exclusive or k.max is None else ']'}.")
+
+
+KIND_WORDING: dict[str, KindWording] = {
+    "availability": KindWording(reads=_availability_reads),
+    "arg_checksum": KindWording(reads=_arg_checksum_reads),
+    "deprecated": KindWording(reads=_deprecated_reads, own_versions=True, scope=lambda k: (
+        f"Deprecates {', '.join(k.deprecates)} in files of version {', '.join(k.versions)}.")),
+    "range": KindWording(scope=_range_scope),
+    "continuity": KindWording(reads=lambda k, c: "a motion command" if c.motion else None),
+    "orientation": KindWording(reads=lambda k, c: "a 5-axis command" if c.orientation else None),
+    "shape": KindWording(reads=lambda k, c: "opens or closes a shape" if c.shape
+                         else "a motion command, counted in shapes" if c.motion else None),
+    "cutter_table": KindWording(reads=lambda k, c: "a cutter" if c.cutter else None),
+    "finite": KindWording(reads=lambda k, c: "float arguments" if "float" in _arg_kinds(c) else None),
+    "string_tail": KindWording(reads=lambda k, c: "string arguments" if "string" in _arg_kinds(c) else None),
+    "string_ascii": KindWording(reads=lambda k, c: "string arguments" if "string" in _arg_kinds(c) else None),
+}
+
+
+def wording(kind_name: str) -> KindWording:
+    """The docs' wording of a kind (an empty KindWording for a kind that needs none)."""
+    return KIND_WORDING.get(kind_name, KindWording())
