@@ -29,7 +29,7 @@ SPEC = ROOT / "spec" / "cbf.yaml"
 
 
 def test_the_registry_lists_the_bindings_the_loader_answers_for() -> None:
-    assert tuple(b.name for b in BINDING_LIST) == registry.BINDINGS
+    assert tuple(b.name for b in BINDING_LIST if b.gated) == registry.BINDINGS
 
 
 @pytest.mark.parametrize("b", BINDING_LIST, ids=lambda b: b.name)

@@ -574,6 +574,9 @@ class Binding:
     check_kinds: tuple[str, ...]
     algorithms: tuple[str, ...]
     roles: tuple[str, ...]
+    # The loader answers for it (BINDINGS: it refuses what the binding cannot carry). A binding under
+    # construction is not yet: its failure lists say what it lacks, and no spec is refused for it.
+    gated: bool = True
 
 
 def _all_roles() -> tuple[str, ...]:

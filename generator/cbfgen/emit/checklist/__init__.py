@@ -41,6 +41,8 @@ def _binding(b: Binding) -> list[str]:
         f"- testees (`conformance/bindings.yaml`): {', '.join(f'`{t}`' for t in b.testees) or 'none'}",
         f"- failure lists: {failures}",
         f"- make fragment: {f'`mk/{b.make}.mk`' if b.make else 'none (`make generate`)'}",
+        "- the loader " + ("refuses a spec it cannot carry (`registry.BINDINGS`)" if b.gated
+                           else "does not answer for it yet (under construction)"),
         f"- implements {len(b.check_kinds)} of {len(CHECK_KINDS)} check kinds, {len(b.algorithms)} of "
         f"{len(ALGORITHMS)} algorithm kinds, {len(b.roles)} of {sum(len(k) for k in ROLE_KINDS.values())} role kinds",
         "",
