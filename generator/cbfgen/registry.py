@@ -21,6 +21,18 @@ Binding capabilities
     ``unsupported(t)`` names the bindings that cannot yet carry a field of type ``t`` (the loader
     refuses such a field with its line, before any emitter runs).
 
+Checksum algorithms (issue 33, point 1)
+    A ``ChecksumAlgorithm`` is a kind a spec's ``checksums.algorithms`` may name: its family (sum,
+    CRC, Fletcher), its parameters and its check value. Each runtime implements each family once.
+
+Bindings (issue 33, point 2)
+    A ``Binding`` says what a binding is made of (emitter, languages, testees, make fragment) and
+    what it implements (check kinds, algorithm kinds, role kinds); generated/checklist/BINDINGS.md
+    lists it and tests/test_bindings.py holds each binding to it.
+
+Kind wording (issue 33, point 3)
+    ``KIND_WORDING``: what the docs say of a check of a kind beyond its own text.
+
 See generator/README.md, "Extending the spec language".
 """
 
