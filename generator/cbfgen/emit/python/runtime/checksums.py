@@ -113,9 +113,11 @@ def _fletcher(p: dict[str, Any]) -> Algorithm:
     def fletcher(parts: Iterable[Buffer]) -> int:
         data = b"".join(bytes(part) for part in parts)
         data += bytes(-len(data) % word)
+        words: Iterable[int] = data if word == 1 else (int.from_bytes(data[k:k + word], "little")
+                                                       for k in range(0, len(data), word))
         s1 = s2 = 0
-        for k in range(0, len(data), word):
-            s1 = (s1 + int.from_bytes(data[k:k + word], "little")) % modulus
+        for w in words:
+            s1 = (s1 + w) % modulus
             s2 = (s2 + s1) % modulus
         return s2 << half | s1
 
