@@ -10,7 +10,7 @@ golden: venv  ## re-assemble conformance/golden/*.hex into .cbf, then regenerate
 GOLDEN_FILES := $(wildcard conformance/golden/*)
 ASSEMBLER_FILES := $(wildcard conformance/assembler/*.py)
 golden-check: venv $(STAMPS)/golden-check  ## fail when a committed golden .cbf differs from its .hex
-$(STAMPS)/golden-check: $(GOLDEN_FILES) $(ASSEMBLER_FILES) spec/cbf.yaml $(VENV)/.stamp
+$(STAMPS)/golden-check: $(GOLDEN_FILES) $(ASSEMBLER_FILES) generator/cbfgen/registry.py spec/cbf.yaml $(VENV)/.stamp
 	$(PY) -m conformance.assembler --check
 	@mkdir -p $(@D) && touch $@
 

@@ -28,7 +28,7 @@ import pytest
 import yaml
 from conftest import load_yaml, spec_doc
 
-from cbfgen.model import ALGORITHM_KINDS
+from cbfgen.registry import ALGORITHMS
 from conformance.assembler import assemble, assemble_text
 from conformance.assembler.spec import load as load_sums
 from conformance.runner.compare import findings_difference
@@ -78,7 +78,7 @@ def _widths(doc: Doc) -> dict[str, int]:
 def _fitting(doc: Doc, bits: int, avoid: set[str]) -> str:
     """A non-sum algorithm of the spec whose result fits `bits`, not in `avoid` when possible."""
     fit = [n for n, a in doc["checksums"]["algorithms"].items()
-           if a["kind"] != "sum" and (ALGORITHM_KINDS[a["kind"]] or 0) <= bits]
+           if ALGORITHMS[a["kind"]].family != "sum" and (ALGORITHMS[a["kind"]].width or 0) <= bits]
     assert fit, "the spec lists no non-sum algorithm that fits"
     return next((n for n in fit if n not in avoid), fit[0])
 

@@ -21,7 +21,7 @@ from conftest import REPO, dump_yaml, spec_doc
 from cbfgen import loader, registry
 from cbfgen.loader import load
 from cbfgen.loader.passes import bindings as capabilities  # the pass that asks registry.unsupported
-from cbfgen.model import ALGORITHM_KINDS, camel
+from cbfgen.model import camel
 from cbfgen.registry import CHECK_KINDS, TYPES, FieldType, kinds_with, unsupported
 
 
@@ -35,7 +35,7 @@ def test_the_schema_names_no_type_and_no_kind_itself() -> None:
     assert schema["properties"]["types"]["additionalProperties"]["properties"]["kind"]["enum"] == list(
         registry.FIELD_KINDS)
     algorithm = schema["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
-    assert algorithm["properties"]["kind"]["enum"] == list(ALGORITHM_KINDS)
+    assert algorithm["properties"]["kind"]["enum"] == list(registry.ALGORITHMS)
     command = schema["properties"]["commands"]["items"]["properties"]
     for role, kinds in registry.ROLE_KINDS.items():
         assert command[role]["allOf"][1]["properties"]["kind"]["enum"] == list(kinds), role

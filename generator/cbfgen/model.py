@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from .registry import TYPES, FieldType, Params, Target
+from .registry import ALGORITHMS, CHECK_KINDS, TYPES, FieldType, Params, Target
 
 __all__ = ["FieldType", "PrimitiveType", "Target"]
 
@@ -287,39 +287,20 @@ class Coverage:
     segments: tuple[Segment, ...]
 
 
-# The checksum algorithm kinds every runtime implements, with the width of
-# their result in bits (None: a byte sum, reduced to the width of its field).
-# Parameters, by the names of the CRC catalogue (reveng):
-#   crc16_ccitt  CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, xorout 0
-#   crc32        CRC-32/ISO-HDLC: poly 0x04C11DB7, init 0xFFFFFFFF, reflected, xorout 0xFFFFFFFF
-#   crc32c       CRC-32/ISCSI (Castagnoli): poly 0x1EDC6F41, init 0xFFFFFFFF, reflected, xorout 0xFFFFFFFF
-#   fletcher16   over bytes, both sums modulo 255, result sum2 << 8 | sum1
-#   fletcher32   over 16-bit little-endian words (an odd last byte padded with 0),
-#                both sums modulo 65535, result sum2 << 16 | sum1
-ALGORITHM_KINDS: dict[str, int | None] = {
-    "sum": None,
-    "crc16_ccitt": 16,
-    "crc32": 32,
-    "crc32c": 32,
-    "fletcher16": 16,
-    "fletcher32": 32,
-}
-
-
 @dataclass(frozen=True)
 class Algorithm:
     name: str
-    kind: str  # a key of ALGORITHM_KINDS
+    kind: str  # a key of registry.ALGORITHMS (its parameters and check value)
     doc: str
 
     @property
     def is_sum(self) -> bool:
-        return self.kind == "sum"
+        return ALGORITHMS[self.kind].family == "sum"
 
     @property
     def bits(self) -> int | None:
         """Width of the result; None for a sum (it takes its field's width)."""
-        return ALGORITHM_KINDS[self.kind]
+        return ALGORITHMS[self.kind].width
 
 
 @dataclass(frozen=True)
@@ -551,7 +532,7 @@ class Spec:
         """The one availability check that covers a command missing from a version (the loader
         guarantees exactly one); None when the version has the command."""
         for c in self.checks:
-            if c.kind == "availability" and version in c.versions and command in c.commands:
+            if CHECK_KINDS[c.kind].gates and version in c.versions and command in c.commands:
                 return c
         return None
 

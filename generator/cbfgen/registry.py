@@ -21,6 +21,18 @@ Binding capabilities
     ``unsupported(t)`` names the bindings that cannot yet carry a field of type ``t`` (the loader
     refuses such a field with its line, before any emitter runs).
 
+Checksum algorithms (issue 33, point 1)
+    A ``ChecksumAlgorithm`` is a kind a spec's ``checksums.algorithms`` may name: its family (sum,
+    CRC, Fletcher), its parameters and its check value. Each runtime implements each family once.
+
+Bindings (issue 33, point 2)
+    A ``Binding`` says what a binding is made of (emitter, languages, testees, make fragment) and
+    what it implements (check kinds, algorithm kinds, role kinds); generated/checklist/BINDINGS.md
+    lists it and tests/test_bindings.py holds each binding to it.
+
+Kind wording (issue 33, point 3)
+    ``KIND_WORDING``: what the docs say of a check of a kind beyond its own text.
+
 See generator/README.md, "Extending the spec language".
 """
 
@@ -498,3 +510,205 @@ LOADER_RULES: dict[str, LoaderRules] = {
 def loader_rules(kind_name: str) -> LoaderRules:
     """The loader's rules for checks of the kind (none: ``LoaderRules()``)."""
     return LOADER_RULES.get(kind_name, LoaderRules())
+
+
+# -- checksum algorithms (issue 33, point 1) ------------------------------------------------------
+# Every algorithm kind a spec's `checksums.algorithms` may name (its `kind:`), as parameters: each
+# runtime has ONE implementation per family, driven by them (the Python runtime's checksums.py, the
+# C runtime's checksums.c with the tables cbfgen/emit/c/algorithms.py computes, the golden
+# assembler's checksums.py). A new CRC is one line here with its catalogue check value, nothing
+# else; tests/test_checksum_algorithms.py runs `check` through every runtime.
+
+AlgorithmFamily = Literal["sum", "crc", "fletcher"]
+# The families, in the order of the C runtime's family enum (its switches have no default).
+ALGORITHM_FAMILIES: tuple[AlgorithmFamily, ...] = ("sum", "crc", "fletcher")
+CHECK_INPUT = b"123456789"  # what `check` is the checksum of (the CRC catalogue's "check")
+MAX_ALGORITHM_BITS = 32  # every runtime holds a result in 32 bits (the C runtime's uint32_t)
+
+
+@dataclass(frozen=True)
+class ChecksumAlgorithm:
+    """One algorithm kind.
+
+    ``family``
+        ``sum``: the unsigned sum of the bytes, reduced to the width of the field that stores it
+        (``width`` None). ``crc``: the Rocksoft model of the CRC catalogue (reveng): ``width``
+        bits, ``poly`` (normal form, top bit implied), ``init``, ``refin`` (bytes fed least
+        significant bit first), ``refout`` (the register reflected before ``xorout``).
+        ``fletcher``: ``width`` 16 or 32; the data as little-endian words of ``width/16`` bytes
+        (an odd tail padded with zeros), two running sums modulo ``2^(width/2) - 1``, the result
+        ``sum2 << width/2 | sum1``.
+    ``check``
+        The algorithm's value over ASCII "123456789" (CHECK_INPUT; a sum unreduced): the CRC
+        catalogue's check for a CRC, a fact of the algorithm that every runtime is tested with.
+    """
+
+    name: str
+    family: AlgorithmFamily
+    width: int | None
+    check: int
+    doc: str
+    poly: int = 0
+    init: int = 0
+    refin: bool = False
+    refout: bool = False
+    xorout: int = 0
+
+    def __post_init__(self) -> None:
+        fits = self.width is None if self.family == "sum" else (
+            self.width in (16, 32) if self.family == "fletcher" else 1 <= (self.width or 0) <= MAX_ALGORITHM_BITS)
+        if not fits:
+            raise ValueError(f"checksum algorithm {self.name}: width {self.width} does not fit family {self.family}")
+        mask = (1 << (self.width or 0)) - 1
+        if self.family == "crc" and any(v & ~mask for v in (self.poly, self.init, self.xorout, self.check)):
+            raise ValueError(f"checksum algorithm {self.name}: a parameter is wider than {self.width} bits")
+
+    @property
+    def bits(self) -> int | None:
+        """Width of the result; None for a sum (it takes its field's width)."""
+        return self.width
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        """The parameters as plain data (what the runtimes' tables carry), check value included."""
+        return {"family": self.family, "width": self.width, "poly": self.poly, "init": self.init,
+                "refin": self.refin, "refout": self.refout, "xorout": self.xorout, "check": self.check}
+
+
+def _crc(name: str, width: int, poly: int, init: int, refin: bool, refout: bool, xorout: int, check: int,
+         catalogue: str) -> ChecksumAlgorithm:
+    return ChecksumAlgorithm(name, "crc", width, check, f"{catalogue}: poly 0x{poly:X}, init 0x{init:X}, "
+                             f"refin {str(refin).lower()}, refout {str(refout).lower()}, xorout 0x{xorout:X}",
+                             poly, init, refin, refout, xorout)
+
+
+_ALGORITHMS = (
+    ChecksumAlgorithm("sum", "sum", None, 0x1DD, "unsigned byte sum, reduced to the width of its field"),
+    _crc("crc16_ccitt", 16, 0x1021, 0xFFFF, False, False, 0x0000, 0x29B1, "CRC-16/CCITT-FALSE (CRC-16/IBM-3740)"),
+    _crc("crc32", 32, 0x04C11DB7, 0xFFFFFFFF, True, True, 0xFFFFFFFF, 0xCBF43926, "CRC-32/ISO-HDLC"),
+    _crc("crc32c", 32, 0x1EDC6F41, 0xFFFFFFFF, True, True, 0xFFFFFFFF, 0xE3069283, "CRC-32/ISCSI (Castagnoli)"),
+    ChecksumAlgorithm("fletcher16", "fletcher", 16, 0x1EDE, "Fletcher-16: bytes, sums modulo 255"),
+    ChecksumAlgorithm("fletcher32", "fletcher", 32, 0xDF09D509,
+                      "Fletcher-32: 16-bit little-endian words (odd tail padded with 0), sums modulo 65535"),
+)
+
+ALGORITHMS: dict[str, ChecksumAlgorithm] = {a.name: a for a in _ALGORITHMS}
+
+
+def algorithm(name: str) -> ChecksumAlgorithm:
+    return ALGORITHMS[name]
+
+
+# -- bindings (issue 33, point 2) -----------------------------------------------------------------
+# Every binding as data: what it is made of and what it implements. conformance/bindings.yaml (its
+# testees), conformance/failures/ (a failure list per testee), mk/ (its make fragment) and
+# escape.RESERVED (the reserved words of the languages its identifiers land in) are checked against
+# it (tests/test_bindings.py), and generated/BINDINGS.md (cbfgen/emit/checklist) says, per binding,
+# which check kinds, algorithm kinds and role kinds it implements. tests/test_bindings.py fails when
+# a binding claims something it lacks (a Python kernel, a C kernel symbol, a Kaitai `valid:` rule).
+
+
+@dataclass(frozen=True)
+class Binding:
+    """One binding. ``check_kinds``, ``algorithms`` and ``roles`` ("role/kind") are what it
+    implements; a new binding starts with all three empty and its testees' failure lists full."""
+
+    name: str
+    doc: str
+    emitter: str  # its emitter: cbfgen/emit/<emitter>/
+    languages: tuple[str, ...]  # keys of escape.RESERVED: the languages its identifiers land in
+    testees: tuple[str, ...]  # names in conformance/bindings.yaml; each has conformance/failures/<name>.txt
+    make: str | None  # mk/<make>.mk builds and tests it (None: `make generate` alone)
+    check_kinds: tuple[str, ...]
+    algorithms: tuple[str, ...]
+    roles: tuple[str, ...]
+    # The loader answers for it (BINDINGS: it refuses what the binding cannot carry). A binding under
+    # construction is not yet: its failure lists say what it lacks, and no spec is refused for it.
+    gated: bool = True
+
+
+def _all_roles() -> tuple[str, ...]:
+    return tuple(f"{role}/{k}" for role, kinds in ROLE_KINDS.items() for k in kinds)
+
+
+BINDING_LIST: tuple[Binding, ...] = (
+    Binding("python", "the Python codec, validator and CLI (package cbf)", "python", ("Python",), ("python",), None,
+            tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
+    Binding("kaitai", "the .ksy and the parsers ksc 0.11 compiles from it (Python, JavaScript, Java, Go): it decodes, "
+            "and states as valid: rules the kinds it can express", "kaitai",
+            ("Kaitai", "Python", "JavaScript", "Java", "Go"),
+            ("kaitai-python", "kaitai-javascript", "kaitai-go", "kaitai-java"), "kaitai",
+            tuple(k.name for k in _KINDS if k.kaitai), (), ()),
+    Binding("c", "the single-header C codec and validator (cbf.h), the testee and cbf-c", "c", ("C", "C++"), ("c",),
+            "c", tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
+)
+BINDING: dict[str, Binding] = {b.name: b for b in BINDING_LIST}
+
+
+# -- per-kind wording of the docs (issue 33, point 3) ---------------------------------------------
+# What the format documentation says of a check beyond its spec text, by kind: why it reads a
+# command's records (`reads`: (check, command) -> a phrase, None when it does not read them, for
+# the command pages) and what its parameters add to its prose (`scope`: check -> sentences). The
+# docs emitter asks here and names no kind; a kind with no entry is listed per command only when
+# one of its targets names the command. `own_versions`: the kind says its versions itself.
+
+
+@dataclass(frozen=True)
+class KindWording:
+    reads: Callable[[Any, Any], str | None] | None = None
+    scope: Callable[[Any], str | None] | None = None
+    own_versions: bool = False
+
+
+def _arg_kinds(c: Any) -> set[str]:
+    return {a.kind for lay in c.layouts for a in lay.args}
+
+
+def _availability_reads(k: Any, c: Any) -> str | None:
+    if c.name not in k.commands:  # another availability check covers this command
+        return None
+    missing = [v for v in k.versions if not c.available_in(v)]
+    return f"{c.name} is not in version {', '.join(missing)}" if missing else None
+
+
+def _arg_checksum_reads(k: Any, c: Any) -> str | None:
+    if not k.checksum_field:
+        return None
+    carried = [ck for lay in c.layouts for ck in lay.checksums if ck.tag == k.checksum_field]
+    return (f"its argument {carried[0].field.name} holds checksum {k.checksum_field} over "
+            f"{', '.join(carried[0].covers)}") if carried else None
+
+
+def _deprecated_reads(k: Any, c: Any) -> str | None:
+    lays = [lay.variant or "primary" for lay in c.layouts if k.deprecates_layout(c.name, lay.variant)]
+    what = c.name if len(lays) == len(c.layouts) else f"{c.name} layout {', '.join(lays)}"
+    return f"deprecated: {what}, since version {k.since}" if lays else None
+
+
+def _range_scope(k: Any) -> str:
+    lo = "-inf" if k.min is None else f"{k.min:g}"
+    hi = "inf" if k.max is None else f"{k.max:g}"
+    return (f"Range {'(' if k.min_exclusive or k.min is None else '['}{lo}, {hi}"
+            f"{')' if k.max_exclusive or k.max is None else ']'}.")
+
+
+KIND_WORDING: dict[str, KindWording] = {
+    "availability": KindWording(reads=_availability_reads),
+    "arg_checksum": KindWording(reads=_arg_checksum_reads),
+    "deprecated": KindWording(reads=_deprecated_reads, own_versions=True, scope=lambda k: (
+        f"Deprecates {', '.join(k.deprecates)} in files of version {', '.join(k.versions)}.")),
+    "range": KindWording(scope=_range_scope),
+    "continuity": KindWording(reads=lambda k, c: "a motion command" if c.motion else None),
+    "orientation": KindWording(reads=lambda k, c: "a 5-axis command" if c.orientation else None),
+    "shape": KindWording(reads=lambda k, c: "opens or closes a shape" if c.shape
+                         else "a motion command, counted in shapes" if c.motion else None),
+    "cutter_table": KindWording(reads=lambda k, c: "a cutter" if c.cutter else None),
+    "finite": KindWording(reads=lambda k, c: "float arguments" if "float" in _arg_kinds(c) else None),
+    "string_tail": KindWording(reads=lambda k, c: "string arguments" if "string" in _arg_kinds(c) else None),
+    "string_ascii": KindWording(reads=lambda k, c: "string arguments" if "string" in _arg_kinds(c) else None),
+}
+
+
+def wording(kind_name: str) -> KindWording:
+    """The docs' wording of a kind (an empty KindWording for a kind that needs none)."""
+    return KIND_WORDING.get(kind_name, KindWording())

@@ -220,7 +220,7 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     # its order, that is no plain sum, fills the file checksum field (else the first that fits it), and
     # is not the one the default profile uses now (so the revision changes it on any spec, its own
     # result included).
-    from cbfgen.model import ALGORITHM_KINDS  # noqa: PLC0415  (the drill runs with the generator on its path)
+    from cbfgen.registry import ALGORITHMS  # noqa: PLC0415  (the drill runs with the generator on its path)
 
     checksums = doc.get("checksums", {})
     algorithms = checksums.get("algorithms", {})
@@ -229,8 +229,8 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     current = default.get("file_algorithm", file_field.get("algorithm"))
     width = 8 * next((int(doc["types"][f["type"]].get("size") or 0) for h in headers.values()
                       for f in h.get("fields", ()) if f.get("checksum") == "file"), 0)
-    bits = {n: ALGORITHM_KINDS.get(str(a.get("kind"))) or 0 for n, a in algorithms.items()
-            if a.get("kind") != "sum" and n != current}
+    kinds = {n: ALGORITHMS.get(str(a.get("kind"))) for n, a in algorithms.items()}
+    bits = {n: k.width or 0 for n, k in kinds.items() if k is not None and k.family != "sum" and n != current}
     other = sorted((n for n, b in bits.items() if 0 < b <= width), key=lambda n: bits[n] != width)  # full width first
     if other:
         out["other_file_algorithm"] = other[0]

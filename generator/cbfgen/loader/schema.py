@@ -9,8 +9,7 @@ from typing import Any
 
 import jsonschema
 
-from ..model import ALGORITHM_KINDS
-from ..registry import CHECK_KINDS, FIELD_KINDS, ROLE_KINDS, SEVERITIES, TYPES
+from ..registry import ALGORITHMS, CHECK_KINDS, FIELD_KINDS, ROLE_KINDS, SEVERITIES, TYPES
 from .problems import Problem
 from .yaml_reader import Map, line_of_path
 
@@ -28,7 +27,7 @@ def schema() -> dict[str, Any]:
     check["kind"] = {"enum": list(CHECK_KINDS)}
     check["severity"] = check["input_severity"] = {"enum": list(SEVERITIES)}
     algorithm = out["properties"]["checksums"]["properties"]["algorithms"]["additionalProperties"]
-    algorithm["properties"]["kind"] = {"enum": list(ALGORITHM_KINDS)}
+    algorithm["properties"]["kind"] = {"enum": list(ALGORITHMS)}
     command = out["properties"]["commands"]["items"]["properties"]
     for role, kinds in ROLE_KINDS.items():
         command[role]["allOf"][1]["properties"]["kind"] = {"enum": list(kinds)}

@@ -20,6 +20,7 @@ from pathlib import Path
 from ...model import Spec
 from ...options import option_rules
 from ...render import environment
+from .algorithms import algorithm_tables
 from .cnames import cfloat, cname, comment, ctype, macro
 from .views import CContext, context
 
@@ -62,6 +63,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     names = context(spec).namespace()
     assert "options" not in names
     names["options"] = option_rules(spec)  # option files, machine_file.inc.j2 (issue 28)
+    names["checksum_algorithms"] = algorithm_tables()  # cbf/algorithms.c.j2 (issue 33, point 1)
     out: dict[str, bytes] = {}
     for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         text = env.get_template(name + ".j2").render(**names)

@@ -14,7 +14,7 @@ from typing import Any
 from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ... import registry
-from ...model import ALGORITHM_KINDS, Command, Field, Layout, Spec
+from ...model import Command, Field, Layout, Spec
 from ...options import cutter_columns
 from .cnames import cfloat, cname, comment, ctype, macro, member_doc
 from .machine import MachineView, machine_view
@@ -28,7 +28,7 @@ ORIENT_KEYS = ("start", "end")
 SHAPE_KINDS = registry.ROLE_KINDS["shape"]
 SHAPE_KEYS = ("name", "count")
 REGIONS = ("file", "header", "records", "args", "fields")  # fields: an argument checksum's named fields (cbf__argcks)
-ALGORITHMS = tuple(ALGORITHM_KINDS)  # every kind has its branch in runtime/checksums.c
+ALGORITHMS = tuple(registry.ALGORITHMS)  # each kind a row of cbf/algorithms.c.j2 (checksums.c: one per family)
 CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own tags follow (_tags)
 
 

@@ -478,50 +478,25 @@ def context(spec: Spec) -> dict[str, Any]:
 
 
 def _why(k: Check, c: Command) -> str | None:
-    """Why check k reads the arguments of command c, from the model; None when it does not. Checks that
-    read every record alike (sequence, code copy, size, checksum, ...) are not listed per command."""
-    kinds = {a.kind for lay in c.layouts for a in lay.args}
+    """Why check k reads the arguments of command c, from the model and the kind's wording
+    (registry.KIND_WORDING); None when it does not. Checks that read every record alike
+    (sequence, code copy, size, checksum, ...) are not listed per command."""
     if any(t.command == c.name for t in k.targets):
         return f"names {c.name}"
-    if k.kind == "availability":
-        if c.name not in k.commands:  # another availability check covers this command
-            return None
-        missing = [v for v in k.versions if not c.available_in(v)]
-        return f"{c.name} is not in version {', '.join(missing)}" if missing else None
-    if k.kind == "arg_checksum" and k.checksum_field:  # issue 25, point 1: a checksum among its arguments
-        carried = [ck for lay in c.layouts for ck in lay.checksums if ck.tag == k.checksum_field]
-        return (f"its argument {carried[0].field.name} holds checksum {k.checksum_field} over "
-                f"{', '.join(carried[0].covers)}") if carried else None
-    if k.kind == "deprecated":  # issue 25, point 5: the command, or which of its layouts, since when
-        lays = [lay.variant or "primary" for lay in c.layouts if k.deprecates_layout(c.name, lay.variant)]
-        what = c.name if len(lays) == len(c.layouts) else f"{c.name} layout {', '.join(lays)}"
-        return f"deprecated: {what}, since version {k.since}" if lays else None
-    reasons = {
-        "continuity": "a motion command" if c.motion else None,
-        "orientation": "a 5-axis command" if c.orientation else None,
-        "shape": "opens or closes a shape" if c.shape else "a motion command, counted in shapes" if c.motion else None,
-        "cutter_table": "a cutter" if c.cutter else None,
-        "finite": "float arguments" if "float" in kinds else None,
-        "string_tail": "string arguments" if "string" in kinds else None,
-        "string_ascii": "string arguments" if "string" in kinds else None,
-    }
-    return reasons.get(k.kind)
+    reads = registry.wording(k.kind).reads
+    return None if reads is None else reads(k, c)
 
 
 def _scope(k: Check) -> str:
     """What a check's parameters add to its prose: the versions it judges (issue 25, point 4; an
-    availability check's versions are its subject, said in its text) and a range's open or closed
-    bounds."""
+    availability check's versions are its subject, said in its text) and what its kind's wording
+    says of its parameters (registry.KIND_WORDING: a range's bounds, a deprecation)."""
     out = []
-    if k.versions and not registry.kind(k.kind).gates and k.kind != "deprecated":
+    w = registry.wording(k.kind)
+    if k.versions and not registry.kind(k.kind).gates and not w.own_versions:
         out.append(f"Judges files of version {', '.join(k.versions)} only.")
-    if k.kind == "range":
-        lo = "-inf" if k.min is None else f"{k.min:g}"
-        hi = "inf" if k.max is None else f"{k.max:g}"
-        out.append(f"Range {'(' if k.min_exclusive or k.min is None else '['}{lo}, {hi}"
-                   f"{')' if k.max_exclusive or k.max is None else ']'}.")
-    if k.kind == "deprecated":
-        out.append(f"Deprecates {', '.join(k.deprecates)} in files of version {', '.join(k.versions)}.")
+    if w.scope is not None and (said := w.scope(k)):
+        out.append(said)
     return (" " + " ".join(out)) if out else ""
 
 

@@ -13,7 +13,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...options import option_rules
-from ...registry import DERIVED_HEADER_ROLES
+from ...registry import ALGORITHMS, DERIVED_HEADER_ROLES
 from ...registry import kind as check_kind
 from ...render import environment
 from .machine import machine_data, machine_schema
@@ -87,6 +87,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         ],
         "checksums": {
             "algorithms": {k: a.kind for k, a in spec.checksums.algorithms.items()},
+            # every algorithm kind of the registry, as parameters: checksums.py implements each family once
+            "kinds": {k: a.parameters for k, a in ALGORITHMS.items()},
             "coverages": {
                 k: [{"region": s.region, "start": s.start, "end": s.end, "exclude": list(s.exclude),
                      "fields": list(s.fields)} for s in cov.segments]

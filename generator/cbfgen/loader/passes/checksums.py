@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ...model import ALGORITHM_KINDS, Algorithm, ChecksumField, Checksums, Coverage, Field, Segment
+from ...model import Algorithm, ChecksumField, Checksums, Coverage, Field, Segment
 from ..pipeline import State, define
 from ..problems import Problems
 from ..yaml_reader import Map
@@ -47,7 +47,7 @@ def arg_checksum_fields(st: State) -> list[Field]:
 
 def fits(ctx: Problems, st: State, node: Map, key: str, tag: str, alg_name: str, what: str) -> None:
     """The algorithm's result fits the stored field of ``tag``."""
-    bits = ALGORITHM_KINDS[st.bare_checksums.algorithms[alg_name].kind]
+    bits = st.bare_checksums.algorithms[alg_name].bits
     widths = stored_widths(st)
     if tag in widths and bits is not None and bits > 8 * widths[tag]:
         ctx.fail(node, f"{what}: algorithm {alg_name} gives {bits} bits, the {tag} checksum field "

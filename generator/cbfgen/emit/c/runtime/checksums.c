@@ -1,23 +1,22 @@
 /* ---- checksums -----------------------------------------------------------
- * Every algorithm kind of the model, implemented once here (parameters as in
- * spec/cbf.yaml checksums.algorithms and the CRC catalogue):
- *   SUM          unsigned byte sum, reduced to the width of the field
- *   CRC16_CCITT  CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, xorout 0
- *   CRC32        CRC-32/ISO-HDLC: poly 0x04C11DB7 (reflected 0xEDB88320), init/xorout 0xFFFFFFFF
- *   CRC32C       CRC-32C Castagnoli: poly 0x1EDC6F41 (reflected 0x82F63B78), init/xorout 0xFFFFFFFF
- *   FLETCHER16   bytes, sums modulo 255, sum2 << 8 | sum1
- *   FLETCHER32   16-bit little-endian words (odd tail padded with 0), sums modulo 65535, sum2 << 16 | sum1
- * A coverage feeds several ranges as one stream: Fletcher-32 keeps a pending odd byte. */
-typedef struct cbf__ck { int alg; uint32_t acc, acc2; int odd; uint8_t pend; } cbf__ck;
+ * Every algorithm kind is a row of cbf__algs (generated from cbfgen/registry.py ALGORITHMS: its
+ * parameters and, for a CRC, its byte table); each family is implemented once here:
+ *   SUM       unsigned byte sum, reduced to the width of the field
+ *   CRC       the CRC catalogue's model (width, poly, init, refin, refout, xorout), a byte at a time
+ *             through the table: reflected (refin) with the register right-aligned, else with the
+ *             register left-aligned in 32 bits
+ *   FLETCHER  16 or 32 bits: little-endian words of width/16 bytes (an odd tail padded with 0), two
+ *             sums modulo 2^(width/2) - 1, result sum2 << width/2 | sum1
+ * A coverage feeds several ranges as one stream: Fletcher keeps the bytes of a pending word. */
+typedef struct cbf__ck { const cbf__alg *a; uint32_t acc, acc2; unsigned npend; uint8_t pend[4]; } cbf__ck;
 
 static void cbf__ck_init(cbf__ck *c, int alg)
 {
-    c->alg = alg;
-    c->acc = (alg == CBF__ALG_CRC32 || alg == CBF__ALG_CRC32C) ? 0xFFFFFFFFu
-             : alg == CBF__ALG_CRC16_CCITT ? 0xFFFFu : 0u;
+    c->a = &cbf__algs[alg >= 0 && alg < CBF__ALG__COUNT ? alg : CBF__ALG_NONE];
+    c->acc = c->a->init;
     c->acc2 = 0u;
-    c->odd = 0;
-    c->pend = 0u;
+    c->npend = 0u;
+    memset(c->pend, 0, sizeof c->pend);
 }
 
 /* The plain byte sum of p[0..n), modulo 2^32. Eight bytes at a time: the bytes
@@ -46,67 +45,82 @@ static uint32_t cbf__sum(const uint8_t *p, size_t n)
     return acc;
 }
 
+/* A Fletcher word of c->pend (little-endian, c->npend bytes, the rest 0) into the two sums. */
+static void cbf__fletcher_word(cbf__ck *c)
+{
+    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
+    uint32_t w = 0;
+    unsigned k;
+    for (k = c->a->width / 16u; k-- > 0u;)
+        w = (w << 8) | c->pend[k];
+    c->acc = (uint32_t)(((uint64_t)c->acc + w) % mod);
+    c->acc2 = (uint32_t)(((uint64_t)c->acc2 + c->acc) % mod);
+    c->npend = 0u;
+    memset(c->pend, 0, sizeof c->pend);
+}
+
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
 {
+    const uint32_t *t = c->a->table;
+    uint32_t r = c->acc;
     size_t i;
-    unsigned b;
-    switch (c->alg) {
-    case CBF__ALG_CRC32:
-    case CBF__ALG_CRC32C: {
-        const uint32_t poly = c->alg == CBF__ALG_CRC32 ? 0xEDB88320u : 0x82F63B78u;
-        for (i = 0; i < n; i++) {
-            c->acc ^= p[i];
-            for (b = 0; b < 8u; b++)
-                c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ poly) : (c->acc >> 1);
-        }
-        break;
-    }
-    case CBF__ALG_CRC16_CCITT:
-        for (i = 0; i < n; i++) {
-            c->acc ^= (uint32_t)p[i] << 8;
-            for (b = 0; b < 8u; b++)
-                c->acc = (c->acc & 0x8000u) ? (((c->acc << 1) ^ 0x1021u) & 0xFFFFu) : ((c->acc << 1) & 0xFFFFu);
-        }
-        break;
-    case CBF__ALG_FLETCHER16:
-        for (i = 0; i < n; i++) {
-            c->acc = (c->acc + p[i]) % 255u;
-            c->acc2 = (c->acc2 + c->acc) % 255u;
-        }
-        break;
-    case CBF__ALG_FLETCHER32:
-        for (i = 0; i < n; i++) {
-            if (!c->odd) {
-                c->pend = p[i];
-                c->odd = 1;
-                continue;
-            }
-            c->acc = (c->acc + ((uint32_t)c->pend | ((uint32_t)p[i] << 8))) % 65535u;
-            c->acc2 = (c->acc2 + c->acc) % 65535u;
-            c->odd = 0;
-        }
-        break;
-    default:
+    switch (c->a->family) {
+    case CBF__FAMILY_SUM:
         c->acc += cbf__sum(p, n);
+        break;
+    case CBF__FAMILY_CRC:
+        if (c->a->refin) {
+            for (i = 0; i < n; i++)
+                r = t[(r ^ p[i]) & 0xFFu] ^ (r >> 8);
+        } else {
+            for (i = 0; i < n; i++)
+                r = t[((r >> 24) ^ p[i]) & 0xFFu] ^ (r << 8);
+        }
+        c->acc = r;
+        break;
+    case CBF__FAMILY_FLETCHER:
+        for (i = 0; i < n; i++) {
+            c->pend[c->npend++] = p[i];
+            if (c->npend == c->a->width / 16u)
+                cbf__fletcher_word(c);
+        }
         break;
     }
 }
 
+/* The register reflected over its low `width` bits. */
+static uint32_t cbf__reflect(uint32_t v, unsigned width)
+{
+    uint32_t out = 0;
+    unsigned k;
+    for (k = 0; k < width; k++, v >>= 1)
+        out = (out << 1) | (v & 1u);
+    return out;
+}
+
 static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
 {
-    uint32_t v = c->acc, s1 = c->acc, s2 = c->acc2;
-    if (c->alg == CBF__ALG_CRC32 || c->alg == CBF__ALG_CRC32C) {
-        v = c->acc ^ 0xFFFFFFFFu;
-    } else if (c->alg == CBF__ALG_FLETCHER16) {
-        v = (s2 << 8) | s1;
-    } else if (c->alg == CBF__ALG_FLETCHER32) {
-        if (c->odd) { /* the odd last byte, padded with a zero high byte */
-            s1 = (s1 + c->pend) % 65535u;
-            s2 = (s2 + s1) % 65535u;
-        }
-        v = (s2 << 16) | s1;
+    const cbf__alg *a = c->a;
+    uint32_t v = c->acc;
+    switch (a->family) {
+    case CBF__FAMILY_SUM:
+        break;
+    case CBF__FAMILY_CRC:
+        if (!a->refin)
+            v >>= 32u - a->width;
+        if (a->refin != a->refout)
+            v = cbf__reflect(v, a->width);
+        v ^= a->xorout;
+        break;
+    case CBF__FAMILY_FLETCHER: {
+        cbf__ck tail = *c; /* the pending bytes of a last, short word, padded with zeros */
+        if (tail.npend)
+            cbf__fletcher_word(&tail);
+        v = (tail.acc2 << (a->width / 2u)) | tail.acc;
+        break;
     }
-    /* only a sum is wider than its field (loader.py refuses any other such algorithm) */
+    }
+    /* only a sum is wider than its field (the loader refuses any other such algorithm) */
     return width >= 4u ? v : (v & ((1u << (8u * width)) - 1u));
 }
 

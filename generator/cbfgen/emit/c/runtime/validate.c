@@ -6,7 +6,7 @@ static int cbf__file_sum_folds(int profile, size_t *start)
 {
     int cov = cbf__profiles[profile].file[0];
     const cbf__segment *seg;
-    if (cov < 0 || cbf__profiles[profile].file_alg != CBF__ALG_SUM || cbf__coverages[cov].n != 1u)
+    if (cov < 0 || cbf__algs[cbf__profiles[profile].file_alg].family != CBF__FAMILY_SUM || cbf__coverages[cov].n != 1u)
         return 0;
     seg = &cbf__segments[cbf__coverages[cov].first];
     if (seg->region != CBF__REGION_FILE || seg->start > CBF_HEADER_SIZE)
@@ -163,7 +163,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     pos = CBF_HEADER_SIZE;
     const cbf__ckfield *kck = cbf__ckfield_of(CBF__CK_ARGS);
     /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
-    const int args_sum = kck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
+    const int args_sum = kck && cbf__algs[kck->alg].family == CBF__FAMILY_SUM && cbf__coverages[kck->coverage].n == 1u
                          && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
     folds = args_sum && cbf__file_sum_folds(profile, &fold_start);
     if (folds)
