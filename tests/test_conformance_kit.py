@@ -307,7 +307,8 @@ def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempP
     as_full = _run(*decode_only, "--json", cwd=folder, check=False)
     assert as_full.returncode == 1
     one = [ln for ln in as_full.stderr.splitlines() if ln.startswith("dec: ")]
-    assert len(one) == 1 and "judged no validate and no encode case" in one[0] and "--capabilities decode" in one[0], one
+    assert len(one) == 1, one
+    assert "judged no validate and no encode case" in one[0] and "--capabilities decode" in one[0], one
     judged = json.loads(as_full.stdout)["bindings"]["dec"]["judged"]
     assert {op: (j["judged"], j["skipped"]) for op, j in judged.items()} == {
         "decode": (stated["decode"], 0), "validate": (0, stated["validate"]), "encode": (0, stated["encode"])}
