@@ -27,3 +27,14 @@ release-tag:
 	  echo "make release: $$tag already names $$at, not HEAD: raise __version__ in generator/cbfgen/__init__.py" >&2; \
 	  exit 2; fi; \
 	git tag -a "$$tag" -m "CBF toolkit $(RELEASE_VERSION)" && echo "make release: tagged $$tag at $$(git rev-parse --short HEAD)"
+
+# -- shell completion and man pages, from the argument parsers (cbf.shellfiles) ----------------------
+SHELLFILES := build/shellfiles
+.PHONY: shellfiles
+shellfiles: generate-py  ## bash completion and man pages of cbf and cbf-conformance from their parsers ($(SHELLFILES)/)
+	@mkdir -p $(SHELLFILES)
+	$(PY) -m cbf.shellfiles bash > $(SHELLFILES)/cbf.bash
+	$(PY) -m cbf.shellfiles man > $(SHELLFILES)/cbf.1
+	$(PY) -m cbf.shellfiles bash --parser conformance.runner.__main__:parser > $(SHELLFILES)/cbf-conformance.bash
+	$(PY) -m cbf.shellfiles man --parser conformance.runner.__main__:parser > $(SHELLFILES)/cbf-conformance.1
+	@ls $(SHELLFILES)
