@@ -188,3 +188,25 @@ def test_bash_completion_and_man_page_come_from_the_parser(tmp_path: Path) -> No
         shown = subprocess.run(["man", "-l", "-"], input=page, capture_output=True, text=True,
                                env={**os.environ, "MANWIDTH": "100", "MANPAGER": "cat", "PAGER": "cat"})
         assert shown.returncode == 0 and "CBF HEXDUMP" in shown.stdout, shown.stderr
+
+
+def test_the_api_reference_page_is_read_from_the_code(tmp_path: Path) -> None:
+    """pdoc reads the package: every public name has its section, functions their signatures with
+    types, and the site shows the page in its navigation."""
+    import inspect
+
+    from cbfgen.emit.docs import api, site
+    from cbfgen.loader import load
+
+    text = api.page()
+    for name in cbf.__all__:
+        assert f"## `{name}` (" in text, name
+    for name in ("decode", "validate", "encode"):
+        params = inspect.signature(getattr(cbf, name)).parameters
+        block = text[text.index(f"## `{name}` ("):]
+        assert f"def {name}(" in block and all(p in block.split("```")[1] for p in params), name
+    (tmp_path / "api.md").write_text(text, encoding="utf-8")
+    files = site.pages(load(REPO / "spec" / "cbf.yaml"), api=tmp_path / "api.md")
+    assert site.API_PAGE in files
+    assert f'href="{site.API_PAGE}"' in files["index.html"].decode()
+    assert "decode" in files[site.API_PAGE].decode()
