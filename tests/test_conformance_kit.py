@@ -341,3 +341,28 @@ def test_an_empty_testee_and_an_endless_failure_list_are_refused(kit: Path, tmp_
     for bad in ("decode,print", "", "encode,validate"):
         assert "--capabilities" in _one_line_2(_run(kit, "--testee", testee, "--capabilities", bad, cwd=tmp_path,
                                                     check=False))
+
+
+def test_layouts_json_states_the_byte_layouts_of_the_model() -> None:
+    """layouts.json (shipped beside PROTOCOL.md) says what the model says: every header's fields tile
+    it, every command layout's arguments fit its size, codes and offsets as the spec has them."""
+    from cbfgen.loader import load
+
+    spec = load(REPO / "spec" / "cbf.yaml")
+    doc = json.loads((REPO / "generated" / "python" / "cbf" / "layouts.json").read_text(encoding="utf-8"))
+    assert doc["spec"] == spec.revision and doc["byte_order"] == spec.meta["byte_order"]
+    assert [v["id"] for v in doc["versions"]] == [v.id for v in spec.versions]
+    for hid, h in spec.headers.items():
+        got = doc["headers"][hid]
+        assert got["size"] == h.size
+        assert [(f["name"], f["offset"], f["size"]) for f in got["fields"]] == [(f.name, f.offset, f.size)
+                                                                            for f in h.fields]
+        assert sum(f["size"] for f in got["fields"]) == h.size
+    assert doc["record_head"]["size"] == spec.record.head_size
+    by_name = {c["name"]: c for c in doc["commands"]}
+    for c in spec.commands:
+        assert by_name[c.name]["code"] == c.code
+        for lay, got in zip(c.layouts, by_name[c.name]["layouts"], strict=True):
+            assert got["size"] == lay.size and sorted(got["versions"]) == sorted(lay.versions)
+            assert all(a["offset"] + a["size"] <= lay.size or "repeat" in a for a in got["args"])
+    assert {f["field"] for f in doc["checksums"]["fields"]} == {f.field for f in spec.checksums.fields}

@@ -101,9 +101,14 @@ def released(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
                PIP_DISABLE_PIP_VERSION_CHECK="1", PRE_COMMIT_HOME=str(work / "pre-commit-home"))
     (work / "home").mkdir()
     clone = work / "clone"
-    subprocess.run(["git", "clone", "-q", "--no-local", str(REPO), str(clone)], check=True, env=env)
+    cloned = subprocess.run(["git", "clone", "-q", "--no-local", str(REPO), str(clone)], env=env,
+                            capture_output=True)
+    if cloned.returncode:  # a copy of the tree that is no git checkout (the revision drill's): a new repository
+        clone.mkdir(exist_ok=True)
+        subprocess.run(["git", "init", "-q", str(clone)], check=True, env=env)
     for rel in OVERLAY:
         src, dst = REPO / rel, clone / rel
+        dst.parent.mkdir(parents=True, exist_ok=True)
         if src.is_dir():
             shutil.rmtree(dst, ignore_errors=True)
             shutil.copytree(src, dst, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
