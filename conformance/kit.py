@@ -4,8 +4,9 @@
 
 The package `cbf_conformance` is the runner's modules, the golden cases (.cbf, their
 expectations and the files they name) as package data, PROTOCOL.md with the JSON schemas
-it names, a stamp of the kit version and the spec revision (reports name both), and the page
-"Run the CBF conformance suite against your reader" as its README. Its one dependency
+and the byte layouts (layouts.json) it names, a stamp of the kit version and the spec
+revision (reports name both), and the page "Run the CBF conformance suite against your
+reader" as its README. Its one dependency
 is PyYAML (the expectations are YAML). `make dist` builds it next to `cbf` and `cbfgen`.
 """
 
@@ -20,7 +21,8 @@ from conformance.runner.about import from_repo
 ROOT = Path(__file__).resolve().parent
 REPO = ROOT.parent
 PAGE = "RUN-AGAINST-YOUR-READER.md"
-SCHEMAS = ("machine.schema.json", "canonical.schema.json")
+# generated into the cbf package, named by PROTOCOL.md, shipped beside it
+SCHEMAS = ("machine.schema.json", "canonical.schema.json", "layouts.json")
 
 
 def _stamp() -> tuple[str, str]:
@@ -81,7 +83,7 @@ cbf-conformance = "cbf_conformance.__main__:main"
 packages = ["cbf_conformance"]
 
 [tool.setuptools.package-data]
-cbf_conformance = ["golden/*", "PROTOCOL.md", "*.schema.json", "py.typed"]
+cbf_conformance = ["golden/*", "PROTOCOL.md", "*.schema.json", "layouts.json", "py.typed"]
 ''', encoding="utf-8")
     return dest
 

@@ -25,9 +25,12 @@ docs: docs-site  ## Markdown docs (generated/docs/) and the HTML site ($(DOCS_HT
 
 # The site shows the toolpath gallery (`cbf plot` and `cbf stats` of every golden file that
 # validates clean, mk/gallery.mk) on a page of its own.
+# and the Python API reference, read from the cbf package's code with pdoc (cbfgen.emit.docs.api).
+DOCS_API := build/docs-api/api.md
 docs-site: generate-py node_modules/.stamp
 	@rm -rf $(GALLERY) && $(PY) -m cbf.gallery $(GALLERY) conformance/golden/*.cbf
-	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY)
+	$(PY) -m cbfgen.emit.docs.api $(DOCS_API)
+	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY) --api $(DOCS_API)
 
 docs-chromium:
 	@CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh

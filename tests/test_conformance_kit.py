@@ -68,8 +68,8 @@ def test_the_kit_passes_the_reference_c_testee(kit: Path, tmp_path: Path) -> Non
 
 def test_the_kit_fails_a_broken_testee_with_the_right_cases(kit: Path, tmp_path: Path) -> None:
     (tmp_path / "broken.py").write_text(NO_FINDINGS, encoding="utf-8")
-    res = _run(kit, "--testee", f"{sys.executable} broken.py", "--name", "broken", "--junit", tmp_path / "j.xml",
-               cwd=tmp_path, check=False)
+    res = _run(kit, "--testee", f"{sys.executable} broken.py", "--name", "broken", "--capabilities", "validate",
+               "--junit", tmp_path / "j.xml", cwd=tmp_path, check=False)
     assert res.returncode == 1
     failed = {line.split(": ")[1] for line in res.stdout.splitlines() if line.startswith("broken: ")}
     assert failed == _expected_validate_failures()
@@ -182,7 +182,7 @@ def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytes
     failing = sorted(per_check[drop])
     assert len(failing) >= 2
     testee = f"{bin_ / 'python'} reader.py {drop}"
-    base = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader"]
+    base = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader", "--capabilities", "validate"]
     # --fix writes the list; then one listed case is dropped from it: that one fails, the rest are expected
     fixed = _run(*base, "--failure-list", "known.txt", "--fix", cwd=folder, check=False)
     assert "Traceback" not in fixed.stderr
@@ -223,3 +223,146 @@ def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytes
     assert f"cbf-conformance {props['kit.version']} (spec {props['spec.revision']})" in text.stdout
     # the matrix counts expected failures apart
     assert "(pass/fail/expected failure/skip)" in text.stdout
+
+
+# A testee that answers every operation with skipped (issue 35): it judges nothing.
+SKIP_ALL = """
+import json, sys
+for line in sys.stdin:
+    if json.loads(line).get("op") == "quit":
+        break
+    print(json.dumps({"skipped": True}), flush=True)
+"""
+# A reader that only decodes, with the cbf wheel's codec.
+DECODE_ONLY = """
+import json, sys
+import cbf
+for line in sys.stdin:
+    req = json.loads(line)
+    if req.get("op") == "quit":
+        break
+    if req.get("op") != "decode":
+        print(json.dumps({"skipped": True}), flush=True)
+        continue
+    try:
+        answer = {"ok": True, "result": cbf.to_canonical(cbf.decode(open(req["file"], "rb").read()))}
+    except cbf.CbfError as exc:
+        answer = {"ok": False, "error": {"kind": exc.kind, "offset": exc.offset, "message": str(exc)}}
+    print(json.dumps(answer), flush=True)
+"""
+
+
+def _stated(op: str) -> int:
+    """How many golden cases state an expectation for an operation (read from the cases)."""
+    wants = {"decode": lambda e: e.get("decode") is not None, "validate": lambda e: bool(e.get("validate")),
+             "encode": lambda e: bool(e.get("encode"))}
+    return sum(1 for exp in GOLDEN.glob("*.expect.yaml") if wants[op](load_yaml(exp)))
+
+
+def _judged_table(stdout: str) -> dict[str, str]:
+    lines = stdout.splitlines()
+    start = next(i for i, ln in enumerate(lines) if ln.startswith("judged "))
+    return {ln.split()[0]: " ".join(ln.split()[1:]) for ln in lines[start + 1:start + 4]}
+
+
+def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """From the wheels in a temporary folder: a testee that skips everything, and a decode-only
+    reader run as if it validated, both fail with one line naming what was not judged; the report
+    counts per capability; the decode-only reader passes once it says so (--capabilities decode),
+    and every report names that."""
+    work = tmp_path_factory.mktemp("judging")
+    _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
+         cwd=work)
+    shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "cbf-src",
+         cwd=work)
+    bin_ = clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
+    folder = work / "user"
+    folder.mkdir()
+    (folder / "skip.py").write_text(SKIP_ALL, encoding="utf-8")
+    (folder / "dec.py").write_text(DECODE_ONLY, encoding="utf-8")
+    kit_bin = bin_ / "cbf-conformance"
+    stated = {op: _stated(op) for op in ("decode", "validate", "encode")}
+    assert all(stated.values())
+
+    skip = _run(kit_bin, "--testee", f"{bin_ / 'python'} skip.py", "--name", "lazy", cwd=folder, check=False)
+    assert skip.returncode == 1 and "Traceback" not in skip.stderr
+    lines = [ln for ln in skip.stdout.splitlines() if ln.startswith("lazy: ")]
+    assert len(lines) == 1, skip.stdout[-3000:]  # one line, not one a case
+    assert "judged no decode and no validate and no encode case" in lines[0]
+    for op, n in stated.items():
+        assert f"{op} in {n} of {n} case(s)" in lines[0]
+    assert _judged_table(skip.stdout) == {op: f"0/{n}" for op, n in stated.items()}
+    # a failure list naming every case cannot make a run that judged nothing pass
+    fixed = _run(kit_bin, "--testee", f"{bin_ / 'python'} skip.py", "--name", "lazy", "--failure-list", "known.txt",
+                 "--fix", cwd=folder, check=False)
+    assert fixed.returncode == 1 and "judged no decode" in fixed.stdout
+    again = _run(kit_bin, "--testee", f"{bin_ / 'python'} skip.py", "--name", "lazy", "--failure-list", "known.txt",
+                 cwd=folder, check=False)
+    assert again.returncode == 1 and re.search(r"lazy: FAIL judged no decode and no validate and no encode case",
+                                               again.stdout)
+
+    decode_only = [kit_bin, "--testee", f"{bin_ / 'python'} dec.py", "--name", "dec"]
+    as_full = _run(*decode_only, "--json", cwd=folder, check=False)
+    assert as_full.returncode == 1
+    one = [ln for ln in as_full.stderr.splitlines() if ln.startswith("dec: ")]
+    assert len(one) == 1, one
+    assert "judged no validate and no encode case" in one[0] and "--capabilities decode" in one[0], one
+    judged = json.loads(as_full.stdout)["bindings"]["dec"]["judged"]
+    assert {op: (j["judged"], j["skipped"]) for op, j in judged.items()} == {
+        "decode": (stated["decode"], 0), "validate": (0, stated["validate"]), "encode": (0, stated["encode"])}
+
+    declared = _run(*decode_only, "--capabilities", "decode", "--junit", "j.xml", "--json", cwd=folder, check=False)
+    assert declared.returncode == 0, declared.stderr[-3000:]
+    report = json.loads(declared.stdout)["bindings"]["dec"]
+    assert report["capabilities"] == ["decode"]
+    assert report["judged"]["decode"]["judged"] == stated["decode"] and report["judged"]["validate"]["judged"] == 0
+    table = _judged_table(declared.stderr)
+    assert table["decode"] == f"{stated['decode']}/{stated['decode']}"
+    assert table["validate"] == table["encode"] == "not declared"
+    props = {p.get("name"): p.get("value") for p in ET.parse(folder / "j.xml").getroot().iter("property")}
+    assert props["capabilities"] == "decode" and props["judged.validate"] == f"0/{stated['validate']}"
+
+
+def test_an_empty_testee_and_an_endless_failure_list_are_refused(kit: Path, tmp_path: Path) -> None:
+    """`--testee ""` (a CI line with an unset variable) is refused, never replaced by anything; a
+    failure list that is not a regular file, or larger than a list can be, is one line, at once."""
+    for empty in ("", "   "):
+        assert "--testee: empty command" in _one_line_2(_run(kit, "--testee", empty, cwd=REPO, check=False))
+    (tmp_path / "t.py").write_text(SKIP_ALL, encoding="utf-8")
+    testee = f"{sys.executable} t.py"
+    assert "not a regular file" in _one_line_2(_run(kit, "--testee", testee, "--failure-list", "/dev/zero",
+                                                    cwd=tmp_path, check=False))
+    with open(tmp_path / "huge.txt", "wb") as f:
+        f.truncate(64 * 1024 * 1024)  # sparse: 64 MiB of NULs, no disk
+    assert "larger than" in _one_line_2(_run(kit, "--testee", testee, "--failure-list", "huge.txt", cwd=tmp_path,
+                                             check=False))
+    for bad in ("decode,print", "", "encode,validate"):
+        assert "--capabilities" in _one_line_2(_run(kit, "--testee", testee, "--capabilities", bad, cwd=tmp_path,
+                                                    check=False))
+
+
+def test_layouts_json_states_the_byte_layouts_of_the_model() -> None:
+    """layouts.json (shipped beside PROTOCOL.md) says what the model says: every header's fields tile
+    it, every command layout's arguments fit its size, codes and offsets as the spec has them."""
+    from cbfgen.loader import load
+
+    spec = load(REPO / "spec" / "cbf.yaml")
+    doc = json.loads((REPO / "generated" / "python" / "cbf" / "layouts.json").read_text(encoding="utf-8"))
+    assert doc["spec"] == spec.revision and doc["byte_order"] == spec.meta["byte_order"]
+    assert [v["id"] for v in doc["versions"]] == [v.id for v in spec.versions]
+    for hid, h in spec.headers.items():
+        got = doc["headers"][hid]
+        assert got["size"] == h.size
+        assert [(f["name"], f["offset"], f["size"]) for f in got["fields"]] == [(f.name, f.offset, f.size)
+                                                                            for f in h.fields]
+        assert sum(f["size"] for f in got["fields"]) == h.size
+    assert doc["record_head"]["size"] == spec.record.head_size
+    by_name = {c["name"]: c for c in doc["commands"]}
+    for c in spec.commands:
+        assert by_name[c.name]["code"] == c.code
+        for lay, got in zip(c.layouts, by_name[c.name]["layouts"], strict=True):
+            assert got["size"] == lay.size and sorted(got["versions"]) == sorted(lay.versions)
+            assert all(a["offset"] + a["size"] <= lay.size or "repeat" in a for a in got["args"])
+    assert {f["field"] for f in doc["checksums"]["fields"]} == {f.field for f in spec.checksums.fields}

@@ -154,7 +154,8 @@ def test_encode_sends_back_what_the_decode_step_got() -> None:
     cases = [c for c in load_cases(golden) if c.expect.get("encode") and c.cbf.stat().st_size < 4096]
     with_decode = next(c for c in cases if c.expect.get("decode") is not None)
     rec = Recorder()
-    assert run_case(rec, with_decode) == ("pass", "")  # type: ignore[arg-type]
+    outcome = run_case(rec, with_decode)  # type: ignore[arg-type]
+    assert (outcome.status, outcome.message, outcome.judged) == ("pass", "", ("decode", "validate", "encode"))
     ops = [r["op"] for r in rec.asked]
     assert ops.count("decode") == 1 and "encode" in ops
     decoded = testee.handle({"op": "decode", "file": str(with_decode.cbf)})["result"]

@@ -33,5 +33,5 @@ def test_c_header_names_version_revision_and_licence() -> None:
 def test_pyproject_takes_version_and_licence_from_cbfgen() -> None:
     project = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))
     assert "version" in project["project"]["dynamic"]
-    assert project["tool"]["setuptools"]["dynamic"]["version"] == {"attr": "cbfgen.__version__"}
+    assert project["tool"]["setuptools"]["dynamic"]["version"] == {"attr": "cbf.version.__version__"}
     assert project["project"]["license"] == {"text": cbfgen.__license__}

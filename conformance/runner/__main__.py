@@ -1,8 +1,9 @@
-"""cbf-conformance --testee "CMD ARGS" [--failure-list FILE [--fix]] [--junit FILE] [--json]
+"""cbf-conformance --testee "CMD ARGS" [--capabilities OPS] [--failure-list FILE [--fix]] [--junit FILE] [--json]
 
 Runs the golden cases against a testee that speaks PROTOCOL.md, prints the matrix (case group x
-pass/fail/expected failure/skip), and fails on an unlisted failure, a listed case that passes, or
-a listed case that fails with a different message. Exit 0 conformant, 1 failures, 2 bad usage
+pass/fail/expected failure/skip) and per capability how many cases were judged, and fails on an
+unlisted failure, a listed case that passes, a listed case that fails with a different message, or
+a testee judged on no case of an operation it offers (--capabilities). Exit 0 conformant, 1 failures, 2 bad usage
 (a missing testee program, an unreadable failure list, a bad option: one line on stderr).
 
 In this repository, `python -m conformance.runner` runs every binding of bindings.yaml and writes
@@ -19,7 +20,7 @@ from typing import NoReturn
 
 from .about import version_line
 from .run import DEADLINE, DEFAULT_GOLDEN, ROOT, TIMEOUT, main_run
-from .testee import MAX_ANSWER
+from .testee import CAPABILITIES, MAX_ANSWER
 
 
 class _Parser(argparse.ArgumentParser):
@@ -46,6 +47,12 @@ def parser() -> argparse.ArgumentParser:
                     help="print the kit version and the spec revision, and exit")
     ap.add_argument("--testee", help="your testee command, split like a shell command, run in this folder")
     ap.add_argument("--name", default="testee", help="the testee's name in reports (default: %(default)s)")
+    ap.add_argument("--capabilities", default=",".join(CAPABILITIES), metavar="OPS",
+                    help="the operations your testee offers, comma-separated (default: %(default)s): only these "
+                         "are asked, and each must be answered; a decode-only reader runs with --capabilities "
+                         "decode (every report names them). A run fails when its testee was judged on no case of "
+                         "an operation it offers, or answered one with skipped where the failure list does not "
+                         "name the case")
     ap.add_argument("--failure-list", type=Path, metavar="FILE",
                     help="your known failures, `case message` lines (# comments); the file must exist")
     ap.add_argument("--fix", action="store_true",
@@ -76,6 +83,8 @@ def main(argv: list[str] | None = None) -> int:
         args = ap.parse_args(argv)
         if args.testee is None and not args.bindings.exists():
             ap.error("--testee is required (the command that starts your testee)")
+        if args.capabilities != ",".join(CAPABILITIES) and args.testee is None:
+            ap.error("--capabilities goes with --testee (bindings.yaml names each binding's own)")
         if args.failure_list is not None and args.testee is None:
             ap.error("--failure-list goes with --testee")
         if args.fix and args.testee is not None and args.failure_list is None:

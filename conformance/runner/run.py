@@ -8,6 +8,7 @@ import json
 import os
 import shlex
 import shutil
+import stat
 import sys
 import time
 import xml.etree.ElementTree as ET
@@ -19,7 +20,7 @@ import yaml
 
 from .about import SPEC_REVISION, VERSION, version_line
 from .compare import findings_difference, first_difference
-from .testee import Binding, Testee, TesteeError, install_handlers
+from .testee import CAPABILITIES, Binding, Testee, TesteeError, install_handlers
 
 # libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster.
 _YAML_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
@@ -64,32 +65,75 @@ def load_cases(golden: Path, prefixes: list[str] | None = None) -> list[Case]:
 
 def load_bindings(path: Path) -> list[Binding]:
     data = yaml.load(path.read_text(encoding="utf-8"), Loader=_YAML_LOADER)
-    return [Binding(b["name"], list(b["command"]), dict(b.get("env", {})), list(b.get("requires", [])), REPO)
+    return [Binding(b["name"], list(b["command"]), dict(b.get("env", {})), list(b.get("requires", [])), REPO,
+                    parse_capabilities(",".join(b.get("capabilities", CAPABILITIES))))
             for b in data["bindings"]]
 
 
+def parse_capabilities(text: str) -> tuple[str, ...]:
+    """``decode,validate,encode`` or a part of it, in the protocol's order. Encode sends back the
+    testee's own decode, so it needs decode. Raises ValueError with the reason."""
+    names = [n.strip() for n in text.split(",") if n.strip()]
+    unknown = [n for n in names if n not in CAPABILITIES]
+    if unknown:
+        raise ValueError(f"unknown capability {unknown[0]!r} (one or more of {', '.join(CAPABILITIES)})")
+    if not names:
+        raise ValueError(f"no capability named (one or more of {', '.join(CAPABILITIES)})")
+    if "encode" in names and "decode" not in names:
+        raise ValueError("encode needs decode (the runner re-encodes the testee's own decode)")
+    return tuple(c for c in CAPABILITIES if c in names)
+
+
 # -- one case, one binding ---------------------------------------------------------
-def run_case(t: Testee, case: Case) -> tuple[str, str]:
-    """('pass'|'fail'|'skip', message) for one case on one testee."""
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """One case on one testee: its status and message, and which operations were judged and which
+    the testee answered with "skipped" (per capability, what every report counts)."""
+
+    status: str  # pass | fail | skip
+    message: str
+    judged: tuple[str, ...] = ()
+    skipped: tuple[str, ...] = ()
+
+    def as_result(self) -> dict[str, Any]:
+        return {"status": self.status, "message": self.message, "judged": list(self.judged),
+                "skipped": list(self.skipped)}
+
+
+SKIPPED = "skipped"  # the message of a case whose declared operations the testee answered with skipped
+
+
+def run_case(t: Testee, case: Case, capabilities: tuple[str, ...] = CAPABILITIES) -> Outcome:
+    """One case on one testee. Only the operations of ``capabilities`` are asked; an operation of
+    them that the testee answers with ``{"skipped": true}`` fails the case (``OP: skipped``: a
+    failure list may name it), so a testee cannot pass by answering nothing. A case that asks none
+    of the testee's capabilities is a skip."""
     path = str(case.cbf)
-    skipped, ran = 0, 0
+    judged: list[str] = []
+    skipped: list[str] = []
     decoded: dict[str, Any] = {}  # the decode step's answer, which the encode step sends back
-    for step in ("decode", "validate", "encode"):
+    for step in CAPABILITIES:
+        if step not in capabilities:
+            continue
         try:
             result = _step(t, case, step, path, decoded)
         except TesteeError as exc:
-            return "fail", f"{step}: {exc}"
+            return Outcome("fail", f"{step}: {exc}", tuple(judged), tuple(skipped))
         if result is None:
             continue
         if result == "skipped":
-            skipped += 1
+            skipped.append(step)
             continue
-        ran += 1
+        judged.append(step)
         if result != "ok":
-            return "fail", f"{step}: {result}"
-    if ran == 0 and skipped:
-        return "skip", "every operation skipped"
-    return "pass", ""
+            return Outcome("fail", f"{step}: {result}", tuple(judged), tuple(skipped))
+    if skipped:
+        return Outcome("fail", f"{', '.join(skipped)}: {SKIPPED}", tuple(judged), tuple(skipped))
+    if not judged:
+        return Outcome("skip", f"asks none of the testee's capabilities ({', '.join(capabilities)})")
+    return Outcome("pass", "", tuple(judged))
 
 
 def _step(t: Testee, case: Case, step: str, path: str, decoded: dict[str, Any]) -> str | None:
@@ -191,12 +235,28 @@ class FailureListError(Exception):
     """A failure list that cannot be read: one line, exit 2."""
 
 
+MAX_FAILURE_LIST = 4 * 1024 * 1024  # bytes: a line per golden case is a few hundred; 4 MiB is far beyond any list
+
+
+def _read_bounded(path: Path) -> str:
+    """A failure list's text: a regular file (a FIFO, a device such as /dev/zero, a folder is
+    refused before it is read) of at most MAX_FAILURE_LIST bytes, read no further than that."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
+    with os.fdopen(fd, "rb") as f:
+        if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+            raise FailureListError(f"{path}: not a regular file")
+        data = f.read(MAX_FAILURE_LIST + 1)
+    if len(data) > MAX_FAILURE_LIST:
+        raise FailureListError(f"{path}: larger than {MAX_FAILURE_LIST // (1 << 20)} MiB: not a failure list")
+    return data.decode("utf-8")
+
+
 def read_failures(path: Path, required: bool = False) -> dict[str, str]:
     """``case message`` lines (``#`` comments). A missing file is an empty list unless ``required``
     (a --failure-list the user named must exist: a typo must not turn every failure green)."""
     out: dict[str, str] = {}
     try:
-        text = path.read_text(encoding="utf-8")
+        text = _read_bounded(path)
     except FileNotFoundError:
         if required:
             raise FailureListError(f"{path}: no such file") from None
@@ -270,8 +330,8 @@ def _testee_binding(args: argparse.Namespace) -> Binding:
         cmd = shlex.split(args.testee)
     except ValueError as exc:
         raise FailureListError(f"--testee: cannot split {args.testee!r} ({exc})") from None
-    if not cmd:
-        raise FailureListError("--testee: empty command")
+    if not cmd:  # `--testee "$UNSET"` in a CI line must not run something else and pass
+        raise FailureListError("--testee: empty command (name the program that starts your testee)")
     prog = cmd[0]
     if os.sep in prog:
         if not Path(prog).is_file():
@@ -280,13 +340,17 @@ def _testee_binding(args: argparse.Namespace) -> Binding:
             raise FailureListError(f"--testee: {prog}: not executable")
     elif shutil.which(prog) is None:
         raise FailureListError(f"--testee: {prog}: no such program on PATH")
-    return Binding(args.name, cmd, cwd=Path.cwd())
+    try:
+        capabilities = parse_capabilities(args.capabilities)
+    except ValueError as exc:
+        raise FailureListError(f"--capabilities: {exc}") from None
+    return Binding(args.name, cmd, cwd=Path.cwd(), capabilities=capabilities)
 
 
 def main_run(args: argparse.Namespace) -> int:
     human = sys.stderr if args.json else sys.stdout
     try:
-        bindings = [_testee_binding(args)] if args.testee else load_bindings(args.bindings)
+        bindings = [_testee_binding(args)] if args.testee is not None else load_bindings(args.bindings)
         if args.failure_list is not None and not (args.fix and not args.failure_list.exists()):
             read_failures(args.failure_list, required=True)
         for option, path in (("--junit", args.junit), ("--report", args.report)):
@@ -329,11 +393,11 @@ def main_run(args: argparse.Namespace) -> int:
             report["bindings"][b.name] = {"available": False, "results": results}
             continue
         results = _run_binding(b, cases, args.timeout, deadline, notes)
-        report["bindings"][b.name] = {"available": True, "results": results}
+        report["bindings"][b.name] = {"available": True, "capabilities": list(b.capabilities), "results": results}
         fpath = args.failure_list if args.failure_list else args.failures / f"{b.name}.txt"
         if args.fix:
             rewrite = (f"cbf-conformance --testee {shlex.quote(args.testee)} --failure-list {fpath.name} --fix"
-                       if args.testee else "python -m conformance.runner --fix")
+                       if args.testee is not None else "python -m conformance.runner --fix")
             write_failures(fpath, {n: r["message"] for n, r in results.items() if r["status"] == "fail"}, b.name,
                            rewrite)
         try:
@@ -344,14 +408,19 @@ def main_run(args: argparse.Namespace) -> int:
         judge(results, listed, fpath.name)
     for b_report in report["bindings"].values():
         b_report["summary"] = counts(b_report["results"])
+        if b_report["available"]:
+            b_report["judged"] = judged_per_capability(b_report["results"], cases, b_report["capabilities"])
+    unjudged = [line for name, b_report in report["bindings"].items() if b_report["available"]
+                for line in [judging_problem(name, b_report)] if line]
     total = counts({f"{n}/{c}": r for n, b in report["bindings"].items() for c, r in b["results"].items()})
     report["summary"] = total
     print(version_line(), file=human)
     _print_matrix(report, cases, human)
+    _print_judged(report, human)
     # The committed report is the evidence of a full run: a partial run (some
     # bindings, some cases, a scratch build, an outside testee) writes only where it is told to.
     out: Path | None = args.report
-    if out is None and not (args.binding or args.case or args.python_path or args.testee) and ROOT.joinpath(
+    if out is None and not (args.binding or args.case or args.python_path or args.testee is not None) and ROOT.joinpath(
             "bindings.yaml").exists():
         out = ROOT / "report.json"
     if out is not None:
@@ -360,17 +429,61 @@ def main_run(args: argparse.Namespace) -> int:
         os.replace(tmp, out)
     if args.junit:
         write_junit(args.junit, report, cases)
+    # a case failing only because the testee skipped an operation it declared is said once, in the
+    # binding's judging line (unjudged), not once a case
     problems = [f"{n}: {c}: FAIL {r['message']}" for n, b in report["bindings"].items()
-                for c, r in b["results"].items() if kind(r) == "fail" and not r.get("not_run")]
-    report["problems"] = problems + notes
+                for c, r in b["results"].items() if kind(r) == "fail" and not r.get("not_run")
+                and not r["message"].endswith(f": {SKIPPED}")]
+    report["problems"] = problems + notes + unjudged
     if args.json:
         json.dump(report, sys.stdout, indent=1, sort_keys=True)
         sys.stdout.write("\n")
-    for p in problems + notes:
+    for p in problems + notes + unjudged:
         print(p, file=human)
     print(f"conformance: {total['passed']} passed, {total['failed']} failed, {total['expected_failures']} expected "
           f"failure(s), {total['skipped']} skipped", file=human)
-    return 1 if total["failed"] else 0
+    return 1 if total["failed"] or unjudged else 0
+
+
+def judged_per_capability(results: dict[str, dict[str, Any]], cases: list[Case],
+                          capabilities: list[str]) -> dict[str, dict[str, int]]:
+    """Per operation: how many cases state an expectation for it (``cases``), how many the testee's
+    answers were judged on (``judged``) and how many it answered with skipped (``skipped``; an
+    operation outside its capabilities is never asked: 0 judged, 0 skipped)."""
+    out: dict[str, dict[str, int]] = {}
+    for cap in CAPABILITIES:
+        out[cap] = {"cases": sum(1 for c in cases if states(c.expect, cap)),
+                    "judged": sum(1 for r in results.values() if cap in r.get("judged", ())),
+                    "skipped": sum(1 for r in results.values() if cap in r.get("skipped", ())),
+                    "declared": int(cap in capabilities)}
+    return out
+
+
+def states(expect: dict[str, Any], op: str) -> bool:
+    """Whether a case's expectation states an outcome for an operation (what run_case then asks)."""
+    return expect.get("decode") is not None if op == "decode" else bool(expect.get(op))
+
+
+def judging_problem(name: str, b_report: dict[str, Any]) -> str:
+    """One line when the testee was judged on nothing it declared, or skipped operations its failure
+    list does not name; "" when its answers were judged as declared."""
+    results, judged, caps = b_report["results"], b_report["judged"], b_report["capabilities"]
+    none = [c for c in caps if judged[c]["cases"] and not judged[c]["judged"]]
+    unlisted: dict[str, int] = {}
+    for r in results.values():
+        if kind(r) == "fail" and r["message"].endswith(f": {SKIPPED}"):
+            for c in r.get("skipped", ()):
+                unlisted[c] = unlisted.get(c, 0) + 1
+    if not none and not unlisted:
+        return ""
+    parts = []
+    if none:
+        parts.append(f"judged no {' and no '.join(none)} case")
+    if unlisted:
+        parts.append("skipped " + ", ".join(f"{c} in {n} of {judged[c]['cases']} case(s)" for c, n in unlisted.items())
+                     + " that its failure list does not name")
+    return (f"{name}: FAIL {'; '.join(parts)}: a testee answers every operation of its capabilities "
+            f"({','.join(caps)}); one that lacks one says so with --capabilities (e.g. --capabilities decode)")
 
 
 def _run_binding(b: Binding, cases: list[Case], timeout: float, deadline: float,
@@ -389,13 +502,14 @@ def _run_binding(b: Binding, cases: list[Case], timeout: float, deadline: float,
                 results[c.name] = {"status": "fail", "message": f"not run: {stopped}", "not_run": True}
                 continue
             try:
-                status, message = run_case(t, c)
+                outcome = run_case(t, c, b.capabilities)
             except OSError as exc:  # the testee cannot be started
-                status, message = "fail", f"testee cannot start: {exc.strerror or exc}"
+                outcome = Outcome("fail", f"testee cannot start: {exc.strerror or exc}")
             surplus = t.drain()
             if surplus:  # this case's testee answered more than it was asked: the case fails, no later one
-                status, message = "fail", surplus if status != "fail" else f"{surplus}; before it: {message}"
-            results[c.name] = {"status": status, "message": message}
+                outcome = Outcome("fail", surplus if outcome.status != "fail" else f"{surplus}; before it: "
+                                  f"{outcome.message}", outcome.judged, outcome.skipped)
+            results[c.name] = outcome.as_result()
             if t.consecutive_timeouts >= MAX_TIMEOUTS:
                 stopped = f"{b.name} stopped after {MAX_TIMEOUTS} timeouts in a row"
         if stopped is not None:
@@ -420,6 +534,10 @@ def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
                            ("spec.revision", report["kit"]["spec_revision"]),
                            ("expected_failures", str(n["expected_failures"]))):
             ET.SubElement(props, "property", name=key, value=value)
+        if "capabilities" in b:
+            ET.SubElement(props, "property", name="capabilities", value=",".join(b["capabilities"]))
+            for cap, got in b["judged"].items():
+                ET.SubElement(props, "property", name=f"judged.{cap}", value=f"{got['judged']}/{got['cases']}")
         for c in cases:
             r = results.get(c.name)
             if r is None:
@@ -454,3 +572,21 @@ def _print_matrix(report: dict[str, Any], cases: list[Case], out: TextIO) -> Non
             row += f"  {cell:>16}"
         print(row, file=out)
     print("(pass/fail/expected failure/skip)", file=out)
+
+
+def _print_judged(report: dict[str, Any], out: TextIO) -> None:
+    """Per capability, the cases each testee's answers were judged on: judged/cases that state the
+    operation, or "not declared" when the testee does not offer it (--capabilities)."""
+    names = [n for n, b in report["bindings"].items() if b["available"]]
+    if not names:
+        return
+    width = 10
+    print("judged".ljust(width) + "".join(f"  {n:>16}" for n in names), file=out)
+    for cap in CAPABILITIES:
+        row = cap.ljust(width)
+        for n in names:
+            got = report["bindings"][n]["judged"][cap]
+            cell = f"{got['judged']}/{got['cases']}" if got["declared"] else "not declared"
+            row += f"  {cell:>16}"
+        print(row, file=out)
+    print("(cases whose answers were judged / cases that state the operation)", file=out)

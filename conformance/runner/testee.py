@@ -34,6 +34,7 @@ from typing import IO, Any
 MAX_ANSWER = 64 * 1024 * 1024  # bytes of one answer line (PROTOCOL.md, "Answers")
 _EOF, _OVERSIZE = b"", b"\0oversize"
 _LIVE: weakref.WeakSet[Testee] = weakref.WeakSet()
+CAPABILITIES = ("decode", "validate", "encode")  # the protocol's operations, in the order a case runs them
 
 
 class TesteeError(RuntimeError):
@@ -51,6 +52,9 @@ class Binding:
     env: dict[str, str] = field(default_factory=dict)
     requires: list[str] = field(default_factory=list)
     cwd: Path = Path.cwd()
+    # the protocol operations the testee offers (decode, validate, encode): only these are asked, and
+    # each must be answered (PROTOCOL.md, "Capabilities")
+    capabilities: tuple[str, ...] = CAPABILITIES
 
     def missing(self) -> list[str]:
         return [r for r in self.requires if not (self.cwd / r).exists()]

@@ -23,7 +23,7 @@
  *     // rc == 0: the end; rc < 0: cbf_strerror(rc). cbf_validate() checks the rest.
  *
  * Version: CBF_TOOLKIT_VERSION, spec CBF_SPEC_REVISION (below).
- * SPDX-License-Identifier: LicenseRef-Proprietary
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Byte order: little-endian (N1). Floats: IEEE-754 binary32 (N2).
  * Strings: string(N) is N bytes, NUL-padded, no terminator when full (N4);

@@ -3,6 +3,7 @@
     python -m cbfgen [--spec spec/cbf.yaml] [--out generated] [--only EMITTER] [--check-spec]
                      [--no-ksc] [--golden DIR] [--report FILE]
     python -m cbfgen diff OLD.yaml NEW.yaml [--json]
+    python -m cbfgen changelog [--check]         # CHANGELOG.md from the release tags (cbfgen.changelog)
     python -m cbfgen --version
 
 Every binding or none: with the kaitai emitter, the Kaitai parsers are compiled too (cbfgen.ksc
@@ -75,6 +76,10 @@ def diff_main(argv: list[str]) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["changelog"]:
+        from .changelog import main as changelog_main  # only this subcommand needs git
+
+        return changelog_main(argv[1:])
     if argv[:1] == ["diff"]:
         try:
             return diff_main(argv[1:])

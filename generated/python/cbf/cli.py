@@ -944,6 +944,7 @@ def parser() -> argparse.ArgumentParser:
     i.add_argument("--json", action="store_true", help=f"print JSON (schema: {_schema_path('info')})")
     i.set_defaults(func=cmd_info)
     _tool_parsers(sub, profiles, writable)
+    _hexdump_parser(sub, profiles)
     return p
 
 
@@ -1009,6 +1010,39 @@ def _tool_parsers(sub: Any, profiles: list[str], writable: list[str]) -> None:
                    help="colour moves by cutting / non-cutting (default), phase, shape or cutter")
     g.add_argument("--title", help="figure title (default: the file name)")
     g.set_defaults(func=cmd_plot)
+
+
+# -- cbf hexdump (issue 35, point 7): the golden pages' annotated view of any file, findings marked ---------
+def _hexdump_parser(sub: Any, profiles: list[str]) -> None:
+    h = sub.add_parser("hexdump", help="annotated hex of a file: every header field, record head and argument "
+                                       "with its value, findings marked (the golden pages' view)",
+                       description="Print FILE as hex, 16 bytes a row, each run of bytes named by the field it "
+                                   "is and its value; a row holding a finding's offset ends with \u25c0 and the "
+                                   "finding. The same view the format reference draws for its golden files.")
+    h.add_argument("file", help="CBF file, or - for stdin")
+    h.add_argument("--record", type=_count, metavar="N", help="only record N (0-based)")
+    h.add_argument("--header", action="store_true", help="only the header")
+    h.add_argument("--max-lines", type=_count, default=0, metavar="N", help="stop after N lines (default 0: all)")
+    h.add_argument("--profile", choices=profiles, default=profiles[0], help="the profile findings are judged by")
+    h.add_argument("--no-findings", action="store_true", help="do not validate; no marks")
+    h.set_defaults(func=cmd_hexdump)
+
+
+def cmd_hexdump(a: argparse.Namespace) -> int:
+    from . import hexdump
+    from .validation import validate
+
+    data = _read(a.file, _max_file_size())
+    marks: list[hexdump.Mark] = []
+    if not a.no_findings:
+        for f in validate(data, profile=a.profile):
+            text = f"{f.severity} {f.check}" + (f" (record {f.record})" if f.record is not None else "") + \
+                f": {f.message}"
+            marks.append(hexdump.Mark(f.offset if f.offset is not None else len(data),
+                                      "".join(c if c.isprintable() else f"\\x{ord(c):02x}" for c in text)))
+    _out(hexdump.dump(hexdump.for_runtime(), data, max_lines=a.max_lines or None, only_record=a.record,
+                      header_only=a.header, marks=marks) + "\n")
+    return EXIT_FINDINGS if any(m.text.startswith("error ") for m in marks) else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:

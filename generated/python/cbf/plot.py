@@ -125,7 +125,7 @@ def figure(model: Cbf, mode: str = "cut", title: str = "", steps: Iterable[G.Ste
         from matplotlib.lines import Line2D
         from mpl_toolkits.mplot3d.art3d import Line3DCollection  # type: ignore[import-untyped]
     except ImportError:
-        raise PlotUnavailable("cbf plot needs matplotlib: pip install 'cbf[plot]'") from None
+        raise PlotUnavailable("cbf plot needs matplotlib: pip install matplotlib") from None
     path = path_of(model, mode, steps)
     colors = _colors(path, mode)
     center, span = _cube(path)

@@ -158,6 +158,10 @@ class CommandInfo:
     # M2: the machine state the command sets: state -> argument name, or a constant.
     sets: dict[str, str | bool] | None = None
 
+    def __repr__(self) -> str:
+        """Short: a list of records' commands prints one word each, not every layout of each."""
+        return f"<command {self.name} 0x{self.code:02X}>"
+
     def layouts_for(self, version: str) -> tuple[LayoutInfo, ...]:
         return self.by_version.get(version, ())
 

@@ -1,35 +1,41 @@
-"""Annotated hex of a CBF file, read from its bytes with the spec model.
+"""Annotated hex of a CBF file for the docs' golden pages, drawn by the codec's own dump.
 
-The file is split into runs: each header field of the layout its version
-selects, then each record's head fields and argument fields (the layout is
-the one of the command code whose size matches the record's nb byte), then
-anything that frames no record. Each run is printed hexdump-style: the
-offset, up to ROW bytes, an ASCII column, and after a gutter the field the
-bytes belong to with its value. A run longer than a row carries its name on
-every row, marked "(cont.)". Nothing here knows a command, a field or a
-size: all of it comes from the model.
+The view itself (runs, values, rows, marks) is the `cbf` runtime's hexdump.py
+(generator/cbfgen/emit/python/runtime/hexdump.py), the one `cbf hexdump` prints: this module loads
+that file alone (it imports only the standard library) and hands it the layouts of the spec model
+being generated from, so the pages and the command draw the same view of the same bytes, and a
+revised spec's pages follow its model. `records` frames the records for the pages' structure.
 """
 
 from __future__ import annotations
 
-import struct
-from collections.abc import Iterator
+import importlib.util
+import sys
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from decimal import Decimal
+from functools import cache
+from pathlib import Path
+from types import ModuleType
+from typing import Any
 
 from ...model import Command, Field, Layout, Spec
 
-ROW = 16
+RUNTIME_FILE = Path(__file__).resolve().parents[1] / "python" / "runtime" / "hexdump.py"
 
 
-@dataclass(frozen=True)
-class Run:
-    """Bytes [offset, offset + len(data)) and what they are."""
+@cache
+def _rt() -> ModuleType:
+    """The runtime's hexdump.py, loaded alone (not as part of the cbf package)."""
+    name = "cbfgen_runtime_hexdump"
+    spec = importlib.util.spec_from_file_location(name, RUNTIME_FILE)
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod  # dataclasses resolve their module by name
+    spec.loader.exec_module(mod)
+    return mod
 
-    offset: int
-    data: bytes
-    label: str
-    record: int | None = None  # the record index, None for the header and unframed bytes
+
+ROW: int = _rt().ROW
 
 
 @dataclass(frozen=True)
@@ -41,40 +47,47 @@ class Record:
     raw_args: bytes
 
 
-def _fmt(spec: Spec) -> str:
-    return "<" if spec.meta["byte_order"] == "little" else ">"
-
-
 def shortest_float(bits: int) -> str:
     """The fewest digits that give back the same binary32."""
-    v: float = struct.unpack("<f", struct.pack("<I", bits))[0]
-    if v != v or v in (float("inf"), float("-inf")):
-        return repr(v)
-    text = repr(v)
-    for p in range(1, 10):
-        cand = f"{v:.{p}g}"
-        if struct.unpack("<I", struct.pack("<f", float(cand)))[0] == bits:
-            text = cand
-            break
-    return format(Decimal(text), "f") if "e" in text else text
+    return str(_rt().shortest_float(bits))
 
 
-def value_text(spec: Spec, f: Field, raw: bytes) -> str:
-    """The value of a field's bytes as the reader sees it."""
-    if len(raw) < f.size:
-        return "(truncated)"
-    if f.kind == "float":
-        words = struct.unpack(_fmt(spec) + "I" * f.count, raw)
-        vals = [shortest_float(w) for w in words]
-        return vals[0] if f.count == 1 else "<" + ", ".join(vals) + ">"
-    if f.ftype.is_integer:
-        code = f.ftype.struct_code or ""
-        vals_u = struct.unpack(_fmt(spec) + code * f.count, raw)
-        hexa = f.magic is not None or f.role in ("code", "code_copy")
-        return ", ".join(f"0x{u:0{2 * f.elem_size}X}" if hexa else str(u) for u in vals_u)
-    if f.kind == "string":
-        return repr(raw.rstrip(bytes([spec.meta["string_padding"]])).decode("latin-1"))
-    return "all zero" if not any(raw) else f"{len(raw)} bytes"
+def _cell(f: Field) -> Any:
+    return _rt().Cell(f.name, f.kind, f.offset, f.elem_size, f.count,
+                      f.magic is not None or f.role in ("code", "code_copy"))
+
+
+_LAYOUTS: dict[int, tuple[Spec, Any]] = {}  # id(spec) -> (spec, its Layouts): a model is not hashable
+
+
+def layouts(spec: Spec) -> Any:
+    """The runtime dump's Layouts, from the model (made once a model)."""
+    got = _LAYOUTS.get(id(spec))
+    if got is None or got[0] is not spec:
+        got = _LAYOUTS[id(spec)] = (spec, _layouts(spec))
+    return got[1]
+
+
+def _layouts(spec: Spec) -> Any:
+    rt = _rt()
+
+    def header(version: str) -> tuple[int, Sequence[Any]]:
+        h = spec.header_for(version)
+        return h.size, tuple(_cell(f) for f in h.fields)
+
+    by_code = {c.code: c for c in spec.commands}
+
+    def command(code: int, version: str, nb: int) -> tuple[str, Sequence[Any] | None] | None:
+        cmd = by_code.get(code)
+        if cmd is None:
+            return None
+        lays = [x for lay in cmd.layouts_for(version) if (x := lay.sized(nb)) is not None]
+        return cmd.name, (tuple(_cell(a) for a in lays[0].args) if lays else None)
+
+    rec = spec.record
+    code, nb = rec.by_role("code"), rec.by_role("arg_size")
+    return rt.Layouts(spec.meta["byte_order"], spec.meta["string_padding"], lambda d: version_of(spec, d), header,
+                      rec.head_size, tuple(_cell(f) for f in rec.fields), _cell(code), _cell(nb), command)
 
 
 def version_of(spec: Spec, data: bytes) -> str:
@@ -115,59 +128,13 @@ def records(spec: Spec, data: bytes) -> Iterator[Record]:
         index += 1
 
 
-def runs(spec: Spec, data: bytes) -> Iterator[Run]:
-    """Every byte of the file in one run, in order."""
-    version = version_of(spec, data)
-    header = spec.header_for(version)
-    for f in header.fields:
-        raw = data[f.offset:f.end]
-        if raw:
-            yield Run(f.offset, raw, f"header {f.name} = {value_text(spec, f, raw)}")
-    pos = header.size
-    for r in records(spec, data):
-        name = r.command.name if r.command else "unknown code"
-        for f in spec.record.fields:
-            raw = data[r.offset + f.offset:r.offset + f.end]
-            yield Run(r.offset + f.offset, raw, f"#{r.index} {name} {f.name} = {value_text(spec, f, raw)}",
-                      r.index)
-        base = r.offset + spec.record.head_size
-        if r.layout is not None:
-            for f in r.layout.args:
-                raw = r.raw_args[f.offset:f.end]
-                yield Run(base + f.offset, raw, f"#{r.index} {name} {f.name} = {value_text(spec, f, raw)}",
-                          r.index)
-        elif r.raw_args:
-            yield Run(base, r.raw_args, f"#{r.index} {name} arguments (no layout of {len(r.raw_args)} bytes)",
-                      r.index)
-        pos = base + len(r.raw_args)
-    if pos < len(data):
-        yield Run(pos, data[pos:], "bytes that frame no whole record")
-
-
-def _ascii(raw: bytes) -> str:
-    return "".join(chr(b) if 0x20 <= b < 0x7F else "." for b in raw)
+def runs(spec: Spec, data: bytes) -> Iterator[Any]:
+    """Every byte of the file in one run (offset, data, label, record), in order."""
+    return iter(_rt().runs(layouts(spec), data))
 
 
 def dump(spec: Spec, data: bytes, *, max_lines: int | None = None, only_record: int | None = None,
          header_only: bool = False) -> str:
-    """The annotated hex of data: `offset  bytes  ascii │ field = value`, one run per line or more.
-
-    only_record keeps the runs of one record, header_only those of the header; max_lines cuts the dump
-    (and says so)."""
-    if not data:
-        return "(no bytes: the file is empty)"
-    lines: list[str] = []
-    for run in runs(spec, data):
-        if only_record is not None and run.record != only_record:
-            continue
-        if header_only and not run.label.startswith("header "):
-            break
-        for k in range(0, max(1, len(run.data)), ROW):
-            chunk = run.data[k:k + ROW]
-            label = run.label if k == 0 else run.label.split(" = ")[0] + " (cont.)"
-            if max_lines is not None and len(lines) == max_lines:
-                lines.append(f"... cut here: the first {max_lines} lines of {len(data)} bytes")
-                return "\n".join(lines)
-            lines.append(f"{run.offset + k:08X}  {chunk.hex(' ').upper():<{3 * ROW - 1}}  "
-                         f"{_ascii(chunk):<{ROW}} \u2502 {label}")
-    return "\n".join(lines)
+    """The annotated hex of data (the runtime's dump; see its doc)."""
+    return str(_rt().dump(layouts(spec), data, max_lines=max_lines, only_record=only_record,
+                          header_only=header_only))

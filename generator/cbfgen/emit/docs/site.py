@@ -206,14 +206,21 @@ def gallery_files(folder: Path) -> dict[str, bytes]:
     return files
 
 
-def pages(spec: Spec, gallery: Path | None = None) -> dict[str, bytes]:
+API_PAGE = "api.html"  # the Python API reference (cbfgen.emit.docs.api, read from the code with pdoc)
+
+
+def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> dict[str, bytes]:
     """Every file of the site (HTML pages, figures, imported repository files), by path relative to it.
-    gallery: a folder made by `python -m cbf.gallery`, shown as the site's toolpath gallery."""
+    gallery: a folder made by `python -m cbf.gallery`, shown as the site's toolpath gallery; api: the
+    Markdown page `python -m cbfgen.emit.docs.api` wrote (both made from the code, apart from the spec)."""
     ctx: dict[str, Any] = context(spec)
     ctx["gallery_page"] = f"{GALLERY}/index.html" if gallery is not None else None
+    ctx["api_page"] = API_PAGE if api is not None else None
     files = emit(spec, ctx)
     if gallery is not None:
         files.update(gallery_files(gallery))
+    if api is not None:
+        files[f"{OUT}/{API_PAGE[:-5]}.md"] = api.read_bytes()
     env = environment(HERE / "templates")
     shell = env.get_template("page.html.j2")
     md = _markdown()
@@ -257,12 +264,12 @@ def pages(spec: Spec, gallery: Path | None = None) -> dict[str, bytes]:
     return site
 
 
-def build(spec: Spec, out: Path, gallery: Path | None = None) -> int:
+def build(spec: Spec, out: Path, gallery: Path | None = None, api: Path | None = None) -> int:
     """Write the site into out (its old content removed); the number of files."""
     out.mkdir(parents=True, exist_ok=True)
     for p in sorted(out.iterdir()):
         shutil.rmtree(p) if p.is_dir() else p.unlink()
-    site = pages(spec, gallery)
+    site = pages(spec, gallery, api)
     for rel, data in site.items():
         (out / rel).parent.mkdir(parents=True, exist_ok=True)
         (out / rel).write_bytes(data)
@@ -274,6 +281,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--spec", default="spec/cbf.yaml")
     ap.add_argument("--out", default="build/docs-html")
     ap.add_argument("--gallery", type=Path, help="a folder written by `python -m cbf.gallery`, shown in the site")
+    ap.add_argument("--api", type=Path, help="the Python API page `python -m cbfgen.emit.docs.api` wrote")
     args = ap.parse_args(argv)
     try:
         spec = load(args.spec)
@@ -281,7 +289,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2
     try:
-        n = build(spec, Path(args.out), args.gallery)
+        n = build(spec, Path(args.out), args.gallery, args.api)
     except SearchError as exc:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2

@@ -13,7 +13,7 @@ from ... import __license__ as TOOLKIT_LICENSE
 from ... import __version__ as TOOLKIT_VERSION
 from ...model import Field, Spec
 from ...options import option_rules
-from ...registry import ALGORITHMS, DERIVED_HEADER_ROLES
+from ...registry import ALGORITHMS, DERIVED_HEADER_ROLES, TYPES
 from ...registry import kind as check_kind
 from ...render import environment
 from .machine import machine_data, machine_schema
@@ -118,6 +118,66 @@ def spec_data(spec: Spec) -> dict[str, Any]:
     }
 
 
+def _layout_field(f: Field) -> dict[str, Any]:
+    """A field as a third-party reader needs it: where it is, what it holds, what it means."""
+    out: dict[str, Any] = {"name": f.name, "offset": f.offset, "size": f.size, "type": f.type, "count": f.count}
+    for key, value in (("unit", f.unit), ("role", f.role), ("magic", f.magic), ("checksum", f.checksum),
+                       ("clause", f.clause)):
+        if value is not None:
+            out[key] = value
+    if f.reserved:
+        out["reserved"] = True
+    if f.repeat is not None:
+        out["repeat"] = {"min": f.repeat[0], "max": f.repeat[1]}
+    out["doc"] = f.doc
+    return out
+
+
+def layouts_data(spec: Spec) -> dict[str, Any]:
+    """layouts.json: the byte layouts a reader needs (the conformance kit ships it beside PROTOCOL.md):
+    versions and their header, the header layouts, the record head, every command's code and argument
+    layouts per version, and the checksums. Offsets of header and head fields are from the start of
+    the header or record; argument offsets from the start of the arguments."""
+    return {
+        "$comment": "Generated from spec/cbf.yaml by cbfgen: the byte layouts of the Cutfile Binary Format.",
+        "title": spec.meta["title"],
+        "spec": f"{spec.meta['part_number']} rev {spec.meta['revision']}",
+        "byte_order": spec.meta["byte_order"],
+        "string_padding": spec.meta["string_padding"],
+        "types": {t: {"size": TYPES[t].size, "kind": TYPES[t].kind, "doc": TYPES[t].doc} for t in sorted(
+            {f.type for h in spec.headers.values() for f in h.fields}
+            | {f.type for f in spec.record.fields}
+            | {a.type for c in spec.commands for lay in c.layouts for a in lay.args})},
+        "versions": [{"id": v.id, "major": v.major, "minor": v.minor, "header": v.header, "writable": v.writable}
+                     for v in spec.versions],
+        "fallback_version": spec.fallback_version,
+        "headers": {h.id: {"size": h.size, "fields": [_layout_field(f) for f in h.fields]}
+                    for h in spec.headers.values()},
+        "record_head": {"size": spec.record.head_size, "fields": [_layout_field(f) for f in spec.record.fields]},
+        "commands": [
+            {"name": c.name, "code": c.code, "clause": c.clause, "former_names": list(c.former_names),
+             "layouts": [{"variant": lay.variant, "versions": list(lay.versions), "size": lay.size,
+                          "profiles": list(lay.profiles), "args": [_layout_field(a) for a in lay.args]}
+                         for lay in c.layouts]}
+            for c in spec.commands
+        ],
+        "checksums": {
+            "algorithms": {k: {"kind": a.kind, "doc": a.doc} for k, a in spec.checksums.algorithms.items()},
+            "coverages": {k: {"doc": cov.doc, "segments": [
+                {key: value for key, value in (("region", s.region), ("start", s.start), ("end", s.end),
+                                               ("exclude", list(s.exclude)), ("fields", list(s.fields)))
+                 if value not in (None, [])} for s in cov.segments]}
+                for k, cov in spec.checksums.coverages.items()},
+            "fields": [{"field": f.field, "algorithm": f.algorithm, "coverage": f.coverage, "clause": f.clause}
+                       for f in spec.checksums.fields],
+            "fill_order": list(spec.checksums.fill_order),
+        },
+        "profiles": {p.id: {"file_coverages": list(p.file_coverages),
+                            "file_algorithm": p.file_algorithm or spec.checksums.for_field("file").algorithm}
+                     for p in spec.profiles},
+    }
+
+
 def canonical_schema(spec: Spec) -> dict[str, Any]:
     """JSON Schema of the canonical JSON (PROTOCOL.md), from the model."""
     f32: dict[str, Any] = {"oneOf": [{"type": "number"}, {"type": "string", "pattern": "^0x[0-9a-f]{8}$"}]}
@@ -174,6 +234,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["pytype"] = _py_type
     out: dict[str, bytes] = {}
     out[f"{PKG}/spec_data.json"] = (json.dumps(spec_data(spec), indent=1) + "\n").encode()
+    out[f"{PKG}/layouts.json"] = (json.dumps(layouts_data(spec), indent=1) + "\n").encode()
     dist = {"spec": spec, "version": TOOLKIT_VERSION, "license": TOOLKIT_LICENSE,
             "dependencies": DEPENDENCIES, "extras": EXTRAS}
     out["python/pyproject.toml"] = env.get_template("pyproject.toml.j2").render(**dist).encode()
