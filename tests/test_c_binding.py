@@ -439,6 +439,41 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
     assert run.returncode == 0, run.stdout
 
 
+TOOLS = RUNTIME.parent / "tools"
+PROGRAMS = ("cbf_tools.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c")
+
+
+def test_tools_files_are_in_one_generated_file_verbatim() -> None:
+    """Every hand-written file of the tools (generator/cbfgen/emit/c/tools/: the tools' engine, cbf-c's command
+    line, the testee, the fuzz harness) sits in exactly one generated file of generated/c, once, byte for byte,
+    between the markers that name it, after a #line directive that points a compiler at it: the engine that
+    cbf-c and the testee share is in cbf_tools.h alone (issue #33, point 5)."""
+    generated = {name: (ROOT / "generated" / "c" / name).read_text(encoding="utf-8") for name in PROGRAMS}
+    files = sorted(p for p in TOOLS.iterdir() if p.suffix in (".c", ".h"))
+    assert files
+    for p in files:
+        begin = f"/* ==== BEGIN tools/{p.name}: verbatim from generator/cbfgen/emit/c/tools/{p.name}"
+        homes = [name for name, text in generated.items() if begin in text]
+        assert len(homes) == 1 and generated[homes[0]].count(begin) == 1, (p.name, homes)
+        text = generated[homes[0]]
+        line = text.index("\n", text.index(begin)) + 1
+        assert text[line:].startswith(f'#line 1 "generator/cbfgen/emit/c/tools/{p.name}"\n'), p.name
+        body = text[text.index("\n", line) + 1:text.index(f"/* ==== END tools/{p.name} ==== */")]
+        assert body == p.read_text(encoding="utf-8").rstrip("\n") + "\n", f"{p.name} is not verbatim"
+    for name in ("cbf_testee.c", "cbf_tool.c"):  # both programs include the one engine
+        assert '#include "cbf_tools.h"' in generated[name], name
+
+
+def test_the_programs_templates_define_no_function() -> None:
+    """The templates of the tools (cbf_tools.h, cbf_tool.c, cbf_testee.c, cbf_fuzz.c) emit the spec's names and
+    tables only: no function body of hand-written C (that lives in tools/, linted by mk/c.mk)."""
+    for name in PROGRAMS:
+        text = (RUNTIME.parent / "templates" / f"{name}.j2").read_text(encoding="utf-8")
+        bodies = re.findall(r"^[A-Za-z_][\w \*]*\([^;{}]*\)\s*\n\{", text, re.M)
+        assert not bodies, (name, bodies)
+        assert len(text.splitlines()) < 120, f"{name}.j2: {len(text.splitlines())} lines"
+
+
 def test_runtime_files_are_in_the_header_verbatim() -> None:
     """Every hand-written runtime file (generator/cbfgen/emit/c/runtime/) sits in generated/c/cbf.h
     exactly once, byte for byte, between the markers that name it and after a #line directive that

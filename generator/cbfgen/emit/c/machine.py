@@ -43,7 +43,7 @@ class MachineRule:
 
 @dataclass(frozen=True)
 class MachineView:
-    """machine.h.j2, validator_layouts.c.j2, machine_file.inc.j2."""
+    """machine.h.j2, validator_layouts.c.j2, cbf_tools.h.j2."""
 
     machine_axes: int
     machine_limits: tuple[MachineLimitRow, ...]

@@ -1,37 +1,5 @@
-/* ---- option files (issue 28): the rules of generator/cbfgen/option_files.yaml, completed from the
- * spec (cbfgen/options.py), the same that cbf/option_files.json gives cbf. Every refusal is one line
- * naming the file, the line (or JSON path) and the limit, the line cbf says (tests/option_files/). */
-#include <float.h>
-#include <stdarg.h>
-
-#define OPT_CUTTER_MAX_BYTES {{ options.cutter_table.max_bytes }}u
-#define OPT_CUTTER_MAX_ROWS {{ options.cutter_table.max_rows }}u
-#define OPT_CUTTER_MAX_COLUMNS {{ options.cutter_table.max_columns }}
-#define OPT_CUTTER_MAX_DEPTH {{ options.cutter_table.max_depth }}
-#define OPT_CUTTER_MAX_NAME {{ options.cutter_table.max_name }}u
-#define OPT_MACHINE_MAX_BYTES {{ options.machine_file.max_bytes }}u
-#define OPT_MACHINE_MAX_DEPTH {{ options.machine_file.max_depth }}
-#define OPT_YAML_MAX_KEYS {{ options.yaml.max_keys }}u
-#define OPT_NEST_CAP 32 /* the deepest any option file may nest, and then one more */
-#if OPT_CUTTER_MAX_DEPTH >= OPT_NEST_CAP || OPT_MACHINE_MAX_DEPTH >= OPT_NEST_CAP
-#error "option_files.yaml: max_depth beyond OPT_NEST_CAP"
-#endif
-#define OPT_CUTTER_NAME_BYTES (4u * OPT_CUTTER_MAX_NAME + 1u) /* UTF-8: up to 4 bytes a character */
-static const char opt_cutter_what[] = {{ options.cutter_table.what |c_str }};
-static const char opt_machine_what[] = {{ options.machine_file.what |c_str }};
-/* A cutter table's columns (cbfgen/options.py: the keys of the spec's cutter role): the name's
- * first, then the numbers, value[k] of cbf_cutter, in the order of opt_cutter_values. */
-#define OPT_CUTTER_COLUMNS {{ options.cutter_table.columns|length }}
-#if OPT_CUTTER_COLUMNS != CBF_CUTTER_VALUES + 1
-#error "a cutter table's columns are the name and cbf_cutter's values"
-#endif
-static const char *const opt_cutter_columns[OPT_CUTTER_COLUMNS] = { {% for c in options.cutter_table.columns %}{{ c |c_str }}{{ ", " if not loop.last }}{% endfor %} };
-static const char *const opt_columns_list = {{ options.cutter_table.columns | join(", ") |c_str }};
-static const struct { const char *column; int positive; const char *check; } opt_cutter_values[CBF_CUTTER_VALUES] = {
-{% for v in options.cutter_table["values"] %}    { {{ v.column |c_str }}, {{ 1 if v.positive else 0 }}, {{ v.check |c_str }} },
-{% endfor %}};
-
 static char opt_why[8192];
+static const char *opt_last_why = opt_why; /* the line of the last refusal */
 
 static int opt_fail(const char *fmt, ...) CBF__PRINTF(1, 2);
 static int opt_fail(const char *fmt, ...)
@@ -43,19 +11,22 @@ static int opt_fail(const char *fmt, ...)
     return 0;
 }
 
-/* The file into buf (at most max bytes, never more read), checked to be UTF-8 as Python decodes it. */
-static long opt_read(const char *path, char *buf, size_t max, const char *what)
+/* The most an option file may have, said as cbf says it. */
+static long opt_too_large(const char *path, size_t max, const char *what)
 {
-    const char *why;
-    long n = read_file(path, (uint8_t *)buf, max, &why);
+    return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max, what) - 1;
+}
+
+/* An option file's bytes (data[0..n)) copied into buf (at most max bytes, buf holds max + 1), checked to be
+ * UTF-8 as Python decodes it; its size, or -1 with the one line in opt_why. */
+static long opt_read(const char *path, const char *data, size_t size, char *buf, size_t max, const char *what)
+{
+    long n = (long)size;
     size_t i = 0;
-    if (n < 0) {
-        if (strcmp(why, "file too large") == 0)
-            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max,
-                            what) - 1;
-        return opt_fail("%s: cannot read %s (%s)", path, what, why) - 1;
-    }
-    buf[n] = 0;
+    if (size > max)
+        return opt_too_large(path, max, what);
+    memcpy(buf, data, size);
+    buf[size] = 0;
     while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
         const unsigned char *u = (const unsigned char *)buf + i;
         size_t left = (size_t)n - i, len, k;
@@ -924,16 +895,18 @@ static int opt_is_yaml(const char *path)
     return opt_lower_eq(dot, ".yaml") || opt_lower_eq(dot, ".yml");
 }
 
-/* Read a cutter table into cutters[0..ncutters); 0 with the one line in opt_why. */
-static int load_cutters(const char *path)
+/* A cutter table (name: its file name, which says CSV or YAML; text[0..n): its bytes) into cutters[0..ncutters);
+ * 0 with the one line in opt_why. */
+static int load_cutters(const char *name, const char *text, size_t size)
 {
+    const char *path = cbf_tool_name(name);
     long n;
     ncutters = 0;
     cutter_file = path;
-    n = opt_read(path, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
+    n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
-    if (opt_is_yaml(path)) {
+    if (opt_is_yaml(name)) {
         if (!cutters_yaml(path))
             return 0;
     } else if (!cutters_csv(cutter_text)) {
@@ -944,7 +917,7 @@ static int load_cutters(const char *path)
     return 1;
 }
 
-/* ---- machine files (decision {{ machine_decision }}, check machine_limits; machine_file.inc.j2) ----
+/* ---- machine files (the spec's machine decision, check machine_limits) ----
  * The JSON form of `machine:` in spec/cbf.yaml (schema generated/python/cbf/machine.schema.json):
  *   {"name": "...", "limits": {"<limit>": {"unit": "<the spec's unit>", "min": N | [N, ...],
  *    "max": N | [N, ...], "axes": [...], "doc": "..."}, ...}}
@@ -959,8 +932,6 @@ static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine fi
 
 typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
 
-static const char *const machine_file_keys[] = { {% for k in machine_file_keys %}{{ k |c_str }}, {% endfor %}NULL };
-static const char *const machine_limit_keys[] = { {% for k in machine_limit_keys %}{{ k |c_str }}, {% endfor %}NULL };
 
 static int mj_fail(mjson *j, const char *path, const char *fmt, ...) CBF__PRINTF(3, 4);
 static int mj_fail(mjson *j, const char *path, const char *fmt, ...)
@@ -1367,10 +1338,12 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
     return mj_any_string(j, kpath);
 }
 
-/* Read a machine file into machine_file; 0 with the one line in machine_why. */
-static int load_machine(const char *path)
+/* A machine file (name: its file name, which says JSON or YAML; text[0..n): its bytes) into machine_file;
+ * 0 with the one line in machine_why. */
+static int load_machine(const char *name, const char *text, size_t size)
 {
-    long n = opt_read(path, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    const char *path = cbf_tool_name(name);
+    long n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     mjson j;
     unsigned has_limits = 0;
     int li, a;
@@ -1381,7 +1354,7 @@ static int load_machine(const char *path)
     memset(&machine_file, 0, sizeof machine_file);
     j.s = machine_text;
     j.n = (size_t)n;
-    if (opt_is_yaml(path)) {
+    if (opt_is_yaml(name)) {
         if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
             (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
             return 0;
@@ -1414,3 +1387,25 @@ static int load_machine(const char *path)
     }
     return 1;
 }
+
+/* ---- the entry points (cbf_tools.h) ---- */
+int cbf_tool_cutters_buffer(const char *name, const char *text, size_t n, cbf_options *opt)
+{
+    opt_last_why = opt_why;
+    if (!load_cutters(name, text, n))
+        return 0;
+    opt->cutters = cutters;
+    opt->ncutters = ncutters;
+    return 1;
+}
+
+int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_options *opt)
+{
+    opt_last_why = machine_why;
+    if (!load_machine(name, text, n))
+        return 0;
+    opt->machine = &machine_file;
+    return 1;
+}
+
+const char *cbf_tool_why(void) { return opt_last_why; }
