@@ -4,6 +4,7 @@ regeneration, with no code change."""
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 import re
@@ -321,17 +322,32 @@ def _switch_body(text: str, head: str) -> str:
 
 
 def test_c_engine_places_every_registered_kind_and_field_kind() -> None:
-    """Each check kind of the registry has its case in the engine's kind switch, and each field kind
-    its case in the codec's load and store; none of these switches has a default (the kinds come
-    from cbfgen.registry, never from a list here)."""
+    """Each targeted check kind of the registry has its kernel in the engine, cbf__<kind>_at, named in the
+    generated table of its shape and in no other (the validator dispatches through the tables, with no
+    switch over kinds that passes kinds through); each field kind its case in the codec's load and store,
+    with no default (the kinds come from cbfgen.registry, never from a list here)."""
     from cbfgen.emit.c import macro
+    from cbfgen.emit.c.views import kernel_shape
     from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
 
     validator = (RUNTIME / "validator.c").read_text(encoding="utf-8")
-    body = _switch_body(validator, "switch ((enum cbf__kind)ch->kind) {")
-    assert "default:" not in body
-    missing = [k for k in CHECK_KINDS if f"case CBF__KIND_{macro(k)}:" not in body]
-    assert not missing, f"check kinds the C engine lacks: {missing}"
+    assert "switch ((enum cbf__kind)" not in validator
+    header = (ROOT / "generated" / "c" / "cbf.h").read_text(encoding="utf-8")
+    tables = {shape: re.search(rf"static const cbf__{shape}_kernel cbf__{shape}_kernels\[[^]]*\] = \{{([^}}]*)\}};",
+                               header) for shape in ("argument", "target")}
+    for shape, found in tables.items():
+        assert found, shape
+        assert found.group(1).strip().split(", ")[0] == "NULL"  # kinds count from 1
+    shapes = {k: kernel_shape(kind) for k, kind in CHECK_KINDS.items()}
+    assert {"argument", "target"} <= set(shapes.values())
+    for i, (k, shape) in enumerate(shapes.items(), start=1):
+        for name, found in tables.items():
+            assert found is not None
+            entry = found.group(1).strip().split(", ")[i]
+            assert entry == (f"cbf__{k}_at" if shape == name else "NULL"), (k, name, entry)
+        if shape in tables:
+            assert re.search(rf"^(?:CBF__INLINE|static) void cbf__{k}_at\(", validator, re.M), f"no C kernel for {k}"
+            assert f"CBF__KIND_{macro(k)} = {i}" in header
     codec = (RUNTIME / "bytes.c").read_text(encoding="utf-8")
     for fn in ("static void cbf__load(", "static void cbf__store("):
         body = _switch_body(codec[codec.index(fn):], "switch ((enum cbf_field_kind)f->kind) {")
@@ -348,12 +364,13 @@ def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
     cc = _need("gcc")
     import cbfgen.emit.c as emitter
     from cbfgen import registry
-    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS, CheckKind, NoParams
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
 
-    if what == "check kind":
-        extra = dict(CHECK_KINDS, zz_new_rule=CheckKind("zz_new_rule", NoParams, "record", "a new rule"))
+    if what == "check kind":  # a targeted kind: its kernel's table names cbf__zz_new_rule_at
+        rule = dataclasses.replace(CHECK_KINDS["positive"], name="zz_new_rule", doc="a new rule")
+        extra = dict(CHECK_KINDS, zz_new_rule=rule)
         monkeypatch.setattr(registry, "CHECK_KINDS", extra)
-        name = "CBF__KIND_ZZ_NEW_RULE"
+        name = "cbf__zz_new_rule_at"
     else:
         monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
         name = "CBF_KIND_ZZ_NEW_TYPE"

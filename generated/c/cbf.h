@@ -1132,9 +1132,9 @@ enum { CBF__C_NAME = 0, CBF__C_LENGTH = 1, CBF__C_RADIUS = 2, CBF__C__COUNT };
 #error "the cutter role's keys are the name and the cutter table's values"
 #endif
 static const char *const cbf__cutter_keys[CBF__C__COUNT] = { "name", "length", "radius" };
-/* The check kinds of the spec language's registry (cbfgen/registry.py), in its order. The engine
- * dispatches on them with switches that have no default: under -Wswitch-enum a kind the registry
- * gains and the engine lacks fails the build. */
+/* The check kinds of the spec language's registry (cbfgen/registry.py), in its order. The kernels of
+ * the targeted kinds are called through tables indexed by kind (validator_layouts.c.j2): a targeted kind
+ * the registry gains and the engine lacks fails the build. */
 enum cbf__kind {
     CBF__KIND_TRUNCATED_HEADER = 1,
     CBF__KIND_TRUNCATED_RECORD = 2,
@@ -3264,54 +3264,62 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n)
     return CBF_OK;
 }
 
-long cbf_encode_end(cbf_writer *w, int profile, int fill)
+/* The record at pos cut to the profile's layout (the bytes after it move up); its argument size, or -1
+ * when the profile has no layout for it. */
+static long cbf__fill_cut(cbf_writer *w, size_t pos, int profile, const cbf_field_info *f_code,
+                          const cbf_field_info *f_nb, const cbf_field_info *f_ck)
 {
-    int lay;
-    size_t i;
-    if (!w || !w->buf)
-        return CBF_ERR_ARGUMENT;
-    if (w->error)
-        return w->error;
-    if (profile < 0 || profile >= CBF_PROFILE__COUNT)
-        return cbf__wfail(w, CBF_ERR_ARGUMENT);
-    if (!fill)
-        return (long)w->len;
-    if (!cbf_version_writable(w->version))
-        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-    {
-        /* records appended with cbf_encode_record_stored pass the same test */
-        const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
-        const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
-        const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
-        size_t pos = CBF_HEADER_SIZE;
-        while (f_code && f_nb && pos < w->records_end) {
-            uint8_t *p = w->buf + pos;
-            int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
-            size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
-            long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
-            int layout;
-            if (keep < 0)
-                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-            if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
-                size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
-                memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
-                w->len -= cut;
-                w->records_end -= cut;
-                nb = (size_t)keep;
-                cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
-                if (f_ck)
-                    cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
-            }
-            layout = cbf_args_layout(code, w->version, nb);
-            if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
-                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-            /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
-            if (cbf__fill_argcks(layout, p, nb) && f_ck)
-                cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
-            pos += CBF_RECORD_HEAD_SIZE + nb;
-        }
+    uint8_t *p = w->buf + pos;
+    int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
+    size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
+    long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
+    if (keep < 0)
+        return -1;
+    if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
+        size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
+        memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
+        w->len -= cut;
+        w->records_end -= cut;
+        nb = (size_t)keep;
+        cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
+        if (f_ck)
+            cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
     }
-    lay = cbf__versions[w->eff_version].header;
+    return (long)nb;
+}
+
+/* Every record written: cut to the profile's layout, writable, and its checksum fields filled. Records
+ * appended with cbf_encode_record_stored pass the same test. */
+static int cbf__fill_records(cbf_writer *w, int profile)
+{
+    const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
+    const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+    const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
+    size_t pos = CBF_HEADER_SIZE;
+    while (f_code && f_nb && pos < w->records_end) {
+        uint8_t *p = w->buf + pos;
+        int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
+        long got = cbf__fill_cut(w, pos, profile, f_code, f_nb, f_ck);
+        size_t nb;
+        int layout;
+        if (got < 0)
+            return CBF_ERR_NOT_WRITABLE;
+        nb = (size_t)got;
+        layout = cbf_args_layout(code, w->version, nb);
+        if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
+            return CBF_ERR_NOT_WRITABLE;
+        /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
+        if (cbf__fill_argcks(layout, p, nb) && f_ck)
+            cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
+        pos += CBF_RECORD_HEAD_SIZE + nb;
+    }
+    return CBF_OK;
+}
+
+/* The header layout lay's magic numbers and command count. */
+static int cbf__fill_header(cbf_writer *w, int lay)
+{
+    size_t i;
     for (i = 0; i < cbf__headers[lay].nfields; i++) {
         const cbf_field_info *f = &cbf__headers[lay].fields[i];
         if (f->kind != CBF__K_UINT)
@@ -3321,10 +3329,17 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         if (f->role == CBF_ROLE_COMMAND_COUNT) {
             uint32_t max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
             if (w->count > max)
-                return cbf__wfail(w, CBF_ERR_RANGE);
+                return CBF_ERR_RANGE;
             cbf__put_u(w->buf + f->offset, (uint32_t)w->count, f->elem);
         }
     }
+    return CBF_OK;
+}
+
+/* The header's checksum fields, in their fill order (the file's over the profile's first coverage). */
+static void cbf__fill_header_sums(cbf_writer *w, int lay, int profile)
+{
+    size_t i;
     for (i = 0; i < sizeof cbf__fill_order / sizeof cbf__fill_order[0]; i++) {
         int tag = cbf__fill_order[i];
         const cbf__ckfield *k = cbf__ckfield_of(tag);
@@ -3338,10 +3353,33 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
                    cbf__cover(cov, tag == CBF__CK_FILE ? cbf__profiles[profile].file_alg : k->alg, f->elem, w->buf,
                               w->len, w->records_end, NULL, 0), f->elem);
     }
+}
+
+long cbf_encode_end(cbf_writer *w, int profile, int fill)
+{
+    int lay, rc;
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (profile < 0 || profile >= CBF_PROFILE__COUNT)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    if (!fill)
+        return (long)w->len;
+    if (!cbf_version_writable(w->version))
+        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+    rc = cbf__fill_records(w, profile);
+    if (rc != CBF_OK)
+        return cbf__wfail(w, rc);
+    lay = cbf__versions[w->eff_version].header;
+    rc = cbf__fill_header(w, lay);
+    if (rc != CBF_OK)
+        return cbf__wfail(w, rc);
+    cbf__fill_header_sums(w, lay, profile);
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3345 "cbf.h"
+#line 3383 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4295,92 +4333,80 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
     }
 }
 
-/* A check with targets on one float argument f of the record: positive,
- * nonzero_vector, range, nondecreasing (t: the target, for the previous value).
- * xf: its f->count elements as the layout function decoded them, finite: whether
- * all are. Nothing is said about a value that is not finite. */
-CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
-                                int finite, long rec, size_t args_off)
+/* The kernels of the checks with targets on one float argument f of the record (one signature,
+ * cbf__argument_kernel; validator_layouts.c.j2 calls them through cbf__argument_kernels): positive,
+ * nonzero_vector, range, nondecreasing (t: the target, for the previous value). xf: its f->count
+ * elements as the layout function decoded them, finite: whether all are. Nothing is said about a value
+ * that is not finite. */
+CBF__INLINE void cbf__positive_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                                  int finite, long rec, size_t args_off)
+{
+    unsigned i;
+    int any_le = 0;
+    (void)t;
+    if (!finite)
+        return;
+    for (i = 0; i < f->count; i++)
+        if (xf[i] <= 0.0f) any_le = 1;
+    if (any_le)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name,
+                 (double)xf[0]);
+}
+
+CBF__INLINE void cbf__nonzero_vector_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f,
+                                        const float *xf, int finite, long rec, size_t args_off)
+{
+    unsigned i;
+    int all_zero = 1;
+    (void)t;
+    if (!finite)
+        return;
+    for (i = 0; i < f->count; i++)
+        if (xf[i] != 0.0f) all_zero = 0;
+    if (all_zero)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
+}
+
+/* range: the words of findings.range_text. */
+CBF__INLINE void cbf__range_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                               int finite, long rec, size_t args_off)
 {
     const cbf__check *ch = &cbf__checks[ci];
     double x = (double)xf[0];
-    unsigned i;
-    int any_le = 0, all_zero = 1;
+    (void)t;
     if (!finite)
         return;
-    for (i = 0; i < f->count; i++) {
-        if (xf[i] <= 0.0f) any_le = 1;
-        if (xf[i] != 0.0f) all_zero = 0;
-    }
-    switch ((enum cbf__kind)ch->kind) {
-    case CBF__KIND_POSITIVE:
-        if (any_le)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name, x);
-        break;
-    case CBF__KIND_NONZERO_VECTOR:
-        if (all_zero)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
-        break;
-    case CBF__KIND_RANGE:
-        if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
-            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
-            /* findings.range_text's words */
-            if (ch->has_min && ch->has_max)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
-                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
-            else if (ch->has_min)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
-            else
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
-        }
-        break;
-    case CBF__KIND_NONDECREASING:
-        if (v->nd_ok[t] && x < v->nd_prev[t])
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
-                     f->name, v->nd_prev[t], x);
-        v->nd_ok[t] = 1;
-        v->nd_prev[t] = x;
-        break;
-    /* Every other kind of the registry has its one kernel elsewhere, named here: no default, so
-     * that a kind the registry gains fails the build (-Wswitch-enum) until its kernel is written
-     * (a new target kind: a case above; the emitter routes every targeted kind but ordered and
-     * machine_limits here). */
-    case CBF__KIND_ORDERED:          /* cbf__ordered */
-    case CBF__KIND_MACHINE_LIMITS:   /* cbf__machine_at (machine.h.j2) */
-    case CBF__KIND_DEPRECATED:       /* cbf_validate's record loop (cbf__deprecated) */
-    case CBF__KIND_FINITE:           /* the layout function (validator_layouts.c.j2) */
-    case CBF__KIND_STRING_TAIL:      /* cbf__check_string */
-    case CBF__KIND_STRING_ASCII:     /* cbf__check_string */
-    case CBF__KIND_CONTINUITY:       /* cbf__continuity_at */
-    case CBF__KIND_ORIENTATION:      /* cbf__orientation_at */
-    case CBF__KIND_SHAPE:            /* cbf__shape */
-    case CBF__KIND_CUTTER_TABLE:     /* cbf__cutter */
-    case CBF__KIND_PART_NUMBER:      /* cbf__check_part_number */
-    case CBF__KIND_DESCRIPTOR_WORD:  /* cbf__check_descriptor_word */
-    case CBF__KIND_TRUNCATED_HEADER: /* cbf_validate (validate.c): the header */
-    case CBF__KIND_VERSION:
-    case CBF__KIND_MAGIC:
-    case CBF__KIND_HEADER_CHECKSUM:
-    case CBF__KIND_SEQUENCE:         /* cbf_validate: the record pass */
-    case CBF__KIND_CODE_COPY:
-    case CBF__KIND_ARG_CHECKSUM:
-    case CBF__KIND_RESERVED_BYTE:
-    case CBF__KIND_UNKNOWN_CODE:
-    case CBF__KIND_AVAILABILITY:
-    case CBF__KIND_ARG_SIZE:
-    case CBF__KIND_TRUNCATED_RECORD: /* cbf_validate: the end of the file */
-    case CBF__KIND_TRAILING:
-    case CBF__KIND_COMMAND_COUNT:
-    case CBF__KIND_FILE_CHECKSUM:
-        break;
-    }
+    if (!(ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
+        && !(ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max)))
+        return;
+    if (ch->has_min && ch->has_max)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                 f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+    else if (ch->has_min)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                 f->name, x, ch->min_open ? ">" : ">=", ch->min);
+    else
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                 f->name, x, ch->max_open ? "<" : "<=", ch->max);
 }
 
-/* ordered: the target's arguments, all finite, are in non-decreasing order. */
-static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
-                         size_t args_off)
+CBF__INLINE void cbf__nondecreasing_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f,
+                                       const float *xf, int finite, long rec, size_t args_off)
+{
+    double x = (double)xf[0];
+    if (!finite)
+        return;
+    if (v->nd_ok[t] && x < v->nd_prev[t])
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
+                 f->name, v->nd_prev[t], x);
+    v->nd_ok[t] = 1;
+    v->nd_prev[t] = x;
+}
+
+/* ordered: the target's arguments, all finite, are in non-decreasing order (the kernel of a whole target,
+ * cbf__target_kernel). */
+static void cbf__ordered_at(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
+                            size_t args_off)
 {
     const cbf__target *tg = &cbf__targets[t];
     double prev = 0.0;
@@ -4454,7 +4480,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4458 "cbf.h"
+#line 4484 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4620,7 +4646,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4624 "cbf.h"
+#line 4650 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4657,13 +4683,24 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4661 "cbf.h"
+#line 4687 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
  * targets (check order), the cutter table, continuity, orientation, shapes.
  * Each float argument is read once, into x<arg> (ok<arg>: all its elements are
  * finite), and the checks share it. */
+/* The kernels of the targeted check kinds (runtime/validator.c, cbf__<kind>_at), in tables indexed by kind
+ * (enum cbf__kind), one table a signature ("shape"): a kind judging one float argument, a kind judging a
+ * target's arguments together. The tables are made from the registry (views.kernel_shape): a targeted kind
+ * the registry gains and the engine lacks fails the build, naming its kernel. An entry is a constant, so a
+ * call through a table with a constant kind is a direct call. */
+typedef void (*cbf__argument_kernel)(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                                     int finite, long rec, size_t args_off);
+typedef void (*cbf__target_kernel)(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
+                                   size_t args_off);
+static const cbf__argument_kernel cbf__argument_kernels[31 + 1] = { NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, cbf__positive_at, cbf__nonzero_vector_at, cbf__range_at, cbf__nondecreasing_at, NULL, NULL, NULL, NULL, NULL };
+static const cbf__target_kernel cbf__target_kernels[31 + 1] = { NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, cbf__ordered_at, NULL, NULL, NULL, NULL };
 /* CHECKPOINT: 32 argument bytes */
 CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
@@ -4678,8 +4715,8 @@ CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s.%s is not finite", cbf__commands[cmd].name, "recovery_point");
     if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 28u, "%s.%s is not finite", cbf__commands[cmd].name, "completion");
-    cbf__target_at(v, 27, 7u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_range: CHECKPOINT completion */
-    cbf__target_at(v, 28, 8u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
+    cbf__argument_kernels[CBF__KIND_RANGE](v, 27, 7u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_range: CHECKPOINT completion */
+    cbf__argument_kernels[CBF__KIND_NONDECREASING](v, 28, 8u, cmd, &cbf__args[2], x2, ok2, rec, ao); /* checkpoint_falling: CHECKPOINT completion */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CHECKPOINT, 0u, x1, 3u, ok1, rec, ao + 16u); /* CHECKPOINT recovery_point: workspace */
 }
 
@@ -4708,8 +4745,8 @@ CBF__HOT static void cbf__layout_checks_cutter(cbf__vctx *v, const uint8_t *a, l
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s.%s is not finite", cbf__commands[cmd].name, "radius");
     if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "head_length");
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[5], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[6], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 25, 2u, cmd, &cbf__args[5], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 25, 2u, cmd, &cbf__args[6], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 1u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER length: cutter_length */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER, 2u, x2, 1u, ok2, rec, ao + 20u); /* CUTTER radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER, a, rec, ao);
@@ -4729,8 +4766,8 @@ CBF__HOT static void cbf__layout_checks_cutter_v1(cbf__vctx *v, const uint8_t *a
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 16u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
     if (!ok2)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 20u, "%s.%s is not finite", cbf__commands[cmd].name, "radius");
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[10], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
-    cbf__target_at(v, 25, 2u, cmd, &cbf__args[11], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 25, 2u, cmd, &cbf__args[10], x1, ok1, rec, ao); /* cutter_positive: CUTTER length radius */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 25, 2u, cmd, &cbf__args[11], x2, ok2, rec, ao); /* cutter_positive: CUTTER length radius */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 3u, x1, 1u, ok1, rec, ao + 16u); /* CUTTER_V1 length: cutter_length */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CUTTER_V1, 4u, x2, 1u, ok2, rec, ao + 20u); /* CUTTER_V1 radius: cutter_radius */
     cbf__cutter(v, CBF_LAYOUT_CUTTER_V1, a, rec, ao);
@@ -4949,7 +4986,7 @@ CBF__HOT static void cbf__layout_checks_circle(cbf__vctx *v, const uint8_t *a, l
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 24u, "%s.%s is not finite", cbf__commands[cmd].name, "normal");
     if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
-    cbf__target_at(v, 26, 3u, cmd, &cbf__args[40], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE normal */
+    cbf__argument_kernels[CBF__KIND_NONZERO_VECTOR](v, 26, 3u, cmd, &cbf__args[40], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 16u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE, 17u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, -1, 0u);
@@ -4985,7 +5022,7 @@ CBF__HOT static void cbf__layout_checks_circle5b(cbf__vctx *v, const uint8_t *a,
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok5)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 52u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__target_at(v, 26, 4u, cmd, &cbf__args[44], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE5B normal */
+    cbf__argument_kernels[CBF__KIND_NONZERO_VECTOR](v, 26, 4u, cmd, &cbf__args[44], x2, ok2, rec, ao); /* normal_nonzero: CIRCLE5B normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 18u, x0, 3u, ok0, rec, ao + 0u); /* CIRCLE5B start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_CIRCLE5B, 19u, x1, 3u, ok1, rec, ao + 12u); /* CIRCLE5B center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_CIRCLE, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, -1, 0u);
@@ -5018,7 +5055,7 @@ CBF__HOT static void cbf__layout_checks_helix(cbf__vctx *v, const uint8_t *a, lo
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 36u, "%s.%s is not finite", cbf__commands[cmd].name, "ndegrees");
     if (!ok4)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 40u, "%s.%s is not finite", cbf__commands[cmd].name, "length");
-    cbf__target_at(v, 26, 5u, cmd, &cbf__args[50], x2, ok2, rec, ao); /* normal_nonzero: HELIX normal */
+    cbf__argument_kernels[CBF__KIND_NONZERO_VECTOR](v, 26, 5u, cmd, &cbf__args[50], x2, ok2, rec, ao); /* normal_nonzero: HELIX normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 20u, x0, 3u, ok0, rec, ao + 0u); /* HELIX start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX, 21u, x1, 3u, ok1, rec, ao + 12u); /* HELIX center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, 40, 1u);
@@ -5058,7 +5095,7 @@ CBF__HOT static void cbf__layout_checks_helix5b(cbf__vctx *v, const uint8_t *a, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 44u, "%s.%s is not finite", cbf__commands[cmd].name, "start_orient");
     if (!ok6)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 56u, "%s.%s is not finite", cbf__commands[cmd].name, "end_orient");
-    cbf__target_at(v, 26, 6u, cmd, &cbf__args[55], x2, ok2, rec, ao); /* normal_nonzero: HELIX5B normal */
+    cbf__argument_kernels[CBF__KIND_NONZERO_VECTOR](v, 26, 6u, cmd, &cbf__args[55], x2, ok2, rec, ao); /* normal_nonzero: HELIX5B normal */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 22u, x0, 3u, ok0, rec, ao + 0u); /* HELIX5B start: workspace */
     cbf__machine_at(v, cmd, CBF_LAYOUT_HELIX5B, 23u, x1, 3u, ok1, rec, ao + 12u); /* HELIX5B center: workspace */
     cbf__continuity_at(v, cmd, CBF__MOTION_HELIX, a, rec, ao, x0, ok0, NULL, 0, 0, 12, 24, 36, 1u, 40, 1u);
@@ -5075,7 +5112,7 @@ CBF__HOT static void cbf__layout_checks_speed(cbf__vctx *v, const uint8_t *a, lo
     const int ok0 = cbf__float_at(a + 0, &x0[0]); /* speed */
     if (!ok0)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "speed");
-    cbf__target_at(v, 23, 0u, cmd, &cbf__args[60], x0, ok0, rec, ao); /* speed_positive: SPEED speed */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 23, 0u, cmd, &cbf__args[60], x0, ok0, rec, ao); /* speed_positive: SPEED speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_SPEED, 24u, x0, 1u, ok0, rec, ao + 0u); /* SPEED speed: speed */
 }
 
@@ -5092,8 +5129,8 @@ CBF__HOT static void cbf__layout_checks_accel(cbf__vctx *v, const uint8_t *a, lo
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 0u, "%s.%s is not finite", cbf__commands[cmd].name, "accel");
     if (!ok1)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 4u, "%s.%s is not finite", cbf__commands[cmd].name, "decel");
-    cbf__target_at(v, 24, 1u, cmd, &cbf__args[61], x0, ok0, rec, ao); /* accel_positive: ACCEL accel decel */
-    cbf__target_at(v, 24, 1u, cmd, &cbf__args[62], x1, ok1, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 24, 1u, cmd, &cbf__args[61], x0, ok0, rec, ao); /* accel_positive: ACCEL accel decel */
+    cbf__argument_kernels[CBF__KIND_POSITIVE](v, 24, 1u, cmd, &cbf__args[62], x1, ok1, rec, ao); /* accel_positive: ACCEL accel decel */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 25u, x0, 1u, ok0, rec, ao + 0u); /* ACCEL accel: acceleration */
     cbf__machine_at(v, cmd, CBF_LAYOUT_ACCEL, 26u, x1, 1u, ok1, rec, ao + 4u); /* ACCEL decel: acceleration */
 }
@@ -5140,7 +5177,7 @@ CBF__HOT static void cbf__layout_checks_fcparms(cbf__vctx *v, const uint8_t *a, 
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 8u, "%s.%s is not finite", cbf__commands[cmd].name, "min_speed");
     if (!ok3)
         cbf__each(v, CBF__KIND_FINITE, rec, ao + 12u, "%s.%s is not finite", cbf__commands[cmd].name, "max_force");
-    cbf__ordered(v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
+    cbf__target_kernels[CBF__KIND_ORDERED](v, 29, 9u, cmd, CBF_LAYOUT_FCPARMS, a, rec, ao); /* fcparms_order: FCPARMS min_speed nom_speed max_speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 27u, x0, 1u, ok0, rec, ao + 0u); /* FCPARMS nom_speed: speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 28u, x1, 1u, ok1, rec, ao + 4u); /* FCPARMS max_speed: speed */
     cbf__machine_at(v, cmd, CBF_LAYOUT_FCPARMS, 29u, x2, 1u, ok2, rec, ao + 8u); /* FCPARMS min_speed: speed */
@@ -5347,15 +5384,247 @@ static void cbf__check_argcks(cbf__vctx *v, int layout, const uint8_t *rec, size
     }
 }
 
+/* The header: its version, magic numbers and strings, its checksum fields, the implant descriptor. */
+static void cbf__validate_header(cbf__vctx *v, const cbf_header *h)
+{
+    const uint8_t *buf = v->buf;
+    size_t i;
+    if (v->version < 0)
+        cbf__each(v, CBF__KIND_VERSION, -1, CBF__VERSION_MAJOR_OFFSET,
+                  "version %u.%u is not a version of this spec; read as %s", h->major, h->minor,
+                  cbf__versions[v->eff].id);
+    /* header fields: magic numbers, strings */
+    for (i = 0; i < cbf__headers[v->hlayout].nfields; i++) {
+        const cbf_field_info *f = &cbf__headers[v->hlayout].fields[i];
+        if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != f->magic)
+                cbf__each(v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lX, expected 0x%08lX", f->name,
+                          (unsigned long)got, (unsigned long)f->magic);
+        }
+        if (f->kind == CBF__K_STRING)
+            cbf__check_string(v, NULL, f, buf, 0, -1);
+    }
+    /* each header checksum field this version's header carries, judged by its header_checksum check */
+    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
+        const cbf__ckfield *k = &cbf__ckfields[i];
+        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v->hlayout, k->tag) : NULL;
+        if (f) {
+            uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, v->len, CBF_HEADER_SIZE, NULL, 0);
+            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
+            if (got != want)
+                cbf__say(v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
+                         (unsigned long)got, (unsigned long)want);
+        }
+    }
+    cbf__check_part_number(v);
+    cbf__check_descriptor_word(v);
+}
+
+/* The record pass's state: where it is, and the sums it adds up as it goes. */
+typedef struct cbf__rpass {
+    const cbf__ckfield *kck; /* the head's argument checksum field, or NULL */
+    int args_sum;            /* it is a plain sum over the arguments alone (the spec's 6.4.4) */
+    int folds;               /* the file checksum is summed up in the record pass (cbf__file_sum_folds) */
+    int profile;
+    uint32_t fold;
+    size_t pos;
+    unsigned long nrec;
+    cbf__seen seen[CBF__NCOMMANDS];
+} cbf__rpass;
+
+/* A new argument size for the command: its layout, whether the profile accepts the size, and the
+ * availability check that covers it in the file's version (-1: available). */
+CBF__INLINE void cbf__seen_size(const cbf__vctx *v, cbf__seen *s, int cmd, uint32_t code, size_t nb, int profile)
+{
+    int k;
+    s->nb = (long)nb;
+    s->accepted = 0;
+    for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
+        int lay = cbf__commands[cmd].candidates[v->eff][k];
+        if (lay < 0)
+            break;
+        if (cbf__layout_takes(&cbf__layouts[lay], nb) && cbf__profile_accepts(lay, profile))
+            s->accepted = 1;
+    }
+    s->layout = cbf_args_layout((int)code, v->eff, nb);
+    /* availability: the command has no layout for the file's version (fallback included);
+     * the finding names the one check that covers this command in this version */
+    s->avail = (cbf__commands[cmd].versions & CBF__VBIT(v->eff)) ? -1 : cbf__avail_check[cmd][v->eff];
+}
+
+/* The record head at p: sequence number, code copy, argument checksums, reserved byte. */
+CBF__INLINE void cbf__head_checks(cbf__vctx *v, const cbf__rpass *r, const uint8_t *p, size_t nb, int layout,
+                                  uint32_t asum)
+{
+    const long rec = (long)r->nrec;
+    const size_t pos = r->pos;
+    const uint32_t code = CBF__HEAD_CODE(p), copy = CBF__HEAD_CODE_COPY(p), seq = CBF__HEAD_SEQUENCE(p);
+    const uint32_t res = CBF__HEAD_RESERVED(p);
+    if (seq != (uint32_t)(r->nrec & CBF__SEQUENCE_MASK))
+        cbf__each(v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
+                  (unsigned long)seq, (unsigned long)(r->nrec & CBF__SEQUENCE_MASK));
+    if (code != copy)
+        cbf__each(v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code copy 0x%02lX differs from code 0x%02lX",
+                  (unsigned long)copy, (unsigned long)code);
+#if CBF__HEAD_CK_ELEM
+    {
+        uint32_t want = r->args_sum ? (asum & CBF__HEAD_CK_MASK)
+                        : r->kck ? cbf__cover(r->kck->coverage, r->kck->alg, CBF__HEAD_CK_ELEM, NULL, 0, 0,
+                                              p + CBF_RECORD_HEAD_SIZE, nb)
+                                 : 0u;
+        uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
+        if (got != want)
+            cbf__head_sum_findings(v, rec, pos + CBF__HEAD_CK_OFFSET, got, want);
+    }
+#else
+    (void)asum;
+#endif
+    if (layout >= 0)
+        cbf__check_argcks(v, layout, p, nb, rec, pos);
+    if (res != 0u)
+        cbf__each(v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
+                  (unsigned long)res);
+}
+
+/* The record's command: known, available, of a size the profile accepts, not deprecated; then the checks
+ * of its decoded arguments (the layout's function). */
+CBF__INLINE void cbf__command_checks(cbf__vctx *v, const cbf__rpass *r, const uint8_t *p, int cmd, int layout,
+                                     size_t nb)
+{
+    const long rec = (long)r->nrec;
+    const size_t pos = r->pos;
+    if (cmd < 0) {
+        cbf__each(v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lX",
+                  (unsigned long)CBF__HEAD_CODE(p));
+        return;
+    }
+    if (r->seen[cmd].avail >= 0)
+        cbf__say(v, r->seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
+                 cbf__commands[cmd].name, cbf__versions[v->eff].id);
+    if (!r->seen[cmd].accepted)
+        cbf__arg_size(v, cmd, r->profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
+    if (layout == CBF_LAYOUT__NONE)
+        return;
+    if (cbf__deprecated[layout] >= 0)
+        cbf__say(v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
+                 cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
+    cbf__decoded_checks(v, layout, p + CBF_RECORD_HEAD_SIZE, rec, pos);
+}
+
+/* The records, framed by nb from the header to the end of the file (D1). */
+static void cbf__record_pass(cbf__vctx *v, cbf__rpass *r)
+{
+    const uint8_t *buf = v->buf;
+    const size_t len = v->len;
+    size_t i;
+    for (i = 0; i < (size_t)CBF__NCOMMANDS; i++)
+        r->seen[i].nb = -1;
+    while (len - r->pos >= CBF_RECORD_HEAD_SIZE) {
+        const uint8_t *p = buf + r->pos;
+        size_t nb = CBF__HEAD_ARG_SIZE(p);
+        uint32_t code, asum = 0u;
+        int cmd, layout = CBF_LAYOUT__NONE;
+        if (len - r->pos - CBF_RECORD_HEAD_SIZE < nb)
+            break;
+        code = CBF__HEAD_CODE(p);
+        cmd = cbf__cmd_index((int)code);
+        if (cmd >= 0 && r->seen[cmd].nb != (long)nb) /* a new size for the command: look its layout up */
+            cbf__seen_size(v, &r->seen[cmd], cmd, code, nb, r->profile);
+        if (cmd >= 0)
+            layout = r->seen[cmd].layout;
+        if (r->args_sum)
+            asum = cbf__args_sum(layout, p + CBF_RECORD_HEAD_SIZE, nb);
+        if (r->folds)
+            r->fold += CBF__HEAD_SUM(p) + asum;
+        cbf__head_checks(v, r, p, nb, layout, asum);
+        cbf__command_checks(v, r, p, cmd, layout, nb);
+        r->pos += CBF_RECORD_HEAD_SIZE + nb;
+        r->nrec++;
+    }
+}
+
+/* The end of the file: an open shape, a record cut short or bytes after the last record, the count. */
+static void cbf__validate_end(cbf__vctx *v, const cbf_header *h, const cbf__rpass *r)
+{
+    const size_t pos = r->pos, len = v->len;
+    const unsigned long nrec = r->nrec;
+    int truncated = 0;
+    if (v->shape_open)
+        cbf__shape_unclosed(v);
+    if (pos < len) {
+        if (nrec < h->count) {
+            truncated = 1;
+            cbf__each(v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
+                      "the file ends inside record %lu (%lu byte(s) left)", nrec, (unsigned long)(len - pos));
+        } else {
+            cbf__each(v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) after the last record", (unsigned long)(len - pos));
+        }
+    }
+    if (!truncated && nrec != h->count) {
+        const cbf_field_info *fc = cbf__header_field_by_role(v->hlayout, CBF_ROLE_COMMAND_COUNT);
+        cbf__each(v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u, "header count %lu, the file holds %lu records",
+                  h->count, nrec);
+    }
+}
+
+/* file_checksum differs from every coverage of the profile: one message, the sums, then every hint coverage
+ * the stored value matches. Cold. */
+CBF__COLD static void cbf__file_sum_finding(cbf__vctx *v, const cbf_field_info *f, int profile, size_t pos,
+                                            uint32_t got, uint32_t first)
+{
+    const cbf__profile *pr = &cbf__profiles[profile];
+    char msg[512];
+    size_t at = 0;
+    int c;
+    cbf__cat(msg, sizeof msg, &at, "stored file checksum %lu, computed %lu", (unsigned long)got, (unsigned long)first);
+    for (c = 0; c < CBF__MAX_COVERAGES && pr->hint[c] >= 0; c++) {
+        if (cbf__cover(pr->hint[c], pr->hint_alg[c], f->elem, v->buf, v->len, pos, NULL, 0) == got)
+            cbf__cat(msg, sizeof msg, &at, "; it matches coverage %s (use profile %s)", cbf__coverages[pr->hint[c]].name,
+                     pr->hint_owner[c] >= 0 ? cbf__profiles[pr->hint_owner[c]].id : "?");
+    }
+    cbf__each(v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s", msg);
+}
+
+/* The file checksum field, against every coverage of the profile (the first folded into the record pass
+ * when it is a plain sum from inside the header, and the bytes after the last record). */
+static void cbf__check_file_sum(cbf__vctx *v, const cbf__rpass *r)
+{
+    const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_FILE);
+    const cbf_field_info *f = cbf__header_field_by_tag(v->hlayout, CBF__CK_FILE);
+    const int profile = r->profile;
+    uint32_t got, first = 0u;
+    int c, match = 0;
+    if (!k || !f)
+        return;
+    got = cbf__get_u(v->buf + f->offset, f->elem);
+    for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
+        uint32_t want;
+        if (c == 0 && r->folds) { /* the record pass's sum, and the bytes after the last record */
+            want = r->fold + cbf__sum(v->buf + r->pos, v->len - r->pos);
+            if (f->elem < 4u)
+                want &= (1u << (8u * f->elem)) - 1u;
+        } else {
+            want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem, v->buf, v->len,
+                              r->pos, NULL, 0);
+        }
+        if (c == 0)
+            first = want;
+        if (want == got)
+            match = 1;
+    }
+    if (!match)
+        cbf__file_sum_finding(v, f, profile, r->pos, got, first);
+}
+
 CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn,
                           void *user)
 {
     cbf__vctx v;
     cbf_header h;
-    size_t pos, i, fold_start = 0;
-    unsigned long nrec = 0;
-    uint32_t fold = 0u;
-    int profile = opt ? opt->profile : CBF__DEFAULT_PROFILE, folds;
+    cbf__rpass r;
+    size_t fold_start = 0;
+    int profile = opt ? opt->profile : CBF__DEFAULT_PROFILE;
     if ((!buf && len) || profile < 0 || profile >= CBF_PROFILE__COUNT)
         return CBF_ERR_ARGUMENT;
     memset(&v, 0, sizeof v);
@@ -5377,185 +5646,26 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     v.version = h.version;
     v.eff = cbf__eff_version(h.version);
     v.hlayout = h.layout;
-    if (v.version < 0)
-        cbf__each(&v, CBF__KIND_VERSION, -1, CBF__VERSION_MAJOR_OFFSET,
-                  "version %u.%u is not a version of this spec; read as %s", h.major, h.minor,
-                  cbf__versions[v.eff].id);
-    /* header fields: magic numbers, strings */
-    for (i = 0; i < cbf__headers[v.hlayout].nfields; i++) {
-        const cbf_field_info *f = &cbf__headers[v.hlayout].fields[i];
-        if ((f->flags & CBF__F_MAGIC) && f->kind == CBF__K_UINT) {
-            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
-            if (got != f->magic)
-                cbf__each(&v, CBF__KIND_MAGIC, -1, f->offset, "%s is 0x%08lX, expected 0x%08lX", f->name,
-                          (unsigned long)got, (unsigned long)f->magic);
-        }
-        if (f->kind == CBF__K_STRING)
-            cbf__check_string(&v, NULL, f, buf, 0, -1);
-    }
-    /* each header checksum field this version's header carries, judged by its header_checksum check */
-    for (i = 0; i < sizeof cbf__ckfields / sizeof cbf__ckfields[0]; i++) {
-        const cbf__ckfield *k = &cbf__ckfields[i];
-        const cbf_field_info *f = k->check >= 0 ? cbf__header_field_by_tag(v.hlayout, k->tag) : NULL;
-        if (f) {
-            uint32_t want = cbf__cover(k->coverage, k->alg, f->elem, buf, len, CBF_HEADER_SIZE, NULL, 0);
-            uint32_t got = cbf__get_u(buf + f->offset, f->elem);
-            if (got != want)
-                cbf__say(&v, k->check, -1, f->offset, "stored %s checksum %lu, computed %lu", k->name,
-                         (unsigned long)got, (unsigned long)want);
-        }
-    }
-    cbf__check_part_number(&v);
-    cbf__check_descriptor_word(&v);
+    cbf__validate_header(&v, &h);
 
-    /* records, framed by nb from the header to the end of the file (D1) */
-    pos = CBF_HEADER_SIZE;
-    const cbf__ckfield *kck = cbf__ckfield_of(CBF__CK_ARGS);
+    r.pos = CBF_HEADER_SIZE;
+    r.nrec = 0;
+    r.profile = profile;
+    r.fold = 0u;
+    r.kck = cbf__ckfield_of(CBF__CK_ARGS);
     /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
-    const int args_sum = kck && kck->alg == CBF__ALG_SUM && cbf__coverages[kck->coverage].n == 1u
-                         && cbf__segments[cbf__coverages[kck->coverage].first].region == CBF__REGION_ARGS;
-    folds = args_sum && cbf__file_sum_folds(profile, &fold_start);
-    if (folds)
-        fold = cbf__sum(buf + fold_start, CBF_HEADER_SIZE - fold_start);
-    cbf__seen seen[CBF__NCOMMANDS];
-    for (i = 0; i < (size_t)CBF__NCOMMANDS; i++)
-        seen[i].nb = -1;
-    while (len - pos >= CBF_RECORD_HEAD_SIZE) {
-        const uint8_t *p = buf + pos, *args = p + CBF_RECORD_HEAD_SIZE;
-        size_t nb = CBF__HEAD_ARG_SIZE(p);
-        long rec = (long)nrec;
-        uint32_t code, copy, seq, res, asum = 0u;
-        int cmd, layout = CBF_LAYOUT__NONE;
-        if (len - pos - CBF_RECORD_HEAD_SIZE < nb)
-            break;
-        code = CBF__HEAD_CODE(p);
-        copy = CBF__HEAD_CODE_COPY(p);
-        seq = CBF__HEAD_SEQUENCE(p);
-        res = CBF__HEAD_RESERVED(p);
-        cmd = cbf__cmd_index((int)code);
-        if (cmd >= 0 && seen[cmd].nb != (long)nb) { /* a new size for the command: look its layout up */
-            int k;
-            seen[cmd].nb = (long)nb;
-            seen[cmd].accepted = 0;
-            for (k = 0; k < CBF__MAX_CANDIDATES; k++) {
-                int lay = cbf__commands[cmd].candidates[v.eff][k];
-                if (lay < 0)
-                    break;
-                if (cbf__layout_takes(&cbf__layouts[lay], nb) && cbf__profile_accepts(lay, profile))
-                    seen[cmd].accepted = 1;
-            }
-            seen[cmd].layout = cbf_args_layout((int)code, v.eff, nb);
-            /* availability: the command has no layout for the file's version (fallback included);
-             * the finding names the one check that covers this command in this version */
-            seen[cmd].avail = (cbf__commands[cmd].versions & CBF__VBIT(v.eff)) ? -1 : cbf__avail_check[cmd][v.eff];
-        }
-        if (cmd >= 0)
-            layout = seen[cmd].layout;
-        if (args_sum)
-            asum = cbf__args_sum(layout, args, nb);
-        if (folds)
-            fold += CBF__HEAD_SUM(p) + asum;
-        if (seq != (uint32_t)(nrec & CBF__SEQUENCE_MASK))
-            cbf__each(&v, CBF__KIND_SEQUENCE, rec, pos + CBF__HEAD_OFF_SEQUENCE, "sequence number %lu, expected %lu",
-                      (unsigned long)seq, (unsigned long)(nrec & CBF__SEQUENCE_MASK));
-        if (code != copy)
-            cbf__each(&v, CBF__KIND_CODE_COPY, rec, pos + CBF__HEAD_OFF_CODE_COPY, "code copy 0x%02lX differs from code 0x%02lX",
-                      (unsigned long)copy, (unsigned long)code);
-#if CBF__HEAD_CK_ELEM
-        {
-            uint32_t want = args_sum ? (asum & CBF__HEAD_CK_MASK)
-                            : kck ? cbf__cover(kck->coverage, kck->alg, CBF__HEAD_CK_ELEM, NULL, 0, 0, args, nb)
-                                  : 0u;
-            uint32_t got = cbf__get_u(p + CBF__HEAD_CK_OFFSET, CBF__HEAD_CK_ELEM);
-            if (got != want)
-                cbf__head_sum_findings(&v, rec, pos + CBF__HEAD_CK_OFFSET, got, want);
-        }
-#endif
-        if (layout >= 0)
-            cbf__check_argcks(&v, layout, p, nb, rec, pos);
-        if (res != 0u)
-            cbf__each(&v, CBF__KIND_RESERVED_BYTE, rec, pos + CBF__HEAD_OFF_RESERVED, "reserved byte is 0x%02lX",
-                      (unsigned long)res);
-        if (cmd < 0) {
-            cbf__each(&v, CBF__KIND_UNKNOWN_CODE, rec, pos + CBF__HEAD_OFF_CODE, "unknown command code 0x%02lX",
-                      (unsigned long)code);
-        } else {
-            if (seen[cmd].avail >= 0)
-                cbf__say(&v, seen[cmd].avail, rec, pos + CBF__HEAD_OFF_CODE, "%s is not available in version %s",
-                         cbf__commands[cmd].name, cbf__versions[v.eff].id);
-            if (!seen[cmd].accepted)
-                cbf__arg_size(&v, cmd, profile, rec, pos + CBF__HEAD_OFF_ARG_SIZE, nb);
-            if (layout != CBF_LAYOUT__NONE && cbf__deprecated[layout] >= 0)
-                cbf__say(&v, cbf__deprecated[layout], rec, pos + CBF__HEAD_OFF_CODE, "%s is deprecated since version %s",
-                         cbf__commands[cmd].name, cbf__versions[cbf__deprecation_since(cbf__deprecated[layout])].id);
-            if (layout != CBF_LAYOUT__NONE)
-                cbf__decoded_checks(&v, layout, args, rec, pos);
-        }
-        pos += CBF_RECORD_HEAD_SIZE + nb;
-        nrec++;
-    }
-    if (v.shape_open)
-        cbf__shape_unclosed(&v);
-    {
-        int truncated = 0;
-        if (pos < len) {
-            if (nrec < h.count) {
-                truncated = 1;
-                cbf__each(&v, CBF__KIND_TRUNCATED_RECORD, (long)nrec, pos,
-                          "the file ends inside record %lu (%lu byte(s) left)", nrec,
-                          (unsigned long)(len - pos));
-            } else {
-                cbf__each(&v, CBF__KIND_TRAILING, -1, pos, "%lu byte(s) after the last record",
-                          (unsigned long)(len - pos));
-            }
-        }
-        if (!truncated && nrec != h.count) {
-            const cbf_field_info *fc = cbf__header_field_by_role(v.hlayout, CBF_ROLE_COMMAND_COUNT);
-            cbf__each(&v, CBF__KIND_COMMAND_COUNT, -1, fc ? fc->offset : 0u,
-                      "header count %lu, the file holds %lu records", h.count, nrec);
-        }
-    }
-    {
-        const cbf__ckfield *k = cbf__ckfield_of(CBF__CK_FILE);
-        const cbf_field_info *f = cbf__header_field_by_tag(v.hlayout, CBF__CK_FILE);
-        if (k && f) {
-            uint32_t got = cbf__get_u(buf + f->offset, f->elem), first = 0u;
-            int c, match = 0;
-            for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].file[c] >= 0; c++) {
-                uint32_t want;
-                if (c == 0 && folds) { /* the record pass's sum, and the bytes after the last record */
-                    want = fold + cbf__sum(buf + pos, len - pos);
-                    if (f->elem < 4u)
-                        want &= (1u << (8u * f->elem)) - 1u;
-                } else {
-                    want = cbf__cover(cbf__profiles[profile].file[c], cbf__profiles[profile].file_alg, f->elem,
-                                      buf, len, pos, NULL, 0);
-                }
-                if (c == 0)
-                    first = want;
-                if (want == got)
-                    match = 1;
-            }
-            if (!match) { /* one message: the sums, then every hint coverage the stored value matches */
-                char msg[512];
-                size_t at = 0;
-                cbf__cat(msg, sizeof msg, &at, "stored file checksum %lu, computed %lu", (unsigned long)got,
-                         (unsigned long)first);
-                for (c = 0; c < CBF__MAX_COVERAGES && cbf__profiles[profile].hint[c] >= 0; c++) {
-                    const cbf__profile *pr = &cbf__profiles[profile];
-                    if (cbf__cover(pr->hint[c], pr->hint_alg[c], f->elem, buf, len, pos, NULL, 0) == got)
-                        cbf__cat(msg, sizeof msg, &at, "; it matches coverage %s (use profile %s)",
-                                 cbf__coverages[pr->hint[c]].name,
-                                 pr->hint_owner[c] >= 0 ? cbf__profiles[pr->hint_owner[c]].id : "?");
-                }
-                cbf__each(&v, CBF__KIND_FILE_CHECKSUM, -1, f->offset, "%s", msg);
-            }
-        }
-    }
+    r.args_sum = r.kck && r.kck->alg == CBF__ALG_SUM && cbf__coverages[r.kck->coverage].n == 1u
+                 && cbf__segments[cbf__coverages[r.kck->coverage].first].region == CBF__REGION_ARGS;
+    r.folds = r.args_sum && cbf__file_sum_folds(profile, &fold_start);
+    if (r.folds)
+        r.fold = cbf__sum(buf + fold_start, CBF_HEADER_SIZE - fold_start);
+    cbf__record_pass(&v, &r);
+    cbf__validate_end(&v, &h, &r);
+    cbf__check_file_sum(&v, &r);
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5559 "cbf.h"
+#line 5669 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

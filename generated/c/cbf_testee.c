@@ -231,117 +231,145 @@ static int32_t jstring(void)
     return n;
 }
 
-static int32_t jvalue(int depth)
+static int32_t jfail(const char *why)
 {
-    int32_t n, prev = -1;
-    if (depth > MAX_DEPTH) {
-        jerr = "JSON nested too deep";
-        return -1;
-    }
-    jws();
-    if (jpos >= jlen) {
-        jerr = "unexpected end of JSON";
-        return -1;
-    }
-    switch (jtext[jpos]) {
-    case '"':
-        return jstring();
-    case '{':
-    case '[': {
-        int obj = jtext[jpos] == '{';
-        char close = obj ? '}' : ']';
-        n = jalloc(obj ? J_OBJ : J_ARR);
-        if (n < 0)
-            return -1;
+    jerr = why;
+    return -1;
+}
+
+/* The digits at jpos (at least one); 0 when there is none. */
+static int jdigits(void)
+{
+    if (jpos >= jlen || !jdigit(jtext[jpos]))
+        return 0;
+    while (jpos < jlen && jdigit(jtext[jpos]))
         jpos++;
+    return 1;
+}
+
+/* A number (RFC 8259's grammar) at jpos. */
+static int32_t jnumber(void)
+{
+    int32_t n = jalloc(J_NUM);
+    if (n < 0)
+        return -1;
+    if (jtext[jpos] == '-')
+        jpos++;
+    if (jpos < jlen && jtext[jpos] == '0')
+        jpos++;
+    else if (!jdigits())
+        return jfail("bad number");
+    if (jpos < jlen && jtext[jpos] == '.') {
+        jpos++;
+        if (!jdigits())
+            return jfail("bad number");
+    }
+    if (jpos < jlen && (jtext[jpos] == 'e' || jtext[jpos] == 'E')) {
+        jpos++;
+        if (jpos < jlen && (jtext[jpos] == '+' || jtext[jpos] == '-'))
+            jpos++;
+        if (!jdigits())
+            return jfail("bad number");
+    }
+    nodes[n].len = (uint32_t)(jpos - nodes[n].start);
+    return n;
+}
+
+/* true, false or null at jpos (word, its node type); -1 when the text is not the word. */
+static int32_t jword(const char *word, unsigned char type)
+{
+    size_t len = strlen(word);
+    int32_t n;
+    if (jlen - jpos < len || memcmp(jtext + jpos, word, len) != 0)
+        return jfail("unexpected character");
+    n = jalloc(type);
+    jpos += len;
+    return n;
+}
+
+/* One member of an object (a key, ':' and a value) or one item of an array, linked after prev. */
+static int32_t jmember(int32_t n, int obj, int32_t prev, int depth)
+{
+    int32_t k = -1, v;
+    jws();
+    if (obj) {
+        if (jpos >= jlen || jtext[jpos] != '"')
+            return jfail("expected a key");
+        k = jstring();
+        if (k < 0)
+            return -1;
         jws();
+        if (jpos >= jlen || jtext[jpos] != ':')
+            return jfail("expected ':'");
+        jpos++;
+    }
+    v = jvalue(depth + 1);
+    if (v < 0)
+        return -1;
+    if (prev < 0)
+        nodes[n].first = obj ? k : v;
+    else
+        nodes[prev].next = obj ? k : v;
+    if (obj)
+        nodes[k].next = v;
+    return v;
+}
+
+/* An object or an array at jpos. */
+static int32_t jcontainer(int depth)
+{
+    int obj = jtext[jpos] == '{';
+    char close = obj ? '}' : ']';
+    int32_t n = jalloc(obj ? J_OBJ : J_ARR), prev = -1;
+    if (n < 0)
+        return -1;
+    jpos++;
+    jws();
+    if (jpos < jlen && jtext[jpos] == close) {
+        jpos++;
+        return n;
+    }
+    for (;;) {
+        prev = jmember(n, obj, prev, depth);
+        if (prev < 0)
+            return -1;
+        jws();
+        if (jpos < jlen && jtext[jpos] == ',') {
+            jpos++;
+            continue;
+        }
         if (jpos < jlen && jtext[jpos] == close) {
             jpos++;
             return n;
         }
-        for (;;) {
-            int32_t k = -1, v;
-            jws();
-            if (obj) {
-                if (jpos >= jlen || jtext[jpos] != '"') {
-                    jerr = "expected a key";
-                    return -1;
-                }
-                k = jstring();
-                if (k < 0)
-                    return -1;
-                jws();
-                if (jpos >= jlen || jtext[jpos] != ':') {
-                    jerr = "expected ':'";
-                    return -1;
-                }
-                jpos++;
-            }
-            v = jvalue(depth + 1);
-            if (v < 0)
-                return -1;
-            if (obj) {
-                if (prev < 0) nodes[n].first = k; else nodes[prev].next = k;
-                nodes[k].next = v;
-            } else {
-                if (prev < 0) nodes[n].first = v; else nodes[prev].next = v;
-            }
-            prev = v;
-            jws();
-            if (jpos < jlen && jtext[jpos] == ',') {
-                jpos++;
-                continue;
-            }
-            if (jpos < jlen && jtext[jpos] == close) {
-                jpos++;
-                return n;
-            }
-            jerr = obj ? "expected ',' or '}'" : "expected ',' or ']'";
-            return -1;
-        }
+        return jfail(obj ? "expected ',' or '}'" : "expected ',' or ']'");
     }
+}
+
+static int32_t jvalue(int depth)
+{
+    if (depth > MAX_DEPTH)
+        return jfail("JSON nested too deep");
+    jws();
+    if (jpos >= jlen)
+        return jfail("unexpected end of JSON");
+    switch (jtext[jpos]) {
+    case '"':
+        return jstring();
+    case '{':
+    case '[':
+        return jcontainer(depth);
     case 't':
-        if (jlen - jpos >= 4 && memcmp(jtext + jpos, "true", 4) == 0) { n = jalloc(J_TRUE); jpos += 4; return n; }
-        break;
+        return jword("true", J_TRUE);
     case 'f':
-        if (jlen - jpos >= 5 && memcmp(jtext + jpos, "false", 5) == 0) { n = jalloc(J_FALSE); jpos += 5; return n; }
-        break;
+        return jword("false", J_FALSE);
     case 'n':
-        if (jlen - jpos >= 4 && memcmp(jtext + jpos, "null", 4) == 0) { n = jalloc(J_NULL); jpos += 4; return n; }
-        break;
+        return jword("null", J_NULL);
     default:
-        if (jtext[jpos] == '-' || jdigit(jtext[jpos])) {
-            n = jalloc(J_NUM);
-            if (n < 0)
-                return -1;
-            if (jtext[jpos] == '-')
-                jpos++;
-            if (jpos < jlen && jtext[jpos] == '0') {
-                jpos++;
-            } else if (jpos < jlen && jdigit(jtext[jpos])) {
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            } else {
-                jerr = "bad number";
-                return -1;
-            }
-            if (jpos < jlen && jtext[jpos] == '.') {
-                jpos++;
-                if (jpos >= jlen || !jdigit(jtext[jpos])) { jerr = "bad number"; return -1; }
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            }
-            if (jpos < jlen && (jtext[jpos] == 'e' || jtext[jpos] == 'E')) {
-                jpos++;
-                if (jpos < jlen && (jtext[jpos] == '+' || jtext[jpos] == '-')) jpos++;
-                if (jpos >= jlen || !jdigit(jtext[jpos])) { jerr = "bad number"; return -1; }
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            }
-            nodes[n].len = (uint32_t)(jpos - nodes[n].start);
-            return n;
-        }
-        break;
+        if (jtext[jpos] == '-' || jdigit(jtext[jpos]))
+            return jnumber();
+        return jfail("unexpected character");
     }
-    jerr = "unexpected character";
-    return -1;
 }
 
 static int32_t jparse(const char *text, size_t len)
@@ -371,6 +399,89 @@ static int hexval(char c)
     return -1;
 }
 
+/* Four hex digits at s as a number; -1 when one is not a hex digit. */
+static long hex4(const char *s)
+{
+    long v = 0;
+    int k;
+    for (k = 0; k < 4; k++) {
+        int h = hexval(s[k]);
+        if (h < 0)
+            return -1;
+        v = v * 16 + h;
+    }
+    return v;
+}
+
+/* The \u escape at s[*i] (after the "\u"), with its low surrogate when it is a high one; -1 when bad. */
+static long jstr_u(const char *s, size_t len, size_t *i)
+{
+    long cp, lo;
+    if (len - *i < 4 || (cp = hex4(s + *i)) < 0)
+        return -1;
+    *i += 4;
+    if (cp >= 0xDC00 && cp < 0xE000)
+        return -1;
+    if (cp < 0xD800 || cp >= 0xDC00)
+        return cp;
+    if (len - *i < 6 || s[*i] != '\\' || s[*i + 1] != 'u' || (lo = hex4(s + *i + 2)) < 0 || lo < 0xDC00 || lo >= 0xE000)
+        return -1;
+    *i += 6;
+    return 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+}
+
+/* The escape at s[*i] (a backslash) as a code point; -1 when bad. */
+static long jstr_escape(const char *s, size_t len, size_t *i)
+{
+    static const char from[] = "\"\\/bfnrt";
+    static const long to[] = { '"', '\\', '/', 8, 12, 10, 13, 9 };
+    const char *at;
+    char e;
+    if (len - *i < 2)
+        return -1;
+    e = s[*i + 1];
+    *i += 2;
+    if (e == 'u')
+        return jstr_u(s, len, i);
+    at = e ? strchr(from, e) : NULL;
+    return at ? to[at - from] : -1;
+}
+
+/* The UTF-8 sequence at s[*i] (its first byte c >= 0x80) as a code point; -1 when bad. */
+static long jstr_utf8(const char *s, size_t len, size_t *i)
+{
+    unsigned char c = (unsigned char)s[*i];
+    size_t extra = c >= 0xF0u ? 3u : c >= 0xE0u ? 2u : c >= 0xC0u ? 1u : 0u, k;
+    unsigned long cp;
+    if (!extra || c >= 0xF8u || len - *i <= extra)
+        return -1;
+    cp = c & (0x3Fu >> extra);
+    for (k = 1; k <= extra; k++) {
+        unsigned char d = (unsigned char)s[*i + k];
+        if ((d & 0xC0u) != 0x80u)
+            return -1;
+        cp = (cp << 6) | (d & 0x3Fu);
+    }
+    *i += extra + 1;
+    return (long)cp;
+}
+
+/* cp as UTF-8 into out[*o..cap); 0 when it does not fit. */
+static int put_utf8(unsigned long cp, uint8_t *out, size_t *o, size_t cap)
+{
+    uint8_t tmp[4];
+    size_t k, m;
+    if (cp < 0x80u) { tmp[0] = (uint8_t)cp; m = 1; }
+    else if (cp < 0x800u) { tmp[0] = (uint8_t)(0xC0u | (cp >> 6)); tmp[1] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 2; }
+    else if (cp < 0x10000u) { tmp[0] = (uint8_t)(0xE0u | (cp >> 12)); tmp[1] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 3; }
+    else { tmp[0] = (uint8_t)(0xF0u | (cp >> 18)); tmp[1] = (uint8_t)(0x80u | ((cp >> 12) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[3] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 4; }
+    if (cap - *o < m)
+        return 0;
+    for (k = 0; k < m; k++)
+        out[(*o)++] = tmp[k];
+    return 1;
+}
+
 /* Decode a JSON string to bytes: latin1 != 0 maps code points U+0000..U+00FF
  * to one byte each (others fail), else the bytes are UTF-8. Returns the length or -1. */
 static long jstr(int32_t n, uint8_t *out, size_t cap, int latin1)
@@ -382,89 +493,24 @@ static long jstr(int32_t n, uint8_t *out, size_t cap, int latin1)
     s = jtext + nodes[n].start;
     len = nodes[n].len;
     for (i = 0; i < len;) {
-        unsigned long cp;
         unsigned char c = (unsigned char)s[i];
+        long cp;
         if (c == '\\') {
-            char e;
-            if (len - i < 2)
-                return -1;
-            e = s[i + 1];
-            i += 2;
-            switch (e) {
-            case '"': cp = '"'; break;
-            case '\\': cp = '\\'; break;
-            case '/': cp = '/'; break;
-            case 'b': cp = 8; break;
-            case 'f': cp = 12; break;
-            case 'n': cp = 10; break;
-            case 'r': cp = 13; break;
-            case 't': cp = 9; break;
-            case 'u': {
-                int k;
-                cp = 0;
-                if (len - i < 4)
-                    return -1;
-                for (k = 0; k < 4; k++) {
-                    int h = hexval(s[i + (size_t)k]);
-                    if (h < 0)
-                        return -1;
-                    cp = cp * 16u + (unsigned long)h;
-                }
-                i += 4;
-                if (cp >= 0xD800u && cp < 0xDC00u) {
-                    unsigned long lo = 0;
-                    if (len - i < 6 || s[i] != '\\' || s[i + 1] != 'u')
-                        return -1;
-                    for (k = 0; k < 4; k++) {
-                        int h = hexval(s[i + 2 + (size_t)k]);
-                        if (h < 0)
-                            return -1;
-                        lo = lo * 16u + (unsigned long)h;
-                    }
-                    if (lo < 0xDC00u || lo >= 0xE000u)
-                        return -1;
-                    i += 6;
-                    cp = 0x10000u + ((cp - 0xD800u) << 10) + (lo - 0xDC00u);
-                } else if (cp >= 0xDC00u && cp < 0xE000u) {
-                    return -1;
-                }
-                break;
-            }
-            default:
-                return -1;
-            }
+            cp = jstr_escape(s, len, &i);
         } else if (c < 0x80u) {
-            cp = c;
+            cp = (long)c;
             i++;
         } else {
-            size_t extra = c >= 0xF0u ? 3u : c >= 0xE0u ? 2u : c >= 0xC0u ? 1u : 0u;
-            size_t k;
-            if (!extra || c >= 0xF8u || len - i <= extra)
-                return -1;
-            cp = c & (0x3Fu >> extra);
-            for (k = 1; k <= extra; k++) {
-                unsigned char d = (unsigned char)s[i + k];
-                if ((d & 0xC0u) != 0x80u)
-                    return -1;
-                cp = (cp << 6) | (d & 0x3Fu);
-            }
-            i += extra + 1;
+            cp = jstr_utf8(s, len, &i);
         }
+        if (cp < 0)
+            return -1;
         if (latin1) {
-            if (cp > 0xFFu || o >= cap)
+            if (cp > 0xFF || o >= cap)
                 return -1;
             out[o++] = (uint8_t)cp;
-        } else {
-            uint8_t tmp[4];
-            size_t k, m;
-            if (cp < 0x80u) { tmp[0] = (uint8_t)cp; m = 1; }
-            else if (cp < 0x800u) { tmp[0] = (uint8_t)(0xC0u | (cp >> 6)); tmp[1] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 2; }
-            else if (cp < 0x10000u) { tmp[0] = (uint8_t)(0xE0u | (cp >> 12)); tmp[1] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 3; }
-            else { tmp[0] = (uint8_t)(0xF0u | (cp >> 18)); tmp[1] = (uint8_t)(0x80u | ((cp >> 12) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[3] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 4; }
-            if (cap - o < m)
-                return -1;
-            for (k = 0; k < m; k++)
-                out[o++] = tmp[k];
+        } else if (!put_utf8((unsigned long)cp, out, &o, cap)) {
+            return -1;
         }
     }
     return (long)o;
@@ -1000,45 +1046,33 @@ static const cbf_field_info *role_field(const cbf_field_info *fields, size_t n, 
     return NULL;
 }
 
-static int encode(int32_t doc, int keep, int profile, long *size)
+/* An encode request in progress: the writer, the file's version, and the record head's fields. */
+typedef struct enc {
+    cbf_writer w;
+    int version, keep;
+    const cbf_field_info *rf, *fcode, *fsize;
+    size_t nr;
+} enc;
+
+static uint8_t enc_args[1u << 16];
+
+/* The header object hdr: its version, its fields packed (magic numbers and the fields the writer fills
+ * by default), and the writer begun on it. */
+static int encode_header(enc *e, int32_t hdr)
 {
     static uint8_t header_bytes[CBF_HEADER_SIZE];
-    static uint8_t args[1u << 16];
-    static const char *const top_keys[] = { "header", "records", "trailing", NULL };
-    static const char *const rec_keys[] = { "offset", "command", "args", "raw_args", NULL };
-    int32_t hdr, recs, trail, r;
-    const cbf_field_info *hf, *rf, *fcode, *fsize;
-    size_t nh, nr, i;
-    uint32_t major = 0, minor = 0, index = 0;
-    int version, hl;
+    const cbf_field_info *hf;
+    size_t nh = cbf_header_fields(0, &hf), i;
+    uint32_t major = 0, minor = 0;
     cbf_header h;
-    cbf_writer w;
-    long rc;
-    if (doc < 0 || nodes[doc].type != J_OBJ)
-        return fail("%s", "$: expected an object");
-    if (!known_keys(doc, NULL, 0, top_keys))
-        return fail("%s", "$: unknown key");
-    hdr = jget(doc, "header");
-    recs = jget(doc, "records");
-    trail = jget(doc, "trailing");
-    if (hdr < 0 || nodes[hdr].type != J_OBJ)
-        return fail("%s", "$.header: expected an object");
-    if (recs >= 0 && nodes[recs].type != J_ARR)
-        return fail("%s", "$.records: expected a list");
-    if (trail >= 0 && nodes[trail].type != J_STR)
-        return fail("%s", "$.trailing: expected a hex string");
-    nh = cbf_header_fields(0, &hf);
-    {
-        int32_t vmaj = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MAJOR)->name);
-        int32_t vmin = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MINOR)->name);
-        if ((vmaj >= 0 && !juint(vmaj, 0xFFu, &major)) || (vmin >= 0 && !juint(vmin, 0xFFu, &minor)))
-            return fail("%s", "$.header: bad version");
-    }
-    version = cbf_version_find(major, minor);
-    if (!keep && !cbf_version_writable(version))
+    int32_t vmaj = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MAJOR)->name);
+    int32_t vmin = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MINOR)->name);
+    if ((vmaj >= 0 && !juint(vmaj, 0xFFu, &major)) || (vmin >= 0 && !juint(vmin, 0xFFu, &minor)))
+        return fail("%s", "$.header: bad version");
+    e->version = cbf_version_find(major, minor);
+    if (!e->keep && !cbf_version_writable(e->version))
         return fail("header: version %lu.%lu is not writable", (unsigned long)major, (unsigned long)minor);
-    hl = cbf_version_header_layout(version);
-    nh = cbf_header_fields(hl, &hf);
+    nh = cbf_header_fields(cbf_version_header_layout(e->version), &hf);
     if (!known_keys(hdr, hf, nh, NULL))
         return fail("%s", "$.header: unknown key for the version's header layout");
     memset(header_bytes, 0, sizeof header_bytes);
@@ -1058,124 +1092,174 @@ static int encode(int32_t doc, int keep, int profile, long *size)
             return 0;
     }
     (void)cbf_header_decode(header_bytes, sizeof header_bytes, &h);
-    if (cbf_encode_begin(&w, out_buf, sizeof out_buf, &h) != CBF_OK)
+    if (cbf_encode_begin(&e->w, out_buf, sizeof out_buf, &h) != CBF_OK)
         return fail("%s", "header: cannot encode");
-    nr = cbf_record_fields(&rf);
-    fcode = role_field(rf, nr, CBF_ROLE_CODE);
-    fsize = role_field(rf, nr, CBF_ROLE_ARG_SIZE);
-    if (!keep && recs >= 0 && jcount(recs) > CBF_LIMIT_MAX_COMMANDS)
-        return fail("%s", "too many commands for the count field");
-    for (r = recs >= 0 ? nodes[recs].first : -1; r >= 0; r = nodes[r].next, index++) {
-        int32_t a, jname, jsize;
-        uint32_t code = 0, want_size = 0;
-        int has_size;
-        long nargs;
-        cbf_record_head head;
-        char where[64];
-        snprintf(where, sizeof where, "$.records[%lu]", (unsigned long)index);
-        if (nodes[r].type != J_OBJ)
-            return fail("%s: expected an object", where);
-        if (!known_keys(r, rf, nr, rec_keys))
-            return fail("%s: unknown key", where);
-        jname = jget(r, "command");
-        if (jget(r, fcode->name) >= 0 && nodes[jget(r, fcode->name)].type != J_NULL) {
-            if (!juint(jget(r, fcode->name), 0xFFu, &code))
-                return fail("%s: bad command code", where);
-        } else {
-            char cname[64];
-            int c, found = 0;
-            if (!jcstr(jname, cname, sizeof cname))
-                return fail("%s: needs a code or a known command name", where);
-            for (c = 0; c < 256 && !found; c++)
-                if (cbf_command_name(c) && strcmp(cbf_command_name(c), cname) == 0) {
-                    code = (uint32_t)c;
-                    found = 1;
-                }
-            if (!found)
-                return fail("%s: needs a code or a known command name", where);
+    return 1;
+}
+
+/* The code of a command name; 0 when no command has that name. */
+static int code_of_name(const char *name, uint32_t *code)
+{
+    int c;
+    for (c = 0; c < 256; c++)
+        if (cbf_command_name(c) && strcmp(cbf_command_name(c), name) == 0) {
+            *code = (uint32_t)c;
+            return 1;
         }
-        if (jname >= 0 && nodes[jname].type != J_NULL) {
-            char cname[64];
-            const char *known = cbf_command_name((int)code);
-            if (!jcstr(jname, cname, sizeof cname) || !known || strcmp(known, cname) != 0)
-                return fail("%s.command: does not match the code", where);
-        }
-        jsize = jget(r, fsize->name);
-        has_size = jsize >= 0 && nodes[jsize].type != J_NULL;
-        if (has_size && !juint(jsize, 0xFFFFFFFFu, &want_size))
-            return fail("%s: bad arg_size", where);
-        a = jget(r, "args");
-        if (a >= 0 && nodes[a].type != J_NULL) {
-            int lay;
-            const cbf_field_info *af;
-            size_t na, item = 0;
-            long group;
-            if (nodes[a].type != J_OBJ)
-                return fail("%s.args: expected an object", where);
-            if (!cbf_command_name((int)code))
-                return fail("%s.args: an unknown code takes raw_args only", where);
-            lay = choose_layout((int)code, version, a, has_size, want_size);
-            if (lay == CBF_LAYOUT__NONE)
-                return group_misfit((int)code, version, a, where)
-                       ? 0 : fail("%s.args: the keys match no layout of the command", where);
-            na = cbf_layout_fields(lay, &af);
-            nargs = json_nb(lay, a);
-            group = cbf_layout_group(lay, NULL, NULL, &item);
-            memset(args, 0, (size_t)nargs);
-            for (i = 0; i < na; i++)
-                if (!((long)i == group ? pack_group(&af[i], jget(a, af[i].name), args, item)
-                                       : pack_field(&af[i], jget(a, af[i].name), args)))
-                    return 0;
-        } else {
-            int32_t raw = jget(r, "raw_args");
-            nargs = (raw < 0 || nodes[raw].type == J_NULL) ? 0 : unhex(raw, args, sizeof args);
-            if (nargs < 0)
-                return fail("%s.raw_args: not hex", where);
-        }
-        if (has_size && want_size != (uint32_t)nargs)
-            return fail("%s: arg_size differs from the number of argument bytes", where);
-        if (!keep) {
-            if (!cbf_command_name((int)code))
-                return fail("%s: unknown command code", where);
-            if (!cbf_command_available((int)code, version))
-                return fail("%s: the command is not available in the version", where);
-            if (cbf_args_layout((int)code, version, (size_t)nargs) == CBF_LAYOUT__NONE)
-                return fail("%s: no layout of that size in the version", where);
-        }
-        memset(&head, 0, sizeof head);
-        for (i = 0; i < nr; i++) {
-            const cbf_field_info *f = &rf[i];
-            uint32_t val = 0, max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
-            int32_t jv = jget(r, f->name);
-            int given = jv >= 0 && nodes[jv].type != J_NULL;
-            if (given && f->role != CBF_ROLE_CODE && f->role != CBF_ROLE_ARG_SIZE && !juint(jv, max, &val))
-                return fail("%s: %s out of range", where, f->name);
-            if (f->role == CBF_ROLE_CODE) val = code;
-            else if (f->role == CBF_ROLE_ARG_SIZE) {
-                if ((unsigned long)nargs > max)
-                    return fail("%s: too many argument bytes", where);
-                val = (uint32_t)nargs;
-            } else if (f->role == CBF_ROLE_SEQUENCE && !keep) val = index & max;
-            else if (f->role == CBF_ROLE_CODE_COPY && (!keep || !given)) val = code;
-            else if (f->checksum && (!keep || !given)) val = cbf_args_checksum(args, (size_t)nargs);
-            cbf_member_set_uint(f, &head, val);
-        }
-        if (cbf_encode_record_stored(&w, &head, args, (size_t)nargs) != CBF_OK)
-            return fail("%s: cannot encode", where);
+    return 0;
+}
+
+/* The record r's command code: its code field, else its command name; a name given with a code matches it. */
+static int record_code(const enc *e, int32_t r, const char *where, uint32_t *code)
+{
+    int32_t jname = jget(r, "command"), jcode = jget(r, e->fcode->name);
+    char cname[64];
+    const char *known;
+    if (jcode >= 0 && nodes[jcode].type != J_NULL) {
+        if (!juint(jcode, 0xFFu, code))
+            return fail("%s: bad command code", where);
+    } else if (!jcstr(jname, cname, sizeof cname) || !code_of_name(cname, code)) {
+        return fail("%s: needs a code or a known command name", where);
     }
-    if (trail >= 0) {
-        long n = unhex(trail, out_buf + w.len, sizeof out_buf - w.len);
-        if (n < 0)
-            return fail("%s", "$.trailing: not hex");
-        if (n > 0 && !keep)
-            return fail("%s", "trailing bytes can only be written with keep_stored");
-        if (cbf_encode_bytes(&w, out_buf + w.len, (size_t)n) != CBF_OK)
-            return fail("%s", "trailing: cannot encode");
+    if (jname < 0 || nodes[jname].type == J_NULL)
+        return 1;
+    known = cbf_command_name((int)*code);
+    if (!jcstr(jname, cname, sizeof cname) || !known || strcmp(known, cname) != 0)
+        return fail("%s.command: does not match the code", where);
+    return 1;
+}
+
+/* The args object a packed into enc_args by the layout its keys (and the size, when given) choose. */
+static int record_args_object(const enc *e, int32_t a, uint32_t code, int has_size, uint32_t want_size,
+                              const char *where, long *nargs)
+{
+    int lay;
+    const cbf_field_info *af;
+    size_t na, item = 0, i;
+    long group;
+    if (nodes[a].type != J_OBJ)
+        return fail("%s.args: expected an object", where);
+    if (!cbf_command_name((int)code))
+        return fail("%s.args: an unknown code takes raw_args only", where);
+    lay = choose_layout((int)code, e->version, a, has_size, want_size);
+    if (lay == CBF_LAYOUT__NONE)
+        return group_misfit((int)code, e->version, a, where) ? 0
+                                                              : fail("%s.args: the keys match no layout of the command",
+                                                                     where);
+    na = cbf_layout_fields(lay, &af);
+    *nargs = json_nb(lay, a);
+    group = cbf_layout_group(lay, NULL, NULL, &item);
+    memset(enc_args, 0, (size_t)*nargs);
+    for (i = 0; i < na; i++)
+        if (!((long)i == group ? pack_group(&af[i], jget(a, af[i].name), enc_args, item)
+                               : pack_field(&af[i], jget(a, af[i].name), enc_args)))
+            return 0;
+    return 1;
+}
+
+/* The record r's argument bytes into enc_args (its args object, else its raw_args hex), *nargs of them. */
+static int record_args(const enc *e, int32_t r, uint32_t code, const char *where, long *nargs)
+{
+    int32_t a = jget(r, "args"), jsize = jget(r, e->fsize->name);
+    uint32_t want_size = 0;
+    int has_size = jsize >= 0 && nodes[jsize].type != J_NULL;
+    if (has_size && !juint(jsize, 0xFFFFFFFFu, &want_size))
+        return fail("%s: bad arg_size", where);
+    if (a >= 0 && nodes[a].type != J_NULL) {
+        if (!record_args_object(e, a, code, has_size, want_size, where, nargs))
+            return 0;
+    } else {
+        int32_t raw = jget(r, "raw_args");
+        *nargs = (raw < 0 || nodes[raw].type == J_NULL) ? 0 : unhex(raw, enc_args, sizeof enc_args);
+        if (*nargs < 0)
+            return fail("%s.raw_args: not hex", where);
     }
-    rc = cbf_encode_end(&w, profile, !keep);
+    if (has_size && want_size != (uint32_t)*nargs)
+        return fail("%s: arg_size differs from the number of argument bytes", where);
+    if (e->keep)
+        return 1;
+    if (!cbf_command_name((int)code))
+        return fail("%s: unknown command code", where);
+    if (!cbf_command_available((int)code, e->version))
+        return fail("%s: the command is not available in the version", where);
+    if (cbf_args_layout((int)code, e->version, (size_t)*nargs) == CBF_LAYOUT__NONE)
+        return fail("%s: no layout of that size in the version", where);
+    return 1;
+}
+
+/* One head field's value: the writer's (code, size, sequence, code copy, checksum) unless kept as given. */
+static int head_value(const enc *e, const cbf_field_info *f, int32_t jv, uint32_t code, long nargs, uint32_t index,
+                      const char *where, uint32_t *val)
+{
+    uint32_t max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
+    int given = jv >= 0 && nodes[jv].type != J_NULL;
+    *val = 0;
+    if (given && f->role != CBF_ROLE_CODE && f->role != CBF_ROLE_ARG_SIZE && !juint(jv, max, val))
+        return fail("%s: %s out of range", where, f->name);
+    if (f->role == CBF_ROLE_CODE) {
+        *val = code;
+    } else if (f->role == CBF_ROLE_ARG_SIZE) {
+        if ((unsigned long)nargs > max)
+            return fail("%s: too many argument bytes", where);
+        *val = (uint32_t)nargs;
+    } else if (f->role == CBF_ROLE_SEQUENCE && !e->keep) {
+        *val = index & max;
+    } else if (f->role == CBF_ROLE_CODE_COPY && (!e->keep || !given)) {
+        *val = code;
+    } else if (f->checksum && (!e->keep || !given)) {
+        *val = cbf_args_checksum(enc_args, (size_t)nargs);
+    }
+    return 1;
+}
+
+/* The record object r, the index-th, appended to the writer. */
+static int encode_record(enc *e, int32_t r, uint32_t index)
+{
+    static const char *const rec_keys[] = { "offset", "command", "args", "raw_args", NULL };
+    uint32_t code = 0;
+    long nargs = 0;
+    cbf_record_head head;
+    char where[64];
+    size_t i;
+    snprintf(where, sizeof where, "$.records[%lu]", (unsigned long)index);
+    if (nodes[r].type != J_OBJ)
+        return fail("%s: expected an object", where);
+    if (!known_keys(r, e->rf, e->nr, rec_keys))
+        return fail("%s: unknown key", where);
+    if (!record_code(e, r, where, &code) || !record_args(e, r, code, where, &nargs))
+        return 0;
+    memset(&head, 0, sizeof head);
+    for (i = 0; i < e->nr; i++) {
+        uint32_t val;
+        if (!head_value(e, &e->rf[i], jget(r, e->rf[i].name), code, nargs, index, where, &val))
+            return 0;
+        cbf_member_set_uint(&e->rf[i], &head, val);
+    }
+    if (cbf_encode_record_stored(&e->w, &head, enc_args, (size_t)nargs) != CBF_OK)
+        return fail("%s: cannot encode", where);
+    return 1;
+}
+
+/* The trailing hex string, written after the records (keep_stored only). */
+static int encode_trailing(enc *e, int32_t trail)
+{
+    long n = unhex(trail, out_buf + e->w.len, sizeof out_buf - e->w.len);
+    if (n < 0)
+        return fail("%s", "$.trailing: not hex");
+    if (n > 0 && !e->keep)
+        return fail("%s", "trailing bytes can only be written with keep_stored");
+    if (cbf_encode_bytes(&e->w, out_buf + e->w.len, (size_t)n) != CBF_OK)
+        return fail("%s", "trailing: cannot encode");
+    return 1;
+}
+
+/* The file finished (filled unless keep), and refused when it would not validate. */
+static int encode_finish(enc *e, int profile, long *size)
+{
+    long rc = cbf_encode_end(&e->w, profile, !e->keep);
     if (rc < 0)
         return fail("cannot finish the file: %s", cbf_strerror((int)rc));
-    if (!keep) {
+    if (!e->keep) {
         cbf_options opt;
         memset(&opt, 0, sizeof opt);
         opt.profile = profile;
@@ -1186,6 +1270,42 @@ static int encode(int32_t doc, int keep, int profile, long *size)
     }
     *size = rc;
     return 1;
+}
+
+static int encode(int32_t doc, int keep, int profile, long *size)
+{
+    static const char *const top_keys[] = { "header", "records", "trailing", NULL };
+    static enc e;
+    int32_t hdr, recs, trail, r;
+    uint32_t index = 0;
+    if (doc < 0 || nodes[doc].type != J_OBJ)
+        return fail("%s", "$: expected an object");
+    if (!known_keys(doc, NULL, 0, top_keys))
+        return fail("%s", "$: unknown key");
+    hdr = jget(doc, "header");
+    recs = jget(doc, "records");
+    trail = jget(doc, "trailing");
+    if (hdr < 0 || nodes[hdr].type != J_OBJ)
+        return fail("%s", "$.header: expected an object");
+    if (recs >= 0 && nodes[recs].type != J_ARR)
+        return fail("%s", "$.records: expected a list");
+    if (trail >= 0 && nodes[trail].type != J_STR)
+        return fail("%s", "$.trailing: expected a hex string");
+    memset(&e, 0, sizeof e);
+    e.keep = keep;
+    if (!encode_header(&e, hdr))
+        return 0;
+    e.nr = cbf_record_fields(&e.rf);
+    e.fcode = role_field(e.rf, e.nr, CBF_ROLE_CODE);
+    e.fsize = role_field(e.rf, e.nr, CBF_ROLE_ARG_SIZE);
+    if (!keep && recs >= 0 && jcount(recs) > CBF_LIMIT_MAX_COMMANDS)
+        return fail("%s", "too many commands for the count field");
+    for (r = recs >= 0 ? nodes[recs].first : -1; r >= 0; r = nodes[r].next, index++)
+        if (!encode_record(&e, r, index))
+            return 0;
+    if (trail >= 0 && !encode_trailing(&e, trail))
+        return 0;
+    return encode_finish(&e, profile, size);
 }
 
 static void put_base64(const uint8_t *p, size_t n)
@@ -1291,4 +1411,4 @@ int main(void)
     return 0;
 }
 /* ==== END tools/testee.c ==== */
-#line 1295 "cbf_testee.c"
+#line 1415 "cbf_testee.c"

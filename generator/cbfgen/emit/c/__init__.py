@@ -69,6 +69,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.globals["runtime"] = runtime_section
     env.globals["tools"] = tools_section
     env.filters["comment"] = comment
+    env.filters["cfloat"] = cfloat
     env.filters["cname"] = cname
     env.filters["macro"] = macro
     env.filters["wrap"] = lambda s, width=76, indent="": ("\n" + indent).join(textwrap.wrap(s, width))

@@ -35,9 +35,21 @@ CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own
 def _tags(spec: Spec) -> tuple[str, ...]:
     """The checksum tags of the spec: today's three, then any other, in checksums.fields order."""
     return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
-# Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
-# targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
-OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
+# The signature ("shape") of a targeted check kind's C kernel, cbf__<kind>_at (runtime/validator.c), from the
+# registry: a kind that judges a target's items (registry `items`) runs its own machine rules (machine.py); a
+# kind that compares a target's arguments with each other judges the target whole; every other one float
+# argument. The kernels are called through per-shape tables indexed by kind (validator_layouts.c.j2), so a
+# targeted kind the registry gains and the C engine lacks fails the build, naming its kernel.
+WHOLE_TARGET_KINDS = ("ordered",)
+
+
+def kernel_shape(kind: registry.CheckKind) -> str:
+    """argument, target, items, or "" for a kind that judges no target (the engine's own passes)."""
+    if not kind.targeted:
+        return ""
+    if kind.items:
+        return "items"
+    return "target" if kind.name in WHOLE_TARGET_KINDS else "argument"
 
 
 # -- rows -------------------------------------------------------------------------------------
@@ -134,7 +146,8 @@ class PlannedCheck:
 
     check: int
     target: int
-    kernel: str
+    kind: str  # the kind's macro (CBF__KIND_*), the index of its kernel
+    shape: str  # argument or target (kernel_shape)
     text: str
     args: tuple[int, ...]
 
@@ -368,6 +381,8 @@ class Vocabulary:
     shape_keys: tuple[str, ...]
     cutter_keys: tuple[str, ...]
     check_kinds: tuple[str, ...]
+    kernel_shapes: tuple[str, ...]  # per check kind, its kernel's shape (kernel_shape)
+    check_kind_names: tuple[str, ...]
     field_kinds: tuple[str, ...]
 
 
@@ -502,7 +517,8 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=cutter_columns(spec).all, check_kinds=m(list(registry.CHECK_KINDS)),
-        field_kinds=m(registry.FIELD_KINDS))
+        kernel_shapes=tuple(kernel_shape(k) for k in registry.CHECK_KINDS.values()),
+        check_kind_names=tuple(registry.CHECK_KINDS), field_kinds=m(registry.FIELD_KINDS))
 
 
 def _framing(spec: Spec) -> Framing:
@@ -661,8 +677,9 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
         for ct in ctargets[first_ct[ci]:first_ct[ci + 1]]:
             rows = [tindex[tfirst[ct.target] + a][li] for a in range(len(targets[ct.target][3]))]
             floats = tuple(first_arg + i for i in rows if i >= 0 and lay.args[i].kind == "float")
-            kernel = OWN_KERNEL.get(check_rows[ct.check].kind_name, "cbf__target_at")
-            if kernel == "cbf__machine_at":
+            kind = registry.CHECK_KINDS[check_rows[ct.check].kind_name]
+            shape = kernel_shape(kind)
+            if shape == "items":
                 continue  # its own rules (machine.py), called from the layout function too
             if lay.repeated is not None and len(lay.args) - 1 in rows:
                 # a repeated group is judged item by item by the kinds that know items (machine_limits)
@@ -670,9 +687,9 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
                                  f"targets the repeated argument group {lay.command} {lay.args[-1].name}: only "
                                  "machine_limits judges a group, item by item")
             # a check finds nothing in a layout without its float arguments (ordered: without all of them)
-            if floats if kernel == "cbf__target_at" else len(floats) == len(rows):
-                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kernel=kernel,
-                                                               text=ct.text, args=floats))
+            if floats if shape == "argument" else len(floats) == len(rows):
+                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kind=macro(kind.name),
+                                                               shape=shape, text=ct.text, args=floats))
     layouts: list[LayoutRow] = []
     commands: list[CommandRow] = []
     vorder = {v.id: i for i, v in enumerate(spec.versions)}
