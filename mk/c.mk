@@ -1,4 +1,4 @@
-# C binding (issue #5): generated/c/ (cbf.h, testee, cbf-c tool, fuzz harness)
+# C binding (issue #5): generated/c/ (cbf.h, the tools' engine cbf_tools.h, testee, cbf-c tool, fuzz harness)
 # built into build/c/. Targets:
 #   c-build    the conformance testee (ASan/UBSan), the cbf-c tool, the fuzzer
 #   c-check    strict builds: gcc and clang C99, g++ as C++, clang -Weverything
@@ -12,6 +12,7 @@
 C_GEN := generated/c
 C_OUT := build/c
 C_HDR := $(C_GEN)/cbf.h
+C_TOOLS_HDR := $(C_GEN)/cbf_tools.h
 C_CC ?= gcc
 C_CLANG ?= clang
 C_CXX ?= g++
@@ -34,7 +35,7 @@ FUZZ_SECONDS ?= 30
 # length, so the fuzzer mutates at thousands of runs a second.
 FUZZ_MAX_LEN ?= 16384
 C_GOLDEN := $(wildcard conformance/golden/*.cbf)
-C_SOURCES := $(C_HDR) $(C_GEN)/cbf_testee.c $(C_GEN)/cbf_tool.c $(C_GEN)/cbf_fuzz.c
+C_SOURCES := $(C_HDR) $(C_TOOLS_HDR) $(C_GEN)/cbf_testee.c $(C_GEN)/cbf_tool.c $(C_GEN)/cbf_fuzz.c
 
 # The C checks need no .venv: `make test` runs them while pip installs it (TEST_EARLY).
 TEST_EARLY += c-check c-test c-fuzz-ci
@@ -50,11 +51,11 @@ $(C_OUT)/.dir:
 	@touch $@
 
 # The conformance testee, with AddressSanitizer and UBSan (bindings.yaml runs it).
-$(C_OUT)/cbf_testee: $(C_HDR) $(C_GEN)/cbf_testee.c | $(C_OUT)/.dir
+$(C_OUT)/cbf_testee: $(C_HDR) $(C_TOOLS_HDR) $(C_GEN)/cbf_testee.c | $(C_OUT)/.dir
 	$(C_CC) $(C_STRICT) $(C_SAN) -o $@ $(C_GEN)/cbf_testee.c -lm
 
 # The reference command-line tool.
-$(C_OUT)/cbf-c: $(C_HDR) $(C_GEN)/cbf_tool.c | $(C_OUT)/.dir
+$(C_OUT)/cbf-c: $(C_HDR) $(C_TOOLS_HDR) $(C_GEN)/cbf_tool.c | $(C_OUT)/.dir
 	$(C_CC) $(C_STRICT) -O2 -o $@ $(C_GEN)/cbf_tool.c -lm
 
 # The libFuzzer harness (clang only).
@@ -76,28 +77,35 @@ $(C_OUT)/check.stamp: $(C_SOURCES) mk/c.mk | $(C_OUT)/.dir
 	done
 	@touch $@
 
-# The hand-written runtime (issue #24), compiled from its own files: cbf.h with each verbatim section
-# (between its BEGIN/END markers) replaced by an #include of runtime/<file> and its #line directives
-# dropped, so that every diagnostic names the file a developer edits; the same strict compilers.
+# The hand-written C (issue #24: runtime/, the engine in cbf.h; issue #33: tools/, the tools' engine in
+# cbf_tools.h, cbf-c's command line and the testee), compiled from its own files: each generated file with
+# each verbatim section (between its BEGIN/END markers) replaced by an #include of runtime/<file> or
+# tools/<file> and its #line directives dropped, so that every diagnostic names the file a developer
+# edits; the same strict compilers.
 C_RUNTIME := generator/cbfgen/emit/c/runtime
-C_RUNTIME_FILES := $(wildcard $(C_RUNTIME)/*.c $(C_RUNTIME)/*.h)
-$(C_OUT)/runtime.stamp: $(C_HDR) $(C_RUNTIME_FILES) mk/c.mk | $(C_OUT)/.dir
-	@awk '/^\/\* ==== BEGIN runtime\// { f = $$4; sub(/^runtime\//, "", f); sub(/:$$/, "", f); print "#include \"" f "\""; skip = 1; n++; next } \
-	  /^\/\* ==== END runtime\// { skip = 0; next } \
-	  /^#line / { next } \
+C_TOOLS := generator/cbfgen/emit/c/tools
+C_RUNTIME_FILES := $(wildcard $(C_RUNTIME)/*.c $(C_RUNTIME)/*.h $(C_TOOLS)/*.c $(C_TOOLS)/*.h)
+C_LINT := $(C_OUT)/obj/lint
+C_UNSECTION := awk '/^\/\* ==== BEGIN (runtime|tools)\// { f = $$4; sub(/^(runtime|tools)\//, "", f); sub(/:$$/, "", f); \
+	  print "\#include \"" f "\""; skip = 1; n++; next } \
+	  /^\/\* ==== END (runtime|tools)\// { skip = 0; next } \
+	  /^\#line / { next } \
 	  !skip { print } \
-	  END { if (n == 0) { print "runtime-lint: no runtime section in cbf.h" > "/dev/stderr"; exit 1 } }' \
-	  $(C_HDR) > $(C_OUT)/obj/runtime_lint.h
-	@printf '#define CBF_IMPLEMENTATION\n#include "runtime_lint.h"\n' > $(C_OUT)/obj/runtime_lint.c
-	@echo "c-check: runtime/ ($(notdir $(C_RUNTIME_FILES))): gcc, clang, g++ (C++), clang -Weverything"
-	@set -e; src=$(C_OUT)/obj/runtime_lint.c; inc="-I$(C_OUT)/obj -I$(C_RUNTIME)"; \
-	  $(C_CC) $(C_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.gcc.o; \
-	  $(C_CLANG) $(C_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.clang.o; \
-	  $(C_CXX) $(C_CXX_STRICT) $$inc -c $$src -o $(C_OUT)/obj/runtime.cxx.o; \
-	  $(C_CLANG) $(C_EVERYTHING) $$inc -c $$src -o $(C_OUT)/obj/runtime.every.o
+	  END { if (n == 0) { print "runtime-lint: no hand-written section in " FILENAME > "/dev/stderr"; exit 1 } }'
+$(C_OUT)/runtime.stamp: $(C_SOURCES) $(C_RUNTIME_FILES) mk/c.mk | $(C_OUT)/.dir
+	@mkdir -p $(C_LINT)
+	@set -e; for f in cbf.h cbf_tools.h cbf_testee.c cbf_tool.c cbf_fuzz.c; do $(C_UNSECTION) $(C_GEN)/$$f > $(C_LINT)/$$f; done
+	@printf '#define CBF_IMPLEMENTATION\n#include "cbf.h"\n' > $(C_LINT)/runtime_lint.c
+	@echo "c-check: runtime/ and tools/ ($(notdir $(C_RUNTIME_FILES))): gcc, clang, g++ (C++), clang -Weverything"
+	@set -e; inc="-I$(C_RUNTIME) -I$(C_TOOLS)"; for src in runtime_lint cbf_testee cbf_tool cbf_fuzz; do \
+	  $(C_CC) $(C_STRICT) $$inc -c $(C_LINT)/$$src.c -o $(C_LINT)/$$src.gcc.o; \
+	  $(C_CLANG) $(C_STRICT) $$inc -c $(C_LINT)/$$src.c -o $(C_LINT)/$$src.clang.o; \
+	  $(C_CXX) $(C_CXX_STRICT) $$inc -c $(C_LINT)/$$src.c -o $(C_LINT)/$$src.cxx.o; \
+	  $(C_CLANG) $(C_EVERYTHING) $$inc -c $(C_LINT)/$$src.c -o $(C_LINT)/$$src.every.o; \
+	done
 	@touch $@
 
-c-check: c-deps $(C_OUT)/check.stamp $(C_OUT)/runtime.stamp  ## strict C builds (cbf.h's runtime/ from its own files too): gcc, clang, g++ as C++, clang -Weverything
+c-check: c-deps $(C_OUT)/check.stamp $(C_OUT)/runtime.stamp  ## strict C builds (runtime/ and tools/ from their own files too): gcc, clang, g++ as C++, clang -Weverything
 
 # A smoke run of the sanitizer testee on the golden files: every request is
 # answered with one JSON line (the conformance runner does the judging).

@@ -4,6 +4,7 @@ regeneration, with no code change."""
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 import re
@@ -321,17 +322,32 @@ def _switch_body(text: str, head: str) -> str:
 
 
 def test_c_engine_places_every_registered_kind_and_field_kind() -> None:
-    """Each check kind of the registry has its case in the engine's kind switch, and each field kind
-    its case in the codec's load and store; none of these switches has a default (the kinds come
-    from cbfgen.registry, never from a list here)."""
+    """Each targeted check kind of the registry has its kernel in the engine, cbf__<kind>_at, named in the
+    generated table of its shape and in no other (the validator dispatches through the tables, with no
+    switch over kinds that passes kinds through); each field kind its case in the codec's load and store,
+    with no default (the kinds come from cbfgen.registry, never from a list here)."""
     from cbfgen.emit.c import macro
+    from cbfgen.emit.c.views import kernel_shape
     from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
 
     validator = (RUNTIME / "validator.c").read_text(encoding="utf-8")
-    body = _switch_body(validator, "switch ((enum cbf__kind)ch->kind) {")
-    assert "default:" not in body
-    missing = [k for k in CHECK_KINDS if f"case CBF__KIND_{macro(k)}:" not in body]
-    assert not missing, f"check kinds the C engine lacks: {missing}"
+    assert "switch ((enum cbf__kind)" not in validator
+    header = (ROOT / "generated" / "c" / "cbf.h").read_text(encoding="utf-8")
+    tables = {shape: re.search(rf"static const cbf__{shape}_kernel cbf__{shape}_kernels\[[^]]*\] = \{{([^}}]*)\}};",
+                               header) for shape in ("argument", "target")}
+    for shape, found in tables.items():
+        assert found, shape
+        assert found.group(1).strip().split(", ")[0] == "NULL"  # kinds count from 1
+    shapes = {k: kernel_shape(kind) for k, kind in CHECK_KINDS.items()}
+    assert {"argument", "target"} <= set(shapes.values())
+    for i, (k, shape) in enumerate(shapes.items(), start=1):
+        for name, found in tables.items():
+            assert found is not None
+            entry = found.group(1).strip().split(", ")[i]
+            assert entry == (f"cbf__{k}_at" if shape == name else "NULL"), (k, name, entry)
+        if shape in tables:
+            assert re.search(rf"^(?:CBF__INLINE|static) void cbf__{k}_at\(", validator, re.M), f"no C kernel for {k}"
+            assert f"CBF__KIND_{macro(k)} = {i}" in header
     codec = (RUNTIME / "bytes.c").read_text(encoding="utf-8")
     for fn in ("static void cbf__load(", "static void cbf__store("):
         body = _switch_body(codec[codec.index(fn):], "switch ((enum cbf_field_kind)f->kind) {")
@@ -348,12 +364,13 @@ def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
     cc = _need("gcc")
     import cbfgen.emit.c as emitter
     from cbfgen import registry
-    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS, CheckKind, NoParams
+    from cbfgen.registry import CHECK_KINDS, FIELD_KINDS
 
-    if what == "check kind":
-        extra = dict(CHECK_KINDS, zz_new_rule=CheckKind("zz_new_rule", NoParams, "record", "a new rule"))
+    if what == "check kind":  # a targeted kind: its kernel's table names cbf__zz_new_rule_at
+        rule = dataclasses.replace(CHECK_KINDS["positive"], name="zz_new_rule", doc="a new rule")
+        extra = dict(CHECK_KINDS, zz_new_rule=rule)
         monkeypatch.setattr(registry, "CHECK_KINDS", extra)
-        name = "CBF__KIND_ZZ_NEW_RULE"
+        name = "cbf__zz_new_rule_at"
     else:
         monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
         name = "CBF_KIND_ZZ_NEW_TYPE"
@@ -437,6 +454,41 @@ def test_every_registered_type_has_a_c_type_read_and_written_in_the_spec_byte_or
     assert done.returncode == 0, done.stderr[-3000:]
     run = subprocess.run([str(exe)], capture_output=True, text=True)
     assert run.returncode == 0, run.stdout
+
+
+TOOLS = RUNTIME.parent / "tools"
+PROGRAMS = ("cbf_tools.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c")
+
+
+def test_tools_files_are_in_one_generated_file_verbatim() -> None:
+    """Every hand-written file of the tools (generator/cbfgen/emit/c/tools/: the tools' engine, cbf-c's command
+    line, the testee, the fuzz harness) sits in exactly one generated file of generated/c, once, byte for byte,
+    between the markers that name it, after a #line directive that points a compiler at it: the engine that
+    cbf-c and the testee share is in cbf_tools.h alone (issue #33, point 5)."""
+    generated = {name: (ROOT / "generated" / "c" / name).read_text(encoding="utf-8") for name in PROGRAMS}
+    files = sorted(p for p in TOOLS.iterdir() if p.suffix in (".c", ".h"))
+    assert files
+    for p in files:
+        begin = f"/* ==== BEGIN tools/{p.name}: verbatim from generator/cbfgen/emit/c/tools/{p.name}"
+        homes = [name for name, text in generated.items() if begin in text]
+        assert len(homes) == 1 and generated[homes[0]].count(begin) == 1, (p.name, homes)
+        text = generated[homes[0]]
+        line = text.index("\n", text.index(begin)) + 1
+        assert text[line:].startswith(f'#line 1 "generator/cbfgen/emit/c/tools/{p.name}"\n'), p.name
+        body = text[text.index("\n", line) + 1:text.index(f"/* ==== END tools/{p.name} ==== */")]
+        assert body == p.read_text(encoding="utf-8").rstrip("\n") + "\n", f"{p.name} is not verbatim"
+    for name in ("cbf_testee.c", "cbf_tool.c"):  # both programs include the one engine
+        assert '#include "cbf_tools.h"' in generated[name], name
+
+
+def test_the_programs_templates_define_no_function() -> None:
+    """The templates of the tools (cbf_tools.h, cbf_tool.c, cbf_testee.c, cbf_fuzz.c) emit the spec's names and
+    tables only: no function body of hand-written C (that lives in tools/, linted by mk/c.mk)."""
+    for name in PROGRAMS:
+        text = (RUNTIME.parent / "templates" / f"{name}.j2").read_text(encoding="utf-8")
+        bodies = re.findall(r"^[A-Za-z_][\w \*]*\([^;{}]*\)\s*\n\{", text, re.M)
+        assert not bodies, (name, bodies)
+        assert len(text.splitlines()) < 120, f"{name}.j2: {len(text.splitlines())} lines"
 
 
 def test_runtime_files_are_in_the_header_verbatim() -> None:

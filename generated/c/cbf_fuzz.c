@@ -16,10 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define CHECK(cond) do { if (!(cond)) __builtin_trap(); } while (0)
-
-static uint8_t out[1u << 20];
-static uint8_t out2[1u << 20];
+#define CBF_FUZZ_DEFAULT_PROFILE CBF_PROFILE_DEFAULT
+/* The command code of a record head (the member of the code role). */
+#define CBF_FUZZ_CODE(head) ((head).code)
 
 /* Checks the filling writer guarantees to pass (by kind). */
 static const char *const filled_checks[] = {
@@ -33,6 +32,14 @@ static const char *const filled_checks[] = {
     CBF_CHECK_RESERVED_NONZERO,
     NULL
 };
+
+/* ==== BEGIN tools/fuzz.c: verbatim from generator/cbfgen/emit/c/tools/fuzz.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/tools/fuzz.c"
+/* ---- the libFuzzer harness: round trips and the filling writer's promises, on every input ---- */
+#define CHECK(cond) do { if (!(cond)) __builtin_trap(); } while (0)
+
+static uint8_t out[1u << 20];
+static uint8_t out2[1u << 20];
 
 static long findings;
 static int filled_failed;
@@ -93,7 +100,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     CHECK(rc == 0);
     CHECK(cbf_encode_bytes(&w, data + r.pos, r.trailing) == CBF_OK);
-    n = cbf_encode_end(&w, CBF_PROFILE_DEFAULT, 0);
+    n = cbf_encode_end(&w, CBF_FUZZ_DEFAULT_PROFILE, 0);
     CHECK(n >= 0 && (size_t)n == size && memcmp(out, data, size) == 0);
 
     /* -> decode again: the same header and records */
@@ -118,7 +125,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         int refused = 0;
         CHECK(cbf_encode_begin(&w, out2, sizeof out2, &r.header) == CBF_OK);
         while (!refused && cbf_next_record(&r, &rec) == 1) {
-            int code = rec.head.code;
+            int code = CBF_FUZZ_CODE(rec.head);
             rc = cbf_encode_record(&w, code, rec.args, rec.nargs);
             /* the filling writer refuses exactly what the version lacks: the command or the size */
             refused = !cbf_command_available(code, r.header.version)
@@ -138,3 +145,5 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     return 0;
 }
+/* ==== END tools/fuzz.c ==== */
+#line 150 "cbf_fuzz.c"

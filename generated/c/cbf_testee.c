@@ -4,18 +4,23 @@
  *
  * Reads JSON lines on stdin ({"op": "decode" | "validate" | "encode" | "quit"})
  * and answers each with one JSON line on stdout. It only answers; the runner
- * judges. No malloc: every buffer is static.
+ * judges. No malloc: every buffer is static. Option files are read by the tools'
+ * engine (cbf_tools.h), the same as cbf-c's.
  */
 #define CBF_IMPLEMENTATION
+#define CBF_TOOLS_IMPLEMENTATION
 #include "cbf.h"
+#include "cbf_tools.h"
 
-#include <float.h>
-#include <stdarg.h>
-#include <errno.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
+/* A writer makes files that validate: no error, and no warning of these checks (strings in ASCII, N4). */
+static const char *const refused_warnings[] = {
+    CBF_CHECK_STRING_ASCII,
+    NULL
+};
 
+/* ==== BEGIN tools/testee.c: verbatim from generator/cbfgen/emit/c/tools/testee.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/tools/testee.c"
+/* ---- the conformance testee (conformance/PROTOCOL.md): JSON lines in, one JSON line out each ---- */
 #define MAX_FILE (32u << 20)
 #define MAX_LINE (96u << 20)
 #define MAX_NODES (6u << 20)
@@ -24,1462 +29,6 @@
 static uint8_t file_buf[MAX_FILE];
 static uint8_t out_buf[MAX_FILE];
 static char req_line[MAX_LINE];
-
-/* ---- shared by the testee and the tool (generated from common.inc.j2) ---- */
-
-/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
-static long read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
-{
-    FILE *fp;
-    size_t n = 0;
-    errno = 0;
-    fp = fopen(path, "rb");
-    *why = "cannot open";
-    if (!fp) {
-        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
-             : errno == EISDIR ? "is a directory" : "cannot open";
-        return -1;
-    }
-    for (;;) {
-        size_t got;
-        if (n == cap) {
-            int c = fgetc(fp);
-            fclose(fp);
-            *why = "file too large";
-            return c == EOF ? (long)n : -1;
-        }
-        got = fread(buf + n, 1, cap - n, fp);
-        n += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(fp)) {
-        *why = errno == EISDIR ? "is a directory" : "read error"; /* fopen opens a directory; reading fails */
-        fclose(fp);
-        return -1;
-    }
-    fclose(fp);
-    return (long)n;
-}
-
-/* ---- option files: cutter tables (6.1.2) and machine files, by one rule (issue 28) ---- */
-/* ---- option files (issue 28): the rules of generator/cbfgen/option_files.yaml, completed from the
- * spec (cbfgen/options.py), the same that cbf/option_files.json gives cbf. Every refusal is one line
- * naming the file, the line (or JSON path) and the limit, the line cbf says (tests/option_files/). */
-#include <float.h>
-#include <stdarg.h>
-
-#define OPT_CUTTER_MAX_BYTES 1048576u
-#define OPT_CUTTER_MAX_ROWS 4096u
-#define OPT_CUTTER_MAX_COLUMNS 32
-#define OPT_CUTTER_MAX_DEPTH 3
-#define OPT_CUTTER_MAX_NAME 16u
-#define OPT_MACHINE_MAX_BYTES 65536u
-#define OPT_MACHINE_MAX_DEPTH 4
-#define OPT_YAML_MAX_KEYS 64u
-#define OPT_NEST_CAP 32 /* the deepest any option file may nest, and then one more */
-#if OPT_CUTTER_MAX_DEPTH >= OPT_NEST_CAP || OPT_MACHINE_MAX_DEPTH >= OPT_NEST_CAP
-#error "option_files.yaml: max_depth beyond OPT_NEST_CAP"
-#endif
-#define OPT_CUTTER_NAME_BYTES (4u * OPT_CUTTER_MAX_NAME + 1u) /* UTF-8: up to 4 bytes a character */
-static const char opt_cutter_what[] = "cutter table";
-static const char opt_machine_what[] = "machine file";
-/* A cutter table's columns (cbfgen/options.py: the keys of the spec's cutter role): the name's
- * first, then the numbers, value[k] of cbf_cutter, in the order of opt_cutter_values. */
-#define OPT_CUTTER_COLUMNS 3
-#if OPT_CUTTER_COLUMNS != CBF_CUTTER_VALUES + 1
-#error "a cutter table's columns are the name and cbf_cutter's values"
-#endif
-static const char *const opt_cutter_columns[OPT_CUTTER_COLUMNS] = { "name", "length", "radius" };
-static const char *const opt_columns_list = "name, length, radius";
-static const struct { const char *column; int positive; const char *check; } opt_cutter_values[CBF_CUTTER_VALUES] = {
-    { "length", 1, "cutter_positive" },
-    { "radius", 1, "cutter_positive" },
-};
-
-static char opt_why[8192];
-
-static int opt_fail(const char *fmt, ...) CBF__PRINTF(1, 2);
-static int opt_fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    (void)vsnprintf(opt_why, sizeof opt_why, fmt, ap);
-    va_end(ap);
-    return 0;
-}
-
-/* The file into buf (at most max bytes, never more read), checked to be UTF-8 as Python decodes it. */
-static long opt_read(const char *path, char *buf, size_t max, const char *what)
-{
-    const char *why;
-    long n = read_file(path, (uint8_t *)buf, max, &why);
-    size_t i = 0;
-    if (n < 0) {
-        if (strcmp(why, "file too large") == 0)
-            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max,
-                            what) - 1;
-        return opt_fail("%s: cannot read %s (%s)", path, what, why) - 1;
-    }
-    buf[n] = 0;
-    while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
-        const unsigned char *u = (const unsigned char *)buf + i;
-        size_t left = (size_t)n - i, len, k;
-        unsigned char lo = 0x80, hi = 0xBF;
-        if (u[0] < 0x80) {
-            i++;
-            continue;
-        }
-        if (u[0] >= 0xC2 && u[0] <= 0xDF) len = 2;
-        else if (u[0] >= 0xE0 && u[0] <= 0xEF) len = 3;
-        else if (u[0] >= 0xF0 && u[0] <= 0xF4) len = 4;
-        else return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
-        if (u[0] == 0xE0) lo = 0xA0;
-        if (u[0] == 0xED) hi = 0x9F;
-        if (u[0] == 0xF0) lo = 0x90;
-        if (u[0] == 0xF4) hi = 0x8F;
-        for (k = 1; k < len; k++) {
-            unsigned char a = k == 1 ? lo : 0x80, b = k == 1 ? hi : 0xBF;
-            if (k >= left || u[k] < a || u[k] > b)
-                return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
-        }
-        i += len;
-    }
-    if (memchr(buf, 0, (size_t)n))
-        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
-                        (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
-    return n;
-}
-
-static size_t opt_chars(const char *s) /* UTF-8 characters, as Python's len() */
-{
-    size_t n = 0;
-    for (; *s; s++)
-        n += ((unsigned char)*s & 0xC0u) != 0x80u;
-    return n;
-}
-
-/* RFC 8259's number grammar, the whole of s. */
-static int opt_is_number(const char *s)
-{
-    if (*s == '-')
-        s++;
-    if (*s == '0') {
-        s++;
-    } else if (*s >= '1' && *s <= '9') {
-        while (*s >= '0' && *s <= '9')
-            s++;
-    } else {
-        return 0;
-    }
-    if (*s == '.') {
-        s++;
-        if (!(*s >= '0' && *s <= '9'))
-            return 0;
-        while (*s >= '0' && *s <= '9')
-            s++;
-    }
-    if (*s == 'e' || *s == 'E') {
-        s++;
-        if (*s == '+' || *s == '-')
-            s++;
-        if (!(*s >= '0' && *s <= '9'))
-            return 0;
-        while (*s >= '0' && *s <= '9')
-            s++;
-    }
-    return *s == 0;
-}
-
-static int opt_lower_eq(const char *s, const char *word)
-{
-    for (; *s && *word; s++, word++)
-        if ((*s >= 'A' && *s <= 'Z' ? *s - 'A' + 'a' : *s) != *word)
-            return 0;
-    return *s == 0 && *word == 0;
-}
-
-/* NULL and *out set, or why text is not a usable number ("not a number", "not a finite number"). */
-static const char *opt_number(const char *s, double *out)
-{
-    const char *w = s;
-    if (opt_is_number(s)) {
-        *out = strtod(s, NULL);
-        return *out <= DBL_MAX && *out >= -DBL_MAX ? NULL : "not a finite number";
-    }
-    if (*w == '+' || *w == '-')
-        w++;
-    if (*w == '.')
-        w++;
-    if (opt_lower_eq(w, "nan") || opt_lower_eq(w, "inf") || opt_lower_eq(w, "infinity"))
-        return "not a finite number";
-    return "not a number";
-}
-
-/* "line L, column C: nested deeper than N levels" for the first bracket beyond max outside strings
- * (columns in characters), before the JSON reader reads a byte: its nesting is then bounded. */
-static int opt_json_depth(const char *path, const char *s, size_t n, int max)
-{
-    size_t i;
-    unsigned long line = 1, col = 0;
-    int depth = 0, in_string = 0, escaped = 0;
-    for (i = 0; i < n; i++) {
-        char c = s[i];
-        if (((unsigned char)c & 0xC0u) != 0x80u)
-            col++;
-        if (in_string) {
-            if (escaped) escaped = 0;
-            else if (c == '\\') escaped = 1;
-            else if (c == '"') in_string = 0;
-            else if (c == '\n') { line++; col = 0; }
-            continue;
-        }
-        if (c == '"') {
-            in_string = 1;
-        } else if (c == '[' || c == '{') {
-            if (++depth > max)
-                return opt_fail("%s: line %lu, column %lu: nested deeper than %d levels (limit max_depth)", path, line,
-                                col, max);
-        } else if (c == ']' || c == '}') {
-            depth--;
-        } else if (c == '\n') {
-            line++;
-            col = 0;
-        }
-    }
-    return 1;
-}
-
-/* ---- YAML, the subset both tools read (option_files.yaml), as JSON text with the same lines ----
- * Block and flow mappings and lists of one-line plain or quoted scalars, '#' comments, one document.
- * Anchors, aliases, tags, complex keys, multi-line values, a second document and nesting beyond the
- * limit are refused at the line they start, as cbf refuses them; a plain scalar becomes a JSON number
- * (RFC 8259 grammar), true, false, null ('~' and nothing too) or a string, as cbf resolves it. The
- * JSON keeps every source line break, so a JSON line is the YAML line. */
-typedef struct yj {
-    const char *file;
-    char *out;
-    size_t n, cap;
-    int max_depth, depth;
-    int ind[OPT_NEST_CAP + 1];
-    char kind[OPT_NEST_CAP + 1]; /* 'm' or 's'; flow collections live only inside yj_flow */
-    unsigned items[OPT_NEST_CAP + 1];
-    int pending, pending_ind; /* a key or list item whose value is still to come */
-    size_t pending_at; /* where its value goes: before the line breaks output since */
-    unsigned long line, scalar_line; /* scalar_line: the last line that ended in a plain scalar value */
-    int root_done, ended;
-} yj;
-
-static int yj_put(yj *y, const char *s, size_t len)
-{
-    if (y->cap - y->n <= len)
-        return opt_fail("%s: line %lu: not YAML (too long once read)", y->file, y->line);
-    memcpy(y->out + y->n, s, len);
-    y->n += len;
-    y->out[y->n] = 0;
-    return 1;
-}
-
-static int yj_c(yj *y, char c) { return yj_put(y, &c, 1); }
-
-static int yj_err(yj *y, unsigned long line, const char *what)
-{
-    return opt_fail("%s: line %lu: %s", y->file, line, what);
-}
-
-/* The null of a value that never came, on the line of its key or item (as cbf's reader places it). */
-static int yj_null(yj *y)
-{
-    size_t breaks = y->n - y->pending_at, k;
-    y->n = y->pending_at;
-    if (!yj_put(y, "null", 4))
-        return 0;
-    for (k = 0; k < breaks; k++)
-        if (!yj_c(y, '\n'))
-            return 0;
-    y->pending = 0;
-    return 1;
-}
-
-static int yj_open(yj *y, char kind, int ind)
-{
-    if (y->depth >= y->max_depth)
-        return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line, y->max_depth);
-    y->depth++;
-    y->kind[y->depth] = kind;
-    y->ind[y->depth] = ind;
-    y->items[y->depth] = 0;
-    y->pending = 0;
-    return yj_c(y, kind == 'm' ? '{' : '[');
-}
-
-static int yj_close(yj *y)
-{
-    if (y->pending && !yj_null(y))
-        return 0;
-    if (!yj_c(y, y->kind[y->depth] == 'm' ? '}' : ']'))
-        return 0;
-    y->depth--;
-    return 1;
-}
-
-/* A JSON string of s[0..len) (control characters were refused with the line). */
-static int yj_string(yj *y, const char *s, size_t len)
-{
-    size_t k;
-    if (!yj_c(y, '"'))
-        return 0;
-    for (k = 0; k < len; k++) {
-        if ((s[k] == '"' || s[k] == '\\') && !yj_c(y, '\\'))
-            return 0;
-        if (!yj_c(y, s[k]))
-            return 0;
-    }
-    return yj_c(y, '"');
-}
-
-/* A plain scalar resolved as cbf resolves it. */
-static int yj_plain(yj *y, const char *s, size_t len)
-{
-    char buf[512];
-    if (len == 0 || (len == 1 && s[0] == '~'))
-        return yj_put(y, "null", 4);
-    if (len < sizeof buf) {
-        memcpy(buf, s, len);
-        buf[len] = 0;
-        if (opt_is_number(buf) || strcmp(buf, "true") == 0 || strcmp(buf, "false") == 0 || strcmp(buf, "null") == 0)
-            return yj_put(y, s, len);
-    }
-    return yj_string(y, s, len);
-}
-
-/* A quoted scalar at *p (' or "), ending on this line; *p moves past it. */
-static int yj_quoted(yj *y, const char **p, const char *end)
-{
-    char q = **p;
-    const char *s = *p + 1;
-    if (!yj_c(y, '"'))
-        return 0;
-    for (;;) {
-        if (s >= end)
-            return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-        if (q == '\'' && *s == '\'') {
-            if (s + 1 < end && s[1] == '\'') {
-                if (!yj_c(y, '\''))
-                    return 0;
-                s += 2;
-                continue;
-            }
-            break;
-        }
-        if (q == '"' && *s == '"')
-            break;
-        if (q == '"' && *s == '\\') {
-            if (s + 1 >= end || !strchr("\"\\/bfnrtu", s[1]))
-                return opt_fail("%s: line %lu: not YAML (an escape this reader does not read)", y->file, y->line);
-            if (!yj_put(y, s, 2))
-                return 0;
-            s += 2;
-            continue;
-        }
-        if ((*s == '"' || *s == '\\') && !yj_c(y, '\\'))
-            return 0;
-        if (!yj_c(y, *s))
-            return 0;
-        s++;
-    }
-    *p = s + 1;
-    return yj_c(y, '"');
-}
-
-static int yj_node_mark(yj *y, const char *p)
-{
-    if (*p == '&' || *p == '*')
-        return yj_err(y, y->line, "anchors and aliases are not allowed (limit: none)");
-    if (*p == '!')
-        return yj_err(y, y->line, "tags are not allowed");
-    if (*p == '|' || *p == '>')
-        return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-    if (*p == '?' && (p[1] == ' ' || p[1] == 0 || p[1] == '\t'))
-        return yj_err(y, y->line, "a key must be a plain value (complex key)");
-    return 1;
-}
-
-static const char *yj_skip(const char *p, const char *end)
-{
-    while (p < end && (*p == ' ' || *p == '\t'))
-        p++;
-    return p;
-}
-
-/* A flow collection or scalar inside one, at *p; fdepth: the open flow collections around it. */
-static int yj_flow(yj *y, const char **p, const char *end, int in_flow)
-{
-    const char *s = yj_skip(*p, end);
-    if (!yj_node_mark(y, s))
-        return 0;
-    if (s < end && (*s == '[' || *s == '{')) {
-        char close = *s == '[' ? ']' : '}';
-        int mapping = *s == '{';
-        unsigned keys = 0;
-        if (y->depth >= y->max_depth)
-            return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line,
-                            y->max_depth);
-        y->depth++;
-        if (!yj_c(y, *s))
-            return 0;
-        s = yj_skip(s + 1, end);
-        if (s < end && *s == close) {
-            s++;
-        } else {
-            for (;;) {
-                s = yj_skip(s, end);
-                if (s >= end)
-                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-                if (mapping) {
-                    const char *k0;
-                    if (!yj_node_mark(y, s))
-                        return 0;
-                    if (*s == '[' || *s == '{')
-                        return yj_err(y, y->line, "a key must be a plain value (complex key)");
-                    if (++keys > OPT_YAML_MAX_KEYS)
-                        return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file,
-                                        y->line, OPT_YAML_MAX_KEYS);
-                    if (*s == '"' || *s == '\'') {
-                        if (!yj_quoted(y, &s, end))
-                            return 0;
-                    } else {
-                        size_t len;
-                        k0 = s;
-                        while (s < end && *s != ',' && *s != close && !(*s == ':' && (s + 1 >= end || s[1] == ' ')))
-                            s++;
-                        len = (size_t)(s - k0);
-                        while (len && (k0[len - 1] == ' ' || k0[len - 1] == '\t'))
-                            len--;
-                        if (!yj_string(y, k0, len))
-                            return 0;
-                    }
-                    s = yj_skip(s, end);
-                    if (!yj_c(y, ':'))
-                        return 0;
-                    if (s < end && *s == ':') {
-                        s++;
-                        if (!yj_flow(y, &s, end, 1))
-                            return 0;
-                    } else if (!yj_put(y, "null", 4)) {
-                        return 0;
-                    }
-                } else if (!yj_flow(y, &s, end, 1)) {
-                    return 0;
-                }
-                s = yj_skip(s, end);
-                if (s >= end)
-                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-                if (*s == ',') {
-                    s = yj_skip(s + 1, end);
-                    if (s < end && *s == close) {
-                        s++;
-                        break;
-                    }
-                    if (!yj_c(y, ','))
-                        return 0;
-                    continue;
-                }
-                if (*s == close) {
-                    s++;
-                    break;
-                }
-                return opt_fail("%s: line %lu: not YAML (expected ',' or '%c')", y->file, y->line, close);
-            }
-        }
-        y->depth--;
-        *p = s;
-        return yj_c(y, close);
-    }
-    if (s < end && (*s == '"' || *s == '\'')) {
-        if (!yj_quoted(y, &s, end))
-            return 0;
-        *p = s;
-        return 1;
-    }
-    {
-        const char *v0 = s;
-        size_t len;
-        while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}'))) {
-            if (*s == ':' && (s + 1 == end || s[1] == ' ' || s[1] == '\t'))
-                return opt_fail("%s: line %lu: not YAML (a ': ' inside a value)", y->file, y->line);
-            s++;
-        }
-        len = (size_t)(s - v0);
-        while (len && (v0[len - 1] == ' ' || v0[len - 1] == '\t'))
-            len--;
-        *p = s;
-        if (!in_flow)
-            y->scalar_line = y->line;
-        return yj_plain(y, v0, len);
-    }
-}
-
-/* The end of a plain or quoted key at p followed by ':' and a blank or the line's end, or NULL. */
-static const char *yj_key_end(const char *p, const char *end)
-{
-    if (p < end && (*p == '"' || *p == '\'')) {
-        char q = *p++;
-        while (p < end && !(*p == q && !(q == '\'' && p + 1 < end && p[1] == '\'')))
-            p += (q == '\'' && *p == '\'') || (q == '"' && *p == '\\') ? 2 : 1;
-        if (p >= end)
-            return NULL;
-        p = yj_skip(p + 1, end);
-        return p < end && *p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t') ? p : NULL;
-    }
-    if (p < end && (*p == '[' || *p == '{'))
-        return NULL;
-    for (; p < end; p++)
-        if (*p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t'))
-            return p;
-    return NULL;
-}
-
-/* The node a line holds from p (its column col): a list item, a key and its value, or a value. */
-static int yj_inline(yj *y, const char *p, const char *end, int col)
-{
-    const char *colon;
-    if (!yj_node_mark(y, p))
-        return 0;
-    if (*p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t')) {
-        const char *rest;
-        if (y->depth && y->kind[y->depth] == 's' && y->ind[y->depth] == col && !y->pending) {
-            if (!yj_c(y, ','))
-                return 0;
-        } else if (y->pending || (!y->depth && !y->root_done)) {
-            if (!yj_open(y, 's', col))
-                return 0;
-        } else {
-            return opt_fail("%s: line %lu: not YAML (a list item where none can be)", y->file, y->line);
-        }
-        y->root_done = 1;
-        y->items[y->depth]++;
-        rest = yj_skip(p + 1, end);
-        y->pending = 1; /* the item's value: on this line, or on the lines below */
-        y->pending_ind = col;
-        y->pending_at = y->n;
-        if (rest >= end)
-            return 1;
-        return yj_inline(y, rest, end, col + (int)(rest - p));
-    }
-    colon = yj_key_end(p, end);
-    if (colon) {
-        const char *v;
-        if (y->depth && y->kind[y->depth] == 'm' && y->ind[y->depth] == col && !y->pending) {
-            if (!yj_c(y, ','))
-                return 0;
-        } else if (y->pending || (!y->depth && !y->root_done)) {
-            if (!yj_open(y, 'm', col))
-                return 0;
-        } else {
-            return opt_fail("%s: line %lu: not YAML (a key where none can be)", y->file, y->line);
-        }
-        y->root_done = 1;
-        if (++y->items[y->depth] > OPT_YAML_MAX_KEYS)
-            return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file, y->line,
-                            OPT_YAML_MAX_KEYS);
-        if (*p == '"' || *p == '\'') {
-            const char *q = p;
-            if (!yj_quoted(y, &q, end))
-                return 0;
-        } else {
-            size_t len = (size_t)(colon - p);
-            while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
-                len--;
-            if (!yj_string(y, p, len))
-                return 0;
-        }
-        if (!yj_c(y, ':'))
-            return 0;
-        v = yj_skip(colon + 1, end);
-        if (v >= end) {
-            y->pending = 1;
-            y->pending_ind = col;
-            y->pending_at = y->n;
-            return 1;
-        }
-        if (!yj_flow(y, &v, end, 0))
-            return 0;
-        if (yj_skip(v, end) < end)
-            return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
-        return 1;
-    }
-    if (!y->pending && (y->depth || y->root_done)) {
-        if (y->scalar_line && y->scalar_line + 1 == y->line)
-            return yj_err(y, y->scalar_line, "a value over more than one line (one-line values only)");
-        return opt_fail("%s: line %lu: not YAML (a value where none can be)", y->file, y->line);
-    }
-    y->pending = 0;
-    y->root_done = 1;
-    if (!yj_flow(y, &p, end, 0))
-        return 0;
-    if (yj_skip(p, end) < end)
-        return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
-    return 1;
-}
-
-/* Translate the YAML text src into JSON in out (cap bytes); 0 with the one line in opt_why. */
-static int yj_translate(const char *file, const char *src, char *out, size_t cap, int max_depth)
-{
-    yj y;
-    const char *line = src;
-    memset(&y, 0, sizeof y);
-    y.file = file;
-    y.out = out;
-    y.cap = cap;
-    y.max_depth = max_depth;
-    out[0] = 0;
-    if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
-        line += 3;
-    while (*line) {
-        const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line, *c;
-        int ind, quote = 0;
-        y.line++;
-        for (c = line; c < end; c++) { /* refuse control characters; cut a comment outside quotes */
-            if ((unsigned char)*c < 0x20 && *c != '\t' && !(*c == '\r' && c + 1 == end))
-                return opt_fail("%s: line %lu: not YAML (a control character)", file, y.line);
-            if (quote) {
-                if (*c == quote)
-                    quote = 0;
-            } else if ((*c == '"' || *c == '\'') && (c == line || strchr(" \t[{,:-", c[-1]))) {
-                quote = *c;
-            } else if (*c == '#' && (c == line || c[-1] == ' ' || c[-1] == '\t')) {
-                end = c;
-                break;
-            }
-        }
-        while (end > line && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r'))
-            end--;
-        while (p < end && *p == ' ')
-            p++;
-        ind = (int)(p - line);
-        if (p < end && *p == '\t')
-            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y.line);
-        if (p < end) {
-            if (ind == 0 && end - p >= 3 && memcmp(p, "---", 3) == 0 && (end - p == 3 || p[3] == ' ')) {
-                if (y.root_done || y.ended)
-                    return yj_err(&y, y.line, "more than one document");
-                p = yj_skip(p + 3, end);
-                ind = (int)(p - line);
-            } else if (ind == 0 && end - p == 3 && memcmp(p, "...", 3) == 0) {
-                y.ended = 1;
-                p = end;
-            } else if (*p == '%') {
-                return opt_fail("%s: line %lu: not YAML (a directive)", file, y.line);
-            }
-        }
-        if (p < end) {
-            int item = *p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t');
-            if (y.ended)
-                return yj_err(&y, y.line, "more than one document");
-            if (y.pending && ind <= y.pending_ind
-                && !(item && ind == y.pending_ind && y.depth && y.kind[y.depth] == 'm') && !yj_null(&y))
-                return 0;
-            while (y.depth && !y.pending && (y.ind[y.depth] > ind || (y.ind[y.depth] == ind && y.kind[y.depth] == 's'
-                                                                      && !item)))
-                if (!yj_close(&y))
-                    return 0;
-            if (!yj_inline(&y, p, end, ind))
-                return 0;
-        }
-        if (!yj_c(&y, '\n'))
-            return 0;
-        if (!nl)
-            break;
-        line = nl + 1;
-    }
-    while (y.depth)
-        if (!yj_close(&y))
-            return 0;
-    if (!y.root_done && !yj_put(&y, "null", 4))
-        return 0;
-    return 1;
-}
-
-/* ---- cutter tables (6.1.2): the rows, each checked as it comes by the shared rules ---- */
-static char cutter_names[OPT_CUTTER_MAX_ROWS][OPT_CUTTER_NAME_BYTES];
-static unsigned long cutter_lines[OPT_CUTTER_MAX_ROWS];
-static cbf_cutter cutters[OPT_CUTTER_MAX_ROWS];
-static size_t ncutters;
-static char cutter_text[OPT_CUTTER_MAX_BYTES + 1u];
-static char cutter_json[4u * OPT_CUTTER_MAX_BYTES + 64u];
-static const char *cutter_file;
-
-/* A row: cell[0] the name, cell[1 + k] the text of value k. */
-static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLUMNS])
-{
-    const char *name = cell[0];
-    size_t k, chars = opt_chars(name);
-    double v[CBF_CUTTER_VALUES];
-    if (ncutters >= OPT_CUTTER_MAX_ROWS)
-        return opt_fail("%s: line %lu: more than %u cutters (limit max_rows)", cutter_file, line, OPT_CUTTER_MAX_ROWS);
-    if (!*name)
-        return opt_fail("%s: line %lu: empty cutter name", cutter_file, line);
-    if (chars > OPT_CUTTER_MAX_NAME)
-        return opt_fail("%s: line %lu: cutter name of %lu characters, longer than the %u a cutter record holds "
-                        "(limit max_name)", cutter_file, line, (unsigned long)chars, OPT_CUTTER_MAX_NAME);
-    for (k = 0; k < CBF_CUTTER_VALUES; k++) {
-        const char *text = cell[1 + k], *why = opt_number(text, &v[k]);
-        if (why)
-            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, text, why);
-        if (opt_cutter_values[k].positive && v[k] <= 0.0)
-            return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
-                            opt_cutter_values[k].column, text, opt_cutter_values[k].check);
-    }
-    for (k = 0; k < ncutters; k++)
-        if (strcmp(cutter_names[k], name) == 0)
-            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line, name,
-                            cutter_lines[k]);
-    memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
-    cutter_lines[ncutters] = line;
-    cutters[ncutters].name = cutter_names[ncutters];
-    for (k = 0; k < CBF_CUTTER_VALUES; k++)
-        cutters[ncutters].value[k] = v[k];
-    ncutters++;
-    return 1;
-}
-
-static int opt_blank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
-
-/* A CSV cell: trimmed of blanks, then of one pair of matching quotes (writes a NUL at the end). */
-static char *opt_cell(char *s)
-{
-    size_t n;
-    while (*s && opt_blank((unsigned char)*s))
-        s++;
-    n = strlen(s);
-    while (n && opt_blank((unsigned char)s[n - 1]))
-        s[--n] = 0;
-    if (n >= 2 && (s[0] == '"' || s[0] == '\'') && s[n - 1] == s[0]) {
-        s[n - 1] = 0;
-        s++;
-    }
-    return s;
-}
-
-/* CSV: the first non-blank line names the columns (opt_cutter_columns, in any order). */
-static int cutters_csv(char *text)
-{
-    char *line = text;
-    int col[OPT_CUTTER_COLUMNS], header = 1, i;
-    unsigned long n = 0;
-    for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
-        col[i] = -1;
-    while (line) {
-        char *cells[OPT_CUTTER_MAX_COLUMNS], *p = line, *next = strchr(line, '\n');
-        int nc = 1, k, blank = 1;
-        n++;
-        if (next)
-            *next++ = 0;
-        for (p = line; *p; p++)
-            blank &= opt_blank((unsigned char)*p);
-        if (blank) {
-            line = next;
-            continue;
-        }
-        cells[0] = line;
-        for (p = line; *p; p++) {
-            if (*p != ',')
-                continue;
-            if (nc == OPT_CUTTER_MAX_COLUMNS)
-                return opt_fail("%s: line %lu: more than %d columns (limit max_columns)", cutter_file, n,
-                                OPT_CUTTER_MAX_COLUMNS);
-            *p = 0;
-            cells[nc++] = p + 1;
-        }
-        for (k = 0; k < nc; k++)
-            cells[k] = opt_cell(cells[k]);
-        if (header) {
-            header = 0;
-            for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
-                for (k = 0; k < nc && col[i] < 0; k++)
-                    if (strcmp(cells[k], opt_cutter_columns[i]) == 0)
-                        col[i] = k;
-            for (i = 0; i < OPT_CUTTER_COLUMNS; i++)
-                if (col[i] < 0)
-                    return opt_fail("%s: line %lu: the header row needs the columns %s", cutter_file, n,
-                                    opt_columns_list);
-        } else {
-            const char *row[OPT_CUTTER_COLUMNS];
-            for (i = 0; i < OPT_CUTTER_COLUMNS; i++) {
-                if (col[i] >= nc)
-                    return opt_fail("%s: line %lu: needs %s", cutter_file, n, opt_columns_list);
-                row[i] = cells[col[i]];
-            }
-            if (!cutter_add(n, row))
-                return 0;
-        }
-        line = next;
-    }
-    return 1;
-}
-
-/* ---- the JSON a YAML table becomes, walked with its lines ---- */
-typedef struct cj { const char *s; size_t i, at; unsigned long line; } cj;
-
-static unsigned long cj_line(cj *j) /* the line of position i (moving forward only) */
-{
-    for (; j->at < j->i; j->at++)
-        j->line += j->s[j->at] == '\n';
-    return j->line;
-}
-
-static void cj_ws(cj *j)
-{
-    while (j->s[j->i] == ' ' || j->s[j->i] == '\n' || j->s[j->i] == '\t' || j->s[j->i] == '\r')
-        j->i++;
-}
-
-/* A scalar's text as cbf shows it: a string's characters, a number, true, false or null as written. */
-static void cj_scalar(cj *j, char *out, size_t cap)
-{
-    size_t k = 0;
-    if (j->s[j->i] == '"') {
-        j->i++;
-        while (j->s[j->i] && j->s[j->i] != '"') {
-            char c = j->s[j->i++];
-            if (c == '\\') {
-                c = j->s[j->i++];
-                if (c == 'n') c = '\n';
-                else if (c == 't') c = '\t';
-                else if (c == 'r') c = '\r';
-                else if (c == 'b') c = '\b';
-                else if (c == 'f') c = '\f';
-                else if (c == 'u') {
-                    unsigned u = 0, q;
-                    for (q = 0; q < 4 && j->s[j->i]; q++, j->i++) {
-                        char h = j->s[j->i];
-                        u = u * 16u + (unsigned)(h <= '9' ? h - '0' : (h | 0x20) - 'a' + 10);
-                    }
-                    c = u < 0x80u ? (char)u : '?';
-                }
-            }
-            if (k + 1 < cap)
-                out[k++] = c;
-        }
-        if (j->s[j->i] == '"')
-            j->i++;
-    } else {
-        while (j->s[j->i] && !strchr(",]} \n\t\r", j->s[j->i])) {
-            if (k + 1 < cap)
-                out[k++] = j->s[j->i];
-            j->i++;
-        }
-    }
-    out[k] = 0;
-}
-
-static int cutters_rows(cj *j)
-{
-    cj_ws(j);
-    if (strncmp(j->s + j->i, "null", 4) == 0) {
-        j->i += 4;
-        return 1;
-    }
-    if (j->s[j->i] != '[')
-        return opt_fail("%s: line %lu: expected a list of cutters (%s)", cutter_file, cj_line(j), opt_columns_list);
-    j->i++;
-    for (;;) {
-        unsigned long row;
-        char got[OPT_CUTTER_COLUMNS][OPT_CUTTER_NAME_BYTES + 64];
-        int have[OPT_CUTTER_COLUMNS] = { 0 }, k;
-        cj_ws(j);
-        if (j->s[j->i] == ']') {
-            j->i++;
-            return 1;
-        }
-        if (j->s[j->i] == ',') {
-            j->i++;
-            continue;
-        }
-        row = cj_line(j);
-        if (j->s[j->i] != '{')
-            return opt_fail("%s: line %lu: a cutter is a mapping of %s", cutter_file, row, opt_columns_list);
-        j->i++;
-        for (;;) {
-            char key[256];
-            unsigned long kline;
-            cj_ws(j);
-            if (j->s[j->i] == '}') {
-                j->i++;
-                break;
-            }
-            if (j->s[j->i] == ',') {
-                j->i++;
-                continue;
-            }
-            kline = cj_line(j);
-            cj_scalar(j, key, sizeof key);
-            for (k = 0; k < OPT_CUTTER_COLUMNS && strcmp(key, opt_cutter_columns[k]) != 0; k++)
-                ;
-            if (k == OPT_CUTTER_COLUMNS)
-                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
-                                opt_columns_list);
-            if (have[k])
-                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, key);
-            cj_ws(j);
-            if (j->s[j->i] == ':')
-                j->i++;
-            cj_ws(j);
-            if (j->s[j->i] == '[' || j->s[j->i] == '{')
-                return opt_fail("%s: line %lu: %s must be one value", cutter_file, cj_line(j), key);
-            cj_scalar(j, got[k], sizeof got[k]);
-            have[k] = 1;
-        }
-        {
-            const char *cell[OPT_CUTTER_COLUMNS];
-            for (k = 0; k < OPT_CUTTER_COLUMNS; k++) {
-                if (!have[k])
-                    return opt_fail("%s: line %lu: needs %s", cutter_file, row, opt_columns_list);
-                cell[k] = got[k];
-            }
-            if (!cutter_add(row, cell))
-                return 0;
-        }
-    }
-}
-
-static int cutters_yaml(const char *path)
-{
-    cj j;
-    int seen = 0;
-    if (!yj_translate(path, cutter_text, cutter_json, sizeof cutter_json, OPT_CUTTER_MAX_DEPTH))
-        return 0;
-    memset(&j, 0, sizeof j);
-    j.s = cutter_json;
-    j.line = 1;
-    cj_ws(&j);
-    if (j.s[j.i] != '{')
-        return j.s[j.i] == 'n' ? 1 : cutters_rows(&j);
-    j.i++;
-    for (;;) {
-        char key[256];
-        unsigned long kline;
-        cj_ws(&j);
-        if (j.s[j.i] == '}' || !j.s[j.i])
-            return 1;
-        if (j.s[j.i] == ',') {
-            j.i++;
-            continue;
-        }
-        kline = cj_line(&j);
-        cj_scalar(&j, key, sizeof key);
-        if (strcmp(key, "cutters") != 0)
-            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline, key);
-        if (seen++)
-            return opt_fail("%s: line %lu: duplicate key 'cutters'", path, kline);
-        cj_ws(&j);
-        if (j.s[j.i] == ':')
-            j.i++;
-        if (!cutters_rows(&j))
-            return 0;
-    }
-}
-
-/* Whether a path names a YAML file (.yaml or .yml, in any case, as cbf decides). */
-static int opt_is_yaml(const char *path)
-{
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    if (!dot || (slash && dot < slash) || dot == path || (slash && dot == slash + 1))
-        return 0;
-    return opt_lower_eq(dot, ".yaml") || opt_lower_eq(dot, ".yml");
-}
-
-/* Read a cutter table into cutters[0..ncutters); 0 with the one line in opt_why. */
-static int load_cutters(const char *path)
-{
-    long n;
-    ncutters = 0;
-    cutter_file = path;
-    n = opt_read(path, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
-    if (n < 0)
-        return 0;
-    if (opt_is_yaml(path)) {
-        if (!cutters_yaml(path))
-            return 0;
-    } else if (!cutters_csv(cutter_text)) {
-        return 0;
-    }
-    if (!ncutters)
-        return opt_fail("%s: no cutters (the table is empty)", path);
-    return 1;
-}
-
-/* ---- machine files (decision L1, check machine_limits; machine_file.inc.j2) ----
- * The JSON form of `machine:` in spec/cbf.yaml (schema generated/python/cbf/machine.schema.json):
- *   {"name": "...", "limits": {"<limit>": {"unit": "<the spec's unit>", "min": N | [N, ...],
- *    "max": N | [N, ...], "axes": [...], "doc": "..."}, ...}}
- * every limit of cbf_machine_limit_names with unit, min and max; one number per axis for a box;
- * min <= max. Both tools read it as JSON, or as YAML for .yaml/.yml (the option-file subset above,
- * translated to JSON with its lines). A bad file gives one line naming the file and the JSON path
- * (or the line), as cbf says it. */
-static cbf_machine machine_file;
-static char machine_why[8192];
-static char machine_text[OPT_MACHINE_MAX_BYTES + 1u];
-static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine file, as JSON */
-
-typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
-
-static const char *const machine_file_keys[] = { "name", "doc", "decision", "limits", NULL };
-static const char *const machine_limit_keys[] = { "unit", "min", "max", "doc", "axes", NULL };
-
-static int mj_fail(mjson *j, const char *path, const char *fmt, ...) CBF__PRINTF(3, 4);
-static int mj_fail(mjson *j, const char *path, const char *fmt, ...)
-{
-    va_list ap;
-    size_t k;
-    (void)snprintf(machine_why, sizeof machine_why, "%s: %s: ", j->file, path);
-    k = strlen(machine_why);
-    va_start(ap, fmt);
-    (void)vsnprintf(machine_why + k, sizeof machine_why - k, fmt, ap);
-    va_end(ap);
-    return 0;
-}
-
-static int mj_syntax(mjson *j, const char *what)
-{
-    unsigned long line = 1, col = 1;
-    size_t k;
-    for (k = 0; k < j->i && k < j->n; k++) {
-        if (j->s[k] == '\n') {
-            line++;
-            col = 1;
-        } else {
-            col++;
-        }
-    }
-    (void)snprintf(machine_why, sizeof machine_why, "%s: line %lu, column %lu: not JSON (%s)", j->file, line, col,
-                   what);
-    return 0;
-}
-
-static void mj_ws(mjson *j)
-{
-    while (j->i < j->n && (j->s[j->i] == ' ' || j->s[j->i] == '\t' || j->s[j->i] == '\n' || j->s[j->i] == '\r'))
-        j->i++;
-}
-
-static int mj_peek(mjson *j)
-{
-    mj_ws(j);
-    return j->i < j->n ? (unsigned char)j->s[j->i] : -1;
-}
-
-static int mj_hex4(const char *p, unsigned *out)
-{
-    unsigned k, v = 0;
-    for (k = 0; k < 4; k++) {
-        char c = p[k];
-        v <<= 4;
-        if (c >= '0' && c <= '9') v |= (unsigned)(c - '0');
-        else if (c >= 'a' && c <= 'f') v |= (unsigned)(c - 'a' + 10);
-        else if (c >= 'A' && c <= 'F') v |= (unsigned)(c - 'A' + 10);
-        else return 0;
-    }
-    *out = v;
-    return 1;
-}
-
-/* A JSON string into out (UTF-8 as given; \u escapes above ASCII become '?': no key or unit has them). */
-static int mj_string(mjson *j, char *out, size_t cap)
-{
-    size_t k = 0;
-    if (mj_peek(j) != '"')
-        return mj_syntax(j, "expected a string");
-    j->i++;
-    for (;;) {
-        char c;
-        if (j->i >= j->n)
-            return mj_syntax(j, "unterminated string");
-        c = j->s[j->i++];
-        if (c == '"')
-            break;
-        if ((unsigned char)c < 0x20)
-            return mj_syntax(j, "control character in a string");
-        if (c == '\\') {
-            unsigned u;
-            if (j->i >= j->n)
-                return mj_syntax(j, "unterminated string");
-            c = j->s[j->i++];
-            switch (c) {
-            case '"': case '\\': case '/': break;
-            case 'b': c = '\b'; break;
-            case 'f': c = '\f'; break;
-            case 'n': c = '\n'; break;
-            case 'r': c = '\r'; break;
-            case 't': c = '\t'; break;
-            case 'u':
-                if (j->n - j->i < 4 || !mj_hex4(j->s + j->i, &u))
-                    return mj_syntax(j, "bad \\u escape");
-                j->i += 4;
-                c = u < 0x80u ? (char)u : '?';
-                break;
-            default:
-                return mj_syntax(j, "bad escape");
-            }
-        }
-        if (k + 1 >= cap)
-            return mj_syntax(j, "string too long");
-        out[k++] = c;
-    }
-    out[k] = 0;
-    return 1;
-}
-
-/* A JSON number (RFC 8259 grammar); *finite says whether it fits a double. */
-static int mj_number(mjson *j, double *out, int *finite)
-{
-    size_t start = j->i, len;
-    char buf[128];
-    if (j->i < j->n && j->s[j->i] == '-')
-        j->i++;
-    if (j->i < j->n && j->s[j->i] == '0') {
-        j->i++;
-    } else if (j->i < j->n && j->s[j->i] >= '1' && j->s[j->i] <= '9') {
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
-    } else {
-        return mj_syntax(j, "expected a value");
-    }
-    if (j->i < j->n && j->s[j->i] == '.') {
-        j->i++;
-        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
-            return mj_syntax(j, "expected a digit");
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
-    }
-    if (j->i < j->n && (j->s[j->i] == 'e' || j->s[j->i] == 'E')) {
-        j->i++;
-        if (j->i < j->n && (j->s[j->i] == '+' || j->s[j->i] == '-'))
-            j->i++;
-        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
-            return mj_syntax(j, "expected a digit");
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
-    }
-    len = j->i - start;
-    if (len >= sizeof buf)
-        return mj_syntax(j, "number too long");
-    memcpy(buf, j->s + start, len);
-    buf[len] = 0;
-    *out = strtod(buf, NULL);
-    *finite = *out <= DBL_MAX && *out >= -DBL_MAX; /* false for an overflow (HUGE_VAL) and for NaN */
-    return 1;
-}
-
-/* The kind of the next value, for "expected ..." (0 when it does not start a value). */
-static int mj_kind(mjson *j)
-{
-    int c = mj_peek(j);
-    if (c == '{' || c == '[' || c == '"') return c;
-    if (c == '-' || (c >= '0' && c <= '9')) return 'n';
-    if (c == 't' || c == 'f' || c == 'n') return 'l';
-    return 0;
-}
-
-static int mj_expect_number(mjson *j, const char *path, double *out)
-{
-    int finite = 0;
-    if (mj_kind(j) != 'n') {
-        if (!mj_kind(j))
-            return mj_syntax(j, "expected a value");
-        return mj_fail(j, path, "expected a number");
-    }
-    if (!mj_number(j, out, &finite))
-        return 0;
-    if (!finite)
-        return mj_fail(j, path, "not a finite number");
-    return 1;
-}
-
-/* "{" key ":" value ("," key ":" value)* "}": calls on_key for each key, with the duplicate check. */
-typedef int (*mj_key_fn)(mjson *j, const char *path, const char *key, void *ctx);
-
-static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
-{
-    char keys[16][64];
-    size_t nkeys = 0, k;
-    if (mj_kind(j) != '{')
-        return mj_kind(j) ? mj_fail(j, path, "expected an object") : mj_syntax(j, "expected a value");
-    j->i++;
-    if (mj_peek(j) == '}') {
-        j->i++;
-        return 1;
-    }
-    for (;;) {
-        char key[64];
-        if (!mj_string(j, key, sizeof key))
-            return 0;
-        if (mj_peek(j) != ':')
-            return mj_syntax(j, "expected ':'");
-        j->i++;
-        for (k = 0; k < nkeys; k++)
-            if (strcmp(keys[k], key) == 0)
-                return mj_fail(j, path, "duplicate key '%s'", key);
-        if (nkeys < 16)
-            (void)snprintf(keys[nkeys++], sizeof keys[0], "%s", key);
-        if (!on_key(j, path, key, ctx))
-            return 0;
-        if (mj_peek(j) == ',') {
-            j->i++;
-            continue;
-        }
-        if (mj_peek(j) == '}') {
-            j->i++;
-            return 1;
-        }
-        return mj_syntax(j, "expected ',' or '}'");
-    }
-}
-
-static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known)
-{
-    char list[512];
-    size_t k, at = 0;
-    list[0] = 0;
-    for (k = 0; known[k]; k++)
-        at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
-    return mj_fail(j, path, "unknown key '%s' (known: %s)", key, list);
-}
-
-/* A string the reader keeps nowhere (name, doc, decision). */
-static int mj_any_string(mjson *j, const char *path)
-{
-    char skip[4096];
-    if (mj_kind(j) != '"')
-        return mj_kind(j) ? mj_fail(j, path, "expected a string") : mj_syntax(j, "expected a value");
-    return mj_string(j, skip, sizeof skip);
-}
-
-typedef struct mj_limit { int index; unsigned seen; } mj_limit;
-
-/* min or max: a number, or for a box a list of one number per axis. */
-static int mj_bound(mjson *j, const char *path, int li, double *out)
-{
-    int naxes = cbf_machine_limit_axes[li], n = 0;
-    char ipath[320];
-    if (!naxes)
-        return mj_expect_number(j, path, out);
-    if (mj_kind(j) != '[')
-        return mj_kind(j) ? mj_fail(j, path, "expected a list") : mj_syntax(j, "expected a value");
-    j->i++;
-    if (mj_peek(j) != ']') {
-        for (;;) {
-            double x;
-            (void)snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
-            if (!mj_expect_number(j, ipath, &x))
-                return 0;
-            if (n < naxes)
-                out[n] = x;
-            n++;
-            if (mj_peek(j) == ',') {
-                j->i++;
-                continue;
-            }
-            break;
-        }
-    }
-    if (mj_peek(j) != ']')
-        return mj_syntax(j, "expected ',' or ']'");
-    j->i++;
-    if (n != naxes)
-        return mj_fail(j, path, "expected %d items, got %d", naxes, n);
-    return 1;
-}
-
-/* axes: a list of strings equal to the spec's axes (optional). */
-static int mj_axes(mjson *j, const char *path, int li)
-{
-    char got[512], item[64], ipath[320];
-    size_t at = 0;
-    int n = 0, same = 1, naxes = cbf_machine_limit_axes[li];
-    if (mj_kind(j) != '[')
-        return mj_kind(j) ? mj_fail(j, path, "expected a list") : mj_syntax(j, "expected a value");
-    j->i++;
-    at += (size_t)snprintf(got, sizeof got, "[");
-    if (mj_peek(j) != ']') {
-        for (;;) {
-            (void)snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
-            if (mj_kind(j) != '"')
-                return mj_kind(j) ? mj_fail(j, ipath, "expected a string") : mj_syntax(j, "expected a value");
-            if (!mj_string(j, item, sizeof item))
-                return 0;
-            if (n >= naxes || strcmp(item, cbf_machine_limit_axis_names[li][n]) != 0)
-                same = 0;
-            if (at < sizeof got)
-                at += (size_t)snprintf(got + at, sizeof got - at, "%s\"%s\"", n ? ", " : "", item);
-            n++;
-            if (mj_peek(j) == ',') {
-                j->i++;
-                continue;
-            }
-            break;
-        }
-    }
-    if (mj_peek(j) != ']')
-        return mj_syntax(j, "expected ',' or ']'");
-    j->i++;
-    if (at < sizeof got)
-        (void)snprintf(got + at, sizeof got - at, "]");
-    if (!same || n != naxes) {
-        char want[256];
-        int k;
-        size_t w = (size_t)snprintf(want, sizeof want, "[");
-        for (k = 0; k < naxes; k++)
-            w += (size_t)snprintf(want + w, sizeof want - w, "%s\"%s\"", k ? ", " : "", cbf_machine_limit_axis_names[li][k]);
-        (void)snprintf(want + w, sizeof want - w, "]");
-        return mj_fail(j, path, "must be %s, got %s", want, got);
-    }
-    return 1;
-}
-
-static int mj_limit_key(mjson *j, const char *path, const char *key, void *ctx)
-{
-    mj_limit *L = (mj_limit *)ctx;
-    cbf_machine_range *r = &machine_file.limit[L->index];
-    char kpath[256];
-    unsigned k;
-    for (k = 0; machine_limit_keys[k]; k++)
-        if (strcmp(machine_limit_keys[k], key) == 0)
-            break;
-    if (!machine_limit_keys[k] || (strcmp(key, "axes") == 0 && !cbf_machine_limit_axes[L->index])) {
-        const char *known[8];
-        unsigned n = 0, q;
-        for (q = 0; machine_limit_keys[q] && n < 7; q++)
-            if (strcmp(machine_limit_keys[q], "axes") != 0 || cbf_machine_limit_axes[L->index])
-                known[n++] = machine_limit_keys[q];
-        known[n] = NULL;
-        return mj_unknown(j, path, key, known);
-    }
-    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
-    L->seen |= 1u << k;
-    if (strcmp(key, "unit") == 0) {
-        char unit[64];
-        if (mj_kind(j) != '"')
-            return mj_kind(j) ? mj_fail(j, kpath, "expected a string") : mj_syntax(j, "expected a value");
-        if (!mj_string(j, unit, sizeof unit))
-            return 0;
-        if (strcmp(unit, cbf_machine_limit_units[L->index]) != 0)
-            return mj_fail(j, kpath, "must be \"%s\", got \"%s\"", cbf_machine_limit_units[L->index], unit);
-        return 1;
-    }
-    if (strcmp(key, "min") == 0)
-        return mj_bound(j, kpath, L->index, r->min);
-    if (strcmp(key, "max") == 0)
-        return mj_bound(j, kpath, L->index, r->max);
-    if (strcmp(key, "axes") == 0)
-        return mj_axes(j, kpath, L->index);
-    return mj_any_string(j, kpath);
-}
-
-static int mj_limits_key(mjson *j, const char *path, const char *key, void *ctx)
-{
-    unsigned *seen = (unsigned *)ctx;
-    char kpath[256];
-    mj_limit L;
-    int li;
-    for (li = 0; li < CBF_MACHINE__COUNT; li++)
-        if (strcmp(cbf_machine_limit_names[li], key) == 0)
-            break;
-    if (li == CBF_MACHINE__COUNT)
-        return mj_unknown(j, path, key, cbf_machine_limit_names);
-    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
-    *seen |= 1u << li;
-    L.index = li;
-    L.seen = 0;
-    if (!mj_object(j, kpath, mj_limit_key, &L))
-        return 0;
-    {
-        static const char *const required[] = { "unit", "min", "max" };
-        unsigned q, k;
-        for (q = 0; q < 3; q++) {
-            for (k = 0; machine_limit_keys[k]; k++)
-                if (strcmp(machine_limit_keys[k], required[q]) == 0)
-                    break;
-            if (!(L.seen & (1u << k)))
-                return mj_fail(j, kpath, "missing '%s'", required[q]);
-        }
-    }
-    return 1;
-}
-
-static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
-{
-    unsigned *seen = (unsigned *)ctx;
-    char kpath[256];
-    unsigned k;
-    for (k = 0; machine_file_keys[k]; k++)
-        if (strcmp(machine_file_keys[k], key) == 0)
-            break;
-    if (!machine_file_keys[k])
-        return mj_unknown(j, path, key, machine_file_keys);
-    (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
-    if (strcmp(key, "limits") == 0) {
-        unsigned lseen = 0;
-        int li;
-        seen[0] = 1;
-        if (!mj_object(j, kpath, mj_limits_key, &lseen))
-            return 0;
-        for (li = 0; li < CBF_MACHINE__COUNT; li++)
-            if (!(lseen & (1u << li)))
-                return mj_fail(j, kpath, "missing '%s'", cbf_machine_limit_names[li]);
-        return 1;
-    }
-    return mj_any_string(j, kpath);
-}
-
-/* Read a machine file into machine_file; 0 with the one line in machine_why. */
-static int load_machine(const char *path)
-{
-    long n = opt_read(path, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
-    mjson j;
-    unsigned has_limits = 0;
-    int li, a;
-    if (n < 0) {
-        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-        return 0;
-    }
-    memset(&machine_file, 0, sizeof machine_file);
-    j.s = machine_text;
-    j.n = (size_t)n;
-    if (opt_is_yaml(path)) {
-        if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
-            (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-            return 0;
-        }
-        j.s = machine_json;
-        j.n = strlen(machine_json);
-    } else if (!opt_json_depth(path, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
-        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-        return 0;
-    }
-    j.i = 0;
-    j.file = path;
-    if (!mj_object(&j, "$", mj_top_key, &has_limits))
-        return 0;
-    if (mj_peek(&j) != -1)
-        return mj_syntax(&j, "extra data");
-    if (!has_limits)
-        return mj_fail(&j, "$", "missing 'limits'");
-    for (li = 0; li < CBF_MACHINE__COUNT; li++) {
-        int naxes = cbf_machine_limit_axes[li];
-        for (a = 0; a < (naxes ? naxes : 1); a++) {
-            if (machine_file.limit[li].min[a] > machine_file.limit[li].max[a]) {
-                char lpath[128];
-                (void)snprintf(lpath, sizeof lpath, "$.limits.%s", cbf_machine_limit_names[li]);
-                if (naxes)
-                    return mj_fail(&j, lpath, "min exceeds max on axis %s", cbf_machine_limit_axis_names[li][a]);
-                return mj_fail(&j, lpath, "min exceeds max");
-            }
-        }
-    }
-    return 1;
-}
 
 /* ---- output ---------------------------------------------------------------- */
 static void put(const char *s) { fputs(s, stdout); }
@@ -1568,7 +117,7 @@ static void put_value(const cbf_field_info *f, const uint8_t *base)
         break;
     case CBF_KIND_STRING: {
         size_t n = size;
-        while (n && base[f->offset + n - 1] == 0u)
+        while (n && base[f->offset + n - 1] == CBF_TOOL_PAD)
             n--;
         put_string(base + f->offset, n);
         break;
@@ -1682,117 +231,145 @@ static int32_t jstring(void)
     return n;
 }
 
-static int32_t jvalue(int depth)
+static int32_t jfail(const char *why)
 {
-    int32_t n, prev = -1;
-    if (depth > MAX_DEPTH) {
-        jerr = "JSON nested too deep";
-        return -1;
-    }
-    jws();
-    if (jpos >= jlen) {
-        jerr = "unexpected end of JSON";
-        return -1;
-    }
-    switch (jtext[jpos]) {
-    case '"':
-        return jstring();
-    case '{':
-    case '[': {
-        int obj = jtext[jpos] == '{';
-        char close = obj ? '}' : ']';
-        n = jalloc(obj ? J_OBJ : J_ARR);
-        if (n < 0)
-            return -1;
+    jerr = why;
+    return -1;
+}
+
+/* The digits at jpos (at least one); 0 when there is none. */
+static int jdigits(void)
+{
+    if (jpos >= jlen || !jdigit(jtext[jpos]))
+        return 0;
+    while (jpos < jlen && jdigit(jtext[jpos]))
         jpos++;
+    return 1;
+}
+
+/* A number (RFC 8259's grammar) at jpos. */
+static int32_t jnumber(void)
+{
+    int32_t n = jalloc(J_NUM);
+    if (n < 0)
+        return -1;
+    if (jtext[jpos] == '-')
+        jpos++;
+    if (jpos < jlen && jtext[jpos] == '0')
+        jpos++;
+    else if (!jdigits())
+        return jfail("bad number");
+    if (jpos < jlen && jtext[jpos] == '.') {
+        jpos++;
+        if (!jdigits())
+            return jfail("bad number");
+    }
+    if (jpos < jlen && (jtext[jpos] == 'e' || jtext[jpos] == 'E')) {
+        jpos++;
+        if (jpos < jlen && (jtext[jpos] == '+' || jtext[jpos] == '-'))
+            jpos++;
+        if (!jdigits())
+            return jfail("bad number");
+    }
+    nodes[n].len = (uint32_t)(jpos - nodes[n].start);
+    return n;
+}
+
+/* true, false or null at jpos (word, its node type); -1 when the text is not the word. */
+static int32_t jword(const char *word, unsigned char type)
+{
+    size_t len = strlen(word);
+    int32_t n;
+    if (jlen - jpos < len || memcmp(jtext + jpos, word, len) != 0)
+        return jfail("unexpected character");
+    n = jalloc(type);
+    jpos += len;
+    return n;
+}
+
+/* One member of an object (a key, ':' and a value) or one item of an array, linked after prev. */
+static int32_t jmember(int32_t n, int obj, int32_t prev, int depth)
+{
+    int32_t k = -1, v;
+    jws();
+    if (obj) {
+        if (jpos >= jlen || jtext[jpos] != '"')
+            return jfail("expected a key");
+        k = jstring();
+        if (k < 0)
+            return -1;
         jws();
+        if (jpos >= jlen || jtext[jpos] != ':')
+            return jfail("expected ':'");
+        jpos++;
+    }
+    v = jvalue(depth + 1);
+    if (v < 0)
+        return -1;
+    if (prev < 0)
+        nodes[n].first = obj ? k : v;
+    else
+        nodes[prev].next = obj ? k : v;
+    if (obj)
+        nodes[k].next = v;
+    return v;
+}
+
+/* An object or an array at jpos. */
+static int32_t jcontainer(int depth)
+{
+    int obj = jtext[jpos] == '{';
+    char close = obj ? '}' : ']';
+    int32_t n = jalloc(obj ? J_OBJ : J_ARR), prev = -1;
+    if (n < 0)
+        return -1;
+    jpos++;
+    jws();
+    if (jpos < jlen && jtext[jpos] == close) {
+        jpos++;
+        return n;
+    }
+    for (;;) {
+        prev = jmember(n, obj, prev, depth);
+        if (prev < 0)
+            return -1;
+        jws();
+        if (jpos < jlen && jtext[jpos] == ',') {
+            jpos++;
+            continue;
+        }
         if (jpos < jlen && jtext[jpos] == close) {
             jpos++;
             return n;
         }
-        for (;;) {
-            int32_t k = -1, v;
-            jws();
-            if (obj) {
-                if (jpos >= jlen || jtext[jpos] != '"') {
-                    jerr = "expected a key";
-                    return -1;
-                }
-                k = jstring();
-                if (k < 0)
-                    return -1;
-                jws();
-                if (jpos >= jlen || jtext[jpos] != ':') {
-                    jerr = "expected ':'";
-                    return -1;
-                }
-                jpos++;
-            }
-            v = jvalue(depth + 1);
-            if (v < 0)
-                return -1;
-            if (obj) {
-                if (prev < 0) nodes[n].first = k; else nodes[prev].next = k;
-                nodes[k].next = v;
-            } else {
-                if (prev < 0) nodes[n].first = v; else nodes[prev].next = v;
-            }
-            prev = v;
-            jws();
-            if (jpos < jlen && jtext[jpos] == ',') {
-                jpos++;
-                continue;
-            }
-            if (jpos < jlen && jtext[jpos] == close) {
-                jpos++;
-                return n;
-            }
-            jerr = obj ? "expected ',' or '}'" : "expected ',' or ']'";
-            return -1;
-        }
+        return jfail(obj ? "expected ',' or '}'" : "expected ',' or ']'");
     }
+}
+
+static int32_t jvalue(int depth)
+{
+    if (depth > MAX_DEPTH)
+        return jfail("JSON nested too deep");
+    jws();
+    if (jpos >= jlen)
+        return jfail("unexpected end of JSON");
+    switch (jtext[jpos]) {
+    case '"':
+        return jstring();
+    case '{':
+    case '[':
+        return jcontainer(depth);
     case 't':
-        if (jlen - jpos >= 4 && memcmp(jtext + jpos, "true", 4) == 0) { n = jalloc(J_TRUE); jpos += 4; return n; }
-        break;
+        return jword("true", J_TRUE);
     case 'f':
-        if (jlen - jpos >= 5 && memcmp(jtext + jpos, "false", 5) == 0) { n = jalloc(J_FALSE); jpos += 5; return n; }
-        break;
+        return jword("false", J_FALSE);
     case 'n':
-        if (jlen - jpos >= 4 && memcmp(jtext + jpos, "null", 4) == 0) { n = jalloc(J_NULL); jpos += 4; return n; }
-        break;
+        return jword("null", J_NULL);
     default:
-        if (jtext[jpos] == '-' || jdigit(jtext[jpos])) {
-            n = jalloc(J_NUM);
-            if (n < 0)
-                return -1;
-            if (jtext[jpos] == '-')
-                jpos++;
-            if (jpos < jlen && jtext[jpos] == '0') {
-                jpos++;
-            } else if (jpos < jlen && jdigit(jtext[jpos])) {
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            } else {
-                jerr = "bad number";
-                return -1;
-            }
-            if (jpos < jlen && jtext[jpos] == '.') {
-                jpos++;
-                if (jpos >= jlen || !jdigit(jtext[jpos])) { jerr = "bad number"; return -1; }
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            }
-            if (jpos < jlen && (jtext[jpos] == 'e' || jtext[jpos] == 'E')) {
-                jpos++;
-                if (jpos < jlen && (jtext[jpos] == '+' || jtext[jpos] == '-')) jpos++;
-                if (jpos >= jlen || !jdigit(jtext[jpos])) { jerr = "bad number"; return -1; }
-                while (jpos < jlen && jdigit(jtext[jpos])) jpos++;
-            }
-            nodes[n].len = (uint32_t)(jpos - nodes[n].start);
-            return n;
-        }
-        break;
+        if (jtext[jpos] == '-' || jdigit(jtext[jpos]))
+            return jnumber();
+        return jfail("unexpected character");
     }
-    jerr = "unexpected character";
-    return -1;
 }
 
 static int32_t jparse(const char *text, size_t len)
@@ -1822,6 +399,89 @@ static int hexval(char c)
     return -1;
 }
 
+/* Four hex digits at s as a number; -1 when one is not a hex digit. */
+static long hex4(const char *s)
+{
+    long v = 0;
+    int k;
+    for (k = 0; k < 4; k++) {
+        int h = hexval(s[k]);
+        if (h < 0)
+            return -1;
+        v = v * 16 + h;
+    }
+    return v;
+}
+
+/* The \u escape at s[*i] (after the "\u"), with its low surrogate when it is a high one; -1 when bad. */
+static long jstr_u(const char *s, size_t len, size_t *i)
+{
+    long cp, lo;
+    if (len - *i < 4 || (cp = hex4(s + *i)) < 0)
+        return -1;
+    *i += 4;
+    if (cp >= 0xDC00 && cp < 0xE000)
+        return -1;
+    if (cp < 0xD800 || cp >= 0xDC00)
+        return cp;
+    if (len - *i < 6 || s[*i] != '\\' || s[*i + 1] != 'u' || (lo = hex4(s + *i + 2)) < 0 || lo < 0xDC00 || lo >= 0xE000)
+        return -1;
+    *i += 6;
+    return 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+}
+
+/* The escape at s[*i] (a backslash) as a code point; -1 when bad. */
+static long jstr_escape(const char *s, size_t len, size_t *i)
+{
+    static const char from[] = "\"\\/bfnrt";
+    static const long to[] = { '"', '\\', '/', 8, 12, 10, 13, 9 };
+    const char *at;
+    char e;
+    if (len - *i < 2)
+        return -1;
+    e = s[*i + 1];
+    *i += 2;
+    if (e == 'u')
+        return jstr_u(s, len, i);
+    at = e ? strchr(from, e) : NULL;
+    return at ? to[at - from] : -1;
+}
+
+/* The UTF-8 sequence at s[*i] (its first byte c >= 0x80) as a code point; -1 when bad. */
+static long jstr_utf8(const char *s, size_t len, size_t *i)
+{
+    unsigned char c = (unsigned char)s[*i];
+    size_t extra = c >= 0xF0u ? 3u : c >= 0xE0u ? 2u : c >= 0xC0u ? 1u : 0u, k;
+    unsigned long cp;
+    if (!extra || c >= 0xF8u || len - *i <= extra)
+        return -1;
+    cp = c & (0x3Fu >> extra);
+    for (k = 1; k <= extra; k++) {
+        unsigned char d = (unsigned char)s[*i + k];
+        if ((d & 0xC0u) != 0x80u)
+            return -1;
+        cp = (cp << 6) | (d & 0x3Fu);
+    }
+    *i += extra + 1;
+    return (long)cp;
+}
+
+/* cp as UTF-8 into out[*o..cap); 0 when it does not fit. */
+static int put_utf8(unsigned long cp, uint8_t *out, size_t *o, size_t cap)
+{
+    uint8_t tmp[4];
+    size_t k, m;
+    if (cp < 0x80u) { tmp[0] = (uint8_t)cp; m = 1; }
+    else if (cp < 0x800u) { tmp[0] = (uint8_t)(0xC0u | (cp >> 6)); tmp[1] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 2; }
+    else if (cp < 0x10000u) { tmp[0] = (uint8_t)(0xE0u | (cp >> 12)); tmp[1] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 3; }
+    else { tmp[0] = (uint8_t)(0xF0u | (cp >> 18)); tmp[1] = (uint8_t)(0x80u | ((cp >> 12) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[3] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 4; }
+    if (cap - *o < m)
+        return 0;
+    for (k = 0; k < m; k++)
+        out[(*o)++] = tmp[k];
+    return 1;
+}
+
 /* Decode a JSON string to bytes: latin1 != 0 maps code points U+0000..U+00FF
  * to one byte each (others fail), else the bytes are UTF-8. Returns the length or -1. */
 static long jstr(int32_t n, uint8_t *out, size_t cap, int latin1)
@@ -1833,89 +493,24 @@ static long jstr(int32_t n, uint8_t *out, size_t cap, int latin1)
     s = jtext + nodes[n].start;
     len = nodes[n].len;
     for (i = 0; i < len;) {
-        unsigned long cp;
         unsigned char c = (unsigned char)s[i];
+        long cp;
         if (c == '\\') {
-            char e;
-            if (len - i < 2)
-                return -1;
-            e = s[i + 1];
-            i += 2;
-            switch (e) {
-            case '"': cp = '"'; break;
-            case '\\': cp = '\\'; break;
-            case '/': cp = '/'; break;
-            case 'b': cp = 8; break;
-            case 'f': cp = 12; break;
-            case 'n': cp = 10; break;
-            case 'r': cp = 13; break;
-            case 't': cp = 9; break;
-            case 'u': {
-                int k;
-                cp = 0;
-                if (len - i < 4)
-                    return -1;
-                for (k = 0; k < 4; k++) {
-                    int h = hexval(s[i + (size_t)k]);
-                    if (h < 0)
-                        return -1;
-                    cp = cp * 16u + (unsigned long)h;
-                }
-                i += 4;
-                if (cp >= 0xD800u && cp < 0xDC00u) {
-                    unsigned long lo = 0;
-                    if (len - i < 6 || s[i] != '\\' || s[i + 1] != 'u')
-                        return -1;
-                    for (k = 0; k < 4; k++) {
-                        int h = hexval(s[i + 2 + (size_t)k]);
-                        if (h < 0)
-                            return -1;
-                        lo = lo * 16u + (unsigned long)h;
-                    }
-                    if (lo < 0xDC00u || lo >= 0xE000u)
-                        return -1;
-                    i += 6;
-                    cp = 0x10000u + ((cp - 0xD800u) << 10) + (lo - 0xDC00u);
-                } else if (cp >= 0xDC00u && cp < 0xE000u) {
-                    return -1;
-                }
-                break;
-            }
-            default:
-                return -1;
-            }
+            cp = jstr_escape(s, len, &i);
         } else if (c < 0x80u) {
-            cp = c;
+            cp = (long)c;
             i++;
         } else {
-            size_t extra = c >= 0xF0u ? 3u : c >= 0xE0u ? 2u : c >= 0xC0u ? 1u : 0u;
-            size_t k;
-            if (!extra || c >= 0xF8u || len - i <= extra)
-                return -1;
-            cp = c & (0x3Fu >> extra);
-            for (k = 1; k <= extra; k++) {
-                unsigned char d = (unsigned char)s[i + k];
-                if ((d & 0xC0u) != 0x80u)
-                    return -1;
-                cp = (cp << 6) | (d & 0x3Fu);
-            }
-            i += extra + 1;
+            cp = jstr_utf8(s, len, &i);
         }
+        if (cp < 0)
+            return -1;
         if (latin1) {
-            if (cp > 0xFFu || o >= cap)
+            if (cp > 0xFF || o >= cap)
                 return -1;
             out[o++] = (uint8_t)cp;
-        } else {
-            uint8_t tmp[4];
-            size_t k, m;
-            if (cp < 0x80u) { tmp[0] = (uint8_t)cp; m = 1; }
-            else if (cp < 0x800u) { tmp[0] = (uint8_t)(0xC0u | (cp >> 6)); tmp[1] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 2; }
-            else if (cp < 0x10000u) { tmp[0] = (uint8_t)(0xE0u | (cp >> 12)); tmp[1] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 3; }
-            else { tmp[0] = (uint8_t)(0xF0u | (cp >> 18)); tmp[1] = (uint8_t)(0x80u | ((cp >> 12) & 0x3Fu)); tmp[2] = (uint8_t)(0x80u | ((cp >> 6) & 0x3Fu)); tmp[3] = (uint8_t)(0x80u | (cp & 0x3Fu)); m = 4; }
-            if (cap - o < m)
-                return -1;
-            for (k = 0; k < m; k++)
-                out[o++] = tmp[k];
+        } else if (!put_utf8((unsigned long)cp, out, &o, cap)) {
+            return -1;
         }
     }
     return (long)o;
@@ -2080,6 +675,18 @@ static int fail(const char *fmt, ...)
 }
 
 /* Pack one field from JSON into a byte image at f->offset. */
+/* x as size bytes in the spec's byte order (CBF_TOOL_LITTLE_ENDIAN, from the model). */
+static void put_uint_bytes(uint8_t *d, unsigned size, uint64_t x)
+{
+    unsigned i;
+    for (i = 0; i < size; i++)
+#if CBF_TOOL_LITTLE_ENDIAN
+        d[i] = (uint8_t)((x >> (8u * i)) & 0xFFu);
+#else
+        d[size - 1u - i] = (uint8_t)((x >> (8u * i)) & 0xFFu);
+#endif
+}
+
 static int pack_field(const cbf_field_info *f, int32_t v, uint8_t *base)
 {
     size_t size = (size_t)f->elem * f->count;
@@ -2092,8 +699,7 @@ static int pack_field(const cbf_field_info *f, int32_t v, uint8_t *base)
         if (!jint(v, f->kind == CBF_KIND_SINT, 8u * f->elem, &x))
             return fail("field %s: not %s integer of its size", f->name,
                         f->kind == CBF_KIND_SINT ? "a signed" : "an unsigned");
-        for (i = 0; i < f->elem; i++)
-            d[i] = (uint8_t)((x >> (8u * i)) & 0xFFu);
+        put_uint_bytes(d, f->elem, x);
         return 1;
     }
     case CBF_KIND_FLOAT: {
@@ -2105,11 +711,9 @@ static int pack_field(const cbf_field_info *f, int32_t v, uint8_t *base)
         }
         for (i = 0; i < f->count; i++, e = nodes[e].next) {
             uint32_t bits;
-            unsigned k;
             if (!jfloat(e, &bits))
                 return fail("field %s: not a binary32 value", f->name);
-            for (k = 0; k < 4u; k++)
-                d[4u * i + k] = (uint8_t)((bits >> (8u * k)) & 0xFFu);
+            put_uint_bytes(d + 4u * i, 4u, bits);
         }
         return 1;
     }
@@ -2117,7 +721,7 @@ static int pack_field(const cbf_field_info *f, int32_t v, uint8_t *base)
         long n = jstr(v, d, size, 1);
         if (n < 0)
             return fail("field %s: not a string of at most its size in ISO-8859-1", f->name);
-        memset(d + n, 0, size - (size_t)n);
+        memset(d + n, CBF_TOOL_PAD, size - (size_t)n);
         return 1;
     }
     default: {
@@ -2171,7 +775,7 @@ static void op_decode(int32_t req)
         put_error("request", -1, "decode needs a file");
         return;
     }
-    n = read_file(path, file_buf, sizeof file_buf, &why);
+    n = cbf_tool_read_file(path, file_buf, sizeof file_buf, &why);
     if (n < 0) {
         put_error("io", -1, why);
         return;
@@ -2270,7 +874,7 @@ static void op_validate(int32_t req)
     }
     v = jget(req, "profile");
     if (v < 0 || nodes[v].type == J_NULL)
-        opt.profile = CBF_PROFILE_DEFAULT;
+        opt.profile = CBF_TOOL_DEFAULT_PROFILE;
     else if (!jcstr(v, pname, sizeof pname) || (opt.profile = cbf_profile_find(pname)) < 0) {
         put_error("request", -1, "unknown profile");
         return;
@@ -2285,22 +889,19 @@ static void op_validate(int32_t req)
     }
     v = jget(req, "cutters");
     if (v >= 0 && nodes[v].type != J_NULL) {
-        if (!jcstr(v, cpath, sizeof cpath) || !load_cutters(cpath)) {
+        if (!jcstr(v, cpath, sizeof cpath) || !cbf_tool_cutters_file(cpath, &opt)) {
             put_error("cutters", -1, "cannot read the cutter table");
             return;
         }
-        opt.cutters = cutters;
-        opt.ncutters = ncutters;
     }
     v = jget(req, "machine"); /* machine limits (L1): a machine file, or null for the default */
     if (v >= 0 && nodes[v].type != J_NULL) {
-        if (!jcstr(v, cpath, sizeof cpath) || !load_machine(cpath)) {
-            put_error("machine", -1, machine_why);
+        if (!jcstr(v, cpath, sizeof cpath) || !cbf_tool_machine_file(cpath, &opt)) {
+            put_error("machine", -1, cbf_tool_why());
             return;
         }
-        opt.machine = &machine_file;
     }
-    n = read_file(path, file_buf, sizeof file_buf, &why);
+    n = cbf_tool_read_file(path, file_buf, sizeof file_buf, &why);
     if (n < 0) {
         put_error("io", -1, why);
         return;
@@ -2314,11 +915,7 @@ static void op_validate(int32_t req)
 static int has_error;
 static const char *first_error_check;
 static long first_error_record;
-/* A writer makes files that validate: no error, and strings in ASCII (N4). */
-static const char *const refused_warnings[] = {
-    CBF_CHECK_STRING_ASCII,
-    NULL
-};
+/* A writer makes files that validate: no error, and none of refused_warnings (cbf_testee.c's table). */
 
 static void on_error_finding(void *user, const cbf_finding *f)
 {
@@ -2449,20 +1046,238 @@ static const cbf_field_info *role_field(const cbf_field_info *fields, size_t n, 
     return NULL;
 }
 
-static int encode(int32_t doc, int keep, int profile, long *size)
+/* An encode request in progress: the writer, the file's version, and the record head's fields. */
+typedef struct enc {
+    cbf_writer w;
+    int version, keep;
+    const cbf_field_info *rf, *fcode, *fsize;
+    size_t nr;
+} enc;
+
+static uint8_t enc_args[1u << 16];
+
+/* The header object hdr: its version, its fields packed (magic numbers and the fields the writer fills
+ * by default), and the writer begun on it. */
+static int encode_header(enc *e, int32_t hdr)
 {
     static uint8_t header_bytes[CBF_HEADER_SIZE];
-    static uint8_t args[1u << 16];
-    static const char *const top_keys[] = { "header", "records", "trailing", NULL };
-    static const char *const rec_keys[] = { "offset", "command", "args", "raw_args", NULL };
-    int32_t hdr, recs, trail, r;
-    const cbf_field_info *hf, *rf, *fcode, *fsize;
-    size_t nh, nr, i;
-    uint32_t major = 0, minor = 0, index = 0;
-    int version, hl;
+    const cbf_field_info *hf;
+    size_t nh = cbf_header_fields(0, &hf), i;
+    uint32_t major = 0, minor = 0;
     cbf_header h;
-    cbf_writer w;
-    long rc;
+    int32_t vmaj = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MAJOR)->name);
+    int32_t vmin = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MINOR)->name);
+    if ((vmaj >= 0 && !juint(vmaj, 0xFFu, &major)) || (vmin >= 0 && !juint(vmin, 0xFFu, &minor)))
+        return fail("%s", "$.header: bad version");
+    e->version = cbf_version_find(major, minor);
+    if (!e->keep && !cbf_version_writable(e->version))
+        return fail("header: version %lu.%lu is not writable", (unsigned long)major, (unsigned long)minor);
+    nh = cbf_header_fields(cbf_version_header_layout(e->version), &hf);
+    if (!known_keys(hdr, hf, nh, NULL))
+        return fail("%s", "$.header: unknown key for the version's header layout");
+    memset(header_bytes, 0, sizeof header_bytes);
+    for (i = 0; i < nh; i++) {
+        int32_t v = jget(hdr, hf[i].name);
+        if (v < 0) {
+            if (hf[i].flags & CBF_FIELD_MAGIC) {
+                put_uint_bytes(header_bytes + hf[i].offset, hf[i].elem, hf[i].magic);
+                continue;
+            }
+            if (hf[i].checksum || hf[i].role == CBF_ROLE_COMMAND_COUNT || hf[i].kind == CBF_KIND_STRING
+                || hf[i].kind == CBF_KIND_BYTES)
+                continue; /* zero / empty by default */
+            return fail("$.header: missing %s", hf[i].name);
+        }
+        if (!pack_field(&hf[i], v, header_bytes))
+            return 0;
+    }
+    (void)cbf_header_decode(header_bytes, sizeof header_bytes, &h);
+    if (cbf_encode_begin(&e->w, out_buf, sizeof out_buf, &h) != CBF_OK)
+        return fail("%s", "header: cannot encode");
+    return 1;
+}
+
+/* The code of a command name; 0 when no command has that name. */
+static int code_of_name(const char *name, uint32_t *code)
+{
+    int c;
+    for (c = 0; c < 256; c++)
+        if (cbf_command_name(c) && strcmp(cbf_command_name(c), name) == 0) {
+            *code = (uint32_t)c;
+            return 1;
+        }
+    return 0;
+}
+
+/* The record r's command code: its code field, else its command name; a name given with a code matches it. */
+static int record_code(const enc *e, int32_t r, const char *where, uint32_t *code)
+{
+    int32_t jname = jget(r, "command"), jcode = jget(r, e->fcode->name);
+    char cname[64];
+    const char *known;
+    if (jcode >= 0 && nodes[jcode].type != J_NULL) {
+        if (!juint(jcode, 0xFFu, code))
+            return fail("%s: bad command code", where);
+    } else if (!jcstr(jname, cname, sizeof cname) || !code_of_name(cname, code)) {
+        return fail("%s: needs a code or a known command name", where);
+    }
+    if (jname < 0 || nodes[jname].type == J_NULL)
+        return 1;
+    known = cbf_command_name((int)*code);
+    if (!jcstr(jname, cname, sizeof cname) || !known || strcmp(known, cname) != 0)
+        return fail("%s.command: does not match the code", where);
+    return 1;
+}
+
+/* The args object a packed into enc_args by the layout its keys (and the size, when given) choose. */
+static int record_args_object(const enc *e, int32_t a, uint32_t code, int has_size, uint32_t want_size,
+                              const char *where, long *nargs)
+{
+    int lay;
+    const cbf_field_info *af;
+    size_t na, item = 0, i;
+    long group;
+    if (nodes[a].type != J_OBJ)
+        return fail("%s.args: expected an object", where);
+    if (!cbf_command_name((int)code))
+        return fail("%s.args: an unknown code takes raw_args only", where);
+    lay = choose_layout((int)code, e->version, a, has_size, want_size);
+    if (lay == CBF_LAYOUT__NONE)
+        return group_misfit((int)code, e->version, a, where) ? 0
+                                                              : fail("%s.args: the keys match no layout of the command",
+                                                                     where);
+    na = cbf_layout_fields(lay, &af);
+    *nargs = json_nb(lay, a);
+    group = cbf_layout_group(lay, NULL, NULL, &item);
+    memset(enc_args, 0, (size_t)*nargs);
+    for (i = 0; i < na; i++)
+        if (!((long)i == group ? pack_group(&af[i], jget(a, af[i].name), enc_args, item)
+                               : pack_field(&af[i], jget(a, af[i].name), enc_args)))
+            return 0;
+    return 1;
+}
+
+/* The record r's argument bytes into enc_args (its args object, else its raw_args hex), *nargs of them. */
+static int record_args(const enc *e, int32_t r, uint32_t code, const char *where, long *nargs)
+{
+    int32_t a = jget(r, "args"), jsize = jget(r, e->fsize->name);
+    uint32_t want_size = 0;
+    int has_size = jsize >= 0 && nodes[jsize].type != J_NULL;
+    if (has_size && !juint(jsize, 0xFFFFFFFFu, &want_size))
+        return fail("%s: bad arg_size", where);
+    if (a >= 0 && nodes[a].type != J_NULL) {
+        if (!record_args_object(e, a, code, has_size, want_size, where, nargs))
+            return 0;
+    } else {
+        int32_t raw = jget(r, "raw_args");
+        *nargs = (raw < 0 || nodes[raw].type == J_NULL) ? 0 : unhex(raw, enc_args, sizeof enc_args);
+        if (*nargs < 0)
+            return fail("%s.raw_args: not hex", where);
+    }
+    if (has_size && want_size != (uint32_t)*nargs)
+        return fail("%s: arg_size differs from the number of argument bytes", where);
+    if (e->keep)
+        return 1;
+    if (!cbf_command_name((int)code))
+        return fail("%s: unknown command code", where);
+    if (!cbf_command_available((int)code, e->version))
+        return fail("%s: the command is not available in the version", where);
+    if (cbf_args_layout((int)code, e->version, (size_t)*nargs) == CBF_LAYOUT__NONE)
+        return fail("%s: no layout of that size in the version", where);
+    return 1;
+}
+
+/* One head field's value: the writer's (code, size, sequence, code copy, checksum) unless kept as given. */
+static int head_value(const enc *e, const cbf_field_info *f, int32_t jv, uint32_t code, long nargs, uint32_t index,
+                      const char *where, uint32_t *val)
+{
+    uint32_t max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
+    int given = jv >= 0 && nodes[jv].type != J_NULL;
+    *val = 0;
+    if (given && f->role != CBF_ROLE_CODE && f->role != CBF_ROLE_ARG_SIZE && !juint(jv, max, val))
+        return fail("%s: %s out of range", where, f->name);
+    if (f->role == CBF_ROLE_CODE) {
+        *val = code;
+    } else if (f->role == CBF_ROLE_ARG_SIZE) {
+        if ((unsigned long)nargs > max)
+            return fail("%s: too many argument bytes", where);
+        *val = (uint32_t)nargs;
+    } else if (f->role == CBF_ROLE_SEQUENCE && !e->keep) {
+        *val = index & max;
+    } else if (f->role == CBF_ROLE_CODE_COPY && (!e->keep || !given)) {
+        *val = code;
+    } else if (f->checksum && (!e->keep || !given)) {
+        *val = cbf_args_checksum(enc_args, (size_t)nargs);
+    }
+    return 1;
+}
+
+/* The record object r, the index-th, appended to the writer. */
+static int encode_record(enc *e, int32_t r, uint32_t index)
+{
+    static const char *const rec_keys[] = { "offset", "command", "args", "raw_args", NULL };
+    uint32_t code = 0;
+    long nargs = 0;
+    cbf_record_head head;
+    char where[64];
+    size_t i;
+    snprintf(where, sizeof where, "$.records[%lu]", (unsigned long)index);
+    if (nodes[r].type != J_OBJ)
+        return fail("%s: expected an object", where);
+    if (!known_keys(r, e->rf, e->nr, rec_keys))
+        return fail("%s: unknown key", where);
+    if (!record_code(e, r, where, &code) || !record_args(e, r, code, where, &nargs))
+        return 0;
+    memset(&head, 0, sizeof head);
+    for (i = 0; i < e->nr; i++) {
+        uint32_t val;
+        if (!head_value(e, &e->rf[i], jget(r, e->rf[i].name), code, nargs, index, where, &val))
+            return 0;
+        cbf_member_set_uint(&e->rf[i], &head, val);
+    }
+    if (cbf_encode_record_stored(&e->w, &head, enc_args, (size_t)nargs) != CBF_OK)
+        return fail("%s: cannot encode", where);
+    return 1;
+}
+
+/* The trailing hex string, written after the records (keep_stored only). */
+static int encode_trailing(enc *e, int32_t trail)
+{
+    long n = unhex(trail, out_buf + e->w.len, sizeof out_buf - e->w.len);
+    if (n < 0)
+        return fail("%s", "$.trailing: not hex");
+    if (n > 0 && !e->keep)
+        return fail("%s", "trailing bytes can only be written with keep_stored");
+    if (cbf_encode_bytes(&e->w, out_buf + e->w.len, (size_t)n) != CBF_OK)
+        return fail("%s", "trailing: cannot encode");
+    return 1;
+}
+
+/* The file finished (filled unless keep), and refused when it would not validate. */
+static int encode_finish(enc *e, int profile, long *size)
+{
+    long rc = cbf_encode_end(&e->w, profile, !e->keep);
+    if (rc < 0)
+        return fail("cannot finish the file: %s", cbf_strerror((int)rc));
+    if (!e->keep) {
+        cbf_options opt;
+        memset(&opt, 0, sizeof opt);
+        opt.profile = profile;
+        has_error = 0;
+        (void)cbf_validate(out_buf, (size_t)rc, &opt, on_error_finding, NULL);
+        if (has_error)
+            return fail("the result would fail check %s (record %ld)", first_error_check, first_error_record);
+    }
+    *size = rc;
+    return 1;
+}
+
+static int encode(int32_t doc, int keep, int profile, long *size)
+{
+    static const char *const top_keys[] = { "header", "records", "trailing", NULL };
+    static enc e;
+    int32_t hdr, recs, trail, r;
+    uint32_t index = 0;
     if (doc < 0 || nodes[doc].type != J_OBJ)
         return fail("%s", "$: expected an object");
     if (!known_keys(doc, NULL, 0, top_keys))
@@ -2476,167 +1291,21 @@ static int encode(int32_t doc, int keep, int profile, long *size)
         return fail("%s", "$.records: expected a list");
     if (trail >= 0 && nodes[trail].type != J_STR)
         return fail("%s", "$.trailing: expected a hex string");
-    nh = cbf_header_fields(0, &hf);
-    {
-        int32_t vmaj = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MAJOR)->name);
-        int32_t vmin = jget(hdr, role_field(hf, nh, CBF_ROLE_VERSION_MINOR)->name);
-        if ((vmaj >= 0 && !juint(vmaj, 0xFFu, &major)) || (vmin >= 0 && !juint(vmin, 0xFFu, &minor)))
-            return fail("%s", "$.header: bad version");
-    }
-    version = cbf_version_find(major, minor);
-    if (!keep && !cbf_version_writable(version))
-        return fail("header: version %lu.%lu is not writable", (unsigned long)major, (unsigned long)minor);
-    hl = cbf_version_header_layout(version);
-    nh = cbf_header_fields(hl, &hf);
-    if (!known_keys(hdr, hf, nh, NULL))
-        return fail("%s", "$.header: unknown key for the version's header layout");
-    memset(header_bytes, 0, sizeof header_bytes);
-    for (i = 0; i < nh; i++) {
-        int32_t v = jget(hdr, hf[i].name);
-        if (v < 0) {
-            if (hf[i].flags & CBF_FIELD_MAGIC) {
-                size_t k;
-                for (k = 0; k < hf[i].elem; k++)
-                    header_bytes[hf[i].offset + k] = (uint8_t)((hf[i].magic >> (8u * k)) & 0xFFu);
-                continue;
-            }
-            if (hf[i].checksum || hf[i].role == CBF_ROLE_COMMAND_COUNT || hf[i].kind == CBF_KIND_STRING
-                || hf[i].kind == CBF_KIND_BYTES)
-                continue; /* zero / empty by default */
-            return fail("$.header: missing %s", hf[i].name);
-        }
-        if (!pack_field(&hf[i], v, header_bytes))
-            return 0;
-    }
-    (void)cbf_header_decode(header_bytes, sizeof header_bytes, &h);
-    if (cbf_encode_begin(&w, out_buf, sizeof out_buf, &h) != CBF_OK)
-        return fail("%s", "header: cannot encode");
-    nr = cbf_record_fields(&rf);
-    fcode = role_field(rf, nr, CBF_ROLE_CODE);
-    fsize = role_field(rf, nr, CBF_ROLE_ARG_SIZE);
-    if (!keep && recs >= 0 && jcount(recs) > 65535u)
+    memset(&e, 0, sizeof e);
+    e.keep = keep;
+    if (!encode_header(&e, hdr))
+        return 0;
+    e.nr = cbf_record_fields(&e.rf);
+    e.fcode = role_field(e.rf, e.nr, CBF_ROLE_CODE);
+    e.fsize = role_field(e.rf, e.nr, CBF_ROLE_ARG_SIZE);
+    if (!keep && recs >= 0 && jcount(recs) > CBF_LIMIT_MAX_COMMANDS)
         return fail("%s", "too many commands for the count field");
-    for (r = recs >= 0 ? nodes[recs].first : -1; r >= 0; r = nodes[r].next, index++) {
-        int32_t a, jname, jsize;
-        uint32_t code = 0, want_size = 0;
-        int has_size;
-        long nargs;
-        cbf_record_head head;
-        char where[64];
-        snprintf(where, sizeof where, "$.records[%lu]", (unsigned long)index);
-        if (nodes[r].type != J_OBJ)
-            return fail("%s: expected an object", where);
-        if (!known_keys(r, rf, nr, rec_keys))
-            return fail("%s: unknown key", where);
-        jname = jget(r, "command");
-        if (jget(r, fcode->name) >= 0 && nodes[jget(r, fcode->name)].type != J_NULL) {
-            if (!juint(jget(r, fcode->name), 0xFFu, &code))
-                return fail("%s: bad command code", where);
-        } else {
-            char cname[64];
-            int c, found = 0;
-            if (!jcstr(jname, cname, sizeof cname))
-                return fail("%s: needs a code or a known command name", where);
-            for (c = 0; c < 256 && !found; c++)
-                if (cbf_command_name(c) && strcmp(cbf_command_name(c), cname) == 0) {
-                    code = (uint32_t)c;
-                    found = 1;
-                }
-            if (!found)
-                return fail("%s: needs a code or a known command name", where);
-        }
-        if (jname >= 0 && nodes[jname].type != J_NULL) {
-            char cname[64];
-            const char *known = cbf_command_name((int)code);
-            if (!jcstr(jname, cname, sizeof cname) || !known || strcmp(known, cname) != 0)
-                return fail("%s.command: does not match the code", where);
-        }
-        jsize = jget(r, fsize->name);
-        has_size = jsize >= 0 && nodes[jsize].type != J_NULL;
-        if (has_size && !juint(jsize, 0xFFFFFFFFu, &want_size))
-            return fail("%s: bad arg_size", where);
-        a = jget(r, "args");
-        if (a >= 0 && nodes[a].type != J_NULL) {
-            int lay;
-            const cbf_field_info *af;
-            size_t na, item = 0;
-            long group;
-            if (nodes[a].type != J_OBJ)
-                return fail("%s.args: expected an object", where);
-            if (!cbf_command_name((int)code))
-                return fail("%s.args: an unknown code takes raw_args only", where);
-            lay = choose_layout((int)code, version, a, has_size, want_size);
-            if (lay == CBF_LAYOUT__NONE)
-                return group_misfit((int)code, version, a, where)
-                       ? 0 : fail("%s.args: the keys match no layout of the command", where);
-            na = cbf_layout_fields(lay, &af);
-            nargs = json_nb(lay, a);
-            group = cbf_layout_group(lay, NULL, NULL, &item);
-            memset(args, 0, (size_t)nargs);
-            for (i = 0; i < na; i++)
-                if (!((long)i == group ? pack_group(&af[i], jget(a, af[i].name), args, item)
-                                       : pack_field(&af[i], jget(a, af[i].name), args)))
-                    return 0;
-        } else {
-            int32_t raw = jget(r, "raw_args");
-            nargs = (raw < 0 || nodes[raw].type == J_NULL) ? 0 : unhex(raw, args, sizeof args);
-            if (nargs < 0)
-                return fail("%s.raw_args: not hex", where);
-        }
-        if (has_size && want_size != (uint32_t)nargs)
-            return fail("%s: arg_size differs from the number of argument bytes", where);
-        if (!keep) {
-            if (!cbf_command_name((int)code))
-                return fail("%s: unknown command code", where);
-            if (!cbf_command_available((int)code, version))
-                return fail("%s: the command is not available in the version", where);
-            if (cbf_args_layout((int)code, version, (size_t)nargs) == CBF_LAYOUT__NONE)
-                return fail("%s: no layout of that size in the version", where);
-        }
-        memset(&head, 0, sizeof head);
-        for (i = 0; i < nr; i++) {
-            const cbf_field_info *f = &rf[i];
-            uint32_t val = 0, max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
-            int32_t jv = jget(r, f->name);
-            int given = jv >= 0 && nodes[jv].type != J_NULL;
-            if (given && f->role != CBF_ROLE_CODE && f->role != CBF_ROLE_ARG_SIZE && !juint(jv, max, &val))
-                return fail("%s: %s out of range", where, f->name);
-            if (f->role == CBF_ROLE_CODE) val = code;
-            else if (f->role == CBF_ROLE_ARG_SIZE) {
-                if ((unsigned long)nargs > max)
-                    return fail("%s: too many argument bytes", where);
-                val = (uint32_t)nargs;
-            } else if (f->role == CBF_ROLE_SEQUENCE && !keep) val = index & max;
-            else if (f->role == CBF_ROLE_CODE_COPY && (!keep || !given)) val = code;
-            else if (f->checksum && (!keep || !given)) val = cbf_args_checksum(args, (size_t)nargs);
-            cbf_member_set_uint(f, &head, val);
-        }
-        if (cbf_encode_record_stored(&w, &head, args, (size_t)nargs) != CBF_OK)
-            return fail("%s: cannot encode", where);
-    }
-    if (trail >= 0) {
-        long n = unhex(trail, out_buf + w.len, sizeof out_buf - w.len);
-        if (n < 0)
-            return fail("%s", "$.trailing: not hex");
-        if (n > 0 && !keep)
-            return fail("%s", "trailing bytes can only be written with keep_stored");
-        if (cbf_encode_bytes(&w, out_buf + w.len, (size_t)n) != CBF_OK)
-            return fail("%s", "trailing: cannot encode");
-    }
-    rc = cbf_encode_end(&w, profile, !keep);
-    if (rc < 0)
-        return fail("cannot finish the file: %s", cbf_strerror((int)rc));
-    if (!keep) {
-        cbf_options opt;
-        memset(&opt, 0, sizeof opt);
-        opt.profile = profile;
-        has_error = 0;
-        (void)cbf_validate(out_buf, (size_t)rc, &opt, on_error_finding, NULL);
-        if (has_error)
-            return fail("the result would fail check %s (record %ld)", first_error_check, first_error_record);
-    }
-    *size = rc;
-    return 1;
+    for (r = recs >= 0 ? nodes[recs].first : -1; r >= 0; r = nodes[r].next, index++)
+        if (!encode_record(&e, r, index))
+            return 0;
+    if (trail >= 0 && !encode_trailing(&e, trail))
+        return 0;
+    return encode_finish(&e, profile, size);
 }
 
 static void put_base64(const uint8_t *p, size_t n)
@@ -2670,7 +1339,7 @@ static void op_encode(int32_t req)
 {
     int32_t keep = jget(req, "keep_stored"), prof = jget(req, "profile");
     char pname[64];
-    int profile = CBF_PROFILE_DEFAULT;
+    int profile = CBF_TOOL_DEFAULT_PROFILE;
     long size = 0;
     if (prof >= 0 && nodes[prof].type != J_NULL) {
         if (!jcstr(prof, pname, sizeof pname) || (profile = cbf_profile_find(pname)) < 0) {
@@ -2741,3 +1410,5 @@ int main(void)
     }
     return 0;
 }
+/* ==== END tools/testee.c ==== */
+#line 1415 "cbf_testee.c"

@@ -2,8 +2,8 @@
 
 The rules (sizes, rows, name length, nesting, the number grammar, the YAML both tools read) are
 cbf/option_files.json, generated from generator/cbfgen/option_files.yaml and the spec; cbf-c's
-reader (machine_file.inc.j2) is generated from the same file and says the same line for every
-case of tests/option_files/cases.yaml. Every refusal is one line naming the file, the line (or
+reader (emit/c/tools/optfiles.c, in cbf_tools.h) takes its limits from the same file and says the same
+line for every case of tests/option_files/cases.yaml. Every refusal is one line naming the file, the line (or
 the JSON path) and the limit.
 
 YAML is read event by event (PyYAML's parser, never its constructor): an anchor, an alias, a tag,

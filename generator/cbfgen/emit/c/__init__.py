@@ -24,48 +24,62 @@ from .algorithms import algorithm_tables
 from .cnames import cfloat, cname, comment, ctype, macro
 from .views import CContext, context
 
-__all__ = ["CContext", "cfloat", "cname", "comment", "context", "ctype", "emit", "macro", "runtime_section"]
+__all__ = ["CContext", "cfloat", "cname", "comment", "context", "ctype", "emit", "macro", "runtime_section",
+           "tools_section"]
 
 HERE = Path(__file__).parent
 OUT = "c"
 
 RUNTIME = HERE / "runtime"
 RUNTIME_REL = "generator/cbfgen/emit/c/runtime"  # as a compiler names it from the repository's root
-_RESUME = '#line @@NEXT@@ "cbf.h"'
+TOOLS = HERE / "tools"  # the tools' engine (cbf_tools.h), cbf-c's command line and the testee
+TOOLS_REL = "generator/cbfgen/emit/c/tools"
+_RESUME = '#line @@NEXT@@ "@@FILE@@"'
+
+
+def _section(folder: str, rel: str, name: str) -> str:
+    text = (HERE / folder / name).read_text(encoding="utf-8")
+    return (f"/* ==== BEGIN {folder}/{name}: verbatim from {rel}/{name}, edit it there ==== */\n"
+            f'#line 1 "{rel}/{name}"\n{text.rstrip(chr(10))}\n'
+            f"/* ==== END {folder}/{name} ==== */\n{_RESUME}")
 
 
 def runtime_section(name: str) -> str:
     """A hand-written runtime file (runtime/<name>), verbatim, between markers that name it (mk/c.mk
     compiles the files themselves in their place) and #line directives, so that a compiler's message
-    about it names runtime/<name> and its line; after it, the lines are cbf.h's again."""
-    text = (RUNTIME / name).read_text(encoding="utf-8")
-    return (f"/* ==== BEGIN runtime/{name}: verbatim from {RUNTIME_REL}/{name}, edit it there ==== */\n"
-            f'#line 1 "{RUNTIME_REL}/{name}"\n{text.rstrip(chr(10))}\n'
-            f"/* ==== END runtime/{name} ==== */\n{_RESUME}")
+    about it names runtime/<name> and its line; after it, the lines are the generated file's again."""
+    return _section("runtime", RUNTIME_REL, name)
 
 
-def _resume_lines(text: str) -> str:
-    """Number each #line that resumes cbf.h after a runtime section with the line that follows it."""
+def tools_section(name: str) -> str:
+    """A hand-written file of the tools (tools/<name>), verbatim, framed as runtime_section frames one."""
+    return _section("tools", TOOLS_REL, name)
+
+
+def _resume_lines(text: str, name: str) -> str:
+    """Number each #line that resumes the generated file after a section with the line that follows it."""
     lines = text.split("\n")
     for i, line in enumerate(lines):
         if line == _RESUME:
-            lines[i] = f'#line {i + 2} "cbf.h"'
+            lines[i] = f'#line {i + 2} "{name}"'
     return "\n".join(lines)
 
 
 def emit(spec: Spec) -> dict[str, bytes]:
     env = environment(HERE / "templates")
     env.globals["runtime"] = runtime_section
+    env.globals["tools"] = tools_section
     env.filters["comment"] = comment
+    env.filters["cfloat"] = cfloat
     env.filters["cname"] = cname
     env.filters["macro"] = macro
     env.filters["wrap"] = lambda s, width=76, indent="": ("\n" + indent).join(textwrap.wrap(s, width))
     names = context(spec).namespace()
     assert "options" not in names
-    names["options"] = option_rules(spec)  # option files, machine_file.inc.j2 (issue 28)
+    names["options"] = option_rules(spec)  # option files, cbf_tools.h.j2 (issue 28)
     names["checksum_algorithms"] = algorithm_tables()  # cbf/algorithms.c.j2 (issue 33, point 1)
     out: dict[str, bytes] = {}
-    for name in ("cbf.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
+    for name in ("cbf.h", "cbf_tools.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         text = env.get_template(name + ".j2").render(**names)
-        out[f"{OUT}/{name}"] = (_resume_lines(text) if name == "cbf.h" else text).encode()
+        out[f"{OUT}/{name}"] = _resume_lines(text, name).encode()
     return out

@@ -55,6 +55,7 @@ def ctype(f: Field) -> tuple[str, str]:
 
 
 def member_doc(f: Field, units: dict[str, str]) -> str:
+    """A struct member's documentation as plain text (structs.h.j2 spells it as a comment, |comment)."""
     parts = [f.doc.rstrip(".") + "."]
     t = f.ftype
     what = (f"string({f.size}), NUL-terminated copy" if t.kind == "string" else f"{f.size} raw bytes"
@@ -69,4 +70,4 @@ def member_doc(f: Field, units: dict[str, str]) -> str:
         extra.append(f"clause {f.clause}")
     if f.reserved:
         extra.append("reserved, kept verbatim")
-    return comment(" ".join(parts) + " [" + "; ".join(extra) + "]")
+    return " ".join(parts) + " [" + "; ".join(extra) + "]"

@@ -7,26 +7,48 @@ per limit, one per axis for a box; the spec's default machine is a constant of c
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from ...model import MACHINE_FILE_KEYS, MACHINE_LIMIT_KEYS, Spec
-from .cnames import cfloat, macro
 
-if TYPE_CHECKING:
-    from .views import LayoutRow
+
+class ArgLike(Protocol):
+    """What a machine rule reads of a layout's argument (views.FieldRow has it)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def offset(self) -> int: ...
+    @property
+    def count(self) -> int: ...
+
+
+class LayoutLike(Protocol):
+    """What the machine rules read of a layout (views.LayoutRow has it): this module imports no view."""
+
+    @property
+    def cmd_name(self) -> str: ...
+    @property
+    def macro(self) -> str: ...
+    @property
+    def args(self) -> Sequence[ArgLike]: ...
 
 
 @dataclass(frozen=True)
 class MachineLimitRow:
+    """A limit as plain data (machine.h.j2 spells it: |macro, |cfloat)."""
+
     name: str
-    macro: str
     unit: str
     naxes: int
     axes: tuple[str, ...]
     doc: str
-    min: tuple[str, ...]  # padded with 0.0 to machine_axes
-    max: tuple[str, ...]
+    min: tuple[float, ...]  # padded with 0.0 to machine_axes
+    max: tuple[float, ...]
 
 
 @dataclass(frozen=True)
@@ -43,7 +65,7 @@ class MachineRule:
 
 @dataclass(frozen=True)
 class MachineView:
-    """machine.h.j2, validator_layouts.c.j2, machine_file.inc.j2."""
+    """machine.h.j2, validator_layouts.c.j2, cbf_tools.h.j2."""
 
     machine_axes: int
     machine_limits: tuple[MachineLimitRow, ...]
@@ -54,14 +76,14 @@ class MachineView:
     machine_limit_keys: tuple[str, ...]
 
 
-def machine_view(spec: Spec, layouts: tuple[LayoutRow, ...]) -> MachineView:
+def machine_view(spec: Spec, layouts: Sequence[LayoutLike]) -> MachineView:
     lims = spec.machine.limits
     axes = max([len(lim.axes) for lim in lims] + [1])
     names = [lim.name for lim in lims]
     limits = tuple(MachineLimitRow(
-        name=lim.name, macro=macro(lim.name), unit=lim.unit, naxes=len(lim.axes), axes=tuple(lim.axes), doc=lim.doc,
-        min=tuple(cfloat(x) for x in lim.min) + ("0.0",) * (axes - len(lim.min)),
-        max=tuple(cfloat(x) for x in lim.max) + ("0.0",) * (axes - len(lim.max))) for lim in lims)
+        name=lim.name, unit=lim.unit, naxes=len(lim.axes), axes=tuple(lim.axes), doc=lim.doc,
+        min=tuple(float(x) for x in lim.min) + (0.0,) * (axes - len(lim.min)),
+        max=tuple(float(x) for x in lim.max) + (0.0,) * (axes - len(lim.max))) for lim in lims)
     check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
     # a value <= 0 of an argument a positive check targets is that check's (one fault, one finding)
     positive = {(t.command, a) for ch in spec.checks_of_kind("positive") for t in ch.targets for a in t.args}

@@ -16,7 +16,7 @@ from ... import __version__ as TOOLKIT_VERSION
 from ... import registry
 from ...model import Command, Field, Layout, Spec
 from ...options import cutter_columns
-from .cnames import cfloat, cname, comment, ctype, macro, member_doc
+from .cnames import cfloat, cname, ctype, macro, member_doc
 from .machine import MachineView, machine_view
 
 # The model's vocabulary the engine understands (loader.py, spec comments); the role kinds, field
@@ -35,9 +35,21 @@ CHECKSUM_TAGS = ("args", "header", "file")  # first, in this order; a spec's own
 def _tags(spec: Spec) -> tuple[str, ...]:
     """The checksum tags of the spec: today's three, then any other, in checksums.fields order."""
     return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
-# Targeted check kinds whose C kernel is not cbf__target_at (runtime/validator.c): every other
-# targeted kind of the registry goes there, and that switch has a case for each kind or the build fails.
-OWN_KERNEL = {"ordered": "cbf__ordered", "machine_limits": "cbf__machine_at"}
+# The signature ("shape") of a targeted check kind's C kernel, cbf__<kind>_at (runtime/validator.c), from the
+# registry: a kind that judges a target's items (registry `items`) runs its own machine rules (machine.py); a
+# kind that compares a target's arguments with each other judges the target whole; every other one float
+# argument. The kernels are called through per-shape tables indexed by kind (validator_layouts.c.j2), so a
+# targeted kind the registry gains and the C engine lacks fails the build, naming its kernel.
+WHOLE_TARGET_KINDS = ("ordered",)
+
+
+def kernel_shape(kind: registry.CheckKind) -> str:
+    """argument, target, items, or "" for a kind that judges no target (the engine's own passes)."""
+    if not kind.targeted:
+        return ""
+    if kind.items:
+        return "items"
+    return "target" if kind.name in WHOLE_TARGET_KINDS else "argument"
 
 
 # -- rows -------------------------------------------------------------------------------------
@@ -134,7 +146,8 @@ class PlannedCheck:
 
     check: int
     target: int
-    kernel: str
+    kind: str  # the kind's macro (CBF__KIND_*), the index of its kernel
+    shape: str  # argument or target (kernel_shape)
     text: str
     args: tuple[int, ...]
 
@@ -368,6 +381,8 @@ class Vocabulary:
     shape_keys: tuple[str, ...]
     cutter_keys: tuple[str, ...]
     check_kinds: tuple[str, ...]
+    kernel_shapes: tuple[str, ...]  # per check kind, its kernel's shape (kernel_shape)
+    check_kind_names: tuple[str, ...]
     field_kinds: tuple[str, ...]
 
 
@@ -502,13 +517,14 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         motion_kinds=m(MOTION_KINDS), motion_keys=m(MOTION_KEYS), orient_kinds=m(ORIENT_KINDS),
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=cutter_columns(spec).all, check_kinds=m(list(registry.CHECK_KINDS)),
-        field_kinds=m(registry.FIELD_KINDS))
+        kernel_shapes=tuple(kernel_shape(k) for k in registry.CHECK_KINDS.values()),
+        check_kind_names=tuple(registry.CHECK_KINDS), field_kinds=m(registry.FIELD_KINDS))
 
 
 def _framing(spec: Spec) -> Framing:
     headers = tuple(HeaderRow(
         id=hid, macro=macro(hid), struct="cbf_header_" + cname(hid), size=h.size, clause=h.clause,
-        doc=comment(h.doc), fields=tuple(field_row(f, "cbf_header_" + cname(hid), spec.units) for f in h.fields))
+        doc=h.doc, fields=tuple(field_row(f, "cbf_header_" + cname(hid), spec.units) for f in h.fields))
         for hid, h in spec.headers.items())
     if any(f.kind != "uint" for f in spec.record.fields):
         raise ValueError("C binding: record head fields must be unsigned integers")
@@ -516,7 +532,7 @@ def _framing(spec: Spec) -> Framing:
     return Framing(
         headers=headers, header_size=spec.header_size,
         record=RecordView(head_size=spec.record.head_size, fields=rec, clause=spec.record.clause,
-                          doc=comment(spec.record.doc)),
+                          doc=spec.record.doc),
         head={f.role[len("ROLE_"):]: f for f in rec if f.role != "ROLE_NONE"},
         head_checksum=next((f for f in rec if f.checksum == "CK_ARGS"), None),
         version_major_offset=spec.common_header_field("version_major").offset)
@@ -527,7 +543,7 @@ def _versions(spec: Spec) -> Versions:
     ids = [v.id for v in spec.versions]
     return Versions(
         versions=tuple(VersionRow(id=v.id, macro=macro(v.id), major=v.major, minor=-1 if v.minor is None else v.minor,
-                                  header=header_ids.index(v.header), writable=int(v.writable), doc=comment(v.doc),
+                                  header=header_ids.index(v.header), writable=int(v.writable), doc=v.doc,
                                   clause=v.clause) for v in spec.versions),
         default_version=ids.index(spec.default_version), fallback_version=ids.index(spec.fallback_version))
 
@@ -586,8 +602,8 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
             error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
             n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(ch.min or 0.0),
             has_max=int(ch.max is not None), max=cfloat(ch.max or 0.0), min_open=int(ch.min_exclusive),
-            max_open=int(ch.max_exclusive), text=comment(ch.text),
-            fails=comment(ch.fails), clause=ch.clause or "", decision=ch.decision or ""))
+            max_open=int(ch.max_exclusive), text=ch.text,
+            fails=ch.fails, clause=ch.clause or "", decision=ch.decision or ""))
         targets.extend((cmd_index[t.command], ci, f"{t.command} {' '.join(t.args)}", tuple(t.args))
                        for t in ch.targets)
     return tuple(rows), targets
@@ -628,7 +644,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
             orient=orient, shape=_role_index(lay, c.shape, SHAPE_KEYS),
             cutter=_role_index(lay, c.cutter, cutter_columns(spec).all),
             progress=_role_index(lay, {"p": c.progress} if c.progress else None, ("p",))[0],
-            doc=comment(lay.doc or c.doc), clause=lay.clause or c.clause,
+            doc=lay.doc or c.doc, clause=lay.clause or c.clause,
             plan=_plan(args, first_arg, motion, orient, planned.get(first + j, [])), group=group))
         first_arg += len(args)
     return out
@@ -661,8 +677,9 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
         for ct in ctargets[first_ct[ci]:first_ct[ci + 1]]:
             rows = [tindex[tfirst[ct.target] + a][li] for a in range(len(targets[ct.target][3]))]
             floats = tuple(first_arg + i for i in rows if i >= 0 and lay.args[i].kind == "float")
-            kernel = OWN_KERNEL.get(check_rows[ct.check].kind_name, "cbf__target_at")
-            if kernel == "cbf__machine_at":
+            kind = registry.CHECK_KINDS[check_rows[ct.check].kind_name]
+            shape = kernel_shape(kind)
+            if shape == "items":
                 continue  # its own rules (machine.py), called from the layout function too
             if lay.repeated is not None and len(lay.args) - 1 in rows:
                 # a repeated group is judged item by item by the kinds that know items (machine_limits)
@@ -670,9 +687,9 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
                                  f"targets the repeated argument group {lay.command} {lay.args[-1].name}: only "
                                  "machine_limits judges a group, item by item")
             # a check finds nothing in a layout without its float arguments (ordered: without all of them)
-            if floats if kernel == "cbf__target_at" else len(floats) == len(rows):
-                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kernel=kernel,
-                                                               text=ct.text, args=floats))
+            if floats if shape == "argument" else len(floats) == len(rows):
+                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kind=macro(kind.name),
+                                                               shape=shape, text=ct.text, args=floats))
     layouts: list[LayoutRow] = []
     commands: list[CommandRow] = []
     vorder = {v.id: i for i, v in enumerate(spec.versions)}
@@ -694,7 +711,7 @@ def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
     for ci, c in enumerate(spec.commands):
         mine = tuple(lay for lay in layouts if lay.command == ci)
         commands.append(CommandRow(
-            index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=comment(c.doc), clause=c.clause,
+            index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=c.doc, clause=c.clause,
             first=firsts[ci], nlayouts=len(c.layouts),
             cands=tuple(tuple(row + [-1] * (max_layouts - len(row))) for row in cands_all[ci]),
             motion=("MOTION_" + macro(c.motion["kind"])) if c.motion else "MOTION_NONE",
@@ -729,7 +746,7 @@ def _checksums(spec: Spec) -> Checksums:
     segments: list[SegmentRow] = []
     coverages: list[CoverageRow] = []
     for name, cov in spec.checksums.coverages.items():
-        coverages.append(CoverageRow(name=name, first=len(segments), n=len(cov.segments), doc=comment(cov.doc)))
+        coverages.append(CoverageRow(name=name, first=len(segments), n=len(cov.segments), doc=cov.doc))
         segments.extend(SegmentRow(region="REGION_" + macro(s.region), start=s.start or 0,
                                    end=-1 if s.end is None else s.end,
                                    exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
@@ -781,7 +798,7 @@ def _profiles(spec: Spec) -> Profiles:
         file = tuple(cov_names.index(x) for x in p.file_coverages)
         hint = tuple(cov_names.index(x) for x in p.hint_coverages)
         hint_alg = tuple(alg(q.id) for q in owners)
-        rows.append(ProfileRow(id=p.id, macro=macro(p.id), doc=comment(p.doc), file=file, hint=hint,
+        rows.append(ProfileRow(id=p.id, macro=macro(p.id), doc=p.doc, file=file, hint=hint,
                                file_alg=alg(p.id), hint_alg=hint_alg, file_pad=file + (-1,) * (width - len(file)),
                                hint_pad=hint + (-1,) * (width - len(hint)),
                                hint_alg_pad=hint_alg + ("CBF__ALG_NONE",) * (width - len(hint_alg)),

@@ -498,92 +498,80 @@ static void cbf__cutter(cbf__vctx *v, int layout, const uint8_t *args, long rec,
     }
 }
 
-/* A check with targets on one float argument f of the record: positive,
- * nonzero_vector, range, nondecreasing (t: the target, for the previous value).
- * xf: its f->count elements as the layout function decoded them, finite: whether
- * all are. Nothing is said about a value that is not finite. */
-CBF__INLINE void cbf__target_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
-                                int finite, long rec, size_t args_off)
+/* The kernels of the checks with targets on one float argument f of the record (one signature,
+ * cbf__argument_kernel; validator_layouts.c.j2 calls them through cbf__argument_kernels): positive,
+ * nonzero_vector, range, nondecreasing (t: the target, for the previous value). xf: its f->count
+ * elements as the layout function decoded them, finite: whether all are. Nothing is said about a value
+ * that is not finite. */
+CBF__INLINE void cbf__positive_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                                  int finite, long rec, size_t args_off)
+{
+    unsigned i;
+    int any_le = 0;
+    (void)t;
+    if (!finite)
+        return;
+    for (i = 0; i < f->count; i++)
+        if (xf[i] <= 0.0f) any_le = 1;
+    if (any_le)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name,
+                 (double)xf[0]);
+}
+
+CBF__INLINE void cbf__nonzero_vector_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f,
+                                        const float *xf, int finite, long rec, size_t args_off)
+{
+    unsigned i;
+    int all_zero = 1;
+    (void)t;
+    if (!finite)
+        return;
+    for (i = 0; i < f->count; i++)
+        if (xf[i] != 0.0f) all_zero = 0;
+    if (all_zero)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
+}
+
+/* range: the words of findings.range_text. */
+CBF__INLINE void cbf__range_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f, const float *xf,
+                               int finite, long rec, size_t args_off)
 {
     const cbf__check *ch = &cbf__checks[ci];
     double x = (double)xf[0];
-    unsigned i;
-    int any_le = 0, all_zero = 1;
+    (void)t;
     if (!finite)
         return;
-    for (i = 0; i < f->count; i++) {
-        if (xf[i] <= 0.0f) any_le = 1;
-        if (xf[i] != 0.0f) all_zero = 0;
-    }
-    switch ((enum cbf__kind)ch->kind) {
-    case CBF__KIND_POSITIVE:
-        if (any_le)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be > 0", cbf__commands[cmd].name, f->name, x);
-        break;
-    case CBF__KIND_NONZERO_VECTOR:
-        if (all_zero)
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s has zero length", cbf__commands[cmd].name, f->name);
-        break;
-    case CBF__KIND_RANGE:
-        if ((ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
-            || (ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max))) {
-            /* findings.range_text's words */
-            if (ch->has_min && ch->has_max)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
-                         f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
-            else if (ch->has_min)
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->min_open ? ">" : ">=", ch->min);
-            else
-                cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
-                         f->name, x, ch->max_open ? "<" : "<=", ch->max);
-        }
-        break;
-    case CBF__KIND_NONDECREASING:
-        if (v->nd_ok[t] && x < v->nd_prev[t])
-            cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
-                     f->name, v->nd_prev[t], x);
-        v->nd_ok[t] = 1;
-        v->nd_prev[t] = x;
-        break;
-    /* Every other kind of the registry has its one kernel elsewhere, named here: no default, so
-     * that a kind the registry gains fails the build (-Wswitch-enum) until its kernel is written
-     * (a new target kind: a case above; the emitter routes every targeted kind but ordered and
-     * machine_limits here). */
-    case CBF__KIND_ORDERED:          /* cbf__ordered */
-    case CBF__KIND_MACHINE_LIMITS:   /* cbf__machine_at (machine.h.j2) */
-    case CBF__KIND_DEPRECATED:       /* cbf_validate's record loop (cbf__deprecated) */
-    case CBF__KIND_FINITE:           /* the layout function (validator_layouts.c.j2) */
-    case CBF__KIND_STRING_TAIL:      /* cbf__check_string */
-    case CBF__KIND_STRING_ASCII:     /* cbf__check_string */
-    case CBF__KIND_CONTINUITY:       /* cbf__continuity_at */
-    case CBF__KIND_ORIENTATION:      /* cbf__orientation_at */
-    case CBF__KIND_SHAPE:            /* cbf__shape */
-    case CBF__KIND_CUTTER_TABLE:     /* cbf__cutter */
-    case CBF__KIND_PART_NUMBER:      /* cbf__check_part_number */
-    case CBF__KIND_DESCRIPTOR_WORD:  /* cbf__check_descriptor_word */
-    case CBF__KIND_TRUNCATED_HEADER: /* cbf_validate (validate.c): the header */
-    case CBF__KIND_VERSION:
-    case CBF__KIND_MAGIC:
-    case CBF__KIND_HEADER_CHECKSUM:
-    case CBF__KIND_SEQUENCE:         /* cbf_validate: the record pass */
-    case CBF__KIND_CODE_COPY:
-    case CBF__KIND_ARG_CHECKSUM:
-    case CBF__KIND_RESERVED_BYTE:
-    case CBF__KIND_UNKNOWN_CODE:
-    case CBF__KIND_AVAILABILITY:
-    case CBF__KIND_ARG_SIZE:
-    case CBF__KIND_TRUNCATED_RECORD: /* cbf_validate: the end of the file */
-    case CBF__KIND_TRAILING:
-    case CBF__KIND_COMMAND_COUNT:
-    case CBF__KIND_FILE_CHECKSUM:
-        break;
-    }
+    if (!(ch->has_min && (ch->min_open ? x <= ch->min : x < ch->min))
+        && !(ch->has_max && (ch->max_open ? x >= ch->max : x > ch->max)))
+        return;
+    if (ch->has_min && ch->has_max)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, outside %s%g..%g%s", cbf__commands[cmd].name,
+                 f->name, x, ch->min_open ? "(" : "[", ch->min, ch->max, ch->max_open ? ")" : "]");
+    else if (ch->has_min)
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                 f->name, x, ch->min_open ? ">" : ">=", ch->min);
+    else
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s is %g, must be %s %g", cbf__commands[cmd].name,
+                 f->name, x, ch->max_open ? "<" : "<=", ch->max);
 }
 
-/* ordered: the target's arguments, all finite, are in non-decreasing order. */
-static void cbf__ordered(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
-                         size_t args_off)
+CBF__INLINE void cbf__nondecreasing_at(cbf__vctx *v, int ci, size_t t, int cmd, const cbf_field_info *f,
+                                       const float *xf, int finite, long rec, size_t args_off)
+{
+    double x = (double)xf[0];
+    if (!finite)
+        return;
+    if (v->nd_ok[t] && x < v->nd_prev[t])
+        cbf__say(v, ci, rec, args_off + f->offset, "%s.%s falls from %g to %g", cbf__commands[cmd].name,
+                 f->name, v->nd_prev[t], x);
+    v->nd_ok[t] = 1;
+    v->nd_prev[t] = x;
+}
+
+/* ordered: the target's arguments, all finite, are in non-decreasing order (the kernel of a whole target,
+ * cbf__target_kernel). */
+static void cbf__ordered_at(cbf__vctx *v, int ci, size_t t, int cmd, int layout, const uint8_t *args, long rec,
+                            size_t args_off)
 {
     const cbf__target *tg = &cbf__targets[t];
     double prev = 0.0;

@@ -174,54 +174,62 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n)
     return CBF_OK;
 }
 
-long cbf_encode_end(cbf_writer *w, int profile, int fill)
+/* The record at pos cut to the profile's layout (the bytes after it move up); its argument size, or -1
+ * when the profile has no layout for it. */
+static long cbf__fill_cut(cbf_writer *w, size_t pos, int profile, const cbf_field_info *f_code,
+                          const cbf_field_info *f_nb, const cbf_field_info *f_ck)
 {
-    int lay;
-    size_t i;
-    if (!w || !w->buf)
-        return CBF_ERR_ARGUMENT;
-    if (w->error)
-        return w->error;
-    if (profile < 0 || profile >= CBF_PROFILE__COUNT)
-        return cbf__wfail(w, CBF_ERR_ARGUMENT);
-    if (!fill)
-        return (long)w->len;
-    if (!cbf_version_writable(w->version))
-        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-    {
-        /* records appended with cbf_encode_record_stored pass the same test */
-        const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
-        const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
-        const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
-        size_t pos = CBF_HEADER_SIZE;
-        while (f_code && f_nb && pos < w->records_end) {
-            uint8_t *p = w->buf + pos;
-            int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
-            size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
-            long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
-            int layout;
-            if (keep < 0)
-                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-            if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
-                size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
-                memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
-                w->len -= cut;
-                w->records_end -= cut;
-                nb = (size_t)keep;
-                cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
-                if (f_ck)
-                    cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
-            }
-            layout = cbf_args_layout(code, w->version, nb);
-            if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
-                return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
-            /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
-            if (cbf__fill_argcks(layout, p, nb) && f_ck)
-                cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
-            pos += CBF_RECORD_HEAD_SIZE + nb;
-        }
+    uint8_t *p = w->buf + pos;
+    int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
+    size_t nb = cbf__get_u(p + f_nb->offset, f_nb->elem);
+    long keep = cbf__profile_size(w->version, code, p + CBF_RECORD_HEAD_SIZE, nb, profile);
+    if (keep < 0)
+        return -1;
+    if ((size_t)keep < nb) { /* cut to the profile's layout: the bytes after it move up */
+        size_t cut = nb - (size_t)keep, end = pos + CBF_RECORD_HEAD_SIZE + nb;
+        memmove(p + CBF_RECORD_HEAD_SIZE + keep, w->buf + end, w->len - end);
+        w->len -= cut;
+        w->records_end -= cut;
+        nb = (size_t)keep;
+        cbf__put_u(p + f_nb->offset, (uint32_t)nb, f_nb->elem);
+        if (f_ck)
+            cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
     }
-    lay = cbf__versions[w->eff_version].header;
+    return (long)nb;
+}
+
+/* Every record written: cut to the profile's layout, writable, and its checksum fields filled. Records
+ * appended with cbf_encode_record_stored pass the same test. */
+static int cbf__fill_records(cbf_writer *w, int profile)
+{
+    const cbf_field_info *f_code = cbf__record_field_by_role(CBF_ROLE_CODE);
+    const cbf_field_info *f_nb = cbf__record_field_by_role(CBF_ROLE_ARG_SIZE);
+    const cbf_field_info *f_ck = cbf__record_field_by_tag(CBF__CK_ARGS);
+    size_t pos = CBF_HEADER_SIZE;
+    while (f_code && f_nb && pos < w->records_end) {
+        uint8_t *p = w->buf + pos;
+        int code = (int)cbf__get_u(p + f_code->offset, f_code->elem);
+        long got = cbf__fill_cut(w, pos, profile, f_code, f_nb, f_ck);
+        size_t nb;
+        int layout;
+        if (got < 0)
+            return CBF_ERR_NOT_WRITABLE;
+        nb = (size_t)got;
+        layout = cbf_args_layout(code, w->version, nb);
+        if (!cbf__record_writable(w->version, code, nb) || !cbf__profile_accepts(layout, profile))
+            return CBF_ERR_NOT_WRITABLE;
+        /* checksum fields among the arguments (issue 25, point 1), then the head's sum over them */
+        if (cbf__fill_argcks(layout, p, nb) && f_ck)
+            cbf__put_u(p + f_ck->offset, cbf_args_checksum(p + CBF_RECORD_HEAD_SIZE, nb), f_ck->elem);
+        pos += CBF_RECORD_HEAD_SIZE + nb;
+    }
+    return CBF_OK;
+}
+
+/* The header layout lay's magic numbers and command count. */
+static int cbf__fill_header(cbf_writer *w, int lay)
+{
+    size_t i;
     for (i = 0; i < cbf__headers[lay].nfields; i++) {
         const cbf_field_info *f = &cbf__headers[lay].fields[i];
         if (f->kind != CBF__K_UINT)
@@ -231,10 +239,17 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
         if (f->role == CBF_ROLE_COMMAND_COUNT) {
             uint32_t max = f->elem >= 4u ? 0xFFFFFFFFu : ((1u << (8u * f->elem)) - 1u);
             if (w->count > max)
-                return cbf__wfail(w, CBF_ERR_RANGE);
+                return CBF_ERR_RANGE;
             cbf__put_u(w->buf + f->offset, (uint32_t)w->count, f->elem);
         }
     }
+    return CBF_OK;
+}
+
+/* The header's checksum fields, in their fill order (the file's over the profile's first coverage). */
+static void cbf__fill_header_sums(cbf_writer *w, int lay, int profile)
+{
+    size_t i;
     for (i = 0; i < sizeof cbf__fill_order / sizeof cbf__fill_order[0]; i++) {
         int tag = cbf__fill_order[i];
         const cbf__ckfield *k = cbf__ckfield_of(tag);
@@ -248,5 +263,28 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
                    cbf__cover(cov, tag == CBF__CK_FILE ? cbf__profiles[profile].file_alg : k->alg, f->elem, w->buf,
                               w->len, w->records_end, NULL, 0), f->elem);
     }
+}
+
+long cbf_encode_end(cbf_writer *w, int profile, int fill)
+{
+    int lay, rc;
+    if (!w || !w->buf)
+        return CBF_ERR_ARGUMENT;
+    if (w->error)
+        return w->error;
+    if (profile < 0 || profile >= CBF_PROFILE__COUNT)
+        return cbf__wfail(w, CBF_ERR_ARGUMENT);
+    if (!fill)
+        return (long)w->len;
+    if (!cbf_version_writable(w->version))
+        return cbf__wfail(w, CBF_ERR_NOT_WRITABLE);
+    rc = cbf__fill_records(w, profile);
+    if (rc != CBF_OK)
+        return cbf__wfail(w, rc);
+    lay = cbf__versions[w->eff_version].header;
+    rc = cbf__fill_header(w, lay);
+    if (rc != CBF_OK)
+        return cbf__wfail(w, rc);
+    cbf__fill_header_sums(w, lay, profile);
     return (long)w->len;
 }

@@ -1,37 +1,5 @@
-/* ---- option files (issue 28): the rules of generator/cbfgen/option_files.yaml, completed from the
- * spec (cbfgen/options.py), the same that cbf/option_files.json gives cbf. Every refusal is one line
- * naming the file, the line (or JSON path) and the limit, the line cbf says (tests/option_files/). */
-#include <float.h>
-#include <stdarg.h>
-
-#define OPT_CUTTER_MAX_BYTES {{ options.cutter_table.max_bytes }}u
-#define OPT_CUTTER_MAX_ROWS {{ options.cutter_table.max_rows }}u
-#define OPT_CUTTER_MAX_COLUMNS {{ options.cutter_table.max_columns }}
-#define OPT_CUTTER_MAX_DEPTH {{ options.cutter_table.max_depth }}
-#define OPT_CUTTER_MAX_NAME {{ options.cutter_table.max_name }}u
-#define OPT_MACHINE_MAX_BYTES {{ options.machine_file.max_bytes }}u
-#define OPT_MACHINE_MAX_DEPTH {{ options.machine_file.max_depth }}
-#define OPT_YAML_MAX_KEYS {{ options.yaml.max_keys }}u
-#define OPT_NEST_CAP 32 /* the deepest any option file may nest, and then one more */
-#if OPT_CUTTER_MAX_DEPTH >= OPT_NEST_CAP || OPT_MACHINE_MAX_DEPTH >= OPT_NEST_CAP
-#error "option_files.yaml: max_depth beyond OPT_NEST_CAP"
-#endif
-#define OPT_CUTTER_NAME_BYTES (4u * OPT_CUTTER_MAX_NAME + 1u) /* UTF-8: up to 4 bytes a character */
-static const char opt_cutter_what[] = {{ options.cutter_table.what |c_str }};
-static const char opt_machine_what[] = {{ options.machine_file.what |c_str }};
-/* A cutter table's columns (cbfgen/options.py: the keys of the spec's cutter role): the name's
- * first, then the numbers, value[k] of cbf_cutter, in the order of opt_cutter_values. */
-#define OPT_CUTTER_COLUMNS {{ options.cutter_table.columns|length }}
-#if OPT_CUTTER_COLUMNS != CBF_CUTTER_VALUES + 1
-#error "a cutter table's columns are the name and cbf_cutter's values"
-#endif
-static const char *const opt_cutter_columns[OPT_CUTTER_COLUMNS] = { {% for c in options.cutter_table.columns %}{{ c |c_str }}{{ ", " if not loop.last }}{% endfor %} };
-static const char *const opt_columns_list = {{ options.cutter_table.columns | join(", ") |c_str }};
-static const struct { const char *column; int positive; const char *check; } opt_cutter_values[CBF_CUTTER_VALUES] = {
-{% for v in options.cutter_table["values"] %}    { {{ v.column |c_str }}, {{ 1 if v.positive else 0 }}, {{ v.check |c_str }} },
-{% endfor %}};
-
 static char opt_why[8192];
+static const char *opt_last_why = opt_why; /* the line of the last refusal */
 
 static int opt_fail(const char *fmt, ...) CBF__PRINTF(1, 2);
 static int opt_fail(const char *fmt, ...)
@@ -43,19 +11,22 @@ static int opt_fail(const char *fmt, ...)
     return 0;
 }
 
-/* The file into buf (at most max bytes, never more read), checked to be UTF-8 as Python decodes it. */
-static long opt_read(const char *path, char *buf, size_t max, const char *what)
+/* The most an option file may have, said as cbf says it. */
+static long opt_too_large(const char *path, size_t max, const char *what)
 {
-    const char *why;
-    long n = read_file(path, (uint8_t *)buf, max, &why);
+    return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max, what) - 1;
+}
+
+/* An option file's bytes (data[0..n)) copied into buf (at most max bytes, buf holds max + 1), checked to be
+ * UTF-8 as Python decodes it; its size, or -1 with the one line in opt_why. */
+static long opt_read(const char *path, const char *data, size_t size, char *buf, size_t max, const char *what)
+{
+    long n = (long)size;
     size_t i = 0;
-    if (n < 0) {
-        if (strcmp(why, "file too large") == 0)
-            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max,
-                            what) - 1;
-        return opt_fail("%s: cannot read %s (%s)", path, what, why) - 1;
-    }
-    buf[n] = 0;
+    if (size > max)
+        return opt_too_large(path, max, what);
+    memcpy(buf, data, size);
+    buf[size] = 0;
     while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
         const unsigned char *u = (const unsigned char *)buf + i;
         size_t left = (size_t)n - i, len, k;
@@ -346,132 +317,236 @@ static const char *yj_skip(const char *p, const char *end)
     return p;
 }
 
-/* A flow collection or scalar inside one, at *p; fdepth: the open flow collections around it. */
+static int yj_flow(yj *y, const char **p, const char *end, int in_flow);
+
+/* A plain scalar at *p: of a flow collection (in_flow: it ends at ',', ']' or '}') or a block value. */
+static int yj_flow_plain(yj *y, const char **p, const char *end, int in_flow)
+{
+    const char *s = *p, *v0 = s;
+    size_t len;
+    while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}'))) {
+        if (*s == ':' && (s + 1 == end || s[1] == ' ' || s[1] == '\t'))
+            return opt_fail("%s: line %lu: not YAML (a ': ' inside a value)", y->file, y->line);
+        s++;
+    }
+    len = (size_t)(s - v0);
+    while (len && (v0[len - 1] == ' ' || v0[len - 1] == '\t'))
+        len--;
+    *p = s;
+    if (!in_flow)
+        y->scalar_line = y->line;
+    return yj_plain(y, v0, len);
+}
+
+/* An entry of a flow mapping at *sp: its key (plain or quoted), ':' and its value (null when it has none). */
+static int yj_flow_entry(yj *y, const char **sp, const char *end, char close, unsigned *keys)
+{
+    const char *s = *sp;
+    if (!yj_node_mark(y, s))
+        return 0;
+    if (*s == '[' || *s == '{')
+        return yj_err(y, y->line, "a key must be a plain value (complex key)");
+    if (++*keys > OPT_YAML_MAX_KEYS)
+        return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file, y->line,
+                        OPT_YAML_MAX_KEYS);
+    if (*s == '"' || *s == '\'') {
+        if (!yj_quoted(y, &s, end))
+            return 0;
+    } else {
+        const char *k0 = s;
+        size_t len;
+        while (s < end && *s != ',' && *s != close && !(*s == ':' && (s + 1 >= end || s[1] == ' ')))
+            s++;
+        len = (size_t)(s - k0);
+        while (len && (k0[len - 1] == ' ' || k0[len - 1] == '\t'))
+            len--;
+        if (!yj_string(y, k0, len))
+            return 0;
+    }
+    s = yj_skip(s, end);
+    if (!yj_c(y, ':'))
+        return 0;
+    if (s < end && *s == ':') {
+        s++;
+        if (!yj_flow(y, &s, end, 1))
+            return 0;
+    } else if (!yj_put(y, "null", 4)) {
+        return 0;
+    }
+    *sp = s;
+    return 1;
+}
+
+/* What follows an entry at *sp: ',' and another entry (1), the close, after a ',' or not (2); 0 refused. */
+static int yj_flow_next(yj *y, const char **sp, const char *end, char close)
+{
+    const char *s = yj_skip(*sp, end);
+    if (s >= end)
+        return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+    if (*s == ',') {
+        s = yj_skip(s + 1, end);
+        if (s < end && *s == close) {
+            *sp = s + 1;
+            return 2;
+        }
+        *sp = s;
+        return yj_c(y, ',');
+    }
+    if (*s == close) {
+        *sp = s + 1;
+        return 2;
+    }
+    return opt_fail("%s: line %lu: not YAML (expected ',' or '%c')", y->file, y->line, close);
+}
+
+/* A flow collection at *p ('[' or '{'), on one line. */
+static int yj_flow_collection(yj *y, const char **p, const char *end)
+{
+    const char *s = *p;
+    char close = *s == '[' ? ']' : '}';
+    int mapping = *s == '{', more = 1;
+    unsigned keys = 0;
+    if (y->depth >= y->max_depth)
+        return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line,
+                        y->max_depth);
+    y->depth++;
+    if (!yj_c(y, *s))
+        return 0;
+    s = yj_skip(s + 1, end);
+    if (s < end && *s == close) {
+        s++;
+        more = 2;
+    }
+    while (more == 1) {
+        s = yj_skip(s, end);
+        if (s >= end)
+            return yj_err(y, y->line, "a value over more than one line (one-line values only)");
+        if (mapping ? !yj_flow_entry(y, &s, end, close, &keys) : !yj_flow(y, &s, end, 1))
+            return 0;
+        more = yj_flow_next(y, &s, end, close);
+        if (!more)
+            return 0;
+    }
+    y->depth--;
+    *p = s;
+    return yj_c(y, close);
+}
+
+/* A flow collection or scalar at *p (in_flow: inside a flow collection). */
 static int yj_flow(yj *y, const char **p, const char *end, int in_flow)
 {
     const char *s = yj_skip(*p, end);
     if (!yj_node_mark(y, s))
         return 0;
-    if (s < end && (*s == '[' || *s == '{')) {
-        char close = *s == '[' ? ']' : '}';
-        int mapping = *s == '{';
-        unsigned keys = 0;
-        if (y->depth >= y->max_depth)
-            return opt_fail("%s: line %lu: nested deeper than %d levels (limit max_depth)", y->file, y->line,
-                            y->max_depth);
-        y->depth++;
-        if (!yj_c(y, *s))
-            return 0;
-        s = yj_skip(s + 1, end);
-        if (s < end && *s == close) {
-            s++;
-        } else {
-            for (;;) {
-                s = yj_skip(s, end);
-                if (s >= end)
-                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-                if (mapping) {
-                    const char *k0;
-                    if (!yj_node_mark(y, s))
-                        return 0;
-                    if (*s == '[' || *s == '{')
-                        return yj_err(y, y->line, "a key must be a plain value (complex key)");
-                    if (++keys > OPT_YAML_MAX_KEYS)
-                        return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file,
-                                        y->line, OPT_YAML_MAX_KEYS);
-                    if (*s == '"' || *s == '\'') {
-                        if (!yj_quoted(y, &s, end))
-                            return 0;
-                    } else {
-                        size_t len;
-                        k0 = s;
-                        while (s < end && *s != ',' && *s != close && !(*s == ':' && (s + 1 >= end || s[1] == ' ')))
-                            s++;
-                        len = (size_t)(s - k0);
-                        while (len && (k0[len - 1] == ' ' || k0[len - 1] == '\t'))
-                            len--;
-                        if (!yj_string(y, k0, len))
-                            return 0;
-                    }
-                    s = yj_skip(s, end);
-                    if (!yj_c(y, ':'))
-                        return 0;
-                    if (s < end && *s == ':') {
-                        s++;
-                        if (!yj_flow(y, &s, end, 1))
-                            return 0;
-                    } else if (!yj_put(y, "null", 4)) {
-                        return 0;
-                    }
-                } else if (!yj_flow(y, &s, end, 1)) {
-                    return 0;
-                }
-                s = yj_skip(s, end);
-                if (s >= end)
-                    return yj_err(y, y->line, "a value over more than one line (one-line values only)");
-                if (*s == ',') {
-                    s = yj_skip(s + 1, end);
-                    if (s < end && *s == close) {
-                        s++;
-                        break;
-                    }
-                    if (!yj_c(y, ','))
-                        return 0;
-                    continue;
-                }
-                if (*s == close) {
-                    s++;
-                    break;
-                }
-                return opt_fail("%s: line %lu: not YAML (expected ',' or '%c')", y->file, y->line, close);
-            }
-        }
-        y->depth--;
-        *p = s;
-        return yj_c(y, close);
-    }
-    if (s < end && (*s == '"' || *s == '\'')) {
-        if (!yj_quoted(y, &s, end))
-            return 0;
-        *p = s;
-        return 1;
-    }
-    {
-        const char *v0 = s;
-        size_t len;
-        while (s < end && !(in_flow && (*s == ',' || *s == ']' || *s == '}'))) {
-            if (*s == ':' && (s + 1 == end || s[1] == ' ' || s[1] == '\t'))
-                return opt_fail("%s: line %lu: not YAML (a ': ' inside a value)", y->file, y->line);
-            s++;
-        }
-        len = (size_t)(s - v0);
-        while (len && (v0[len - 1] == ' ' || v0[len - 1] == '\t'))
-            len--;
-        *p = s;
-        if (!in_flow)
-            y->scalar_line = y->line;
-        return yj_plain(y, v0, len);
-    }
+    *p = s;
+    if (s < end && (*s == '[' || *s == '{'))
+        return yj_flow_collection(y, p, end);
+    if (s < end && (*s == '"' || *s == '\''))
+        return yj_quoted(y, p, end);
+    return yj_flow_plain(y, p, end, in_flow);
+}
+
+/* Whether p is a ':' followed by a blank or the line's end. */
+static int yj_colon_at(const char *p, const char *end)
+{
+    return *p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t');
+}
+
+/* The end of a quoted key at p: the ':' after its closing quote, or NULL. */
+static const char *yj_quoted_key_end(const char *p, const char *end)
+{
+    char q = *p++;
+    while (p < end && !(*p == q && !(q == '\'' && p + 1 < end && p[1] == '\'')))
+        p += (q == '\'' && *p == '\'') || (q == '"' && *p == '\\') ? 2 : 1;
+    if (p >= end)
+        return NULL;
+    p = yj_skip(p + 1, end);
+    return p < end && yj_colon_at(p, end) ? p : NULL;
 }
 
 /* The end of a plain or quoted key at p followed by ':' and a blank or the line's end, or NULL. */
 static const char *yj_key_end(const char *p, const char *end)
 {
-    if (p < end && (*p == '"' || *p == '\'')) {
-        char q = *p++;
-        while (p < end && !(*p == q && !(q == '\'' && p + 1 < end && p[1] == '\'')))
-            p += (q == '\'' && *p == '\'') || (q == '"' && *p == '\\') ? 2 : 1;
-        if (p >= end)
-            return NULL;
-        p = yj_skip(p + 1, end);
-        return p < end && *p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t') ? p : NULL;
-    }
+    if (p < end && (*p == '"' || *p == '\''))
+        return yj_quoted_key_end(p, end);
     if (p < end && (*p == '[' || *p == '{'))
         return NULL;
     for (; p < end; p++)
-        if (*p == ':' && (p + 1 == end || p[1] == ' ' || p[1] == '\t'))
+        if (yj_colon_at(p, end))
             return p;
     return NULL;
+}
+
+static int yj_inline(yj *y, const char *p, const char *end, int col);
+
+/* Where a new list item ('s') or key ('m') at column col goes: after a sibling (a ','), or opening a
+ * collection as a pending value or the root; 0 (refused) where none can be. */
+static int yj_entry(yj *y, char kind, int col)
+{
+    if (y->depth && y->kind[y->depth] == kind && y->ind[y->depth] == col && !y->pending)
+        return yj_c(y, ',');
+    if (y->pending || (!y->depth && !y->root_done))
+        return yj_open(y, kind, col);
+    return opt_fail("%s: line %lu: not YAML (a %s where none can be)", y->file, y->line,
+                    kind == 's' ? "list item" : "key");
+}
+
+/* The value of a list item or key is still to come: on this line, or on the lines below. */
+static void yj_pending(yj *y, int col)
+{
+    y->pending = 1;
+    y->pending_ind = col;
+    y->pending_at = y->n;
+}
+
+/* A list item at p ("- "), and its value when it is on this line. */
+static int yj_item(yj *y, const char *p, const char *end, int col)
+{
+    const char *rest;
+    if (!yj_entry(y, 's', col))
+        return 0;
+    y->root_done = 1;
+    y->items[y->depth]++;
+    rest = yj_skip(p + 1, end);
+    yj_pending(y, col);
+    if (rest >= end)
+        return 1;
+    return yj_inline(y, rest, end, col + (int)(rest - p));
+}
+
+/* A key at p (ending at colon) and its value when it is on this line. */
+static int yj_key(yj *y, const char *p, const char *colon, const char *end, int col)
+{
+    const char *v;
+    if (!yj_entry(y, 'm', col))
+        return 0;
+    y->root_done = 1;
+    if (++y->items[y->depth] > OPT_YAML_MAX_KEYS)
+        return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file, y->line,
+                        OPT_YAML_MAX_KEYS);
+    if (*p == '"' || *p == '\'') {
+        const char *q = p;
+        if (!yj_quoted(y, &q, end))
+            return 0;
+    } else {
+        size_t len = (size_t)(colon - p);
+        while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
+            len--;
+        if (!yj_string(y, p, len))
+            return 0;
+    }
+    if (!yj_c(y, ':'))
+        return 0;
+    v = yj_skip(colon + 1, end);
+    if (v >= end) {
+        yj_pending(y, col);
+        return 1;
+    }
+    if (!yj_flow(y, &v, end, 0))
+        return 0;
+    if (yj_skip(v, end) < end)
+        return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
+    return 1;
 }
 
 /* The node a line holds from p (its column col): a list item, a key and its value, or a value. */
@@ -480,69 +555,11 @@ static int yj_inline(yj *y, const char *p, const char *end, int col)
     const char *colon;
     if (!yj_node_mark(y, p))
         return 0;
-    if (*p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t')) {
-        const char *rest;
-        if (y->depth && y->kind[y->depth] == 's' && y->ind[y->depth] == col && !y->pending) {
-            if (!yj_c(y, ','))
-                return 0;
-        } else if (y->pending || (!y->depth && !y->root_done)) {
-            if (!yj_open(y, 's', col))
-                return 0;
-        } else {
-            return opt_fail("%s: line %lu: not YAML (a list item where none can be)", y->file, y->line);
-        }
-        y->root_done = 1;
-        y->items[y->depth]++;
-        rest = yj_skip(p + 1, end);
-        y->pending = 1; /* the item's value: on this line, or on the lines below */
-        y->pending_ind = col;
-        y->pending_at = y->n;
-        if (rest >= end)
-            return 1;
-        return yj_inline(y, rest, end, col + (int)(rest - p));
-    }
+    if (*p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t'))
+        return yj_item(y, p, end, col);
     colon = yj_key_end(p, end);
-    if (colon) {
-        const char *v;
-        if (y->depth && y->kind[y->depth] == 'm' && y->ind[y->depth] == col && !y->pending) {
-            if (!yj_c(y, ','))
-                return 0;
-        } else if (y->pending || (!y->depth && !y->root_done)) {
-            if (!yj_open(y, 'm', col))
-                return 0;
-        } else {
-            return opt_fail("%s: line %lu: not YAML (a key where none can be)", y->file, y->line);
-        }
-        y->root_done = 1;
-        if (++y->items[y->depth] > OPT_YAML_MAX_KEYS)
-            return opt_fail("%s: line %lu: more than %u keys in one mapping (limit max_keys)", y->file, y->line,
-                            OPT_YAML_MAX_KEYS);
-        if (*p == '"' || *p == '\'') {
-            const char *q = p;
-            if (!yj_quoted(y, &q, end))
-                return 0;
-        } else {
-            size_t len = (size_t)(colon - p);
-            while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
-                len--;
-            if (!yj_string(y, p, len))
-                return 0;
-        }
-        if (!yj_c(y, ':'))
-            return 0;
-        v = yj_skip(colon + 1, end);
-        if (v >= end) {
-            y->pending = 1;
-            y->pending_ind = col;
-            y->pending_at = y->n;
-            return 1;
-        }
-        if (!yj_flow(y, &v, end, 0))
-            return 0;
-        if (yj_skip(v, end) < end)
-            return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
-        return 1;
-    }
+    if (colon)
+        return yj_key(y, p, colon, end, col);
     if (!y->pending && (y->depth || y->root_done)) {
         if (y->scalar_line && y->scalar_line + 1 == y->line)
             return yj_err(y, y->scalar_line, "a value over more than one line (one-line values only)");
@@ -555,6 +572,70 @@ static int yj_inline(yj *y, const char *p, const char *end, int col)
     if (yj_skip(p, end) < end)
         return opt_fail("%s: line %lu: not YAML (more after a value)", y->file, y->line);
     return 1;
+}
+
+/* The end of a line's content (line..end): control characters refused, a comment outside quotes cut, trailing
+ * blanks dropped; NULL when refused (the one line in opt_why). */
+static const char *yj_content_end(const yj *y, const char *line, const char *end)
+{
+    const char *c;
+    int quote = 0;
+    for (c = line; c < end; c++) {
+        if ((unsigned char)*c < 0x20 && *c != '\t' && !(*c == '\r' && c + 1 == end)) {
+            (void)opt_fail("%s: line %lu: not YAML (a control character)", y->file, y->line);
+            return NULL;
+        }
+        if (quote) {
+            if (*c == quote)
+                quote = 0;
+        } else if ((*c == '"' || *c == '\'') && (c == line || strchr(" \t[{,:-", c[-1]))) {
+            quote = *c;
+        } else if (*c == '#' && (c == line || c[-1] == ' ' || c[-1] == '\t')) {
+            end = c;
+            break;
+        }
+    }
+    while (end > line && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r'))
+        end--;
+    return end;
+}
+
+/* The document markers at *pp, the start of a line's content (its indentation *ind): "---" (the content
+ * follows it), "..." (the document ends), a directive (refused). */
+static int yj_markers(yj *y, const char *line, const char **pp, const char *end, int *ind)
+{
+    const char *p = *pp;
+    if (p >= end)
+        return 1;
+    if (*ind == 0 && end - p >= 3 && memcmp(p, "---", 3) == 0 && (end - p == 3 || p[3] == ' ')) {
+        if (y->root_done || y->ended)
+            return yj_err(y, y->line, "more than one document");
+        p = yj_skip(p + 3, end);
+        *ind = (int)(p - line);
+    } else if (*ind == 0 && end - p == 3 && memcmp(p, "...", 3) == 0) {
+        y->ended = 1;
+        p = end;
+    } else if (*p == '%') {
+        return opt_fail("%s: line %lu: not YAML (a directive)", y->file, y->line);
+    }
+    *pp = p;
+    return 1;
+}
+
+/* A line's node at p (indentation ind): the pending value it ends, the collections it closes, then itself. */
+static int yj_line_node(yj *y, const char *p, const char *end, int ind)
+{
+    int item = *p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t');
+    if (y->ended)
+        return yj_err(y, y->line, "more than one document");
+    if (y->pending && ind <= y->pending_ind && !(item && ind == y->pending_ind && y->depth && y->kind[y->depth] == 'm')
+        && !yj_null(y))
+        return 0;
+    while (y->depth && !y->pending
+           && (y->ind[y->depth] > ind || (y->ind[y->depth] == ind && y->kind[y->depth] == 's' && !item)))
+        if (!yj_close(y))
+            return 0;
+    return yj_inline(y, p, end, ind);
 }
 
 /* Translate the YAML text src into JSON in out (cap bytes); 0 with the one line in opt_why. */
@@ -571,56 +652,21 @@ static int yj_translate(const char *file, const char *src, char *out, size_t cap
     if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
         line += 3;
     while (*line) {
-        const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line, *c;
-        int ind, quote = 0;
+        const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line;
+        int ind;
         y.line++;
-        for (c = line; c < end; c++) { /* refuse control characters; cut a comment outside quotes */
-            if ((unsigned char)*c < 0x20 && *c != '\t' && !(*c == '\r' && c + 1 == end))
-                return opt_fail("%s: line %lu: not YAML (a control character)", file, y.line);
-            if (quote) {
-                if (*c == quote)
-                    quote = 0;
-            } else if ((*c == '"' || *c == '\'') && (c == line || strchr(" \t[{,:-", c[-1]))) {
-                quote = *c;
-            } else if (*c == '#' && (c == line || c[-1] == ' ' || c[-1] == '\t')) {
-                end = c;
-                break;
-            }
-        }
-        while (end > line && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r'))
-            end--;
+        end = yj_content_end(&y, line, end);
+        if (!end)
+            return 0;
         while (p < end && *p == ' ')
             p++;
         ind = (int)(p - line);
         if (p < end && *p == '\t')
             return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y.line);
-        if (p < end) {
-            if (ind == 0 && end - p >= 3 && memcmp(p, "---", 3) == 0 && (end - p == 3 || p[3] == ' ')) {
-                if (y.root_done || y.ended)
-                    return yj_err(&y, y.line, "more than one document");
-                p = yj_skip(p + 3, end);
-                ind = (int)(p - line);
-            } else if (ind == 0 && end - p == 3 && memcmp(p, "...", 3) == 0) {
-                y.ended = 1;
-                p = end;
-            } else if (*p == '%') {
-                return opt_fail("%s: line %lu: not YAML (a directive)", file, y.line);
-            }
-        }
-        if (p < end) {
-            int item = *p == '-' && (p + 1 == end || p[1] == ' ' || p[1] == '\t');
-            if (y.ended)
-                return yj_err(&y, y.line, "more than one document");
-            if (y.pending && ind <= y.pending_ind
-                && !(item && ind == y.pending_ind && y.depth && y.kind[y.depth] == 'm') && !yj_null(&y))
-                return 0;
-            while (y.depth && !y.pending && (y.ind[y.depth] > ind || (y.ind[y.depth] == ind && y.kind[y.depth] == 's'
-                                                                      && !item)))
-                if (!yj_close(&y))
-                    return 0;
-            if (!yj_inline(&y, p, end, ind))
-                return 0;
-        }
+        if (!yj_markers(&y, line, &p, end, &ind))
+            return 0;
+        if (p < end && !yj_line_node(&y, p, end, ind))
+            return 0;
         if (!yj_c(&y, '\n'))
             return 0;
         if (!nl)
@@ -924,16 +970,18 @@ static int opt_is_yaml(const char *path)
     return opt_lower_eq(dot, ".yaml") || opt_lower_eq(dot, ".yml");
 }
 
-/* Read a cutter table into cutters[0..ncutters); 0 with the one line in opt_why. */
-static int load_cutters(const char *path)
+/* A cutter table (name: its file name, which says CSV or YAML; text[0..n): its bytes) into cutters[0..ncutters);
+ * 0 with the one line in opt_why. */
+static int load_cutters(const char *name, const char *text, size_t size)
 {
+    const char *path = cbf_tool_name(name);
     long n;
     ncutters = 0;
     cutter_file = path;
-    n = opt_read(path, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
+    n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
-    if (opt_is_yaml(path)) {
+    if (opt_is_yaml(name)) {
         if (!cutters_yaml(path))
             return 0;
     } else if (!cutters_csv(cutter_text)) {
@@ -944,7 +992,7 @@ static int load_cutters(const char *path)
     return 1;
 }
 
-/* ---- machine files (decision {{ machine_decision }}, check machine_limits; machine_file.inc.j2) ----
+/* ---- machine files (the spec's machine decision, check machine_limits) ----
  * The JSON form of `machine:` in spec/cbf.yaml (schema generated/python/cbf/machine.schema.json):
  *   {"name": "...", "limits": {"<limit>": {"unit": "<the spec's unit>", "min": N | [N, ...],
  *    "max": N | [N, ...], "axes": [...], "doc": "..."}, ...}}
@@ -959,8 +1007,6 @@ static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine fi
 
 typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
 
-static const char *const machine_file_keys[] = { {% for k in machine_file_keys %}{{ k |c_str }}, {% endfor %}NULL };
-static const char *const machine_limit_keys[] = { {% for k in machine_limit_keys %}{{ k |c_str }}, {% endfor %}NULL };
 
 static int mj_fail(mjson *j, const char *path, const char *fmt, ...) CBF__PRINTF(3, 4);
 static int mj_fail(mjson *j, const char *path, const char *fmt, ...)
@@ -1066,35 +1112,42 @@ static int mj_string(mjson *j, char *out, size_t cap)
 }
 
 /* A JSON number (RFC 8259 grammar); *finite says whether it fits a double. */
+static int mj_is_digit(const mjson *j)
+{
+    return j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9';
+}
+
+/* The digits at j->i, at least one; 0 when there is none. */
+static int mj_digits(mjson *j)
+{
+    if (!mj_is_digit(j))
+        return 0;
+    while (mj_is_digit(j))
+        j->i++;
+    return 1;
+}
+
 static int mj_number(mjson *j, double *out, int *finite)
 {
     size_t start = j->i, len;
     char buf[128];
     if (j->i < j->n && j->s[j->i] == '-')
         j->i++;
-    if (j->i < j->n && j->s[j->i] == '0') {
+    if (j->i < j->n && j->s[j->i] == '0')
         j->i++;
-    } else if (j->i < j->n && j->s[j->i] >= '1' && j->s[j->i] <= '9') {
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
-    } else {
+    else if (!mj_digits(j))
         return mj_syntax(j, "expected a value");
-    }
     if (j->i < j->n && j->s[j->i] == '.') {
         j->i++;
-        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
+        if (!mj_digits(j))
             return mj_syntax(j, "expected a digit");
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
     }
     if (j->i < j->n && (j->s[j->i] == 'e' || j->s[j->i] == 'E')) {
         j->i++;
         if (j->i < j->n && (j->s[j->i] == '+' || j->s[j->i] == '-'))
             j->i++;
-        if (!(j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9'))
+        if (!mj_digits(j))
             return mj_syntax(j, "expected a digit");
-        while (j->i < j->n && j->s[j->i] >= '0' && j->s[j->i] <= '9')
-            j->i++;
     }
     len = j->i - start;
     if (len >= sizeof buf)
@@ -1367,10 +1420,12 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
     return mj_any_string(j, kpath);
 }
 
-/* Read a machine file into machine_file; 0 with the one line in machine_why. */
-static int load_machine(const char *path)
+/* A machine file (name: its file name, which says JSON or YAML; text[0..n): its bytes) into machine_file;
+ * 0 with the one line in machine_why. */
+static int load_machine(const char *name, const char *text, size_t size)
 {
-    long n = opt_read(path, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    const char *path = cbf_tool_name(name);
+    long n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     mjson j;
     unsigned has_limits = 0;
     int li, a;
@@ -1381,7 +1436,7 @@ static int load_machine(const char *path)
     memset(&machine_file, 0, sizeof machine_file);
     j.s = machine_text;
     j.n = (size_t)n;
-    if (opt_is_yaml(path)) {
+    if (opt_is_yaml(name)) {
         if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
             (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
             return 0;
@@ -1414,3 +1469,25 @@ static int load_machine(const char *path)
     }
     return 1;
 }
+
+/* ---- the entry points (cbf_tools.h) ---- */
+int cbf_tool_cutters_buffer(const char *name, const char *text, size_t n, cbf_options *opt)
+{
+    opt_last_why = opt_why;
+    if (!load_cutters(name, text, n))
+        return 0;
+    opt->cutters = cutters;
+    opt->ncutters = ncutters;
+    return 1;
+}
+
+int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_options *opt)
+{
+    opt_last_why = machine_why;
+    if (!load_machine(name, text, n))
+        return 0;
+    opt->machine = &machine_file;
+    return 1;
+}
+
+const char *cbf_tool_why(void) { return opt_last_why; }

@@ -1,0 +1,158 @@
+/* ---- cbf-c's command line: a thin shell over the engine (cbf_tools.h) ----
+ * It parses the arguments, reads each file whole into memory and hands it to the engine with a sink that
+ * writes to stdout and stderr. */
+
+static uint8_t file_buf[CBF_TOOL_MAX_FILE_SIZE + 1u];
+
+static void write_stdout(void *user, const char *text, size_t len)
+{
+    (void)user;
+    (void)fwrite(text, 1, len, stdout);
+}
+
+static void write_stderr(void *user, const char *text, size_t len)
+{
+    (void)user;
+    (void)fwrite(text, 1, len, stderr);
+}
+
+static const cbf_tool_sink std_sink = { write_stdout, write_stderr, NULL };
+
+static void usage(void)
+{
+    int p;
+    fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
+          "FILE...\n"
+          "       cbf-c dump FILE\n"
+          "       cbf-c --version\n"
+          "profiles:", stderr);
+    for (p = 0; p < CBF_PROFILE__COUNT; p++)
+        fprintf(stderr, " %s", cbf_tool_profile_names[p]);
+    fputs("\n", stderr);
+}
+
+/* A count for --max-findings: digits only; -1 when it is not one. */
+static long parse_count(const char *s)
+{
+    char *end;
+    unsigned long v;
+    if (!*s || strspn(s, "0123456789") != strlen(s))
+        return -1;
+    errno = 0;
+    v = strtoul(s, &end, 10);
+    if (errno || v > 1000000000ul)
+        return -1;
+    return (long)v;
+}
+
+/* The file at path into file_buf; its size, or -1 and one line on stderr when it cannot be read. */
+static long read_cbf(const char *path)
+{
+    const char *why;
+    long n = cbf_tool_read_file(path, file_buf, sizeof file_buf, &why);
+    if (n < 0)
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), why);
+    return n;
+}
+
+/* The options in argv[0..argc) that take a value: their names. */
+static const char *const value_options[] = { "--profile", "--part-number", "--cutters", "--machine",
+                                             "--max-findings" };
+
+static int takes_value(const char *arg)
+{
+    size_t k;
+    for (k = 0; k < sizeof value_options / sizeof value_options[0]; k++)
+        if (strcmp(arg, value_options[k]) == 0)
+            return 1;
+    return 0;
+}
+
+/* One option and its value into o; 0 and one line on stderr (usage for an unknown option). */
+static int parse_option(const char *arg, const char *value, cbf_tool_options *o)
+{
+    if (strcmp(arg, "--profile") == 0) {
+        o->validate.profile = cbf_profile_find(value);
+        if (o->validate.profile < 0)
+            fprintf(stderr, "cbf-c: unknown profile %s\n", value);
+        return o->validate.profile >= 0;
+    }
+    if (strcmp(arg, "--part-number") == 0) {
+        o->validate.part_number = value;
+        return 1;
+    }
+    if (strcmp(arg, "--cutters") == 0 || strcmp(arg, "--machine") == 0) { /* machine limits: errors */
+        int ok = arg[2] == 'c' ? cbf_tool_cutters_file(value, &o->validate) : cbf_tool_machine_file(value, &o->validate);
+        if (!ok)
+            fprintf(stderr, "cbf-c: %s\n", cbf_tool_why()); /* names the file, the line and the limit (issue 28) */
+        return ok;
+    }
+    {
+        long v = parse_count(value);
+        if (v < 0)
+            fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", value);
+        o->max_findings = (size_t)v;
+        return v >= 0;
+    }
+}
+
+static int cmd_validate(int argc, char **argv)
+{
+    cbf_tool_options o;
+    int i, status = CBF_TOOL_EXIT_OK, files = 0;
+    memset(&o, 0, sizeof o);
+    o.validate.profile = CBF_TOOL_DEFAULT_PROFILE;
+    o.max_findings = 50;
+    for (i = 0; i < argc; i++) {
+        if (takes_value(argv[i]) && i + 1 < argc) {
+            if (!parse_option(argv[i], argv[i + 1], &o))
+                return CBF_TOOL_EXIT_USAGE;
+            i++;
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            usage();
+            return CBF_TOOL_EXIT_USAGE;
+        }
+    }
+    for (i = 0; i < argc; i++) {
+        long n;
+        int st;
+        if (takes_value(argv[i])) {
+            i++;
+            continue;
+        }
+        files++;
+        n = read_cbf(argv[i]);
+        st = n < 0 ? CBF_TOOL_EXIT_USAGE : cbf_tool_validate_buffer(argv[i], file_buf, (size_t)n, &o, &std_sink);
+        if (st == CBF_TOOL_OUT_OF_MEMORY)
+            return CBF_TOOL_EXIT_USAGE;
+        if (st > status)
+            status = st;
+    }
+    if (!files) {
+        usage();
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    return status;
+}
+
+static int cmd_dump(const char *path)
+{
+    long n = read_cbf(path);
+    if (n < 0)
+        return CBF_TOOL_EXIT_USAGE;
+    return cbf_tool_dump_buffer(path, file_buf, (size_t)n, &std_sink);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && strcmp(argv[1], "--version") == 0) {
+        printf("cbf-c %s (spec %s)\n", CBF_TOOLKIT_VERSION, CBF_SPEC_REVISION);
+        return CBF_TOOL_EXIT_OK;
+    }
+    if (argc >= 3 && strcmp(argv[1], "validate") == 0)
+        return cmd_validate(argc - 2, argv + 2);
+    if (argc == 3 && strcmp(argv[1], "dump") == 0)
+        return cmd_dump(argv[2]);
+    usage();
+    return CBF_TOOL_EXIT_USAGE;
+}

@@ -1,0 +1,343 @@
+/* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
+ * Every function here works on bytes in memory and prints through the sink; the command line (cbf_tool.c)
+ * and any other host (a page, a test) are shells over it. */
+
+typedef struct held_finding {
+    long record;   /* -1: the header and the file */
+    int order;     /* index in cbf_tool_check_order */
+    int error;
+    unsigned long offset;
+    const char *check;
+    char *message; /* a copy: the engine's is valid during the callback only */
+} held_finding;
+
+static held_finding *held;
+static size_t nheld, capheld;
+static int out_of_memory;
+
+static int check_rank(const char *id)
+{
+    int i;
+    for (i = 0; i < CBF_CHECK__COUNT; i++)
+        if (strcmp(cbf_tool_check_order[i], id) == 0)
+            return i;
+    return 0; /* as cbf's finding_order: an id the spec lacks sorts first */
+}
+
+/* Keep each finding; they print sorted, after the file is validated. */
+static void hold_finding(void *user, const cbf_finding *f)
+{
+    held_finding *h;
+    size_t len = strlen(f->message) + 1;
+    (void)user;
+    if (nheld == capheld) {
+        size_t cap = capheld ? 2 * capheld : 64;
+        held_finding *grown = (held_finding *)realloc(held, cap * sizeof *held);
+        if (!grown) {
+            out_of_memory = 1;
+            return;
+        }
+        held = grown;
+        capheld = cap;
+    }
+    h = &held[nheld];
+    h->message = (char *)malloc(len);
+    if (!h->message) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(h->message, f->message, len);
+    h->record = f->record;
+    h->order = check_rank(f->check);
+    h->error = f->severity == CBF_SEVERITY_ERROR;
+    h->offset = (unsigned long)f->offset;
+    h->check = f->check;
+    nheld++;
+}
+
+static int finding_cmp(const void *pa, const void *pb)
+{
+    const held_finding *a = (const held_finding *)pa, *b = (const held_finding *)pb;
+    if (a->record != b->record)
+        return a->record < b->record ? -1 : 1;
+    if (a->order != b->order)
+        return a->order < b->order ? -1 : 1;
+    if (a->offset != b->offset)
+        return a->offset < b->offset ? -1 : 1;
+    return strcmp(a->message, b->message);
+}
+
+/* One line per finding, as cbf prints it (README): file:offset: severity check (record N): message */
+static void print_finding(const char *file, const held_finding *f)
+{
+    out_printf("%s:%lu: %s %s (", file, f->offset, f->error ? "error" : "warning", f->check);
+    if (f->record >= 0)
+        out_printf("record %ld", f->record);
+    else
+        out_str("header");
+    out_printf("): %s\n", f->message);
+}
+
+/* Whether the header's magic numbers are all wrong (cbf's test, from the same fields of the model);
+ * the one line that says so on the error output. */
+static int frame_magic(const char *file, const uint8_t *buf, size_t n)
+{
+    const cbf_field_info *fields;
+    size_t nf, i, nmagic = 0, nright = 0, first = 0;
+    int text = 1;
+    nf = cbf_header_fields(cbf_version_header_layout(CBF_DEFAULT_VERSION), &fields);
+    for (i = 0; i < nf; i++) {
+        if (!(fields[i].flags & CBF_FIELD_MAGIC))
+            continue;
+        if (!nmagic++)
+            first = i;
+        if (cbf_field_uint(&fields[i], buf) == fields[i].magic)
+            nright++;
+    }
+    if (!nmagic || nright)
+        return 1;
+    for (i = 0; i < n && i < 256u && text; i++)
+        text = (buf[i] >= 0x20u && buf[i] < 0x7Fu) || buf[i] == '\t' || buf[i] == '\r' || buf[i] == '\n';
+    out_flush();
+    {
+        char names[1024];
+        size_t at = 0;
+        names[0] = 0;
+        for (i = 0; i < nf; i++)
+            if ((fields[i].flags & CBF_FIELD_MAGIC) && at < sizeof names)
+                at += (size_t)snprintf(names + at, sizeof names - at, "%s%s", i == first ? "" : ", ", fields[i].name);
+        err_printf("cbf-c: %s: offset %u: not a CBF file: no magic number of the header is right (%s)%s\n", file,
+                   (unsigned)fields[first].offset, names, text ? "; it is text" : "");
+    }
+    return 0;
+}
+
+/* 1 when buf[0..n) can be read as a CBF file; else 0 and one line on the error output: larger than a
+ * CBF file can be, shorter than the header, or every magic number of the header wrong. */
+static int frame(const char *file, const uint8_t *buf, size_t n)
+{
+    if (n > CBF_TOOL_MAX_FILE_SIZE) {
+        err_printf("cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", file,
+                   (unsigned long)CBF_TOOL_MAX_FILE_SIZE);
+        return 0;
+    }
+    if (n < CBF_HEADER_SIZE) {
+        err_printf("cbf-c: %s: offset 0: file is %ld bytes, the header needs %d: not a CBF file\n", file, (long)n,
+                   CBF_HEADER_SIZE);
+        return 0;
+    }
+    return frame_magic(file, buf, n);
+}
+
+int cbf_tool_frame_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
+{
+    int ok;
+    out_begin(sink);
+    ok = frame(cbf_tool_name(name), buf, n);
+    out_flush();
+    return ok;
+}
+
+/* The findings held, sorted, at most max of them (0: all), and the summary line; frees them. */
+static void print_findings(const char *file, long errors, const cbf_tool_options *o)
+{
+    size_t k, max = o->max_findings;
+    qsort(held, nheld, sizeof *held, finding_cmp);
+    for (k = 0; k < nheld; k++) {
+        if (max == 0 || k < max)
+            print_finding(file, &held[k]);
+        free(held[k].message);
+    }
+    if (max && nheld > max)
+        out_printf("%s: %lu more finding(s) not shown (--max-findings 0 prints all)\n", file,
+                   (unsigned long)(nheld - max));
+    out_printf("%s: %s: %ld error(s), %ld warning(s) [profile %s]\n", file, errors > 0 ? "FAIL" : "ok", errors,
+               (long)nheld - errors, cbf_tool_profile_names[o->validate.profile]);
+}
+
+int cbf_tool_validate_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_options *o,
+                             const cbf_tool_sink *sink)
+{
+    const char *file = cbf_tool_name(name);
+    long errors;
+    int status = CBF_TOOL_EXIT_OK;
+    out_begin(sink);
+    if (o->validate.profile < 0 || o->validate.profile >= CBF_PROFILE__COUNT) {
+        err_printf("cbf-c: %s: no such profile\n", file);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!frame(file, buf, n))
+        return CBF_TOOL_EXIT_USAGE;
+    nheld = 0;
+    out_of_memory = 0;
+    errors = cbf_validate(buf, n, &o->validate, hold_finding, NULL);
+    if (out_of_memory) {
+        size_t k;
+        for (k = 0; k < nheld; k++)
+            free(held[k].message);
+        err_printf("cbf-c: %s: out of memory holding its findings\n", file);
+        return CBF_TOOL_OUT_OF_MEMORY;
+    }
+    if (errors > 0)
+        status = CBF_TOOL_EXIT_FINDINGS;
+    print_findings(file, errors, o);
+    out_flush();
+    return status;
+}
+
+/* An integer field, exact at every registered width and signedness (from its bits). */
+static void dump_int(const cbf_field_info *f, const uint8_t *base)
+{
+    uint64_t u = cbf_field_bits(f, base, 0);
+    unsigned bits = 8u * f->elem;
+    char d[24];
+    size_t n = 0;
+    if (f->kind == CBF_KIND_SINT && ((u >> (bits - 1u)) & 1u)) {
+        out_char('-');
+        u = (bits < 64u ? ((uint64_t)1 << bits) : (uint64_t)0) - u;
+    }
+    do {
+        d[n++] = (char)('0' + (int)(u % 10u));
+        u /= 10u;
+    } while (u);
+    while (n)
+        out_char(d[--n]);
+}
+
+static void dump_string(const cbf_field_info *f, const uint8_t *base, size_t size)
+{
+    size_t i;
+    out_char('"');
+    for (i = 0; i < size && base[f->offset + i] != CBF_TOOL_PAD; i++) {
+        unsigned c = base[f->offset + i];
+        if (c >= 0x20u && c < 0x7Fu && c != '"' && c != '\\')
+            out_char((char)c);
+        else
+            out_printf("\\x%02x", c);
+    }
+    out_char('"');
+}
+
+static void dump_hex(const uint8_t *p, size_t n)
+{
+    static const char digits[] = "0123456789abcdef";
+    size_t i;
+    for (i = 0; i < n; i++) {
+        out_char(digits[p[i] >> 4]);
+        out_char(digits[p[i] & 15u]);
+    }
+}
+
+static void dump_field(const cbf_field_info *f, const uint8_t *base)
+{
+    size_t size = (size_t)f->elem * f->count, i;
+    out_char(' ');
+    out_str(f->name);
+    out_char('=');
+    switch ((enum cbf_field_kind)f->kind) {
+    case CBF_KIND_UINT:
+    case CBF_KIND_SINT:
+        dump_int(f, base);
+        break;
+    case CBF_KIND_FLOAT:
+        for (i = 0; i < f->count; i++)
+            out_printf("%s%.9g", i ? "," : "", (double)cbf_field_float(f, base, (unsigned)i));
+        if (f->unit)
+            out_str(f->unit);
+        break;
+    case CBF_KIND_STRING:
+        dump_string(f, base, size);
+        break;
+    case CBF_KIND_BYTES:
+        dump_hex(base + f->offset, size);
+        break;
+    }
+}
+
+/* A repeated argument group (issue 25, point 3): each of its n items as a field, name[i]=value. */
+static void dump_group(const cbf_field_info *f, const uint8_t *base, size_t n, size_t item)
+{
+    cbf_field_info one = *f;
+    char name[160];
+    size_t k;
+    one.name = name;
+    for (k = 0; k < n; k++) {
+        (void)snprintf(name, sizeof name, "%s[%lu]", f->name, (unsigned long)k);
+        dump_field(&one, base);
+        one.offset = (unsigned short)(one.offset + item);
+    }
+}
+
+static void dump_header(const cbf_reader *r, const uint8_t *buf)
+{
+    const cbf_field_info *fields;
+    size_t nf, i;
+    out_printf("header version %u.%u (%s)", r->header.major, r->header.minor,
+               r->header.version < 0 ? "unknown" : cbf_version_name(r->header.version));
+    nf = cbf_header_fields(r->header.layout, &fields);
+    for (i = 0; i < nf; i++)
+        dump_field(&fields[i], buf);
+    out_char('\n');
+}
+
+static void dump_record(const cbf_record *rec, const uint8_t *buf)
+{
+    const cbf_field_info *fields;
+    size_t nf, i;
+    const char *name = cbf_command_name(rec->command);
+    out_printf("%lu @%lu %s", (unsigned long)rec->index, (unsigned long)rec->offset, name ? name : "?");
+    nf = cbf_record_fields(&fields);
+    for (i = 0; i < nf; i++)
+        dump_field(&fields[i], buf + rec->offset);
+    if (rec->layout != CBF_LAYOUT__NONE) {
+        size_t item = 0;
+        const long group = cbf_layout_group(rec->layout, NULL, NULL, &item);
+        nf = cbf_layout_fields(rec->layout, &fields);
+        out_str(" |");
+        for (i = 0; i < nf; i++) {
+            if ((long)i == group)
+                dump_group(&fields[i], rec->args, (size_t)cbf_layout_items(rec->layout, rec->nargs), item);
+            else
+                dump_field(&fields[i], rec->args);
+        }
+    } else {
+        out_str(" | raw=");
+        dump_hex(rec->args, rec->nargs);
+    }
+    out_char('\n');
+}
+
+static int dump(const char *file, const uint8_t *buf, size_t n)
+{
+    cbf_reader r;
+    cbf_record rec;
+    int rc;
+    if (!frame(file, buf, n))
+        return CBF_TOOL_EXIT_USAGE;
+    /* the records are framed first, as cbf decodes before it prints: a cut record is one line */
+    if (cbf_reader_init(&r, buf, n) != CBF_OK)
+        return CBF_TOOL_EXIT_USAGE; /* frame refused a short file already */
+    while ((rc = cbf_next_record(&r, &rec)) == 1) {}
+    if (rc < 0) {
+        err_printf("cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) (%s)\n",
+                   file, (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
+                   (unsigned long)r.header.count, cbf_strerror(rc));
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    (void)cbf_reader_init(&r, buf, n);
+    dump_header(&r, buf);
+    while ((rc = cbf_next_record(&r, &rec)) == 1)
+        dump_record(&rec, buf);
+    if (r.trailing)
+        out_printf("trailing %lu byte(s) at %lu\n", (unsigned long)r.trailing, (unsigned long)r.pos);
+    return CBF_TOOL_EXIT_OK;
+}
+
+int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
+{
+    int status;
+    out_begin(sink);
+    status = dump(cbf_tool_name(name), buf, n);
+    out_flush();
+    return status;
+}

@@ -1,0 +1,74 @@
+/* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
+ * testee read files through it; a page or any other host calls the *_buffer entry points instead) ---- */
+
+/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
+long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
+{
+    FILE *fp;
+    size_t n = 0;
+    errno = 0;
+    fp = fopen(path, "rb");
+    *why = "cannot open";
+    if (!fp) {
+        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
+             : errno == EISDIR ? "is a directory" : "cannot open";
+        return -1;
+    }
+    for (;;) {
+        size_t got;
+        if (n == cap) {
+            int c = fgetc(fp);
+            fclose(fp);
+            *why = "file too large";
+            return c == EOF ? (long)n : -1;
+        }
+        got = fread(buf + n, 1, cap - n, fp);
+        n += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(fp)) {
+        *why = errno == EISDIR ? "is a directory" : "read error"; /* fopen opens a directory; reading fails */
+        fclose(fp);
+        return -1;
+    }
+    fclose(fp);
+    return (long)n;
+}
+
+/* An option file read whole into opt_file_buf (at most max bytes), or 0 with the one line in opt_why. */
+static char opt_file_buf[(OPT_CUTTER_MAX_BYTES > OPT_MACHINE_MAX_BYTES ? OPT_CUTTER_MAX_BYTES : OPT_MACHINE_MAX_BYTES)
+                         + 1u];
+
+static int opt_file(const char *path, size_t max, const char *what, size_t *n)
+{
+    const char *why;
+    long got = cbf_tool_read_file(path, (uint8_t *)opt_file_buf, max, &why);
+    if (got < 0) {
+        if (strcmp(why, "file too large") == 0)
+            (void)opt_too_large(cbf_tool_name(path), max, what);
+        else
+            (void)opt_fail("%s: cannot read %s (%s)", cbf_tool_name(path), what, why);
+        return 0;
+    }
+    *n = (size_t)got;
+    return 1;
+}
+
+int cbf_tool_cutters_file(const char *path, cbf_options *opt)
+{
+    size_t n;
+    opt_last_why = opt_why;
+    return opt_file(path, OPT_CUTTER_MAX_BYTES, opt_cutter_what, &n) && cbf_tool_cutters_buffer(path, opt_file_buf, n, opt);
+}
+
+int cbf_tool_machine_file(const char *path, cbf_options *opt)
+{
+    size_t n;
+    if (!opt_file(path, OPT_MACHINE_MAX_BYTES, opt_machine_what, &n)) {
+        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
+        opt_last_why = machine_why;
+        return 0;
+    }
+    return cbf_tool_machine_buffer(path, opt_file_buf, n, opt);
+}

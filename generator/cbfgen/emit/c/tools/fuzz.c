@@ -1,0 +1,110 @@
+/* ---- the libFuzzer harness: round trips and the filling writer's promises, on every input ---- */
+#define CHECK(cond) do { if (!(cond)) __builtin_trap(); } while (0)
+
+static uint8_t out[1u << 20];
+static uint8_t out2[1u << 20];
+
+static long findings;
+static int filled_failed;
+
+static void count_finding(void *user, const cbf_finding *f)
+{
+    size_t i;
+    (void)user;
+    CHECK(f->check != NULL && f->message != NULL);
+    CHECK(f->severity == CBF_SEVERITY_ERROR || f->severity == CBF_SEVERITY_WARNING);
+    findings++;
+    for (i = 0; filled_checks[i]; i++)
+        if (strcmp(f->check, filled_checks[i]) == 0)
+            filled_failed = 1;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    cbf_reader r, r2;
+    cbf_record rec, rec2;
+    cbf_writer w;
+    cbf_options opt;
+    long n, errors;
+    int rc, rc2, p;
+
+    for (p = 0; p < CBF_PROFILE__COUNT; p++) {
+        memset(&opt, 0, sizeof opt);
+        opt.profile = p;
+        findings = 0;
+        errors = cbf_validate(data, size, &opt, count_finding, NULL);
+        CHECK(errors >= 0 && errors <= findings);
+    }
+    if (cbf_reader_init(&r, data, size) != CBF_OK) {
+        CHECK(size < CBF_HEADER_SIZE);
+        return 0;
+    }
+    while ((rc = cbf_next_record(&r, &rec)) == 1) {}
+    if (rc < 0) {
+        CHECK(rc == CBF_ERR_TRUNCATED_RECORD);
+        return 0;
+    }
+    if (size > sizeof out)
+        return 0;
+
+    /* decode -> encode (stored values) -> the same bytes */
+    CHECK(cbf_reader_init(&r, data, size) == CBF_OK);
+    CHECK(cbf_encode_begin(&w, out, sizeof out, &r.header) == CBF_OK);
+    while ((rc = cbf_next_record(&r, &rec)) == 1) {
+        if (rec.layout != CBF_LAYOUT__NONE) {
+            uint8_t args[CBF_MAX_ARG_SIZE + 1];
+            long m = cbf_args_encode(rec.layout, &rec.decoded, args, sizeof args);
+            CHECK(m >= 0 && (size_t)m == rec.nargs);
+            CHECK(m == 0 || memcmp(args, rec.args, rec.nargs) == 0);
+        }
+        CHECK(cbf_encode_record_stored(&w, &rec.head, rec.args, rec.nargs) == CBF_OK);
+    }
+    CHECK(rc == 0);
+    CHECK(cbf_encode_bytes(&w, data + r.pos, r.trailing) == CBF_OK);
+    n = cbf_encode_end(&w, CBF_FUZZ_DEFAULT_PROFILE, 0);
+    CHECK(n >= 0 && (size_t)n == size && memcmp(out, data, size) == 0);
+
+    /* -> decode again: the same header and records */
+    CHECK(cbf_reader_init(&r, data, size) == CBF_OK);
+    CHECK(cbf_reader_init(&r2, out, (size_t)n) == CBF_OK);
+    CHECK(memcmp(&r.header, &r2.header, sizeof r.header) == 0);
+    for (;;) {
+        rc = cbf_next_record(&r, &rec);
+        rc2 = cbf_next_record(&r2, &rec2);
+        CHECK(rc == rc2);
+        if (rc != 1)
+            break;
+        CHECK(rec.offset == rec2.offset && rec.layout == rec2.layout && rec.command == rec2.command);
+        CHECK(memcmp(&rec.head, &rec2.head, sizeof rec.head) == 0);
+        CHECK(memcmp(&rec.decoded, &rec2.decoded, sizeof rec.decoded) == 0);
+    }
+    CHECK(r.trailing == r2.trailing);
+
+    /* the filling writer: its checks pass */
+    for (p = 0; p < CBF_PROFILE__COUNT; p++) {
+        CHECK(cbf_reader_init(&r, data, size) == CBF_OK);
+        int refused = 0;
+        CHECK(cbf_encode_begin(&w, out2, sizeof out2, &r.header) == CBF_OK);
+        while (!refused && cbf_next_record(&r, &rec) == 1) {
+            int code = CBF_FUZZ_CODE(rec.head);
+            rc = cbf_encode_record(&w, code, rec.args, rec.nargs);
+            /* the filling writer refuses exactly what the version lacks: the command or the size */
+            refused = !cbf_command_available(code, r.header.version)
+                      || cbf_args_layout(code, r.header.version, rec.nargs) == CBF_LAYOUT__NONE;
+            CHECK(rc == (refused ? CBF_ERR_NOT_WRITABLE : CBF_OK));
+        }
+        n = cbf_encode_end(&w, p, 1);
+        CHECK(!refused || n == CBF_ERR_NOT_WRITABLE); /* the refusal sticks */
+        if (n < 0)
+            continue; /* e.g. more records than the count field holds, a read-only version */
+        memset(&opt, 0, sizeof opt);
+        opt.profile = p;
+        filled_failed = 0;
+        findings = 0;
+        (void)cbf_validate(out2, (size_t)n, &opt, count_finding, NULL);
+        CHECK(!filled_failed);
+    }
+    return 0;
+}

@@ -1,0 +1,60 @@
+/* ================================================================ the tools' engine: entry points
+ * What cbf-c does, on bytes in memory: a host (the command line of cbf_tool.c, the conformance testee, a
+ * WebAssembly page) gives a buffer and a sink and gets back what the tool prints and its exit status.
+ * Nothing here opens a file but the *_file functions of the file layer. */
+
+/** Exit statuses, as cbf's (README, "Exit codes"). */
+enum cbf_tool_exit {
+    CBF_TOOL_EXIT_OK = 0,       /**< no error-severity finding */
+    CBF_TOOL_EXIT_FINDINGS = 1, /**< validate found an error-severity finding */
+    CBF_TOOL_EXIT_USAGE = 2,    /**< bad usage, or input that is not a CBF file to read */
+    CBF_TOOL_OUT_OF_MEMORY = -1 /**< the findings could not be held: one line said so; stop (exit 2) */
+};
+
+/** Where the tools' text goes: out gets the normal output, err one line at a time (each ends in a line
+ * break); len bytes of text, not NUL-terminated. user is passed back. */
+typedef void (*cbf_tool_write_fn)(void *user, const char *text, size_t len);
+typedef struct cbf_tool_sink {
+    cbf_tool_write_fn out;
+    cbf_tool_write_fn err;
+    void *user;
+} cbf_tool_sink;
+
+/** validate's options: the engine's (profile, part number, cutter table, machine), and the most findings
+ * printed for a file (0: all). */
+typedef struct cbf_tool_options {
+    cbf_options validate;
+    size_t max_findings;
+} cbf_tool_options;
+
+/** The most bytes a CBF file can hold: the header and every record at its largest. */
+#define CBF_TOOL_MAX_FILE_SIZE ((size_t)CBF_HEADER_SIZE + ((size_t)CBF_LIMIT_MAX_COMMANDS + 1u) \
+                                * ((size_t)CBF_RECORD_HEAD_SIZE + (size_t)CBF_LIMIT_MAX_ARG_SIZE))
+
+/** How a name (a file name from the command line or a request) is spelled in every line the tools print. */
+const char *cbf_tool_name(const char *name);
+
+/** 1 when buf[0..n) can be read as a CBF file; else 0 and one line on sink->err naming the file (name) and
+ * what is wrong: larger than a CBF file can be, shorter than the header, every magic number wrong. */
+int cbf_tool_frame_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
+/** cbf-c validate of one file: its findings in cbf's order and its summary line on sink->out; the status. */
+int cbf_tool_validate_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_options *opt,
+                             const cbf_tool_sink *sink);
+/** cbf-c dump of one file: the header and each record, one line each, on sink->out; the status. */
+int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
+
+/** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
+ * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
+ * the engine's copy, valid until the next call; else 0 and cbf_tool_why() says why in one line. */
+int cbf_tool_cutters_buffer(const char *name, const char *text, size_t n, cbf_options *opt);
+int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_options *opt);
+/** The one line naming the file, the line (or JSON path) and the limit of the last refusal. */
+const char *cbf_tool_why(void);
+
+/* ---- the file layer (files.c) ---- */
+/** Read a whole file into buf; its size, or -1 and *why (as cbf says it: "no such file", ...). A file of
+ * more than cap bytes is -1 and "file too large". */
+long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why);
+/** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
+int cbf_tool_cutters_file(const char *path, cbf_options *opt);
+int cbf_tool_machine_file(const char *path, cbf_options *opt);
