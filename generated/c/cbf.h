@@ -23,7 +23,7 @@
  *     // rc == 0: the end; rc < 0: cbf_strerror(rc). cbf_validate() checks the rest.
  *
  * Version: CBF_TOOLKIT_VERSION, spec CBF_SPEC_REVISION (below).
- * SPDX-License-Identifier: LicenseRef-Proprietary
+ * SPDX-License-Identifier: Apache-2.0
  *
  * Byte order: little-endian (N1). Floats: IEEE-754 binary32 (N2).
  * Strings: string(N) is N bytes, NUL-padded, no terminator when full (N4);
@@ -1118,7 +1118,6 @@ int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args);
 
 /* ---- the model's vocabulary, numbered --------------------------------- */
 enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
-enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C, CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32 };
 enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS, CBF__REGION_FIELDS };
 enum { CBF__MOTION_NONE = 0, CBF__MOTION_POINT, CBF__MOTION_LINE, CBF__MOTION_CIRCLE, CBF__MOTION_HELIX };
 enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M__COUNT };
@@ -1240,7 +1239,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1244 "cbf.h"
+#line 1243 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1333,7 +1332,173 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1337 "cbf.h"
+#line 1336 "cbf.h"
+/* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
+ * runtime/checksums.c implements each family once and switches on it with no default (a family
+ * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
+ * register is kept reflected (refin) or left-aligned in 32 bits; init is in that form and table
+ * is its byte table, computed by the generator from the parameters (cbfgen/emit/c/algorithms.py). */
+enum { CBF__ALG_NONE = 0, CBF__ALG_SUM, CBF__ALG_CRC16_CCITT, CBF__ALG_CRC32, CBF__ALG_CRC32C, CBF__ALG_FLETCHER16, CBF__ALG_FLETCHER32, CBF__ALG__COUNT };
+typedef enum cbf__family {
+    CBF__FAMILY_SUM,
+    CBF__FAMILY_CRC,
+    CBF__FAMILY_FLETCHER
+} cbf__family;
+typedef struct cbf__alg {
+    cbf__family family;
+    unsigned width;           /* bits of the result (0: a sum, reduced to its field) */
+    uint32_t init;            /* a CRC register's first value, in the form it is kept */
+    int refin, refout;
+    uint32_t xorout;
+    const uint32_t *table;    /* a CRC's byte table; NULL for the other families */
+} cbf__alg;
+/* crc16_ccitt: CRC-16/CCITT-FALSE (CRC-16/IBM-3740): poly 0x1021, init 0xFFFF, refin false, refout false, xorout 0x0 */
+static const uint32_t cbf__crc_CRC16_CCITT[256] = {
+0x00000000u, 0x10210000u, 0x20420000u, 0x30630000u, 0x40840000u, 0x50A50000u,
+0x60C60000u, 0x70E70000u, 0x81080000u, 0x91290000u, 0xA14A0000u, 0xB16B0000u,
+0xC18C0000u, 0xD1AD0000u, 0xE1CE0000u, 0xF1EF0000u, 0x12310000u, 0x02100000u,
+0x32730000u, 0x22520000u, 0x52B50000u, 0x42940000u, 0x72F70000u, 0x62D60000u,
+0x93390000u, 0x83180000u, 0xB37B0000u, 0xA35A0000u, 0xD3BD0000u, 0xC39C0000u,
+0xF3FF0000u, 0xE3DE0000u, 0x24620000u, 0x34430000u, 0x04200000u, 0x14010000u,
+0x64E60000u, 0x74C70000u, 0x44A40000u, 0x54850000u, 0xA56A0000u, 0xB54B0000u,
+0x85280000u, 0x95090000u, 0xE5EE0000u, 0xF5CF0000u, 0xC5AC0000u, 0xD58D0000u,
+0x36530000u, 0x26720000u, 0x16110000u, 0x06300000u, 0x76D70000u, 0x66F60000u,
+0x56950000u, 0x46B40000u, 0xB75B0000u, 0xA77A0000u, 0x97190000u, 0x87380000u,
+0xF7DF0000u, 0xE7FE0000u, 0xD79D0000u, 0xC7BC0000u, 0x48C40000u, 0x58E50000u,
+0x68860000u, 0x78A70000u, 0x08400000u, 0x18610000u, 0x28020000u, 0x38230000u,
+0xC9CC0000u, 0xD9ED0000u, 0xE98E0000u, 0xF9AF0000u, 0x89480000u, 0x99690000u,
+0xA90A0000u, 0xB92B0000u, 0x5AF50000u, 0x4AD40000u, 0x7AB70000u, 0x6A960000u,
+0x1A710000u, 0x0A500000u, 0x3A330000u, 0x2A120000u, 0xDBFD0000u, 0xCBDC0000u,
+0xFBBF0000u, 0xEB9E0000u, 0x9B790000u, 0x8B580000u, 0xBB3B0000u, 0xAB1A0000u,
+0x6CA60000u, 0x7C870000u, 0x4CE40000u, 0x5CC50000u, 0x2C220000u, 0x3C030000u,
+0x0C600000u, 0x1C410000u, 0xEDAE0000u, 0xFD8F0000u, 0xCDEC0000u, 0xDDCD0000u,
+0xAD2A0000u, 0xBD0B0000u, 0x8D680000u, 0x9D490000u, 0x7E970000u, 0x6EB60000u,
+0x5ED50000u, 0x4EF40000u, 0x3E130000u, 0x2E320000u, 0x1E510000u, 0x0E700000u,
+0xFF9F0000u, 0xEFBE0000u, 0xDFDD0000u, 0xCFFC0000u, 0xBF1B0000u, 0xAF3A0000u,
+0x9F590000u, 0x8F780000u, 0x91880000u, 0x81A90000u, 0xB1CA0000u, 0xA1EB0000u,
+0xD10C0000u, 0xC12D0000u, 0xF14E0000u, 0xE16F0000u, 0x10800000u, 0x00A10000u,
+0x30C20000u, 0x20E30000u, 0x50040000u, 0x40250000u, 0x70460000u, 0x60670000u,
+0x83B90000u, 0x93980000u, 0xA3FB0000u, 0xB3DA0000u, 0xC33D0000u, 0xD31C0000u,
+0xE37F0000u, 0xF35E0000u, 0x02B10000u, 0x12900000u, 0x22F30000u, 0x32D20000u,
+0x42350000u, 0x52140000u, 0x62770000u, 0x72560000u, 0xB5EA0000u, 0xA5CB0000u,
+0x95A80000u, 0x85890000u, 0xF56E0000u, 0xE54F0000u, 0xD52C0000u, 0xC50D0000u,
+0x34E20000u, 0x24C30000u, 0x14A00000u, 0x04810000u, 0x74660000u, 0x64470000u,
+0x54240000u, 0x44050000u, 0xA7DB0000u, 0xB7FA0000u, 0x87990000u, 0x97B80000u,
+0xE75F0000u, 0xF77E0000u, 0xC71D0000u, 0xD73C0000u, 0x26D30000u, 0x36F20000u,
+0x06910000u, 0x16B00000u, 0x66570000u, 0x76760000u, 0x46150000u, 0x56340000u,
+0xD94C0000u, 0xC96D0000u, 0xF90E0000u, 0xE92F0000u, 0x99C80000u, 0x89E90000u,
+0xB98A0000u, 0xA9AB0000u, 0x58440000u, 0x48650000u, 0x78060000u, 0x68270000u,
+0x18C00000u, 0x08E10000u, 0x38820000u, 0x28A30000u, 0xCB7D0000u, 0xDB5C0000u,
+0xEB3F0000u, 0xFB1E0000u, 0x8BF90000u, 0x9BD80000u, 0xABBB0000u, 0xBB9A0000u,
+0x4A750000u, 0x5A540000u, 0x6A370000u, 0x7A160000u, 0x0AF10000u, 0x1AD00000u,
+0x2AB30000u, 0x3A920000u, 0xFD2E0000u, 0xED0F0000u, 0xDD6C0000u, 0xCD4D0000u,
+0xBDAA0000u, 0xAD8B0000u, 0x9DE80000u, 0x8DC90000u, 0x7C260000u, 0x6C070000u,
+0x5C640000u, 0x4C450000u, 0x3CA20000u, 0x2C830000u, 0x1CE00000u, 0x0CC10000u,
+0xEF1F0000u, 0xFF3E0000u, 0xCF5D0000u, 0xDF7C0000u, 0xAF9B0000u, 0xBFBA0000u,
+0x8FD90000u, 0x9FF80000u, 0x6E170000u, 0x7E360000u, 0x4E550000u, 0x5E740000u,
+0x2E930000u, 0x3EB20000u, 0x0ED10000u, 0x1EF00000u,
+};
+/* crc32: CRC-32/ISO-HDLC: poly 0x4C11DB7, init 0xFFFFFFFF, refin true, refout true, xorout 0xFFFFFFFF */
+static const uint32_t cbf__crc_CRC32[256] = {
+0x00000000u, 0x77073096u, 0xEE0E612Cu, 0x990951BAu, 0x076DC419u, 0x706AF48Fu,
+0xE963A535u, 0x9E6495A3u, 0x0EDB8832u, 0x79DCB8A4u, 0xE0D5E91Eu, 0x97D2D988u,
+0x09B64C2Bu, 0x7EB17CBDu, 0xE7B82D07u, 0x90BF1D91u, 0x1DB71064u, 0x6AB020F2u,
+0xF3B97148u, 0x84BE41DEu, 0x1ADAD47Du, 0x6DDDE4EBu, 0xF4D4B551u, 0x83D385C7u,
+0x136C9856u, 0x646BA8C0u, 0xFD62F97Au, 0x8A65C9ECu, 0x14015C4Fu, 0x63066CD9u,
+0xFA0F3D63u, 0x8D080DF5u, 0x3B6E20C8u, 0x4C69105Eu, 0xD56041E4u, 0xA2677172u,
+0x3C03E4D1u, 0x4B04D447u, 0xD20D85FDu, 0xA50AB56Bu, 0x35B5A8FAu, 0x42B2986Cu,
+0xDBBBC9D6u, 0xACBCF940u, 0x32D86CE3u, 0x45DF5C75u, 0xDCD60DCFu, 0xABD13D59u,
+0x26D930ACu, 0x51DE003Au, 0xC8D75180u, 0xBFD06116u, 0x21B4F4B5u, 0x56B3C423u,
+0xCFBA9599u, 0xB8BDA50Fu, 0x2802B89Eu, 0x5F058808u, 0xC60CD9B2u, 0xB10BE924u,
+0x2F6F7C87u, 0x58684C11u, 0xC1611DABu, 0xB6662D3Du, 0x76DC4190u, 0x01DB7106u,
+0x98D220BCu, 0xEFD5102Au, 0x71B18589u, 0x06B6B51Fu, 0x9FBFE4A5u, 0xE8B8D433u,
+0x7807C9A2u, 0x0F00F934u, 0x9609A88Eu, 0xE10E9818u, 0x7F6A0DBBu, 0x086D3D2Du,
+0x91646C97u, 0xE6635C01u, 0x6B6B51F4u, 0x1C6C6162u, 0x856530D8u, 0xF262004Eu,
+0x6C0695EDu, 0x1B01A57Bu, 0x8208F4C1u, 0xF50FC457u, 0x65B0D9C6u, 0x12B7E950u,
+0x8BBEB8EAu, 0xFCB9887Cu, 0x62DD1DDFu, 0x15DA2D49u, 0x8CD37CF3u, 0xFBD44C65u,
+0x4DB26158u, 0x3AB551CEu, 0xA3BC0074u, 0xD4BB30E2u, 0x4ADFA541u, 0x3DD895D7u,
+0xA4D1C46Du, 0xD3D6F4FBu, 0x4369E96Au, 0x346ED9FCu, 0xAD678846u, 0xDA60B8D0u,
+0x44042D73u, 0x33031DE5u, 0xAA0A4C5Fu, 0xDD0D7CC9u, 0x5005713Cu, 0x270241AAu,
+0xBE0B1010u, 0xC90C2086u, 0x5768B525u, 0x206F85B3u, 0xB966D409u, 0xCE61E49Fu,
+0x5EDEF90Eu, 0x29D9C998u, 0xB0D09822u, 0xC7D7A8B4u, 0x59B33D17u, 0x2EB40D81u,
+0xB7BD5C3Bu, 0xC0BA6CADu, 0xEDB88320u, 0x9ABFB3B6u, 0x03B6E20Cu, 0x74B1D29Au,
+0xEAD54739u, 0x9DD277AFu, 0x04DB2615u, 0x73DC1683u, 0xE3630B12u, 0x94643B84u,
+0x0D6D6A3Eu, 0x7A6A5AA8u, 0xE40ECF0Bu, 0x9309FF9Du, 0x0A00AE27u, 0x7D079EB1u,
+0xF00F9344u, 0x8708A3D2u, 0x1E01F268u, 0x6906C2FEu, 0xF762575Du, 0x806567CBu,
+0x196C3671u, 0x6E6B06E7u, 0xFED41B76u, 0x89D32BE0u, 0x10DA7A5Au, 0x67DD4ACCu,
+0xF9B9DF6Fu, 0x8EBEEFF9u, 0x17B7BE43u, 0x60B08ED5u, 0xD6D6A3E8u, 0xA1D1937Eu,
+0x38D8C2C4u, 0x4FDFF252u, 0xD1BB67F1u, 0xA6BC5767u, 0x3FB506DDu, 0x48B2364Bu,
+0xD80D2BDAu, 0xAF0A1B4Cu, 0x36034AF6u, 0x41047A60u, 0xDF60EFC3u, 0xA867DF55u,
+0x316E8EEFu, 0x4669BE79u, 0xCB61B38Cu, 0xBC66831Au, 0x256FD2A0u, 0x5268E236u,
+0xCC0C7795u, 0xBB0B4703u, 0x220216B9u, 0x5505262Fu, 0xC5BA3BBEu, 0xB2BD0B28u,
+0x2BB45A92u, 0x5CB36A04u, 0xC2D7FFA7u, 0xB5D0CF31u, 0x2CD99E8Bu, 0x5BDEAE1Du,
+0x9B64C2B0u, 0xEC63F226u, 0x756AA39Cu, 0x026D930Au, 0x9C0906A9u, 0xEB0E363Fu,
+0x72076785u, 0x05005713u, 0x95BF4A82u, 0xE2B87A14u, 0x7BB12BAEu, 0x0CB61B38u,
+0x92D28E9Bu, 0xE5D5BE0Du, 0x7CDCEFB7u, 0x0BDBDF21u, 0x86D3D2D4u, 0xF1D4E242u,
+0x68DDB3F8u, 0x1FDA836Eu, 0x81BE16CDu, 0xF6B9265Bu, 0x6FB077E1u, 0x18B74777u,
+0x88085AE6u, 0xFF0F6A70u, 0x66063BCAu, 0x11010B5Cu, 0x8F659EFFu, 0xF862AE69u,
+0x616BFFD3u, 0x166CCF45u, 0xA00AE278u, 0xD70DD2EEu, 0x4E048354u, 0x3903B3C2u,
+0xA7672661u, 0xD06016F7u, 0x4969474Du, 0x3E6E77DBu, 0xAED16A4Au, 0xD9D65ADCu,
+0x40DF0B66u, 0x37D83BF0u, 0xA9BCAE53u, 0xDEBB9EC5u, 0x47B2CF7Fu, 0x30B5FFE9u,
+0xBDBDF21Cu, 0xCABAC28Au, 0x53B39330u, 0x24B4A3A6u, 0xBAD03605u, 0xCDD70693u,
+0x54DE5729u, 0x23D967BFu, 0xB3667A2Eu, 0xC4614AB8u, 0x5D681B02u, 0x2A6F2B94u,
+0xB40BBE37u, 0xC30C8EA1u, 0x5A05DF1Bu, 0x2D02EF8Du,
+};
+/* crc32c: CRC-32/ISCSI (Castagnoli): poly 0x1EDC6F41, init 0xFFFFFFFF, refin true, refout true, xorout 0xFFFFFFFF */
+static const uint32_t cbf__crc_CRC32C[256] = {
+0x00000000u, 0xF26B8303u, 0xE13B70F7u, 0x1350F3F4u, 0xC79A971Fu, 0x35F1141Cu,
+0x26A1E7E8u, 0xD4CA64EBu, 0x8AD958CFu, 0x78B2DBCCu, 0x6BE22838u, 0x9989AB3Bu,
+0x4D43CFD0u, 0xBF284CD3u, 0xAC78BF27u, 0x5E133C24u, 0x105EC76Fu, 0xE235446Cu,
+0xF165B798u, 0x030E349Bu, 0xD7C45070u, 0x25AFD373u, 0x36FF2087u, 0xC494A384u,
+0x9A879FA0u, 0x68EC1CA3u, 0x7BBCEF57u, 0x89D76C54u, 0x5D1D08BFu, 0xAF768BBCu,
+0xBC267848u, 0x4E4DFB4Bu, 0x20BD8EDEu, 0xD2D60DDDu, 0xC186FE29u, 0x33ED7D2Au,
+0xE72719C1u, 0x154C9AC2u, 0x061C6936u, 0xF477EA35u, 0xAA64D611u, 0x580F5512u,
+0x4B5FA6E6u, 0xB93425E5u, 0x6DFE410Eu, 0x9F95C20Du, 0x8CC531F9u, 0x7EAEB2FAu,
+0x30E349B1u, 0xC288CAB2u, 0xD1D83946u, 0x23B3BA45u, 0xF779DEAEu, 0x05125DADu,
+0x1642AE59u, 0xE4292D5Au, 0xBA3A117Eu, 0x4851927Du, 0x5B016189u, 0xA96AE28Au,
+0x7DA08661u, 0x8FCB0562u, 0x9C9BF696u, 0x6EF07595u, 0x417B1DBCu, 0xB3109EBFu,
+0xA0406D4Bu, 0x522BEE48u, 0x86E18AA3u, 0x748A09A0u, 0x67DAFA54u, 0x95B17957u,
+0xCBA24573u, 0x39C9C670u, 0x2A993584u, 0xD8F2B687u, 0x0C38D26Cu, 0xFE53516Fu,
+0xED03A29Bu, 0x1F682198u, 0x5125DAD3u, 0xA34E59D0u, 0xB01EAA24u, 0x42752927u,
+0x96BF4DCCu, 0x64D4CECFu, 0x77843D3Bu, 0x85EFBE38u, 0xDBFC821Cu, 0x2997011Fu,
+0x3AC7F2EBu, 0xC8AC71E8u, 0x1C661503u, 0xEE0D9600u, 0xFD5D65F4u, 0x0F36E6F7u,
+0x61C69362u, 0x93AD1061u, 0x80FDE395u, 0x72966096u, 0xA65C047Du, 0x5437877Eu,
+0x4767748Au, 0xB50CF789u, 0xEB1FCBADu, 0x197448AEu, 0x0A24BB5Au, 0xF84F3859u,
+0x2C855CB2u, 0xDEEEDFB1u, 0xCDBE2C45u, 0x3FD5AF46u, 0x7198540Du, 0x83F3D70Eu,
+0x90A324FAu, 0x62C8A7F9u, 0xB602C312u, 0x44694011u, 0x5739B3E5u, 0xA55230E6u,
+0xFB410CC2u, 0x092A8FC1u, 0x1A7A7C35u, 0xE811FF36u, 0x3CDB9BDDu, 0xCEB018DEu,
+0xDDE0EB2Au, 0x2F8B6829u, 0x82F63B78u, 0x709DB87Bu, 0x63CD4B8Fu, 0x91A6C88Cu,
+0x456CAC67u, 0xB7072F64u, 0xA457DC90u, 0x563C5F93u, 0x082F63B7u, 0xFA44E0B4u,
+0xE9141340u, 0x1B7F9043u, 0xCFB5F4A8u, 0x3DDE77ABu, 0x2E8E845Fu, 0xDCE5075Cu,
+0x92A8FC17u, 0x60C37F14u, 0x73938CE0u, 0x81F80FE3u, 0x55326B08u, 0xA759E80Bu,
+0xB4091BFFu, 0x466298FCu, 0x1871A4D8u, 0xEA1A27DBu, 0xF94AD42Fu, 0x0B21572Cu,
+0xDFEB33C7u, 0x2D80B0C4u, 0x3ED04330u, 0xCCBBC033u, 0xA24BB5A6u, 0x502036A5u,
+0x4370C551u, 0xB11B4652u, 0x65D122B9u, 0x97BAA1BAu, 0x84EA524Eu, 0x7681D14Du,
+0x2892ED69u, 0xDAF96E6Au, 0xC9A99D9Eu, 0x3BC21E9Du, 0xEF087A76u, 0x1D63F975u,
+0x0E330A81u, 0xFC588982u, 0xB21572C9u, 0x407EF1CAu, 0x532E023Eu, 0xA145813Du,
+0x758FE5D6u, 0x87E466D5u, 0x94B49521u, 0x66DF1622u, 0x38CC2A06u, 0xCAA7A905u,
+0xD9F75AF1u, 0x2B9CD9F2u, 0xFF56BD19u, 0x0D3D3E1Au, 0x1E6DCDEEu, 0xEC064EEDu,
+0xC38D26C4u, 0x31E6A5C7u, 0x22B65633u, 0xD0DDD530u, 0x0417B1DBu, 0xF67C32D8u,
+0xE52CC12Cu, 0x1747422Fu, 0x49547E0Bu, 0xBB3FFD08u, 0xA86F0EFCu, 0x5A048DFFu,
+0x8ECEE914u, 0x7CA56A17u, 0x6FF599E3u, 0x9D9E1AE0u, 0xD3D3E1ABu, 0x21B862A8u,
+0x32E8915Cu, 0xC083125Fu, 0x144976B4u, 0xE622F5B7u, 0xF5720643u, 0x07198540u,
+0x590AB964u, 0xAB613A67u, 0xB831C993u, 0x4A5A4A90u, 0x9E902E7Bu, 0x6CFBAD78u,
+0x7FAB5E8Cu, 0x8DC0DD8Fu, 0xE330A81Au, 0x115B2B19u, 0x020BD8EDu, 0xF0605BEEu,
+0x24AA3F05u, 0xD6C1BC06u, 0xC5914FF2u, 0x37FACCF1u, 0x69E9F0D5u, 0x9B8273D6u,
+0x88D28022u, 0x7AB90321u, 0xAE7367CAu, 0x5C18E4C9u, 0x4F48173Du, 0xBD23943Eu,
+0xF36E6F75u, 0x0105EC76u, 0x12551F82u, 0xE03E9C81u, 0x34F4F86Au, 0xC69F7B69u,
+0xD5CF889Du, 0x27A40B9Eu, 0x79B737BAu, 0x8BDCB4B9u, 0x988C474Du, 0x6AE7C44Eu,
+0xBE2DA0A5u, 0x4C4623A6u, 0x5F16D052u, 0xAD7D5351u,
+};
+static const cbf__alg cbf__algs[CBF__ALG__COUNT] = {
+    { CBF__FAMILY_SUM, 0u, 0u, 0, 0, 0u, NULL }, /* CBF__ALG_NONE: never computed */
+    { CBF__FAMILY_SUM, 0u, 0x00000000u, 0, 0, 0x00000000u, NULL }, /* sum */
+    { CBF__FAMILY_CRC, 16u, 0xFFFF0000u, 0, 0, 0x00000000u, cbf__crc_CRC16_CCITT }, /* crc16_ccitt */
+    { CBF__FAMILY_CRC, 32u, 0xFFFFFFFFu, 1, 1, 0xFFFFFFFFu, cbf__crc_CRC32 }, /* crc32 */
+    { CBF__FAMILY_CRC, 32u, 0xFFFFFFFFu, 1, 1, 0xFFFFFFFFu, cbf__crc_CRC32C }, /* crc32c */
+    { CBF__FAMILY_FLETCHER, 16u, 0x00000000u, 0, 0, 0x00000000u, NULL }, /* fletcher16 */
+    { CBF__FAMILY_FLETCHER, 32u, 0x00000000u, 0, 0, 0x00000000u, NULL } /* fletcher32 */
+};
 /* ---- the spec as tables (their shapes: runtime/tables.h) ------------------ */
 
 static const cbf__version cbf__versions[CBF__NVERSIONS] = {
@@ -2349,7 +2514,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2353 "cbf.h"
+#line 2518 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2466,7 +2631,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2470 "cbf.h"
+#line 2635 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2691,29 +2856,28 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2695 "cbf.h"
+#line 2860 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
- * Every algorithm kind of the model, implemented once here (parameters as in
- * spec/cbf.yaml checksums.algorithms and the CRC catalogue):
- *   SUM          unsigned byte sum, reduced to the width of the field
- *   CRC16_CCITT  CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, xorout 0
- *   CRC32        CRC-32/ISO-HDLC: poly 0x04C11DB7 (reflected 0xEDB88320), init/xorout 0xFFFFFFFF
- *   CRC32C       CRC-32C Castagnoli: poly 0x1EDC6F41 (reflected 0x82F63B78), init/xorout 0xFFFFFFFF
- *   FLETCHER16   bytes, sums modulo 255, sum2 << 8 | sum1
- *   FLETCHER32   16-bit little-endian words (odd tail padded with 0), sums modulo 65535, sum2 << 16 | sum1
- * A coverage feeds several ranges as one stream: Fletcher-32 keeps a pending odd byte. */
-typedef struct cbf__ck { int alg; uint32_t acc, acc2; int odd; uint8_t pend; } cbf__ck;
+ * Every algorithm kind is a row of cbf__algs (generated from cbfgen/registry.py ALGORITHMS: its
+ * parameters and, for a CRC, its byte table); each family is implemented once here:
+ *   SUM       unsigned byte sum, reduced to the width of the field
+ *   CRC       the CRC catalogue's model (width, poly, init, refin, refout, xorout), a byte at a time
+ *             through the table: reflected (refin) with the register right-aligned, else with the
+ *             register left-aligned in 32 bits
+ *   FLETCHER  16 or 32 bits: little-endian words of width/16 bytes (an odd tail padded with 0), two
+ *             sums modulo 2^(width/2) - 1, result sum2 << width/2 | sum1
+ * A coverage feeds several ranges as one stream: Fletcher keeps the bytes of a pending word. */
+typedef struct cbf__ck { const cbf__alg *a; uint32_t acc, acc2; unsigned npend; uint8_t pend[4]; } cbf__ck;
 
 static void cbf__ck_init(cbf__ck *c, int alg)
 {
-    c->alg = alg;
-    c->acc = (alg == CBF__ALG_CRC32 || alg == CBF__ALG_CRC32C) ? 0xFFFFFFFFu
-             : alg == CBF__ALG_CRC16_CCITT ? 0xFFFFu : 0u;
+    c->a = &cbf__algs[alg >= 0 && alg < CBF__ALG__COUNT ? alg : CBF__ALG_NONE];
+    c->acc = c->a->init;
     c->acc2 = 0u;
-    c->odd = 0;
-    c->pend = 0u;
+    c->npend = 0u;
+    memset(c->pend, 0, sizeof c->pend);
 }
 
 /* The plain byte sum of p[0..n), modulo 2^32. Eight bytes at a time: the bytes
@@ -2742,67 +2906,82 @@ static uint32_t cbf__sum(const uint8_t *p, size_t n)
     return acc;
 }
 
+/* A Fletcher word of c->pend (little-endian, c->npend bytes, the rest 0) into the two sums. */
+static void cbf__fletcher_word(cbf__ck *c)
+{
+    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
+    uint32_t w = 0;
+    unsigned k;
+    for (k = c->a->width / 16u; k-- > 0u;)
+        w = (w << 8) | c->pend[k];
+    c->acc = (uint32_t)(((uint64_t)c->acc + w) % mod);
+    c->acc2 = (uint32_t)(((uint64_t)c->acc2 + c->acc) % mod);
+    c->npend = 0u;
+    memset(c->pend, 0, sizeof c->pend);
+}
+
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
 {
+    const uint32_t *t = c->a->table;
+    uint32_t r = c->acc;
     size_t i;
-    unsigned b;
-    switch (c->alg) {
-    case CBF__ALG_CRC32:
-    case CBF__ALG_CRC32C: {
-        const uint32_t poly = c->alg == CBF__ALG_CRC32 ? 0xEDB88320u : 0x82F63B78u;
-        for (i = 0; i < n; i++) {
-            c->acc ^= p[i];
-            for (b = 0; b < 8u; b++)
-                c->acc = (c->acc & 1u) ? ((c->acc >> 1) ^ poly) : (c->acc >> 1);
-        }
-        break;
-    }
-    case CBF__ALG_CRC16_CCITT:
-        for (i = 0; i < n; i++) {
-            c->acc ^= (uint32_t)p[i] << 8;
-            for (b = 0; b < 8u; b++)
-                c->acc = (c->acc & 0x8000u) ? (((c->acc << 1) ^ 0x1021u) & 0xFFFFu) : ((c->acc << 1) & 0xFFFFu);
-        }
-        break;
-    case CBF__ALG_FLETCHER16:
-        for (i = 0; i < n; i++) {
-            c->acc = (c->acc + p[i]) % 255u;
-            c->acc2 = (c->acc2 + c->acc) % 255u;
-        }
-        break;
-    case CBF__ALG_FLETCHER32:
-        for (i = 0; i < n; i++) {
-            if (!c->odd) {
-                c->pend = p[i];
-                c->odd = 1;
-                continue;
-            }
-            c->acc = (c->acc + ((uint32_t)c->pend | ((uint32_t)p[i] << 8))) % 65535u;
-            c->acc2 = (c->acc2 + c->acc) % 65535u;
-            c->odd = 0;
-        }
-        break;
-    default:
+    switch (c->a->family) {
+    case CBF__FAMILY_SUM:
         c->acc += cbf__sum(p, n);
+        break;
+    case CBF__FAMILY_CRC:
+        if (c->a->refin) {
+            for (i = 0; i < n; i++)
+                r = t[(r ^ p[i]) & 0xFFu] ^ (r >> 8);
+        } else {
+            for (i = 0; i < n; i++)
+                r = t[((r >> 24) ^ p[i]) & 0xFFu] ^ (r << 8);
+        }
+        c->acc = r;
+        break;
+    case CBF__FAMILY_FLETCHER:
+        for (i = 0; i < n; i++) {
+            c->pend[c->npend++] = p[i];
+            if (c->npend == c->a->width / 16u)
+                cbf__fletcher_word(c);
+        }
         break;
     }
 }
 
+/* The register reflected over its low `width` bits. */
+static uint32_t cbf__reflect(uint32_t v, unsigned width)
+{
+    uint32_t out = 0;
+    unsigned k;
+    for (k = 0; k < width; k++, v >>= 1)
+        out = (out << 1) | (v & 1u);
+    return out;
+}
+
 static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
 {
-    uint32_t v = c->acc, s1 = c->acc, s2 = c->acc2;
-    if (c->alg == CBF__ALG_CRC32 || c->alg == CBF__ALG_CRC32C) {
-        v = c->acc ^ 0xFFFFFFFFu;
-    } else if (c->alg == CBF__ALG_FLETCHER16) {
-        v = (s2 << 8) | s1;
-    } else if (c->alg == CBF__ALG_FLETCHER32) {
-        if (c->odd) { /* the odd last byte, padded with a zero high byte */
-            s1 = (s1 + c->pend) % 65535u;
-            s2 = (s2 + s1) % 65535u;
-        }
-        v = (s2 << 16) | s1;
+    const cbf__alg *a = c->a;
+    uint32_t v = c->acc;
+    switch (a->family) {
+    case CBF__FAMILY_SUM:
+        break;
+    case CBF__FAMILY_CRC:
+        if (!a->refin)
+            v >>= 32u - a->width;
+        if (a->refin != a->refout)
+            v = cbf__reflect(v, a->width);
+        v ^= a->xorout;
+        break;
+    case CBF__FAMILY_FLETCHER: {
+        cbf__ck tail = *c; /* the pending bytes of a last, short word, padded with zeros */
+        if (tail.npend)
+            cbf__fletcher_word(&tail);
+        v = (tail.acc2 << (a->width / 2u)) | tail.acc;
+        break;
     }
-    /* only a sum is wider than its field (loader.py refuses any other such algorithm) */
+    }
+    /* only a sum is wider than its field (the loader refuses any other such algorithm) */
     return width >= 4u ? v : (v & ((1u << (8u * width)) - 1u));
 }
 
@@ -2907,7 +3086,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 2911 "cbf.h"
+#line 3090 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3085,7 +3264,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3089 "cbf.h"
+#line 3268 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3379,7 +3558,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3383 "cbf.h"
+#line 3562 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4480,7 +4659,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4484 "cbf.h"
+#line 4663 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4646,7 +4825,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4650 "cbf.h"
+#line 4829 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4683,7 +4862,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4687 "cbf.h"
+#line 4866 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5292,7 +5471,7 @@ static int cbf__file_sum_folds(int profile, size_t *start)
 {
     int cov = cbf__profiles[profile].file[0];
     const cbf__segment *seg;
-    if (cov < 0 || cbf__profiles[profile].file_alg != CBF__ALG_SUM || cbf__coverages[cov].n != 1u)
+    if (cov < 0 || cbf__algs[cbf__profiles[profile].file_alg].family != CBF__FAMILY_SUM || cbf__coverages[cov].n != 1u)
         return 0;
     seg = &cbf__segments[cbf__coverages[cov].first];
     if (seg->region != CBF__REGION_FILE || seg->start > CBF_HEADER_SIZE)
@@ -5654,7 +5833,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     r.fold = 0u;
     r.kck = cbf__ckfield_of(CBF__CK_ARGS);
     /* a plain sum over the arguments alone (the spec's 6.4.4) needs no coverage walk */
-    r.args_sum = r.kck && r.kck->alg == CBF__ALG_SUM && cbf__coverages[r.kck->coverage].n == 1u
+    r.args_sum = r.kck && cbf__algs[r.kck->alg].family == CBF__FAMILY_SUM && cbf__coverages[r.kck->coverage].n == 1u
                  && cbf__segments[cbf__coverages[r.kck->coverage].first].region == CBF__REGION_ARGS;
     r.folds = r.args_sum && cbf__file_sum_folds(profile, &fold_start);
     if (r.folds)
@@ -5665,7 +5844,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5669 "cbf.h"
+#line 5848 "cbf.h"
 #ifdef __cplusplus
 }
 #endif
