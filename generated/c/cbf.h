@@ -2906,18 +2906,46 @@ static uint32_t cbf__sum(const uint8_t *p, size_t n)
     return acc;
 }
 
-/* A Fletcher word of c->pend (little-endian, c->npend bytes, the rest 0) into the two sums. */
-static void cbf__fletcher_word(cbf__ck *c)
+/* The little-endian value of the first n bytes of q (the bytes of a word; missing ones are 0). */
+static uint32_t cbf__word(const uint8_t *q, unsigned n)
 {
-    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
     uint32_t w = 0;
-    unsigned k;
-    for (k = c->a->width / 16u; k-- > 0u;)
-        w = (w << 8) | c->pend[k];
-    c->acc = (uint32_t)(((uint64_t)c->acc + w) % mod);
-    c->acc2 = (uint32_t)(((uint64_t)c->acc2 + c->acc) % mod);
-    c->npend = 0u;
-    memset(c->pend, 0, sizeof c->pend);
+    while (n-- > 0u)
+        w = (w << 8) | q[n];
+    return w;
+}
+
+/* Fletcher over p[0..n): whole words straight from p, a word split between two feeds through
+ * c->pend; the sums grow in 64 bits and are reduced every 4096 words (then s1 < 2^29, s2 < 2^42). */
+static void cbf__fletcher(cbf__ck *c, const uint8_t *p, size_t n)
+{
+    const unsigned wb = c->a->width / 16u;
+    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
+    uint64_t s1 = c->acc, s2 = c->acc2;
+    unsigned since = 0;
+    size_t i = 0;
+    while (i < n) {
+        uint32_t w;
+        if (c->npend == 0u && n - i >= wb) {
+            w = cbf__word(p + i, wb);
+            i += wb;
+        } else {
+            c->pend[c->npend++] = p[i++];
+            if (c->npend < wb)
+                continue;
+            w = cbf__word(c->pend, wb);
+            c->npend = 0u;
+        }
+        s1 += w;
+        s2 += s1;
+        if (++since == 4096u) {
+            s1 %= mod;
+            s2 %= mod;
+            since = 0;
+        }
+    }
+    c->acc = (uint32_t)(s1 % mod);
+    c->acc2 = (uint32_t)(s2 % mod);
 }
 
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
@@ -2940,11 +2968,7 @@ static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
         c->acc = r;
         break;
     case CBF__FAMILY_FLETCHER:
-        for (i = 0; i < n; i++) {
-            c->pend[c->npend++] = p[i];
-            if (c->npend == c->a->width / 16u)
-                cbf__fletcher_word(c);
-        }
+        cbf__fletcher(c, p, n);
         break;
     }
 }
@@ -2974,10 +2998,13 @@ static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
         v ^= a->xorout;
         break;
     case CBF__FAMILY_FLETCHER: {
-        cbf__ck tail = *c; /* the pending bytes of a last, short word, padded with zeros */
-        if (tail.npend)
-            cbf__fletcher_word(&tail);
-        v = (tail.acc2 << (a->width / 2u)) | tail.acc;
+        uint32_t s1 = c->acc, s2 = c->acc2;
+        if (c->npend) { /* the pending bytes of a last, short word, padded with zeros */
+            const uint32_t mod = (1u << (a->width / 2u)) - 1u;
+            s1 = (uint32_t)(((uint64_t)s1 + cbf__word(c->pend, c->npend)) % mod);
+            s2 = (uint32_t)(((uint64_t)s2 + s1) % mod);
+        }
+        v = (s2 << (a->width / 2u)) | s1;
         break;
     }
     }
@@ -3086,7 +3113,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3090 "cbf.h"
+#line 3117 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3264,7 +3291,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3268 "cbf.h"
+#line 3295 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3558,7 +3585,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3562 "cbf.h"
+#line 3589 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4659,7 +4686,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4663 "cbf.h"
+#line 4690 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4825,7 +4852,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4829 "cbf.h"
+#line 4856 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4862,7 +4889,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4866 "cbf.h"
+#line 4893 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5844,7 +5871,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5848 "cbf.h"
+#line 5875 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

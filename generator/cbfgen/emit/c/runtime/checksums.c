@@ -45,18 +45,46 @@ static uint32_t cbf__sum(const uint8_t *p, size_t n)
     return acc;
 }
 
-/* A Fletcher word of c->pend (little-endian, c->npend bytes, the rest 0) into the two sums. */
-static void cbf__fletcher_word(cbf__ck *c)
+/* The little-endian value of the first n bytes of q (the bytes of a word; missing ones are 0). */
+static uint32_t cbf__word(const uint8_t *q, unsigned n)
 {
-    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
     uint32_t w = 0;
-    unsigned k;
-    for (k = c->a->width / 16u; k-- > 0u;)
-        w = (w << 8) | c->pend[k];
-    c->acc = (uint32_t)(((uint64_t)c->acc + w) % mod);
-    c->acc2 = (uint32_t)(((uint64_t)c->acc2 + c->acc) % mod);
-    c->npend = 0u;
-    memset(c->pend, 0, sizeof c->pend);
+    while (n-- > 0u)
+        w = (w << 8) | q[n];
+    return w;
+}
+
+/* Fletcher over p[0..n): whole words straight from p, a word split between two feeds through
+ * c->pend; the sums grow in 64 bits and are reduced every 4096 words (then s1 < 2^29, s2 < 2^42). */
+static void cbf__fletcher(cbf__ck *c, const uint8_t *p, size_t n)
+{
+    const unsigned wb = c->a->width / 16u;
+    const uint32_t mod = (1u << (c->a->width / 2u)) - 1u;
+    uint64_t s1 = c->acc, s2 = c->acc2;
+    unsigned since = 0;
+    size_t i = 0;
+    while (i < n) {
+        uint32_t w;
+        if (c->npend == 0u && n - i >= wb) {
+            w = cbf__word(p + i, wb);
+            i += wb;
+        } else {
+            c->pend[c->npend++] = p[i++];
+            if (c->npend < wb)
+                continue;
+            w = cbf__word(c->pend, wb);
+            c->npend = 0u;
+        }
+        s1 += w;
+        s2 += s1;
+        if (++since == 4096u) {
+            s1 %= mod;
+            s2 %= mod;
+            since = 0;
+        }
+    }
+    c->acc = (uint32_t)(s1 % mod);
+    c->acc2 = (uint32_t)(s2 % mod);
 }
 
 static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
@@ -79,11 +107,7 @@ static void cbf__ck_feed(cbf__ck *c, const uint8_t *p, size_t n)
         c->acc = r;
         break;
     case CBF__FAMILY_FLETCHER:
-        for (i = 0; i < n; i++) {
-            c->pend[c->npend++] = p[i];
-            if (c->npend == c->a->width / 16u)
-                cbf__fletcher_word(c);
-        }
+        cbf__fletcher(c, p, n);
         break;
     }
 }
@@ -113,10 +137,13 @@ static uint32_t cbf__ck_value(const cbf__ck *c, unsigned width)
         v ^= a->xorout;
         break;
     case CBF__FAMILY_FLETCHER: {
-        cbf__ck tail = *c; /* the pending bytes of a last, short word, padded with zeros */
-        if (tail.npend)
-            cbf__fletcher_word(&tail);
-        v = (tail.acc2 << (a->width / 2u)) | tail.acc;
+        uint32_t s1 = c->acc, s2 = c->acc2;
+        if (c->npend) { /* the pending bytes of a last, short word, padded with zeros */
+            const uint32_t mod = (1u << (a->width / 2u)) - 1u;
+            s1 = (uint32_t)(((uint64_t)s1 + cbf__word(c->pend, c->npend)) % mod);
+            s2 = (uint32_t)(((uint64_t)s2 + s1) % mod);
+        }
+        v = (s2 << (a->width / 2u)) | s1;
         break;
     }
     }
