@@ -40,13 +40,48 @@ static long read_file(const char *path, uint8_t *buf, size_t cap, const char **w
              : errno == EISDIR ? "is a directory" : "cannot open";
         return -1;
     }
+    /* A file larger than cap is refused from its size, unread (-2); where the size cannot be
+     * known that way (a pipe), after cap bytes (issue 36). The first byte first: fopen opens a
+     * directory, whose size means nothing; reading it fails. */
+    {
+        int first = fgetc(fp);
+        if (first == EOF) {
+            int bad = ferror(fp), err = errno;
+            fclose(fp);
+            if (!bad)
+                return 0;
+            *why = err == EISDIR ? "is a directory" : "read error";
+            return -1;
+        }
+        if (fseek(fp, 0L, SEEK_END) == 0) {
+            long end = ftell(fp);
+            if (end > 0 && (unsigned long)end > (unsigned long)cap) {
+                fclose(fp);
+                *why = "file too large";
+                return -2;
+            }
+            if (fseek(fp, 0L, SEEK_SET) != 0) {
+                fclose(fp);
+                *why = "read error";
+                return -1;
+            }
+        } else if (cap > 0) { /* not seekable: the byte read is the first of the input */
+            clearerr(fp);
+            buf[0] = (uint8_t)first;
+            n = 1;
+        } else {
+            fclose(fp);
+            *why = "file too large";
+            return -2;
+        }
+    }
     for (;;) {
         size_t got;
         if (n == cap) {
             int c = fgetc(fp);
             fclose(fp);
             *why = "file too large";
-            return c == EOF ? (long)n : -1;
+            return c == EOF ? (long)n : -2;
         }
         got = fread(buf + n, 1, cap - n, fp);
         n += got;
