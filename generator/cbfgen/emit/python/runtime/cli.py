@@ -11,7 +11,10 @@ target as it was. An output that is a symlink is written through: the temporary
 file goes beside the link's final target and replaces that, the link stays a
 link. A character device or FIFO is written into, never replaced (a block device
 or socket is refused). A standard output that cannot be written (a full disk,
-/dev/full) is one line on stderr and exit 2, for every command.
+/dev/full, a disk that fills part way) is one line on stderr and exit 2, for every
+command: each write is checked (a short one written on), and what this process wrote to a
+regular file on stdout is cut off again. A temporary name fits NAME_MAX whenever the final
+name does.
 """
 
 from __future__ import annotations
