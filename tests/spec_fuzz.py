@@ -286,16 +286,21 @@ def class_mutant(name: str) -> Mutant:
 
 
 # -- running one mutant -----------------------------------------------------------------------------------
-def _cap() -> None:
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
-    os.nice(5)
+def _cap(cpu: int) -> Callable[[], None]:
+    """Caps of a step: address space, and CPU seconds (not wall time: on a loaded machine a nice'd
+    step waits, which is no fault of the spec; a wall-clock cap twenty times longer backs it up)."""
+    def apply() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
+        os.nice(5)
+    return apply
 
 
 def _run(argv: list[str], step: str, env: dict[str, str] | None = None,
          cwd: Path | None = None) -> subprocess.CompletedProcess[str] | None:
     try:
         return subprocess.run(argv, env=env, cwd=cwd or REPO, capture_output=True, text=True, errors="replace",
-                              timeout=TIMEOUT[step], preexec_fn=_cap)
+                              timeout=20 * TIMEOUT[step], preexec_fn=_cap(TIMEOUT[step]))
     except subprocess.TimeoutExpired:
         return None
 
@@ -305,6 +310,10 @@ def _crashed(res: subprocess.CompletedProcess[str] | None) -> str | None:
     if res is None:
         return "timed out"
     if res.returncode < 0:
+        import signal
+
+        if -res.returncode == signal.SIGXCPU:
+            return "over its CPU time cap"
         return f"killed by signal {-res.returncode}"
     for marker in ("Traceback (most recent call last)", "MemoryError", "Segmentation fault", "AddressSanitizer"):
         if marker in res.stderr:
