@@ -206,7 +206,8 @@ def _cut_beyond_binary32(tmp: Path) -> list[Input]:
 def _json_beyond_binary32(tmp: Path) -> list[Input]:
     arg, path = _float_path()
     out = []
-    for name, literal in (("1e400", "1e400"), ("nan", "NaN"), ("inf", "Infinity")):
+    for name, literal in (("1e400", "1e400"), ("nan", "NaN"), ("inf", "Infinity"),
+                          ("huge", "1e1000000000000000000")):  # issue 36: a decimal.InvalidOperation traceback
         doc = _doc()
         doc["records"][FLOAT_REC]["args"][arg] = "@@"
         p = tmp / f"{name}.json"
@@ -344,8 +345,8 @@ INPUTS: dict[str, Callable[[Path], list[Input]]] = {
     "text after the arguments of any CUT keyword (`cbf_record`, `check_sum`, `cbf_field` included)": _trailing_text,
     "a `cbf_version` that is not two numbers 0 to 255 (a 5,000-digit one included)": _long_version,
     "a CUT number beyond the binary32 range (a 310-digit integer)": _cut_beyond_binary32,
-    "a JSON number beyond the binary32 range (`1e400`), `NaN` or `Infinity` (write NaN and infinity as a bit "
-    "pattern)": _json_beyond_binary32,
+    "a JSON number beyond the binary32 range (`1e400`, `1e1000000000000000000`), `NaN` or `Infinity` (write NaN "
+    "and infinity as a bit pattern)": _json_beyond_binary32,
     "a JSON float bit pattern other than `0x` and exactly 8 hex digits": _bad_bit_pattern,
     "a JSON object with a key twice": _key_twice,
     "a string with a byte outside printable ASCII anywhere in the field, after a NUL too (unless "

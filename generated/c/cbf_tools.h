@@ -71,7 +71,7 @@ const char *cbf_tool_why(void);
 
 /* ---- the file layer (files.c) ---- */
 /** Read a whole file into buf; its size, or -1 and *why (as cbf says it: "no such file", ...). A file of
- * more than cap bytes is -1 and "file too large". */
+  * more than cap bytes is -2 and "file too large" (from its size, unread, where it has one). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why);
 /** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
@@ -1750,7 +1750,48 @@ const char *cbf_tool_why(void) { return opt_last_why; }
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
  * testee read files through it; a page or any other host calls the *_buffer entry points instead) ---- */
 
-/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
+/* The first byte of fp first (fopen opens a directory, whose size means nothing; reading it fails), then
+ * its size where it can seek. 0: fp rewound; or, unseekable, that byte in buf[0] and *n = 1; or an empty
+ * file, fp at its end. -1: fp closed and *why ("file too large" when its size is over cap). */
+static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, const char **why)
+{
+    int first = fgetc(fp);
+    long end;
+    if (first == EOF) {
+        int bad = ferror(fp), err = errno;
+        if (!bad)
+            return 0;
+        fclose(fp);
+        *why = err == EISDIR ? "is a directory" : "read error";
+        return -1;
+    }
+    if (fseek(fp, 0L, SEEK_END) != 0) { /* not seekable: the byte read is the first of the input */
+        clearerr(fp);
+        if (cap == 0) {
+            fclose(fp);
+            *why = "file too large";
+            return -1;
+        }
+        buf[0] = (uint8_t)first;
+        *n = 1;
+        return 0;
+    }
+    end = ftell(fp);
+    if (end > 0 && (unsigned long)end > (unsigned long)cap) {
+        fclose(fp);
+        *why = "file too large";
+        return -1;
+    }
+    if (fseek(fp, 0L, SEEK_SET) != 0) {
+        fclose(fp);
+        *why = "read error";
+        return -1;
+    }
+    return 0;
+}
+
+/* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
+ * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
 {
     FILE *fp;
@@ -1763,13 +1804,21 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
              : errno == EISDIR ? "is a directory" : "cannot open";
         return -1;
     }
+    /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
+     * that way (a pipe), after cap bytes (issue 36). */
+    if (cbf_tool_size_first(fp, buf, cap, &n, why) < 0)
+        return strcmp(*why, "file too large") == 0 ? -2 : -1;
+    if (n == 0 && feof(fp)) {
+        fclose(fp);
+        return 0;
+    }
     for (;;) {
         size_t got;
         if (n == cap) {
             int c = fgetc(fp);
             fclose(fp);
             *why = "file too large";
-            return c == EOF ? (long)n : -1;
+            return c == EOF ? (long)n : -2;
         }
         got = fread(buf + n, 1, cap - n, fp);
         n += got;
@@ -1822,7 +1871,7 @@ int cbf_tool_machine_file(const char *path, cbf_options *opt)
     return cbf_tool_machine_buffer(path, opt_file_buf, n, opt);
 }
 /* ==== END tools/files.c ==== */
-#line 1826 "cbf_tools.h"
+#line 1875 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2169,7 +2218,7 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
     return status;
 }
 /* ==== END tools/engine.c ==== */
-#line 2173 "cbf_tools.h"
+#line 2222 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

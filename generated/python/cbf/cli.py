@@ -11,7 +11,10 @@ target as it was. An output that is a symlink is written through: the temporary
 file goes beside the link's final target and replaces that, the link stays a
 link. A character device or FIFO is written into, never replaced (a block device
 or socket is refused). A standard output that cannot be written (a full disk,
-/dev/full) is one line on stderr and exit 2, for every command.
+/dev/full, a disk that fills part way) is one line on stderr and exit 2, for every
+command: each write is checked (a short one written on), and what this process wrote to a
+regular file on stdout is cut off again. A temporary name fits NAME_MAX whenever the final
+name does.
 """
 
 from __future__ import annotations
@@ -72,7 +75,9 @@ def _unreadable(path: str, exc: OSError) -> _Fail:
 
 
 def _too_big(path: str, limit: int) -> _Fail:
-    return _Fail(f"{path}: larger than {limit} bytes, the most a CBF file (or its text) can hold")
+    """The one line for input over its limit (cbf-c says the same for a CBF file, from its size, unread)."""
+    what = "a CBF file" if limit == _max_file_size() else "the text of a CBF file"
+    return _Fail(f"{path}: larger than {limit} bytes, the most {what} can hold")
 
 
 def _read(path: str, limit: int) -> bytes:
@@ -172,18 +177,44 @@ def _check_output(path: str) -> None:
 
 
 def _write_all(fd: int, data: bytes, sync: bool = True) -> None:
+    """Write every byte of ``data`` to ``fd``, or raise: a short write is written on from where it
+    stopped, and a write that takes nothing is an error (a full disk) rather than a short output.
+    (BufferedWriter.write returns a short count without raising: 51,200 bytes of 1.4 MB, exit 0.)"""
     view = memoryview(data)
     while view:
         n = os.write(fd, view[:_CHUNK])
+        if n <= 0:
+            import errno
+
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
         view = view[n:]
     if sync:
         os.fsync(fd)
 
 
+def _name_max(folder: Path) -> int:
+    """The longest file name (in bytes) the folder's file system takes."""
+    try:
+        return int(os.pathconf(folder, "PC_NAME_MAX"))
+    except (OSError, ValueError):
+        return 255
+
+
+def _temp_prefix(target: Path, extra: int) -> str:
+    """``.NAME.`` for a temporary file beside ``target``, NAME cut so that the prefix and ``extra``
+    more bytes fit NAME_MAX whenever the target's own name does (a 244-byte name was refused)."""
+    name = os.fsencode(target.name)
+    room = _name_max(target.parent) - extra - 2  # the two dots
+    if len(name) > room:
+        name = name[:max(room, 1)]
+    return f".{os.fsdecode(name)}."
+
+
 def _temp_name(target: Path) -> Path:
     import secrets  # here, not at the top: a command that writes nothing starts faster without it
 
-    return target.parent / f".{target.name}.{secrets.token_hex(6)}.tmp"
+    rand = secrets.token_hex(6)
+    return target.parent / f"{_temp_prefix(target, len(rand) + 4)}{rand}.tmp"
 
 
 def _ordinary_mode() -> int:
@@ -229,7 +260,7 @@ def _write_unnamed(target: Path, data: bytes, mode: int) -> bool:
 def _write_named(target: Path, data: bytes, mode: int) -> None:
     import tempfile  # here, not at the top (with shutil, random): a command that writes nothing starts faster
 
-    fd, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+    fd, name = tempfile.mkstemp(dir=target.parent, prefix=_temp_prefix(target, 8 + 4), suffix=".tmp")
     try:
         os.fchmod(fd, mode)  # mkstemp makes 0600
         try:
@@ -242,24 +273,90 @@ def _write_named(target: Path, data: bytes, mode: int) -> None:
         raise
 
 
-def _out(text: str) -> None:
-    """Print to stdout; a stdout that cannot be written is one line on stderr and exit 2."""
+# Standard output: every command's output goes through _out (text) or _write_stdout (bytes), which
+# write through _write_all to file descriptor 1 (each write checked, a short one continued), text
+# gathered to _CHUNK bytes first. A stdout that fails is one line on stderr and exit 2, and what this
+# process had written to a regular file there is cut off again: nothing that looks complete stays.
+_PENDING: list[bytes] = []
+_STDOUT_START: list[int] = []  # where this process began writing a regular file on stdout
+
+
+def _stdout_fd() -> int | None:
+    """Standard output's file descriptor, or None when it is no file (a test's capture)."""
     try:
-        sys.stdout.write(text)
+        return sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):
+        return None
+
+
+def _stdout_failed(fd: int, exc: OSError) -> _StdoutFailed:
+    if _STDOUT_START:
+        try:
+            os.ftruncate(fd, _STDOUT_START[0])  # the part written must not pass for the whole
+        except OSError:
+            pass
+    return _StdoutFailed(exc)
+
+
+def _write_fd1(fd: int, data: bytes) -> None:
+    if not _STDOUT_START:
+        try:
+            start = os.lseek(fd, 0, os.SEEK_CUR) if stat.S_ISREG(os.fstat(fd).st_mode) else -1
+        except OSError:
+            start = -1
+        _STDOUT_START.append(start)
+        if start < 0:
+            _STDOUT_START.clear()
+            _STDOUT_START.append(-1)
+    try:
+        sys.stdout.flush()  # anything printed another way goes first
+        _write_all(fd, data, sync=False)
     except BrokenPipeError:
         raise
     except OSError as exc:
-        raise _StdoutFailed(exc) from None
+        if _STDOUT_START[0] < 0:
+            raise _StdoutFailed(exc) from None
+        raise _stdout_failed(fd, exc) from None
+
+
+def _flush_out() -> None:
+    fd = _stdout_fd()
+    if not _PENDING or fd is None:
+        return
+    data = b"".join(_PENDING)
+    _PENDING.clear()
+    _write_fd1(fd, data)
+
+
+def _out(text: str) -> None:
+    """Print to stdout; a stdout that cannot be written is one line on stderr and exit 2."""
+    fd = _stdout_fd()
+    if fd is None:
+        try:
+            sys.stdout.write(text)
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise _StdoutFailed(exc) from None
+        return
+    _PENDING.append(text.encode(sys.stdout.encoding or "utf-8", sys.stdout.errors or "strict"))
+    if len(_PENDING) > 256 or len(text) >= _CHUNK:
+        _flush_out()
 
 
 def _write_stdout(data: bytes) -> None:
-    try:
-        sys.stdout.buffer.write(data)
-        sys.stdout.buffer.flush()
-    except BrokenPipeError:
-        raise
-    except OSError as exc:
-        raise _StdoutFailed(exc) from None
+    fd = _stdout_fd()
+    if fd is None:
+        try:
+            sys.stdout.buffer.write(data)
+            sys.stdout.buffer.flush()
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise _StdoutFailed(exc) from None
+        return
+    _flush_out()
+    _write_fd1(fd, data)
 
 
 def _write(path: str, data: bytes) -> None:
@@ -683,8 +780,11 @@ def _peek(path: str) -> bytes:
         raise _unreadable(path, exc) from None
 
 
-def _load_any(path: str) -> Any:
-    """A CBF file, or CUT / canonical JSON text, as a model: text when the first bytes are text."""
+def _load_any(path: str, fill_profile: str | None = None) -> Any:
+    """A CBF file, or CUT / canonical JSON text, as a model: text when the first bytes are text.
+    ``fill_profile``: CUT text stores no sequence numbers, count or checksums, so the encoder fills
+    them under this profile (the model of the file ``cbf encode`` would write), to be judged as a
+    file's are."""
     from .errors import CbfError
 
     if path == "-":
@@ -714,8 +814,19 @@ def _load_any(path: str) -> Any:
                 raise _Fail(f"{path}: not JSON the codec reads ({type(exc).__name__})") from None
         from .cut import from_cut
 
-        return from_cut(text)
+        model = from_cut(text)
+        if fill_profile is None:
+            return model
+        from . import tables as T
+        from .codec import decode, pack_file
+
+        if not T.VERSION_BY_ID[model.version_id].writable:
+            raise _Fail(f"{path}: CUT text of version {model.version_id}, which this toolkit reads but does not "
+                        f"write: the stored fields cannot be filled to be judged; convert its CBF file")
+        return decode(pack_file(model, profile=fill_profile))
     except CbfError as exc:
+        raise _Fail(f"{path}: {exc}") from None
+    except (ValueError, OverflowError) as exc:  # packing: a value no field holds
         raise _Fail(f"{path}: {exc}") from None
 
 
@@ -768,7 +879,7 @@ def cmd_convert(a: argparse.Namespace) -> int:
         if name in fill:
             raise _Fail(f"--fill {name}: given twice")
         fill[name] = value
-    model = _load_any(a.file)
+    model = _load_any(a.file, fill_profile=a.profile)  # CUT input: its checksums are the encoder's to fill
     _clean(a.file, model, a.profile)
     try:
         conv = convert(model, a.to_version, chord_tol=a.chord_tol, fill=fill, profile=a.profile)
@@ -777,11 +888,14 @@ def cmd_convert(a: argparse.Namespace) -> int:
         raise _Fail(f"{a.file}: {exc}") from None
     _write(a.output, out)
     _warn_deprecated(a.output, out)
-    report = sys.stderr if a.output == "-" else sys.stdout
-    report.write(f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
-                 f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "
-                 f"{conv.segments} line segment(s), largest deviation {conv.max_deviation:.6f} mm "
-                 f"(tolerance {conv.chord_tol} mm)\n")
+    line = (f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
+            f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "
+            f"{conv.segments} line segment(s), largest deviation {conv.max_deviation:.6f} mm "
+            f"(tolerance {conv.chord_tol} mm)\n")
+    if a.output == "-":
+        sys.stderr.write(line)
+    else:
+        _out(line)
     return EXIT_OK
 
 
@@ -791,9 +905,9 @@ def cmd_stats(a: argparse.Namespace) -> int:
     model = _load_any(a.file)
     s = stats(model)
     if a.json:
-        sys.stdout.write(json.dumps({"file": a.file, **s.as_dict()}, indent=1) + "\n")
+        _out(json.dumps({"file": a.file, **s.as_dict()}, indent=1) + "\n")
     else:
-        sys.stdout.write(render(s, a.file))
+        _out(render(s, a.file))
     return EXIT_OK
 
 
@@ -817,9 +931,9 @@ def cmd_diff(a: argparse.Namespace) -> int:
     tol = T.TOL["position_mm"] if a.tol is None else a.tol
     d = semdiff.diff(ma, mb, tol, progress)
     if a.json:
-        sys.stdout.write(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
+        _out(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
     else:
-        sys.stdout.write(semdiff.render(d, ma, mb, a.a, a.b))
+        _out(semdiff.render(d, ma, mb, a.a, a.b))
     return EXIT_OK if d.equal else EXIT_FINDINGS
 
 
@@ -949,6 +1063,7 @@ def parser() -> argparse.ArgumentParser:
 
 
 def _flush_stdout() -> None:
+    _flush_out()
     try:
         sys.stdout.flush()
     except BrokenPipeError:
@@ -1046,6 +1161,8 @@ def cmd_hexdump(a: argparse.Namespace) -> int:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    _PENDING.clear()
+    _STDOUT_START.clear()
     try:
         try:
             args = parser().parse_args(argv)
@@ -1054,11 +1171,12 @@ def main(argv: Sequence[str] | None = None) -> int:
             code = exc.code if isinstance(exc.code, int) else EXIT_OK if exc.code is None else EXIT_USAGE
         _flush_stdout()
         return code
-    except _Fail as exc:
-        sys.stderr.write(f"cbf: {exc.message}\n")
-        return EXIT_USAGE
-    except _Usage as exc:
-        sys.stderr.write(f"{exc.message}\n")
+    except (_Fail, _Usage) as exc:
+        try:
+            _flush_out()  # what was printed before the failure (a batch's earlier files)
+        except _StdoutFailed:
+            _drop_stdout()
+        sys.stderr.write(f"cbf: {exc.message}\n" if isinstance(exc, _Fail) else f"{exc.message}\n")
         return EXIT_USAGE
     except _StdoutFailed as exc:
         _drop_stdout()

@@ -78,11 +78,28 @@ def _rounding(points: Sequence[G.Vec]) -> float:
 
 
 def analytic_segments(angle: float, radius: float, tol: float) -> int:
-    """The fewest chords of a circular arc of ``radius`` turning ``angle`` (rad) within ``tol``."""
+    """The fewest chords of a circular arc of ``radius`` turning ``angle`` (rad) within ``tol``.
+
+    Raises ConvertError, before any division by it, when the count cannot be computed: a chord
+    step that rounds to nothing (a radius so large, or a tolerance so small, that tol / radius
+    vanishes) or a count beyond any number (issue 36: an ARC of radius 1e14 mm was a
+    ZeroDivisionError)."""
+    if not (math.isfinite(angle) and math.isfinite(radius) and math.isfinite(tol)) or tol <= 0.0:
+        raise ConvertError(f"has no computable segment count (angle {angle:g} rad, radius {radius:g} mm, "
+                           f"tolerance {tol:g} mm)")
     if angle <= 0.0 or radius <= 0.0:
         return 1
-    x = 1.0 - tol / radius
-    step = 2.0 * math.pi if x <= -1.0 else 2.0 * math.acos(x)
+    u = tol / radius
+    x = 1.0 - u
+    if x <= -1.0:
+        step = 2.0 * math.pi
+    elif x < 1.0:
+        step = 2.0 * math.acos(x)
+    else:  # u below the double's resolution at 1: acos(1 - u) = 2 asin(sqrt(u / 2)), which keeps it
+        step = 4.0 * math.asin(math.sqrt(u / 2.0))
+    if not (step > 0.0 and math.isfinite(angle / step)):
+        raise ConvertError(f"has no computable segment count: a radius of {radius:g} mm leaves no chord step "
+                           f"within {tol:g} mm")
     return max(1, math.ceil(angle / step - 1e-12))
 
 
@@ -224,7 +241,10 @@ def linearise(curve: G.Curve, tol: float, exact_end: bool) -> tuple[list[G.Vec],
     # the rounding's share of the deviation at n_lo, as measured: the chord formula for the
     # tolerance less that share is the guess, an upper bracket; then bisect
     share = first[1] - curve.radius * (1.0 - math.cos(curve.angle / (2.0 * n_lo)))
-    guess = analytic_segments(curve.angle, curve.radius, tol - share) if share < tol else limit
+    try:
+        guess = analytic_segments(curve.angle, curve.radius, tol - share) if share < tol else limit
+    except ConvertError:  # no count for what is left of the tolerance: the field's largest is the bracket
+        guess = limit
     lo, hi = n_lo, min(max(guess, n_lo + 1), limit)  # lo fails; hi is to be measured
     step = max(1, hi - lo)
     while True:  # the upper bracket: the guess, then farther by doubling steps

@@ -1,8 +1,9 @@
 """binary32 and decimal text, both ways, each rounding exactly once.
 
 ``format_float`` writes a binary32 with the fewest significant digits whose text
-reads back as the same bits; ``parse_float`` reads decimal text (or a JSON number)
-as the binary32 nearest its exact value, ties to even. Reading goes through the
+reads back as the same bits; ``read_decimal`` reads decimal text (CUT's and JSON's numbers alike:
+the one reader) as the binary32 nearest its exact value, ties to even, the sign of zero kept,
+the exponent bounded before any arithmetic. Reading goes through the
 nearest double first (Python's ``float`` rounds correctly) and takes the decimal
 path only when that double lies exactly halfway between two binary32 values: only
 there can rounding twice differ from rounding once (issue 13, item 6). Both
@@ -12,6 +13,7 @@ functions are proven over all 2^32 bit patterns by ``make floats-exhaustive``.
 from __future__ import annotations
 
 import math
+import re
 import struct
 from decimal import Decimal
 from functools import lru_cache
@@ -75,9 +77,52 @@ def _nearest(d: float, exact: str | int | Decimal | None) -> int:
     return int(_I.unpack(_F.pack(g))[0])
 
 
-def parse_float(text: str) -> int:
-    """Bits of the binary32 nearest a decimal numeral (the caller checks its syntax)."""
+# A decimal numeral: an optional sign, digits with an optional point (or a point and digits), an
+# optional exponent. Python's float() also takes "inf", "nan", "1_0", spaces and non-ASCII digits:
+# none of them is decimal text, and none reaches it.
+_NUMERAL = re.compile(r"([+-]?)(?:(\d+)(?:\.(\d*))?|\.(\d+))(?:[eE]([+-]?\d+))?", re.ASCII)
+_EXP_DIGITS = 6  # an exponent of more digits (leading zeros aside) is beyond any binary32 either way
+_ABOVE = 38  # a leading digit at 10^39 or above: at least 1e39, beyond FLT_MAX (3.4e38)
+_BELOW = -46  # a value below 10^-46 lies under half the smallest subnormal (7.0e-46): a signed zero
+
+
+class NotDecimal(ValueError):
+    """Text that is not a decimal numeral."""
+
+
+def read_decimal(text: str) -> int:
+    """Bits of the binary32 nearest a decimal numeral: THE reader of decimal text (CUT and JSON).
+
+    The sign of zero is kept (``-0`` and ``-0.0e5`` are 0x80000000); the exponent is bounded
+    before any arithmetic (``1e1000000000000000000`` is beyond the range at once, ``1e-999999999``
+    a signed zero), so no text costs more than reading it; a value no finite binary32 holds raises
+    OutOfRange, text that is not a numeral NotDecimal."""
+    m = _NUMERAL.fullmatch(text)
+    if m is None:
+        raise NotDecimal("is not a decimal number")
+    sign, whole, frac, only_frac, exp = m.groups()
+    digits = (whole or "") + (frac or only_frac or "")
+    lead = len(digits) - len(digits.lstrip("0"))
+    if lead == len(digits):  # every digit zero: a zero of the sign written
+        return _SIGN if sign == "-" else 0
+    e_text = (exp or "0").lstrip("+-").lstrip("0")
+    if len(e_text) > _EXP_DIGITS:
+        if exp is not None and exp.startswith("-"):
+            return _SIGN if sign == "-" else 0
+        raise OutOfRange("is outside the binary32 range")
+    e = int(e_text or "0") * (-1 if exp is not None and exp.startswith("-") else 1)
+    point = len(whole or "")  # digits before the point
+    top = e + point - lead - 1  # the power of ten of the leading non-zero digit
+    if top > _ABOVE:
+        raise OutOfRange("is outside the binary32 range")
+    if top < _BELOW:
+        return _SIGN if sign == "-" else 0
     return _nearest(float(text), text)
+
+
+def parse_float(text: str) -> int:
+    """Bits of the binary32 nearest a decimal numeral: ``read_decimal`` (kept for its callers)."""
+    return read_decimal(text)
 
 
 def float_bits(value: int | float | Decimal) -> int:
@@ -93,7 +138,7 @@ def float_bits(value: int | float | Decimal) -> int:
 
 def _reads_back(text: str, bits: int) -> bool:
     try:
-        return parse_float(text) == bits
+        return read_decimal(text) == bits
     except OutOfRange:  # e.g. 3.403e+38 for 3.40250016e38: no shorter text holds it
         return False
 
@@ -199,12 +244,20 @@ def format_floats(bits: Any) -> list[str]:
 
 def parse_floats(texts: list[str]) -> tuple[Any, list[int]]:
     """``parse_float`` of each decimal numeral (syntax checked by the caller), vectorised: the
-    bits as a numpy uint32 array, and the indices of the texts parse_float refuses (OutOfRange;
-    their bits are 0). The double nearest each text is rounded to binary32 by numpy (ties to
+    bits as a numpy uint32 array, and the indices of the texts read_decimal refuses (OutOfRange,
+    NotDecimal; their bits are 0). The double nearest each text is rounded to binary32 by numpy (ties to
     even, as struct does); where it lies exactly halfway, or beyond the range, parse_float decides."""
     import numpy as np
 
-    d = np.fromiter(map(float, texts), dtype=np.float64, count=len(texts))
+    # float() takes more than decimal numerals ("inf", "1_0", spaces): texts of other characters,
+    # or that float() refuses, are read one by one by read_decimal, which refuses them
+    strange = bool("".join(texts).encode("ascii", "replace").translate(None, b"0123456789.eE+-"))
+    try:
+        d = np.fromiter(map(float, texts), dtype=np.float64, count=len(texts)) if not strange else None
+    except ValueError:
+        d = None
+    if d is None:
+        return _parse_floats_one_by_one(texts)
     with np.errstate(over="ignore", invalid="ignore"):
         f = d.astype(np.float32)
         fd = f.astype(np.float64)
@@ -215,8 +268,21 @@ def parse_floats(texts: list[str]) -> tuple[Any, list[int]]:
     bad: list[int] = []
     for k in np.flatnonzero(unsure).tolist():
         try:
-            bits[k] = parse_float(texts[k])
-        except OutOfRange:
+            bits[k] = read_decimal(texts[k])
+        except (OutOfRange, NotDecimal):
             bits[k] = 0
+            bad.append(k)
+    return bits, bad
+
+
+def _parse_floats_one_by_one(texts: list[str]) -> tuple[Any, list[int]]:
+    import numpy as np
+
+    bits = np.zeros(len(texts), dtype=np.uint32)
+    bad: list[int] = []
+    for k, text in enumerate(texts):
+        try:
+            bits[k] = read_decimal(text)
+        except (OutOfRange, NotDecimal):
             bad.append(k)
     return bits, bad

@@ -49,10 +49,13 @@ static long parse_count(const char *s)
 static long read_cbf(const char *path)
 {
     const char *why;
-    long n = cbf_tool_read_file(path, file_buf, sizeof file_buf, &why);
-    if (n < 0)
+    long n = cbf_tool_read_file(path, file_buf, CBF_TOOL_MAX_FILE_SIZE, &why);
+    if (n == -2) /* larger than a CBF file can be: from its size, unread (cbf's words) */
+        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", cbf_tool_name(path),
+                (unsigned long)CBF_TOOL_MAX_FILE_SIZE);
+    else if (n < 0)
         fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), why);
-    return n;
+    return n < 0 ? -1 : n;
 }
 
 /* The options in argv[0..argc) that take a value: their names. */

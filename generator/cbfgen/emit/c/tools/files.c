@@ -1,7 +1,48 @@
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
  * testee read files through it; a page or any other host calls the *_buffer entry points instead) ---- */
 
-/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
+/* The first byte of fp first (fopen opens a directory, whose size means nothing; reading it fails), then
+ * its size where it can seek. 0: fp rewound; or, unseekable, that byte in buf[0] and *n = 1; or an empty
+ * file, fp at its end. -1: fp closed and *why ("file too large" when its size is over cap). */
+static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, const char **why)
+{
+    int first = fgetc(fp);
+    long end;
+    if (first == EOF) {
+        int bad = ferror(fp), err = errno;
+        if (!bad)
+            return 0;
+        fclose(fp);
+        *why = err == EISDIR ? "is a directory" : "read error";
+        return -1;
+    }
+    if (fseek(fp, 0L, SEEK_END) != 0) { /* not seekable: the byte read is the first of the input */
+        clearerr(fp);
+        if (cap == 0) {
+            fclose(fp);
+            *why = "file too large";
+            return -1;
+        }
+        buf[0] = (uint8_t)first;
+        *n = 1;
+        return 0;
+    }
+    end = ftell(fp);
+    if (end > 0 && (unsigned long)end > (unsigned long)cap) {
+        fclose(fp);
+        *why = "file too large";
+        return -1;
+    }
+    if (fseek(fp, 0L, SEEK_SET) != 0) {
+        fclose(fp);
+        *why = "read error";
+        return -1;
+    }
+    return 0;
+}
+
+/* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
+ * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
 {
     FILE *fp;
@@ -14,13 +55,21 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
              : errno == EISDIR ? "is a directory" : "cannot open";
         return -1;
     }
+    /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
+     * that way (a pipe), after cap bytes (issue 36). */
+    if (cbf_tool_size_first(fp, buf, cap, &n, why) < 0)
+        return strcmp(*why, "file too large") == 0 ? -2 : -1;
+    if (n == 0 && feof(fp)) {
+        fclose(fp);
+        return 0;
+    }
     for (;;) {
         size_t got;
         if (n == cap) {
             int c = fgetc(fp);
             fclose(fp);
             *why = "file too large";
-            return c == EOF ? (long)n : -1;
+            return c == EOF ? (long)n : -2;
         }
         got = fread(buf + n, 1, cap - n, fp);
         n += got;

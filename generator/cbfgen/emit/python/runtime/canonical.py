@@ -1,9 +1,11 @@
 """Canonical JSON (conformance/PROTOCOL.md) in both directions, float bits exact.
 
 ``loads`` reads JSON text so that nothing silently changes meaning (issue 13): a
-duplicate key is refused with its JSON path, numbers stay exact (a fraction or a
-long integer as a Decimal, so decimal text rounds to binary32 once), and NaN and
-Infinity reach the model's checks, which refuse them with their path.
+duplicate key is refused with its JSON path, numbers stay text (a fraction, ``-0``
+or a long integer as a Numeral: no arithmetic on an exponent of any size before it is
+bounded), read into a float by floats.read_decimal, the reader CUT's numbers go through
+too (issue 36: ``-0`` is -0.0 from both), and NaN and Infinity reach the model's checks,
+which refuse them with their path.
 """
 
 from __future__ import annotations
@@ -12,29 +14,39 @@ import json
 import math
 import re
 import struct
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from decimal import Decimal
 from typing import Any
 
 from . import tables as T
 from .errors import JsonShapeError
-from .floats import OutOfRange
+from .floats import NotDecimal, OutOfRange, read_decimal
 from .floats import float_bits as _nearest_bits
 from .model import Cbf, Record
 
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
 _PATTERN = re.compile(r"0x[0-9a-fA-F]{8}", re.ASCII)  # a float's bit pattern: 0x and exactly 8 hex digits
-_INT_DIGITS = 20  # longer integers stay Decimal: int() refuses 4301+ digits, and no field needs 21
+_INT_DIGITS = 20  # longer integers stay text: int() refuses 4301+ digits, and no field needs 21
 _SHOW = 40
+
+
+@dataclass(frozen=True, slots=True)
+class Numeral:
+    """A JSON number kept as its text: a fraction, an exponent, -0, a long integer, NaN or Infinity."""
+
+    text: str
+
+    def __str__(self) -> str:
+        return self.text
 
 
 def _show(value: Any) -> str:
     """A value for a message: its JSON-like text, cut short when long."""
-    text = str(value) if isinstance(value, Decimal) else repr(value)
+    text = str(value) if isinstance(value, (Decimal, Numeral)) else repr(value)
     if len(text) <= _SHOW:
         return text
-    digits = isinstance(value, Decimal) and text.lstrip("-").isdigit()
+    digits = isinstance(value, (Decimal, Numeral)) and text.lstrip("-").isdigit()
     return f"{text[:_SHOW]}... ({len(text)} {'digits' if digits else 'characters'})"
 
 
@@ -58,8 +70,14 @@ def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
     return marked
 
 
-def _int(text: str) -> int | Decimal:
-    return int(text) if len(text.lstrip("-")) <= _INT_DIGITS else Decimal(text)
+def _int(text: str) -> int | Numeral:
+    """A JSON integer: an int, but -0 (a float's sign) and one longer than any field as text."""
+    return int(text) if len(text.lstrip("-")) <= _INT_DIGITS and text != "-0" else Numeral(text)
+
+
+def _integer(value: Any) -> Any:
+    """An integer field's value: the JSON integer -0 is 0 there (its sign means something to a float only)."""
+    return 0 if isinstance(value, Numeral) and value.text == "-0" else value
 
 
 def _find_duplicate(doc: Any) -> tuple[str, str] | None:
@@ -81,7 +99,7 @@ def loads(text: str) -> Any:
 
     Raises json.JSONDecodeError (and RecursionError, ValueError) as ``json.loads``
     does, and JsonShapeError naming the path of a duplicate key."""
-    doc = json.loads(text, parse_float=Decimal, parse_int=_int, parse_constant=Decimal,
+    doc = json.loads(text, parse_float=Numeral, parse_int=_int, parse_constant=Numeral,
                      object_pairs_hook=_pairs)
     found = _find_duplicate(doc)
     if found is not None:
@@ -103,11 +121,15 @@ def float_bits(value: Any, where: str) -> int:
         if _PATTERN.fullmatch(value):
             return int(value[2:], 16)
         raise JsonShapeError(f"{where}: {_show(value)} is neither a number nor a bit pattern (0x and 8 hex digits)")
-    if isinstance(value, bool) or not isinstance(value, (int, float, Decimal)):
+    if isinstance(value, bool) or not isinstance(value, (int, float, Decimal, Numeral)):
         raise JsonShapeError(f"{where}: expected a float, got {type(value).__name__}")
     try:
-        return _nearest_bits(value)
-    except OutOfRange as exc:
+        if isinstance(value, Numeral):  # JSON text: the reader of CUT's numbers too
+            return read_decimal(value.text)
+        if isinstance(value, int):
+            return read_decimal(str(value))
+        return _nearest_bits(value)  # a float (the double it is) or a Decimal given by a caller
+    except (OutOfRange, NotDecimal) as exc:
         raise JsonShapeError(f"{where}: {_show(value)} {exc} (NaN and infinity are written as "
                              f"their bit pattern: 0x and 8 hex digits)") from None
 
@@ -182,6 +204,7 @@ def _hex(value: Any, where: str, size: int | None = None) -> bytes:
 
 
 def _uint(value: Any, where: str, size: int) -> int:
+    value = _integer(value)
     if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 1 << (8 * size):
         raise JsonShapeError(f"{where}: expected an unsigned {8 * size}-bit integer, got {_show(value)}")
     return int(value)
@@ -220,6 +243,7 @@ def _pack_json(fields: tuple[T.FieldInfo, ...], st: struct.Struct, obj: dict[str
         elif f.kind == "uint":
             vals.append(_uint(v, w, f.elem_size))
         elif f.is_int:  # signed
+            v = _integer(v)
             if isinstance(v, bool) or not isinstance(v, int) or not f.holds(v):
                 raise JsonShapeError(f"{w}: expected {f.int_name}, got {_show(v)}")
             vals.append(int(v))
@@ -243,7 +267,7 @@ def _items_fit(lay: T.LayoutInfo, args: dict[str, Any]) -> bool:
 
 def _obj(value: Any, where: str) -> dict[str, Any]:
     if not isinstance(value, dict):
-        got = f"the number {_show(value)}" if isinstance(value, Decimal) else type(value).__name__
+        got = f"the number {_show(value)}" if isinstance(value, (Decimal, Numeral)) else type(value).__name__
         raise JsonShapeError(f"{where}: expected an object, got {got}")
     return value
 

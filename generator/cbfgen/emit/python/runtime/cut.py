@@ -13,7 +13,7 @@ lone CR, U+2028, ...) is refused with its line and column; a header line
 (``header``, ``header_ext``, ``check_sum``, ``cbf_version``, ``cbf_field`` of
 one field, or two of them that set the same field) given twice is refused,
 even when both say the same; every keyword refuses text after its arguments;
-decimal text rounds to binary32 once (``floats.parse_float``) and a number
+decimal text rounds to binary32 once (``floats.read_decimal``, JSON's reader too) and a number
 beyond the binary32 range is refused.
 """
 
@@ -30,7 +30,7 @@ from typing import Any
 
 from . import tables as T
 from .errors import CutSyntaxError
-from .floats import OutOfRange, finite, format_float, parse_float
+from .floats import NotDecimal, OutOfRange, finite, format_float, read_decimal
 from .model import Cbf, PackedRecords, Record
 
 C = T.CUT
@@ -337,8 +337,8 @@ class _Cursor:
             raise self.fail(f"{label}{_show(got[0])} is not a number" if got else f"{label}a number is missing")
         self.pos = m.end()
         try:
-            return parse_float(m.group(0))
-        except OutOfRange as exc:
+            return read_decimal(m.group(0))
+        except (OutOfRange, NotDecimal) as exc:
             raise self.fail(f"{name}: {_show(m.group(0))} {exc}") from None
 
     def rest(self) -> str:
