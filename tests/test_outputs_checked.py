@@ -55,6 +55,7 @@ def _commands(src: Path, cut: Path, out: str) -> dict[str, list[tuple[str, ...]]
         "diff": [("diff", str(src), str(src)), ("diff", str(src), str(SMALL)),
                  ("diff", "--json", str(src), str(SMALL))],
         "plot": [("plot", str(src), "--format", "svg", "-o", out)],
+        "hexdump": [("hexdump", str(src))],
     }
 
 
