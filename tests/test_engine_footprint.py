@@ -63,7 +63,7 @@ def test_decode_validate_peak_of_every_layout_is_within_the_bench_bound() -> Non
 STARTUP_CBF = {"cbf", "cbf.cli", "cbf.errors", "cbf.optfiles", "cbf.tables", "cbf.version"}
 # Standard-library modules beyond a bare interpreter's (argparse, json, dataclasses, pathlib and what
 # they import: 36 on Python 3.11). A new one needs a reason: most belong where they are used.
-STARTUP_STDLIB_MAX = 40
+STARTUP_STDLIB_MAX = 50  # measured in a venv without an editable finder (bench/NOTES.md, "Start-up imports")
 
 _SNAPSHOT = """
 import json, sys

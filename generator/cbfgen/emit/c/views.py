@@ -601,7 +601,8 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
             id=ch.id, macro=macro(ch.id), kind="KIND_" + macro(ch.kind), kind_name=ch.kind, severity=ch.severity,
             error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
             n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(0.0 if ch.min is None else ch.min),
-            has_max=int(ch.max is not None), max=cfloat(0.0 if ch.max is None else ch.max), min_open=int(ch.min_exclusive),
+            has_max=int(ch.max is not None), max=cfloat(0.0 if ch.max is None else ch.max),
+            min_open=int(ch.min_exclusive),
             max_open=int(ch.max_exclusive), text=ch.text,
             fails=ch.fails, clause=ch.clause or "", decision=ch.decision or ""))
         targets.extend((cmd_index[t.command], ci, f"{t.command} {' '.join(t.args)}", tuple(t.args))

@@ -1148,6 +1148,7 @@ def cmd_hexdump(a: argparse.Namespace) -> int:
     from .validation import validate
 
     data = _read(a.file, _max_file_size())
+    _refuse_not_cbf(a.file, data)  # as validate: exit 2, one line, for input that is not a CBF file
     marks: list[hexdump.Mark] = []
     if not a.no_findings:
         for f in validate(data, profile=a.profile):
