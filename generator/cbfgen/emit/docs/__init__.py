@@ -43,9 +43,12 @@ def _anchor(text: str) -> str:
     return ident(text).replace("_", "-")
 
 
+COMMANDS = "commands"  # the folder of the command pages
+
+
 def command_page(c: Command) -> str:
     """The page of a command, relative to the docs folder."""
-    return f"commands/{_anchor(c.name)}.md"
+    return f"{COMMANDS}/{_anchor(c.name)}.md"
 
 
 def layout_svg(lay: Layout) -> str:

@@ -13,9 +13,17 @@ A canary page that logs one console error is loaded first: the check fails
 if that message is not seen, so a silent browser cannot pass it. The site
 must also be self-contained (site_links.problems: every link and anchor
 resolves, none leaves the site). The search page is then asked for a
-check id and a command name and must list a result for each. Screenshots at
-1280 px of the index and of one command page are written to --out; --shots
-writes 390 px screenshots of the index and one golden case too.
+check id and a command name and must list a result for each. The reader's
+findings of issue 34 are measured too (reader.py): on every page at each
+width the docs' figures keep readable text and the sidebar spans the page;
+the reference page's first screen at 390 px shows its title and content, not
+its frame; the search lists snippets with the matched words marked, groups
+its results by kind and lists a section first when its title is searched
+(for every section, titled clause and heading of the document). Screenshots
+at 1280 px of the index and of one command page, and the reader's screenshots
+(reader-*.png: the first screen, a figure and the search at 390 px, the
+page's foot and the search at 1280 px), are written to --out; --shots writes
+390 px screenshots of the index and one golden case too.
 
     python -m cbfgen.emit.docs.browser --site build/docs-html --out build/docs-check
 """
@@ -25,13 +33,14 @@ from __future__ import annotations
 import argparse
 import shutil
 import sys
+from collections.abc import Mapping
 from pathlib import Path
 from urllib.parse import quote
 
 from ...loader import load
-from . import CUT_PAGE, FIELD_INDEX, GALLERY, GOLDEN_INDEX, command_page, site_links
+from . import CUT_PAGE, FIELD_INDEX, GALLERY, GOLDEN_INDEX, command_page, reader, site_links
 from .cdp import Browser, CdpError
-from .site import SEARCH_PAGE
+from .site import SEARCH_PAGE, search_documents
 
 WIDTHS = (1280, 390)
 HEIGHT = 900
@@ -81,6 +90,7 @@ def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTH
             problems.append(f"{rel} @{width}px: horizontal overflow ({probe['scroll']} px wide in "
                             f"{probe['client']} px)")
         problems += [f"{rel} @{width}px: image not loaded: {src}" for src in probe["broken"]]
+        problems += reader.layout_problems(rel, width, json.loads(b.evaluate(reader.LAYOUT_PROBE)))
     problems += [f"{rel}: console: {line}" for line in b.console(since)]
     return problems
 
@@ -102,16 +112,38 @@ def check_search(b: Browser, site: Path, queries: list[str]) -> list[str]:
     return problems
 
 
-def shoot(b: Browser, page: Path, png: Path, width: int, height: int) -> None:
+def shoot(b: Browser, page: Path, png: Path, width: int, height: int, then: str = "") -> None:
+    """A screenshot of page at width x height (loaded at width x HEIGHT); then: a script run before it."""
     b.open(page.resolve().as_uri(), width, HEIGHT)
     b.page("Emulation.setDeviceMetricsOverride",
            {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    if then:
+        b.evaluate(then)
     b.screenshot(png)
     print(f"docs-check: screenshot {png}")
 
 
+def reader_shots(b: Browser, site: Path, out: Path, query: str) -> None:
+    """What the reader of issue 34 saw, as screenshots in out: the reference page's first screen at 390 px,
+    its first figure at 390 px, its foot at 1280 px (the sidebar beside it), the search for query at both."""
+    narrow, tall = reader.NARROW
+    index = site / "index.html"
+    shoot(b, index, out / f"reader-index-first-screen-{narrow}.png", narrow, tall)
+    shoot(b, index, out / f"reader-index-figure-{narrow}.png", narrow, tall,
+          f"document.querySelector('img[src*=\"{reader.FIGURES}\"]').scrollIntoView()")
+    shoot(b, index, out / f"reader-index-foot-{WIDTHS[0]}.png", WIDTHS[0], HEIGHT,
+          "window.scrollTo(0, document.documentElement.scrollHeight)")
+    for width, height in ((WIDTHS[0], HEIGHT), reader.NARROW):
+        b.open((site / SEARCH_PAGE).resolve().as_uri() + "?q=" + quote(query), width, height)
+        png = out / f"reader-search-{width}.png"
+        b.screenshot(png)
+        print(f"docs-check: screenshot {png}")
+
+
 def check(browser: str, site: Path, out: Path, pages: list[str], shots: list[str], queries: list[str],
-          narrow_shots: tuple[str, ...] | list[str] = ()) -> list[str]:
+          narrow_shots: tuple[str, ...] | list[str] = (), ranking: Mapping[str, set[str]] | None = None) -> list[str]:
+    """Every check of the module on the built site; ranking: reader.ranking_queries (the sections that
+    searches for their titles must list first)."""
     import time
 
     problems = site_links.problems(site)
@@ -129,8 +161,14 @@ def check(browser: str, site: Path, out: Path, pages: list[str], shots: list[str
             if rel in narrow_shots:
                 shoot(b, page, out / (rel.replace("/", "_")[:-5] + f"-{min(WIDTHS)}.png"), min(WIDTHS), 1600)
         problems += check_search(b, site, queries)
+        if (site / "index.html").exists():
+            problems += reader.first_screen(b, site / "index.html", "index.html")
+        if ranking:
+            results = reader.search(b, site, list(ranking))
+            problems += reader.search_problems(results, ranking)
+            reader_shots(b, site, out, max(results, key=lambda q: (len(results[q]), q)))
         print(f"docs-check: {len(pages)} pages at {', '.join(f'{w} px' for w in WIDTHS)}, search "
-              f"{len(queries)} queries, in {time.monotonic() - start:.1f} s")
+              f"{len(queries) + len(ranking or {})} queries, in {time.monotonic() - start:.1f} s")
     return problems
 
 
@@ -161,10 +199,12 @@ def main(argv: list[str] | None = None) -> int:
     # the longest case name: its h1 must wrap at 390 px
     narrow = ["index.html", *(sorted(cases, key=len)[-1:])] if args.shots else []
     queries = [spec.checks[-1].id, spec.commands[-1].name]
+    documents = search_documents({p.relative_to(site).as_posix(): p.read_bytes() for p in site.rglob("*.html")})
+    ranking, missing = reader.ranking_queries(spec, documents)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     try:
-        problems = check(browser, site, out, pages, shots, queries, narrow)
+        problems = missing + check(browser, site, out, pages, shots, queries, narrow, ranking)
     except CdpError as exc:
         problems = [f"chromium: {exc}"]
     for p in problems:

@@ -38,21 +38,30 @@ from markdown_it.token import Token
 from ...loader import SpecError, load
 from ...model import Spec
 from ...render import environment
-from . import GALLERY, HERE, OUT, REPO, command_page, context, emit
+from . import COMMANDS, CUT_PAGE, FIELD_INDEX, GALLERY, GOLDEN_INDEX, HERE, OUT, REPO, command_page, context, emit
 
 DOCS = f"generated/{OUT}"  # where the Markdown pages live in the repository
 FILES = "files"  # repository files the pages link to, copied in
 SEARCH_PAGE = "search.html"
 NODE_MODULES = REPO / "node_modules"
 SEARCH_SRC = HERE / "search"
-# MiniSearch's options: the fields searched and the fields a result shows (the page reads them too)
-SEARCH_OPTIONS = {"fields": ["title", "text"], "storeFields": ["title", "url", "page"],
-                  "searchOptions": {"boost": {"title": 3}}}
+# MiniSearch's options: the fields searched (a part's heading weighs more than its text) and the fields a
+# result shows (its snippet is cut from its text); the page reads them too. The term rule (lower case, a
+# plural's s dropped) is search/terms.js, the same file for the index and the page.
+SEARCH_OPTIONS = {"fields": ["heading", "text"], "storeFields": ["title", "url", "page", "kind", "text"],
+                  "searchOptions": {"boost": {"heading": 6}}}
+# The kinds of page a result comes from, in the order the search page groups them: the parts of the
+# document (the reference, the CUT companion, the command pages, the changes, the field index) first,
+# then the toolkit's own pages, then the golden cases (many, each naming checks in its title).
+SEARCH_KINDS = {"document": "In the document", "toolkit": "The toolkit", "golden": "Golden cases"}
 _ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
 _TAG = re.compile(r"<[^>]+>")
 _HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
 _DATE_CELL = re.compile(r"<td>([0-9]{4}-[0-9]{2}-[0-9]{2})</td>")
 _H1 = re.compile(r"(<h1>)(.*?)(</h1>)", re.S)
+# a figure of the docs (a byte-field diagram, the motion figure) alone in its paragraph
+_FIGURE = re.compile(r'<p>(<img src="(?:\.\./)*svg/[^"]*" alt="([^"]*)"[^>]*>)</p>')
+FRAME = '<div class="doc-frame">'  # the reference page's title block, approvals and notice (index.md.j2)
 _BREAK = re.compile(r"([._])(?=[A-Za-z])")
 
 
@@ -68,9 +77,18 @@ def _excerpt(words: str, width: int = 60) -> str:
     return cut.rstrip(" ,;:(") + " …"
 
 
+def search_kind(page: str) -> str:
+    """The kind of a page of the site (a key of SEARCH_KINDS)."""
+    if page.startswith(posixpath.dirname(GOLDEN_INDEX) + "/"):
+        return "golden"
+    document = {"index.html", "changes.html", CUT_PAGE[:-3] + ".html", FIELD_INDEX[:-3] + ".html"}
+    return "document" if page in document or page.startswith(COMMANDS + "/") else "toolkit"
+
+
 def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
     """One document a part of a page: the text from one anchor to the next, titled by its heading
-    (or the page title), for every HTML page of the site but the search page and imported files."""
+    (or the page title), for every HTML page of the site but the search page and imported files.
+    heading: the part's own heading (h1 to h4), empty when it has none; kind: search_kind of its page."""
     docs: list[dict[str, str]] = []
     for page, data in sorted(site.items()):
         if not page.endswith(".html") or page == SEARCH_PAGE or page.startswith(FILES + "/"):
@@ -89,7 +107,8 @@ def search_documents(site: dict[str, bytes]) -> list[dict[str, str]]:
             title = " ".join(html.unescape(_TAG.sub("", head.group(2))).split()) if head else \
                 (_excerpt(words) if anchor else page_title)
             docs.append({"id": str(len(docs)), "title": title, "url": page + (f"#{anchor}" if anchor else ""),
-                         "page": page_title, "text": words})
+                         "page": page_title, "kind": search_kind(page), "heading": title if head else "",
+                         "text": words})
     return docs
 
 
@@ -107,6 +126,7 @@ def search_files(site: dict[str, bytes]) -> dict[str, bytes]:
     return {"search/minisearch.js": (lib / "dist" / "umd" / "index.js").read_bytes(),
             "search/minisearch-LICENSE.txt": (lib / "LICENSE.txt").read_bytes(),
             "search/search.js": (SEARCH_SRC / "search.js").read_bytes(),
+            "search/terms.js": (SEARCH_SRC / "terms.js").read_bytes(),
             "search/search-index.js": run.stdout}
 
 
@@ -116,9 +136,11 @@ def _search_body() -> str:
             '<label for="search-input">Search the documentation</label> '
             '<input id="search-input" name="q" type="search" autocomplete="off"></form>\n'
             '<p id="search-status" aria-live="polite">Search needs JavaScript.</p>\n'
-            '<ol id="search-results"></ol>\n'
+            '<div id="search-results"></div>\n'
             f'<script type="application/json" id="search-options">{json.dumps(SEARCH_OPTIONS)}</script>\n'
+            f'<script type="application/json" id="search-kinds">{json.dumps(SEARCH_KINDS)}</script>\n'
             '<script src="search/minisearch.js"></script>\n<script src="search/search-index.js"></script>\n'
+            '<script src="search/terms.js"></script>\n'
             '<script src="search/search.js"></script>\n'
             '<p class="note">Search: <a href="search/minisearch-LICENSE.txt">MiniSearch</a> (MIT licence), '
             "with an index built when the site was built; it works offline.</p>\n")
@@ -193,6 +215,19 @@ def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
     return _title(tokens), _H1.sub(breaks, body)
 
 
+def for_screens(body: str, part_number: str) -> str:
+    """What a page of the site adds to its Markdown's HTML for a reader on a screen (the PDF renders the
+    Markdown without it): each figure of the docs in a box that scrolls sideways, reachable by keyboard,
+    so that its text keeps its size on a narrow screen; before the reference page's frame (title block,
+    approvals, notice) a button that shows it, as the page's style folds the frame on narrow screens."""
+    body = _FIGURE.sub(lambda m: f'<div class="figure" role="region" tabindex="0" aria-label="{m.group(2)}">'
+                                 f"{m.group(1)}</div>", body)
+    toggle = ('<input type="checkbox" id="frame-toggle" class="frame-toggle" aria-label="Show the document frame">'
+              f'<label for="frame-toggle" class="frame-button">{html.escape(part_number)}: title block, '
+              "approvals and notice</label>\n")
+    return body.replace(FRAME, toggle + FRAME, 1)
+
+
 def _nav(spec: Spec, root: str) -> list[tuple[str, str]]:
     return [(c.name, root + command_page(c)[:-3] + ".html") for c in spec.commands]
 
@@ -230,8 +265,8 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> d
 
     def render(page: str, title: str, body: str) -> bytes:
         root = "../" * page.count("/")
-        return shell.render(title=title, body=body, root=root, nav=_nav(spec, root), current=page,
-                            **ctx).encode()
+        return shell.render(title=title, body=for_screens(body, spec.meta["part_number"]), root=root,
+                            nav=_nav(spec, root), current=page, **ctx).encode()
 
     for rel, data in sorted(files.items()):
         page = rel[len(prefix):]
