@@ -25,7 +25,7 @@ import pytest
 from cbfgen.emit.docs import browser as docs_browser
 from cbfgen.emit.docs import reader
 from cbfgen.emit.docs.cdp import Browser
-from cbfgen.emit.docs.site import SEARCH_KINDS, search_documents
+from cbfgen.emit.docs.site import NARROW_FIGURES, SEARCH_KINDS, search_documents
 from cbfgen.loader import load
 
 REPO = Path(__file__).resolve().parents[1]
@@ -117,11 +117,11 @@ def test_ranking_queries_come_from_the_model_and_name_a_section_without_its_part
 # -- figures at 390 px ----------------------------------------------------------------------------
 
 def test_figures_keep_readable_text_at_390_px(html_site: Path, chromium: Browser, shots: Path) -> None:
-    """The reference page and a command page with a figure (docs-check measures every page): every figure
-    is drawn with its smallest text at MIN_FONT_PX or more, its page no wider than the screen."""
+    """The reference page and a command page with a wide diagram (docs-check measures every page): every
+    figure is drawn with its smallest text at MIN_FONT_PX or more, its page no wider than the screen."""
     narrow, tall = reader.NARROW
-    below = [p for p in sorted(html_site.glob("*/*.html"))
-             if f'src="../{reader.FIGURES}' in p.read_text(encoding="utf-8")]
+    below = [p for p in sorted(html_site.glob("*/*.html"))  # a page below the top with a wide diagram
+             if f'srcset="../{reader.FIGURES}{NARROW_FIGURES}/' in p.read_text(encoding="utf-8")]
     pages = [html_site / "index.html", *below[:1]]
     for page in pages:
         rel = page.relative_to(html_site).as_posix()
@@ -131,6 +131,10 @@ def test_figures_keep_readable_text_at_390_px(html_site: Path, chromium: Browser
         for src, shown, natural in figures:
             font = reader.svg_min_font(Path(unquote(urlparse(src).path)))  # the figure's file in the site
             assert font * shown / natural >= reader.MIN_FONT_PX, (rel, src)
+        # a byte-field diagram is drawn NARROW_ROW bytes a row there (not wider than the screen much)
+        narrow_drawn = [f for f in figures if f"/{reader.FIGURES}{NARROW_FIGURES}/" in f[0]]
+        assert narrow_drawn, rel
+        assert all(natural <= 1.25 * narrow for _, _, natural in narrow_drawn), narrow_drawn
     chromium.open((html_site / "index.html").resolve().as_uri(), narrow, tall)
     chromium.evaluate(f"document.querySelector('img[src*=\"{reader.FIGURES}\"]').scrollIntoView()")
     _shot(chromium, shots / f"figure-{narrow}.png", narrow, tall)

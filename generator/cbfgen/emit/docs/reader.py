@@ -46,8 +46,9 @@ LAYOUT_PROBE = """JSON.stringify((function () {
   const nav = document.querySelector("nav.side"), main = document.querySelector("main");
   const n = nav && nav.getBoundingClientRect(), m = main && main.getBoundingClientRect();
   return {
-    figures: Array.from(document.images).filter(i => /\\/svg\\/[^\\/]*$/.test(i.src))
-      .map(i => [i.src, i.getBoundingClientRect().width, i.naturalWidth]),
+    figures: Array.from(document.images).map(i => i.currentSrc || i.src).map((src, k) => [src, k])
+      .filter(([src]) => /\\/svg\\//.test(src))
+      .map(([src, k]) => [src, document.images[k].getBoundingClientRect().width, document.images[k].naturalWidth]),
     beside: !!(n && m && n.right <= m.left + 1),
     nav: n ? n.height : 0, page: document.documentElement.scrollHeight
   };

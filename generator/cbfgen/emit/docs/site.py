@@ -38,7 +38,20 @@ from markdown_it.token import Token
 from ...loader import SpecError, load
 from ...model import Spec
 from ...render import environment
-from . import COMMANDS, CUT_PAGE, FIELD_INDEX, GALLERY, GOLDEN_INDEX, HERE, OUT, REPO, command_page, context, emit
+from . import (
+    COMMANDS,
+    CUT_PAGE,
+    FIELD_INDEX,
+    GALLERY,
+    GOLDEN_INDEX,
+    HERE,
+    OUT,
+    REPO,
+    command_page,
+    context,
+    emit,
+    figures,
+)
 
 DOCS = f"generated/{OUT}"  # where the Markdown pages live in the repository
 FILES = "files"  # repository files the pages link to, copied in
@@ -60,7 +73,10 @@ _HEADING = re.compile(r"<h([1-4])>(.*?)</h\1>", re.S)
 _DATE_CELL = re.compile(r"<td>([0-9]{4}-[0-9]{2}-[0-9]{2})</td>")
 _H1 = re.compile(r"(<h1>)(.*?)(</h1>)", re.S)
 # a figure of the docs (a byte-field diagram, the motion figure) alone in its paragraph
-_FIGURE = re.compile(r'<p>(<img src="(?:\.\./)*svg/[^"]*" alt="([^"]*)"[^>]*>)</p>')
+_FIGURE = re.compile(r'<p>(<img src="((?:\.\./)*)(svg/[^"]*)" alt="([^"]*)"[^>]*>)</p>')
+NARROW_ROW = 8  # bytes a row of a byte-field diagram drawn for a narrow screen
+NARROW_MEDIA = "(max-width: 50rem)"  # the page shell's narrow layout (page.html.j2)
+NARROW_FIGURES = "narrow"  # the narrow drawings' folder beside the figures (svg/narrow/)
 FRAME = '<div class="doc-frame">'  # the reference page's title block, approvals and notice (index.md.j2)
 _BREAK = re.compile(r"([._])(?=[A-Za-z])")
 
@@ -215,13 +231,25 @@ def to_html(md: MarkdownIt, text: str, page: str, imports: Imports,
     return _title(tokens), _H1.sub(breaks, body)
 
 
-def for_screens(body: str, part_number: str) -> str:
+def narrow_figure(figure: str) -> str:
+    """Where the narrow drawing of a figure (its path in the site, svg/...) is."""
+    folder, name = posixpath.split(figure)
+    return f"{folder}/{NARROW_FIGURES}/{name}"
+
+
+def for_screens(body: str, part_number: str, narrow: frozenset[str] = frozenset()) -> str:
     """What a page of the site adds to its Markdown's HTML for a reader on a screen (the PDF renders the
     Markdown without it): each figure of the docs in a box that scrolls sideways, reachable by keyboard,
-    so that its text keeps its size on a narrow screen; before the reference page's frame (title block,
-    approvals, notice) a button that shows it, as the page's style folds the frame on narrow screens."""
-    body = _FIGURE.sub(lambda m: f'<div class="figure" role="region" tabindex="0" aria-label="{m.group(2)}">'
-                                 f"{m.group(1)}</div>", body)
+    so that its text keeps its size on a narrow screen, drawn NARROW_ROW bytes a row there when it is a
+    byte-field diagram (narrow: the figures that have such a drawing); before the reference page's frame
+    (title block, approvals, notice) a button that shows it, as the page's style folds the frame on narrow
+    screens."""
+    def figure(m: re.Match[str]) -> str:
+        img, up, src, alt = m.groups()
+        if src in narrow:
+            img = f'<picture><source media="{NARROW_MEDIA}" srcset="{up}{narrow_figure(src)}">{img}</picture>'
+        return f'<div class="figure" role="region" tabindex="0" aria-label="{alt}">{img}</div>'
+    body = _FIGURE.sub(figure, body)
     toggle = ('<input type="checkbox" id="frame-toggle" class="frame-toggle" aria-label="Show the document frame">'
               f'<label for="frame-toggle" class="frame-button">{html.escape(part_number)}: title block, '
               "approvals and notice</label>\n")
@@ -252,6 +280,8 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> d
     ctx["gallery_page"] = f"{GALLERY}/index.html" if gallery is not None else None
     ctx["api_page"] = API_PAGE if api is not None else None
     files = emit(spec, ctx)
+    wide = figures(spec)
+    narrow = {rel: text for rel, text in figures(spec, NARROW_ROW).items() if text != wide[rel]}
     if gallery is not None:
         files.update(gallery_files(gallery))
     if api is not None:
@@ -265,8 +295,8 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> d
 
     def render(page: str, title: str, body: str) -> bytes:
         root = "../" * page.count("/")
-        return shell.render(title=title, body=for_screens(body, spec.meta["part_number"]), root=root,
-                            nav=_nav(spec, root), current=page, **ctx).encode()
+        return shell.render(title=title, body=for_screens(body, spec.meta["part_number"], frozenset(narrow)),
+                            root=root, nav=_nav(spec, root), current=page, **ctx).encode()
 
     for rel, data in sorted(files.items()):
         page = rel[len(prefix):]
@@ -276,6 +306,7 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> d
         html_page = page[:-3] + ".html"
         title, body = to_html(md, data.decode(), html_page, imports)
         site[html_page] = render(html_page, title, body)
+    site.update({narrow_figure(rel): text.encode() for rel, text in narrow.items()})
     site[SEARCH_PAGE] = render(SEARCH_PAGE, "Search", _search_body())
     site.update(search_files(site))
     done: set[str] = set()
