@@ -72,6 +72,15 @@ def canary(b: Browser, out: Path) -> list[str]:
     return []
 
 
+def settle(b: Browser, seconds: float = 10.0) -> None:
+    """Wait until every image of the page has loaded or failed (complete), at most seconds."""
+    import time
+
+    deadline = time.monotonic() + seconds
+    while not b.evaluate("Array.from(document.images).every(i => i.complete)") and time.monotonic() < deadline:
+        time.sleep(0.02)
+
+
 def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTHS) -> list[str]:
     """Load the page once at the narrowest width, then measure it at each width (the viewport
     resized, the page not reloaded: the layout follows, the console and images are the load's)."""
@@ -85,6 +94,7 @@ def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTH
         if width != order[0]:
             b.page("Emulation.setDeviceMetricsOverride",
                    {"width": width, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": False})
+            settle(b)  # a <picture> may load another drawing at this width
         probe = json.loads(b.evaluate(PROBE))
         if probe["scroll"] > probe["client"]:
             problems.append(f"{rel} @{width}px: horizontal overflow ({probe['scroll']} px wide in "
