@@ -29,3 +29,6 @@ $(WASM_OUT)/cbf_testee.wasm: $(C_HDR) $(C_TOOLS_HDR) $(C_GEN)/cbf_testee.c mk/wa
 	$(WASM_CC) $(WASM_FLAGS) -o $@ $(C_GEN)/cbf_testee.c -lm
 
 wasm-build: c-deps $(WASM_OUT)/cbf-c.wasm $(WASM_OUT)/cbf_testee.wasm  ## build cbf-c.wasm and the c-wasm testee (wasm32-wasi) into build/wasm
+
+# `make bench` times cbf-c.wasm against native cbf-c (bench/wasm_rows.py).
+bench: wasm-build $(C_OUT)/cbf-c
