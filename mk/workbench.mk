@@ -1,3 +1,6 @@
+# The site links the page (site.py --workbench).
+DOCS_SITE_FLAGS += --workbench
+
 # The workbench page (issue 34, point 3): $(DOCS_HTML)/workbench.html, the C engine (build/wasm/cbf-c.wasm,
 # mk/wasm.mk) inlined in one page with the spec's layouts (cbfgen.emit.docs.workbench). It is written into
 # the site after the site's own build (which empties the folder), so `make docs` gives both; it is checked
