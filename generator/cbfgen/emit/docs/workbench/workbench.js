@@ -229,17 +229,19 @@ function safeName(name, fallback) {
   return name && !name.includes('/') && name !== '.' && name !== '..' ? name : fallback;
 }
 
-// A newer request (another file, profile or option file) supersedes one still reading its files.
+// A newer request (another file, profile or option file) supersedes one still reading its files: each
+// takes its number when the reader acts, before any file is read, and only the newest one runs.
 let generation = 0;
 
-async function check(file) {
+async function check(readFile) {
   generation += 1;
   const mine = generation;
   document.body.dataset.generation = String(mine);
-  if (file === null) return;
   const profile = $('profile').value;
+  const file = await readFile();
   const options = [];
   for (const id of ['cutters', 'machine']) options.push(await readInput($(id)));
+  if (file === null) return;
   if (mine !== generation) return;
   state.name = safeName(file.name, 'input.cbf');
   state.data = file.data;
@@ -380,9 +382,10 @@ function select(sel) {
 
 function setup() {
   for (const p of DATA.profiles) $('profile').append(el('option', { value: p.id, title: p.doc }, p.id));
-  $('file').addEventListener('change', async () => check(await readInput($('file'))));
-  $('profile').addEventListener('change', async () => check(await readInput($('file'))));
-  for (const id of ['cutters', 'machine']) $(id).addEventListener('change', async () => check(await readInput($('file'))));
+  const chosen = () => readInput($('file'));
+  $('file').addEventListener('change', () => check(chosen));
+  $('profile').addEventListener('change', () => check(chosen));
+  for (const id of ['cutters', 'machine']) $(id).addEventListener('change', () => check(chosen));
   const drop = $('drop');
   drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('wb-over'); });
   drop.addEventListener('dragleave', () => drop.classList.remove('wb-over'));
@@ -390,7 +393,7 @@ function setup() {
     e.preventDefault();
     drop.classList.remove('wb-over');
     const f = e.dataTransfer.files[0];
-    if (f !== undefined) await check({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) });
+    if (f !== undefined) await check(async () => ({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) }));
   });
   drop.addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); $('file').click(); } });
   $('prev').addEventListener('click', () => { state.page = Math.max(0, state.page - 1); showRecords(); });
