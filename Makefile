@@ -23,6 +23,7 @@ TEST_DEPS :=
 TEST_BUILD :=
 TEST_EARLY :=
 CONFORMANCE_BUILD :=
+DIST_EXTRA :=
 -include mk/*.mk
 .PHONY: all venv generate generate-py check-generated check-spec lint typecheck test test-py clean help
 
@@ -146,7 +147,8 @@ test:  ## the full test suite (what CI runs)
 # staged by conformance/kit.py), as wheels and
 # sdists in dist/. Built with the pinned setuptools of .venv (no download at build time).
 .PHONY: dist
-dist: generate  ## build the cbf, cbfgen, cbf-kaitai and cbf-conformance wheels and sdists into dist/
+# Artefacts that are not Python packages (DIST_EXTRA, from mk/*.mk: cbf-c.wasm) are copied beside them.
+dist: generate $(DIST_EXTRA)  ## build the cbf, cbfgen, cbf-kaitai and cbf-conformance wheels and sdists into dist/
 	@rm -rf dist && mkdir -p dist
 	$(PY) -m build --no-isolation --outdir dist generated/python >/dev/null
 	$(PY) -m build --no-isolation --outdir dist generator >/dev/null
@@ -155,6 +157,7 @@ dist: generate  ## build the cbf, cbfgen, cbf-kaitai and cbf-conformance wheels 
 	$(PY) -m build --no-isolation --outdir dist build/kit >/dev/null
 	@rm -rf generated/python/build generated/python/*.egg-info generator/build generator/*.egg-info \
 	  generated/kaitai/python/build generated/kaitai/python/*.egg-info
+	@$(if $(strip $(DIST_EXTRA)),cp $(DIST_EXTRA) dist/,true)
 	@ls dist
 
 clean:

@@ -11,6 +11,7 @@
 #                                then install Go from go.dev; the script says so)
 #   javac + mvn (JDK >= 11)      the Kaitai Java parser: its Maven package, testee and consumer test
 #   gcc, g++, clang, libclang-rt-14-dev   the C binding, libFuzzer and sanitizers
+#   lld (wasm-ld), wasi-libc, libclang-rt-14-dev-wasm32   the c-wasm binding: the C engine for wasm32-wasi
 #   graphviz                     Kaitai's graphviz diagram in the docs
 #   chromium, pdftotext          only with CBF_WANT_CHROMIUM=1: the headless browser of
 #                                `make docs-check` and poppler-utils, whose pdftotext -bbox
@@ -20,9 +21,9 @@ export DEBIAN_FRONTEND=noninteractive
 # command -> Debian package
 declare -A pkg_of=(
   [python3]=python3 [node]=nodejs [npm]=npm [go]=golang-go [javac]=default-jdk-headless [mvn]=maven
-  [gcc]=gcc [g++]=g++ [make]=make [git]=git [clang]=clang [dot]=graphviz
+  [gcc]=gcc [g++]=g++ [make]=make [git]=git [clang]=clang [wasm-ld]=lld [dot]=graphviz
 )
-order=(python3 node npm go javac mvn gcc g++ make git clang dot)
+order=(python3 node npm go javac mvn gcc g++ make git clang wasm-ld dot)
 [ "${CBF_WANT_CHROMIUM:-0}" = 1 ] && { pkg_of[chromium]=chromium; pkg_of[pdftotext]=poppler-utils; order+=(chromium pdftotext); }
 missing=()
 for cmd in "${order[@]}"; do
@@ -32,6 +33,12 @@ done
 if command -v dpkg >/dev/null 2>&1 && ! dpkg -s libclang-rt-14-dev >/dev/null 2>&1 \
    && ! compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a" >/dev/null; then
   missing+=(libclang-rt-14-dev)
+fi
+# The c-wasm binding's C library and compiler builtins for wasm32-wasi (libraries too).
+if command -v dpkg >/dev/null 2>&1; then
+  [ -e /usr/include/wasm32-wasi/stdio.h ] || dpkg -s wasi-libc >/dev/null 2>&1 || missing+=(wasi-libc)
+  compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/wasi/libclang_rt.builtins-wasm32.a" >/dev/null \
+    || dpkg -s libclang-rt-14-dev-wasm32 >/dev/null 2>&1 || missing+=(libclang-rt-14-dev-wasm32)
 fi
 if [ ${#missing[@]} -eq 0 ]; then
   goversion=$(go env GOVERSION 2>/dev/null || echo go0)

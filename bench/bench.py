@@ -186,6 +186,7 @@ def _load_kaitai(path: Path) -> Any:
 
 
 CLI_NUMPY_RATIO = 2.0  # issue 32, point 4
+WASM_RATIO_TARGET = 2.0  # issue 34, point 6: cbf-c.wasm validate within 2x of native cbf-c (bench/wasm_rows.py)
 MEMORY_BOUND = 4  # issue 8: Python peak of decode + validate, times the file (tests/test_engine_footprint.py too)
 C_BYTESUM = "C byte sum (baseline)"
 C_RATIO_TARGET = 2.5  # issue 17: C validate within 2.5x of a plain one-pass byte sum
@@ -371,12 +372,14 @@ def run(reps: int) -> dict[str, Any]:
     _helix_convert_row(result, reps)
     from .ci_rows import diff_rows, validate_rows  # issue 27: the CI users' ratios
     from .ratio_rows import sarif_rows, spec_diff_rows  # issue 32
+    from .wasm_rows import wasm_rows  # issue 34
 
     result["diff_vs_gnu"] = diff_rows(files["65535 records"], WORK / "diff", max(reps, 5))
     result["sarif_vs_text"] = sarif_rows(argv[:-2], env, files["65535 records"], WORK / "sarif", max(reps, 3))
     result["spec_diff_vs_check"] = spec_diff_rows(WORK / "specdiff", genv, max(reps, 3))
     result["validate_folder"] = validate_rows(argv[:-2], env, REPO / "conformance" / "golden", WORK,
                                               int(os.environ.get("BENCH_VALIDATE_CALLS", "100")))
+    result["wasm_vs_native"] = wasm_rows(files["65535 records"], max(reps, 5))
     big = files["65535 records"]
     result["memory"] = {"python_decode_validate_peak_extra_bytes": _rss_decode_validate(big),
                         "file_bytes": big.stat().st_size}
@@ -476,6 +479,13 @@ def _targets(r: dict[str, Any]) -> dict[str, Any]:
     for name, d in r.get("spec_diff_vs_check", {}).items():
         out[f"cbfgen diff of two specs vs --check-spec of one, {name} (report only)"] = {
             "value": round(d["ratio"], 2), "unit": "x", "met": None}
+    w = r.get("wasm_vs_native")
+    if w:
+        out[f"cbf-c.wasm validate 65535 records (node:wasi, fresh instance) <= {WASM_RATIO_TARGET:g}x native cbf-c"] = {
+            "value": round(w["ratio"], 2), "unit": "x", "met": w["ratio"] <= WASM_RATIO_TARGET,
+            "why": (f"{w['wasm_s'] * 1000:.1f} ms against {w['native_s'] * 1000:.1f} ms, medians of {w['runs']}; "
+                    f"not counted: compile {w['compile_s'] * 1000:.1f} ms once, node start-up "
+                    f"{w['node_start_s'] * 1000:.0f} ms; module {w['wasm_bytes']:,} B")}
     mem = r["memory"]
     ratio = mem["python_decode_validate_peak_extra_bytes"] / mem["file_bytes"]
     out[f"python peak RSS of decode+validate <= {MEMORY_BOUND}x file"] = {

@@ -30,7 +30,7 @@ DOCS_API := build/docs-api/api.md
 docs-site: generate-py node_modules/.stamp
 	@rm -rf $(GALLERY) && $(PY) -m cbf.gallery $(GALLERY) conformance/golden/*.cbf
 	$(PY) -m cbfgen.emit.docs.api $(DOCS_API)
-	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY) --api $(DOCS_API)
+	$(PY) -m cbfgen.emit.docs.site --spec spec/cbf.yaml --out $(DOCS_HTML) --gallery $(GALLERY) --api $(DOCS_API) $(DOCS_SITE_FLAGS)
 
 docs-chromium:
 	@CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh

@@ -47,6 +47,13 @@ def test_table_and_targets_from_a_result() -> None:
     result["rows"][B.C_BYTESUM]["65535 records"]["median"] = 0.0039
     assert B._targets(result)["C validate / byte sum <= 2.5x (65535 records)"] == {"value": 2.56, "unit": "x",
                                                                                    "met": False}
+    # issue 34: cbf-c.wasm against native cbf-c, a target (a NO fails make bench); no run, no row
+    assert not any("wasm" in name for name in result["targets"])
+    for wasm_s, met in ((0.009, True), (0.0101, False)):
+        result["wasm_vs_native"] = {"native_s": 0.005, "wasm_s": wasm_s, "ratio": wasm_s / 0.005, "runs": 25,
+                                    "compile_s": 0.02, "node_start_s": 0.1, "wasm_bytes": 1}
+        row = [t for name, t in B._targets(result).items() if name.startswith("cbf-c.wasm validate")]
+        assert len(row) == 1 and row[0]["met"] is met and row[0]["value"] == round(wasm_s / 0.005, 2)
 
 
 def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

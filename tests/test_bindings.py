@@ -45,6 +45,15 @@ def test_a_binding_is_what_the_registry_says(b: registry.Binding) -> None:
     assert set(b.roles) <= {f"{r}/{k}" for r, ks in registry.ROLE_KINDS.items() for k in ks}
 
 
+@pytest.mark.parametrize("b", [b for b in BINDING_LIST if b.engine_of], ids=lambda b: b.name)
+def test_a_build_of_another_engine_claims_what_that_engine_claims(b: registry.Binding) -> None:
+    """A binding that builds another's engine files for another target (no second copy of any
+    check) claims exactly what that engine implements, and the loader answers for it through it."""
+    engine = BINDING[b.engine_of or ""]
+    assert engine.gated and not b.gated and engine.emitter == b.emitter
+    assert (b.check_kinds, b.algorithms, b.roles) == (engine.check_kinds, engine.algorithms, engine.roles)
+
+
 def test_conformance_runs_exactly_the_registered_testees() -> None:
     listed = [t["name"] for t in load_yaml(ROOT / "conformance" / "bindings.yaml")["bindings"]]
     assert sorted(listed) == sorted(t for b in BINDING_LIST for t in b.testees)

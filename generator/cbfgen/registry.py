@@ -625,6 +625,9 @@ class Binding:
     # The loader answers for it (BINDINGS: it refuses what the binding cannot carry). A binding under
     # construction is not yet: its failure lists say what it lacks, and no spec is refused for it.
     gated: bool = True
+    # Another binding whose engine files it builds, unchanged, for another target (c-wasm: c's). The
+    # loader answers for it through that binding; it claims exactly what that binding claims.
+    engine_of: str | None = None
 
 
 def _all_roles() -> tuple[str, ...]:
@@ -641,6 +644,9 @@ BINDING_LIST: tuple[Binding, ...] = (
             tuple(k.name for k in _KINDS if k.kaitai), (), ()),
     Binding("c", "the single-header C codec and validator (cbf.h), the testee and cbf-c", "c", ("C", "C++"), ("c",),
             "c", tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles()),
+    Binding("c-wasm", "the same C engine files (cbf.h, cbf_tools.h) built for wasm32-wasi: cbf-c.wasm and the "
+            "testee, run under node's node:wasi", "c", ("C",), ("c-wasm",), "wasm",
+            tuple(CHECK_KINDS), tuple(ALGORITHMS), _all_roles(), gated=False, engine_of="c"),
 )
 BINDING: dict[str, Binding] = {b.name: b for b in BINDING_LIST}
 

@@ -42,6 +42,7 @@ def _binding(b: Binding) -> list[str]:
         f"- failure lists: {failures}",
         f"- make fragment: {f'`mk/{b.make}.mk`' if b.make else 'none (`make generate`)'}",
         "- the loader " + ("refuses a spec it cannot carry (`registry.BINDINGS`)" if b.gated
+                           else f"answers for it through `{b.engine_of}` (the same engine files)" if b.engine_of
                            else "does not answer for it yet (under construction)"),
         f"- implements {len(b.check_kinds)} of {len(CHECK_KINDS)} check kinds, {len(b.algorithms)} of "
         f"{len(ALGORITHMS)} algorithm kinds, {len(b.roles)} of {sum(len(k) for k in ROLE_KINDS.values())} role kinds",

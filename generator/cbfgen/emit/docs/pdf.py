@@ -59,7 +59,7 @@ h1 { font-size: 17pt; } h2 { font-size: 14pt; } h3 { font-size: 12pt; } h4 { fon
 h1, h2, h3, h4 { break-after: avoid; overflow-wrap: anywhere; }
 .part { break-before: page; }
 table { border-collapse: collapse; margin: 0.5em 0; width: 100%; font-size: 8pt; }
-th, td { border: 1px solid #999; padding: 2px 4px; vertical-align: top; text-align: left; overflow-wrap: break-word; }
+th, td { border: 1px solid #999; padding: 2px 4px; vertical-align: top; text-align: left; overflow-wrap: anywhere; }
 th { background: #eee; }
 tr, img, svg, .toc li, blockquote { break-inside: avoid; }
 table.one-page { break-inside: avoid; font-size: 7.5pt; }

@@ -272,13 +272,16 @@ def gallery_files(folder: Path) -> dict[str, bytes]:
 API_PAGE = "api.html"  # the Python API reference (cbfgen.emit.docs.api, read from the code with pdoc)
 
 
-def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> dict[str, bytes]:
+def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None,
+          workbench: bool = False) -> dict[str, bytes]:
     """Every file of the site (HTML pages, figures, imported repository files), by path relative to it.
     gallery: a folder made by `python -m cbf.gallery`, shown as the site's toolpath gallery; api: the
     Markdown page `python -m cbfgen.emit.docs.api` wrote (both made from the code, apart from the spec)."""
     ctx: dict[str, Any] = context(spec)
     ctx["gallery_page"] = f"{GALLERY}/index.html" if gallery is not None else None
     ctx["api_page"] = API_PAGE if api is not None else None
+    # the workbench page (cbfgen.emit.docs.workbench, issue 34) is written into the site after it
+    ctx["workbench_page"] = "workbench.html" if workbench else None
     files = emit(spec, ctx)
     wide = figures(spec)
     narrow = {rel: text for rel, text in figures(spec, NARROW_ROW).items() if text != wide[rel]}
@@ -330,12 +333,13 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None) -> d
     return site
 
 
-def build(spec: Spec, out: Path, gallery: Path | None = None, api: Path | None = None) -> int:
+def build(spec: Spec, out: Path, gallery: Path | None = None, api: Path | None = None,
+          workbench: bool = False) -> int:
     """Write the site into out (its old content removed); the number of files."""
     out.mkdir(parents=True, exist_ok=True)
     for p in sorted(out.iterdir()):
         shutil.rmtree(p) if p.is_dir() else p.unlink()
-    site = pages(spec, gallery, api)
+    site = pages(spec, gallery, api, workbench)
     for rel, data in site.items():
         (out / rel).parent.mkdir(parents=True, exist_ok=True)
         (out / rel).write_bytes(data)
@@ -348,6 +352,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--out", default="build/docs-html")
     ap.add_argument("--gallery", type=Path, help="a folder written by `python -m cbf.gallery`, shown in the site")
     ap.add_argument("--api", type=Path, help="the Python API page `python -m cbfgen.emit.docs.api` wrote")
+    ap.add_argument("--workbench", action="store_true", help="link the workbench page (make workbench writes it)")
     args = ap.parse_args(argv)
     try:
         spec = load(args.spec)
@@ -355,7 +360,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2
     try:
-        n = build(spec, Path(args.out), args.gallery, args.api)
+        n = build(spec, Path(args.out), args.gallery, args.api, args.workbench)
     except SearchError as exc:
         print(f"docs-site: {exc}", file=sys.stderr)
         return 2

@@ -1,0 +1,407 @@
+// The workbench page (issue 34, point 3). It runs cbf-c.wasm (the C engine, c-wasm binding) as a WASI
+// command over an in-memory file system and shows what it prints: `cbf-c validate` (verdict, findings)
+// and `cbf-c dump` (the records). Nothing here checks a file: every finding is the engine's. What the
+// page knows of the format (byte layouts, profiles, each check's place in the document) is the spec's,
+// as data (#cbf-data, written by cbfgen.emit.docs.workbench).
+'use strict';
+
+const DATA = JSON.parse(document.getElementById('cbf-data').textContent);
+const PAGE_SIZE = 100;
+
+// -- a WASI preview1 command in the page -----------------------------------------------------------
+// The imports cbf-c.wasm uses (WebAssembly.Module.imports), over files held in memory: fd 3 is the
+// preopened directory "/", where the page's files are; stdout and stderr are collected as text.
+const ERRNO = { SUCCESS: 0, BADF: 8, INVAL: 28, NOENT: 44, NOTSUP: 58 };
+
+class Exit {
+  constructor(code) { this.code = code; }
+}
+
+let compiled = null;
+
+function wasmModule() {
+  if (compiled === null) {
+    const bin = atob(CBF_WASM_BASE64);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i += 1) bytes[i] = bin.charCodeAt(i);
+    compiled = new WebAssembly.Module(bytes);
+  }
+  return compiled;
+}
+
+function runCommand(args, files) {
+  const enc = new TextEncoder();
+  const out = [[], [], []];
+  const open = new Map(); // fd -> { data, pos }
+  let nextFd = 4;
+  let memory = null;
+  const view = () => new DataView(memory.buffer);
+  const bytes = () => new Uint8Array(memory.buffer);
+  const argv = args.map((a) => enc.encode(`${a}\0`));
+  const iovs = (ptr, n) => {
+    const v = view();
+    const list = [];
+    for (let i = 0; i < n; i += 1) list.push([v.getUint32(ptr + 8 * i, true), v.getUint32(ptr + 8 * i + 4, true)]);
+    return list;
+  };
+  const imports = {
+    args_sizes_get(countPtr, sizePtr) {
+      view().setUint32(countPtr, argv.length, true);
+      view().setUint32(sizePtr, argv.reduce((n, a) => n + a.length, 0), true);
+      return ERRNO.SUCCESS;
+    },
+    args_get(argvPtr, bufPtr) {
+      let at = bufPtr;
+      argv.forEach((a, i) => {
+        view().setUint32(argvPtr + 4 * i, at, true);
+        bytes().set(a, at);
+        at += a.length;
+      });
+      return ERRNO.SUCCESS;
+    },
+    fd_prestat_get(fd, ptr) {
+      if (fd !== 3) return ERRNO.BADF;
+      view().setUint32(ptr, 0, true); // a directory
+      view().setUint32(ptr + 4, 1, true); // its name: "/"
+      return ERRNO.SUCCESS;
+    },
+    fd_prestat_dir_name(fd, ptr, len) {
+      if (fd !== 3 || len < 1) return ERRNO.BADF;
+      bytes()[ptr] = 0x2f;
+      return ERRNO.SUCCESS;
+    },
+    fd_fdstat_get(fd, ptr) {
+      const type = fd <= 2 ? 2 : fd === 3 ? 3 : open.has(fd) ? 4 : -1; // char device, directory, file
+      if (type < 0) return ERRNO.BADF;
+      const v = view();
+      v.setUint8(ptr, type);
+      v.setUint16(ptr + 2, 0, true);
+      v.setBigUint64(ptr + 8, 0xffffffffffffffffn, true);
+      v.setBigUint64(ptr + 16, 0xffffffffffffffffn, true);
+      return ERRNO.SUCCESS;
+    },
+    fd_fdstat_set_flags() { return ERRNO.SUCCESS; },
+    path_open(dirFd, dirFlags, pathPtr, pathLen, oflags, rightsBase, rightsInherit, fdFlags, fdPtr) {
+      if (dirFd !== 3) return ERRNO.BADF;
+      const name = new TextDecoder().decode(bytes().slice(pathPtr, pathPtr + pathLen));
+      if (!files.has(name) || (oflags & 2) !== 0) return ERRNO.NOENT; // no such file; O_DIRECTORY
+      const fd = nextFd;
+      nextFd += 1;
+      open.set(fd, { data: files.get(name), pos: 0 });
+      view().setUint32(fdPtr, fd, true);
+      return ERRNO.SUCCESS;
+    },
+    fd_read(fd, iovPtr, iovCount, nreadPtr) {
+      let n = 0;
+      const f = open.get(fd);
+      if (f !== undefined) {
+        for (const [buf, len] of iovs(iovPtr, iovCount)) {
+          const chunk = f.data.subarray(f.pos, Math.min(f.pos + len, f.data.length));
+          bytes().set(chunk, buf);
+          f.pos += chunk.length;
+          n += chunk.length;
+          if (chunk.length < len) break;
+        }
+      } else if (fd !== 0) {
+        return ERRNO.BADF;
+      }
+      view().setUint32(nreadPtr, n, true);
+      return ERRNO.SUCCESS;
+    },
+    fd_seek(fd, offset, whence, newPtr) {
+      const f = open.get(fd);
+      if (f === undefined) return ERRNO.BADF;
+      const base = whence === 0 ? 0 : whence === 1 ? f.pos : f.data.length;
+      const pos = base + Number(offset);
+      if (pos < 0) return ERRNO.INVAL;
+      f.pos = pos;
+      view().setBigUint64(newPtr, BigInt(pos), true);
+      return ERRNO.SUCCESS;
+    },
+    fd_write(fd, iovPtr, iovCount, nwrittenPtr) {
+      if (fd !== 1 && fd !== 2) return ERRNO.BADF;
+      let n = 0;
+      for (const [buf, len] of iovs(iovPtr, iovCount)) {
+        out[fd].push(bytes().slice(buf, buf + len));
+        n += len;
+      }
+      view().setUint32(nwrittenPtr, n, true);
+      return ERRNO.SUCCESS;
+    },
+    fd_close(fd) {
+      return open.delete(fd) ? ERRNO.SUCCESS : ERRNO.BADF;
+    },
+    proc_exit(code) { throw new Exit(code); },
+  };
+  const instance = new WebAssembly.Instance(wasmModule(), { wasi_snapshot_preview1: imports });
+  memory = instance.exports.memory;
+  let status = 0;
+  try {
+    instance.exports._start();
+  } catch (e) {
+    if (!(e instanceof Exit)) throw e;
+    status = e.code;
+  }
+  const text = (chunks) => {
+    const all = new Uint8Array(chunks.reduce((n, c) => n + c.length, 0));
+    let at = 0;
+    for (const c of chunks) { all.set(c, at); at += c.length; }
+    return new TextDecoder().decode(all);
+  };
+  return { status, stdout: text(out[1]), stderr: text(out[2]) };
+}
+
+// -- reading what cbf-c prints ---------------------------------------------------------------------
+// A finding line of `cbf-c validate`: FILE:OFFSET: SEVERITY CHECK (WHERE): MESSAGE (the tool's own
+// format; a line that is not one is shown as it is).
+const FINDING = /^(.*):(\d+): (error|warning) (\S+) \(([^)]*)\): (.*)$/;
+
+function parseFindings(text) {
+  return text.split('\n').filter((l) => l !== '').map((line) => {
+    const m = FINDING.exec(line);
+    if (m === null) return { line };
+    const rec = /^record (\d+)$/.exec(m[5]);
+    return { line, offset: Number(m[2]), severity: m[3], check: m[4], where: m[5],
+      record: rec === null ? null : Number(rec[1]), message: m[6] };
+  });
+}
+
+// A record line of `cbf-c dump`: INDEX @OFFSET NAME head fields | arguments
+const RECORD = /^(\d+) @(\d+) (\S+) (.*?)(?: \| (.*))?$/;
+
+function parseDump(text) {
+  const lines = text.split('\n');
+  const header = /^header version (\S+)/.exec(lines[0] || '');
+  const records = [];
+  for (const line of lines.slice(1)) {
+    const m = RECORD.exec(line);
+    if (m === null) continue;
+    const size = /\barg_size=(\d+)/.exec(m[4]);
+    records.push({ index: Number(m[1]), offset: Number(m[2]), name: m[3], head: m[4], args: m[5] || '',
+      argSize: size === null ? 0 : Number(size[1]) });
+  }
+  return { version: header === null ? null : header[1], headerLine: lines[0] || '', records };
+}
+
+// -- the spec's byte layouts -------------------------------------------------------------------------
+const L = DATA.layouts;
+
+function headerFields(version) {
+  const v = L.versions.find((x) => x.id === version);
+  const h = v === undefined ? L.headers[L.versions[L.versions.length - 1].header] : L.headers[v.header];
+  return h.fields.map((f) => ({ name: f.name, offset: f.offset, size: f.size, doc: f.doc }));
+}
+
+function recordFields(rec, version) {
+  const head = L.record_head.fields.map((f) => ({ name: f.name, offset: rec.offset + f.offset, size: f.size,
+    doc: f.doc }));
+  const cmd = L.commands.find((c) => c.name === rec.name);
+  const lay = cmd === undefined ? undefined
+    : cmd.layouts.find((l) => l.versions.includes(version) && l.size === rec.argSize)
+      || cmd.layouts.find((l) => l.size === rec.argSize);
+  const base = rec.offset + L.record_head.size;
+  const args = lay === undefined ? [{ name: 'arguments', offset: base, size: rec.argSize, doc: '' }]
+    : lay.args.map((a) => ({ name: a.name, offset: base + a.offset, size: a.size, doc: a.doc }));
+  return head.concat(args);
+}
+
+// -- the page ------------------------------------------------------------------------------------------
+const $ = (id) => document.getElementById(id);
+const state = { name: null, data: null, findings: [], dump: null, page: 0, selected: null, byRecord: new Map() };
+
+function el(tag, attrs, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs || {})) {
+    if (k === 'class') e.className = v; else if (k.startsWith('on')) e.addEventListener(k.slice(2), v);
+    else e.setAttribute(k, v);
+  }
+  for (const c of children) e.append(c);
+  return e;
+}
+
+async function readInput(input) {
+  const f = input.files && input.files[0];
+  return f === undefined ? null : { name: f.name, data: new Uint8Array(await f.arrayBuffer()) };
+}
+
+// The page's files live in "/" under their own names, so cbf-c prints the name the reader chose.
+function safeName(name, fallback) {
+  return name && !name.includes('/') && name !== '.' && name !== '..' ? name : fallback;
+}
+
+// A newer request (another file, profile or option file) supersedes one still reading its files: each
+// takes its number when the reader acts, before any file is read, and only the newest one runs.
+let generation = 0;
+
+async function check(readFile) {
+  generation += 1;
+  const mine = generation;
+  document.body.dataset.generation = String(mine);
+  const profile = $('profile').value;
+  const file = await readFile();
+  const options = [];
+  for (const id of ['cutters', 'machine']) options.push(await readInput($(id)));
+  if (file === null) return;
+  if (mine !== generation) return;
+  state.name = safeName(file.name, 'input.cbf');
+  state.data = file.data;
+  const files = new Map([[state.name, file.data]]);
+  const args = ['cbf-c', 'validate', '--max-findings', '0', '--profile', profile];
+  const flags = [['--cutters', 'cutters.txt'], ['--machine', 'machine.json']];
+  for (const [i, [flag, fallback]] of flags.entries()) {
+    const opt = options[i];
+    if (opt !== null) {
+      const n = safeName(opt.name, fallback) === state.name ? `option-${fallback}` : safeName(opt.name, fallback);
+      files.set(n, opt.data);
+      args.push(flag, n);
+    }
+  }
+  args.push(state.name);
+  const v = runCommand(args, files);
+  $('raw').textContent = v.stdout + v.stderr;
+  state.findings = parseFindings(v.stdout);
+  const d = runCommand(['cbf-c', 'dump', state.name], files);
+  state.dump = d.status === 0 ? parseDump(d.stdout) : { version: null, headerLine: '', records: [] };
+  state.byRecord = new Map();
+  state.findings.forEach((f, i) => { if (f.record != null) state.byRecord.set(f.record, i); });
+  state.selected = null;
+  state.page = 0;
+  showVerdict(v);
+  showFindings();
+  showRecords();
+  showHex(null);
+  Object.assign(document.body.dataset, { done: String(mine), file: state.name, profile });
+}
+
+function showVerdict(v) {
+  const summary = state.findings.filter((f) => f.check === undefined).map((f) => f.line);
+  const text = summary.length > 0 ? summary[summary.length - 1] : v.stderr.trim() || `exit status ${v.status}`;
+  $('verdict').textContent = text;
+  $('verdict').className = `wb-verdict ${v.status === 0 ? 'wb-ok' : 'wb-fail'}`;
+  $('verdict').dataset.status = String(v.status);
+}
+
+function showFindings() {
+  const ol = $('findings');
+  ol.replaceChildren();
+  state.findings.forEach((f, i) => {
+    if (f.check === undefined) return;
+    const k = DATA.checks[f.check];
+    const link = k === undefined ? document.createTextNode(f.check)
+      : el('a', { href: k.href, title: k.text || '' }, f.check);
+    const where = f.record === null ? `(${f.where})` : `(record ${f.record})`;
+    const b = el('button', { type: 'button', 'data-finding': String(i), onclick: () => select({ finding: i }) },
+      el('span', { class: `wb-${f.severity}` }, f.severity), ` ${where} at byte ${f.offset}: ${f.message}`);
+    ol.append(el('li', {}, link, ' ', b));
+  });
+}
+
+function pageCount() {
+  return Math.max(1, Math.ceil(state.dump.records.length / PAGE_SIZE));
+}
+
+function showRecords() {
+  const tbody = $('records').querySelector('tbody');
+  tbody.replaceChildren();
+  const recs = state.dump.records.slice(state.page * PAGE_SIZE, (state.page + 1) * PAGE_SIZE);
+  for (const r of recs) {
+    const tr = el('tr', { tabindex: '0', 'data-record': String(r.index), onclick: () => select({ record: r.index }),
+      onkeydown: (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); select({ record: r.index }); } } },
+    el('td', {}, String(r.index)), el('td', {}, String(r.offset)), el('td', {}, r.name), el('td', {}, r.args));
+    if (state.byRecord.has(r.index)) tr.classList.add('wb-has-finding');
+    if (state.selected !== null && state.selected.record === r.index) tr.classList.add('wb-selected');
+    tbody.append(tr);
+  }
+  $('page-info').textContent = `page ${state.page + 1} of ${pageCount()} (${state.dump.records.length} records)`;
+  $('prev').disabled = state.page === 0;
+  $('next').disabled = state.page + 1 >= pageCount();
+}
+
+function hexByte(b) {
+  return b.toString(16).padStart(2, '0');
+}
+
+// The bytes of the header (no record selected) or of one record, each field in its own colour and
+// named in the legend; the byte a finding names is marked.
+function showHex(rec, hit) {
+  const fields = rec === null ? headerFields(state.dump.version) : recordFields(rec, state.dump.version);
+  const start = fields.length > 0 ? Math.min(...fields.map((f) => f.offset)) : 0;
+  const end = Math.min(state.data.length, fields.length > 0 ? Math.max(...fields.map((f) => f.offset + f.size)) : 0);
+  const owner = new Map();
+  fields.forEach((f, i) => { for (let o = f.offset; o < f.offset + f.size; o += 1) owner.set(o, i); });
+  const hex = $('hex');
+  hex.replaceChildren();
+  for (let row = start - (start % 16); row < end; row += 16) {
+    const line = el('span', { class: 'wb-row' }, el('span', { class: 'wb-off' }, `${row.toString(16).padStart(8, '0')}  `));
+    for (let o = row; o < row + 16; o += 1) {
+      if (o < start || o >= end) { line.append('   '); continue; }
+      const i = owner.get(o);
+      const cls = i === undefined ? 'wb-b' : `wb-b wb-f${i % 6}`;
+      const span = el('span', { class: cls + (o === hit ? ' wb-hit' : ''), 'data-offset': String(o),
+        title: i === undefined ? `byte ${o}` : `${fields[i].name} (byte ${o})` }, hexByte(state.data[o]));
+      line.append(span, ' ');
+    }
+    hex.append(line);
+  }
+  $('hex-title').textContent = rec === null ? `header, bytes ${start} to ${end - 1}`
+    : `record ${rec.index} (${rec.name}), bytes ${start} to ${end - 1}`;
+  const legend = $('legend');
+  legend.replaceChildren();
+  fields.forEach((f, i) => legend.append(el('li', {}, el('button', { type: 'button', class: `wb-f${i % 6}`,
+    title: f.doc || '', onclick: () => markField(f) }, `${f.name} @${f.offset} (${f.size} B)`))));
+}
+
+function markField(f) {
+  for (const s of $('hex').querySelectorAll('.wb-b')) {
+    const o = Number(s.dataset.offset);
+    s.classList.toggle('wb-selected', o >= f.offset && o < f.offset + f.size);
+  }
+}
+
+// One selection across the findings, the records and the bytes.
+function select(sel) {
+  let record = sel.record;
+  let hit;
+  if (sel.finding !== undefined) {
+    const f = state.findings[sel.finding];
+    record = f.record === null ? undefined : f.record;
+    hit = f.offset;
+  } else if (state.byRecord.has(record)) {
+    hit = state.findings[state.byRecord.get(record)].offset;
+  }
+  const finding = sel.finding !== undefined ? sel.finding : state.byRecord.get(record);
+  state.selected = { record, finding };
+  for (const b of $('findings').querySelectorAll('button')) {
+    b.classList.toggle('wb-selected', Number(b.dataset.finding) === finding);
+  }
+  const rec = record === undefined ? null : state.dump.records.find((r) => r.index === record) || null;
+  if (rec !== null) state.page = Math.floor(state.dump.records.indexOf(rec) / PAGE_SIZE);
+  showRecords();
+  showHex(rec, hit);
+}
+
+function setup() {
+  for (const p of DATA.profiles) $('profile').append(el('option', { value: p.id, title: p.doc }, p.id));
+  const chosen = () => readInput($('file'));
+  $('file').addEventListener('change', () => check(chosen));
+  $('profile').addEventListener('change', () => check(chosen));
+  for (const id of ['cutters', 'machine']) $(id).addEventListener('change', () => check(chosen));
+  const drop = $('drop');
+  drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('wb-over'); });
+  drop.addEventListener('dragleave', () => drop.classList.remove('wb-over'));
+  drop.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    drop.classList.remove('wb-over');
+    const f = e.dataTransfer.files[0];
+    if (f !== undefined) await check(async () => ({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) }));
+  });
+  drop.addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); $('file').click(); } });
+  $('prev').addEventListener('click', () => { state.page = Math.max(0, state.page - 1); showRecords(); });
+  $('next').addEventListener('click', () => { state.page = Math.min(pageCount() - 1, state.page + 1); showRecords(); });
+  $('goto').addEventListener('change', () => {
+    const n = Number($('goto').value);
+    if (state.dump !== null && Number.isInteger(n)) select({ record: n });
+  });
+}
+
+setup();

@@ -1,0 +1,105 @@
+"""The workbench page in a real browser (issue 34, point 4): headless Chromium (playwright-core,
+Debian's chromium) opens the page from file:// and is fed every golden file (and each other profile
+on the files that profile judges otherwise). It must print exactly what native `cbf-c validate`
+prints for the same file name (stdout, stderr, exit status); make no request but its own file;
+refuse a fetch() from inside it (the Content-Security-Policy); not overflow at 390 px or 1280 px;
+and one keyboard selection of a finding must mark its record row and its byte. Screenshots of that
+selection go to build/workbench/ (the closing note shows them).
+
+One page build and one browser for the whole file: the wasm module is make's (mk/wasm.mk)."""
+
+from __future__ import annotations
+
+import functools
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from c_programs import built
+
+from cbfgen.emit.docs import workbench
+from cbfgen.loader import load
+
+REPO = Path(__file__).resolve().parents[1]
+GOLDEN = REPO / "conformance" / "golden"
+WASM = REPO / "build" / "wasm" / "cbf-c.wasm"
+SHOTS = REPO / "build" / "workbench"
+DRIVER = Path(__file__).resolve().parent / "workbench" / "drive.mjs"
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
+    if not (REPO / "node_modules" / "playwright-core").is_dir():
+        pytest.fail("playwright-core is not installed: run make (npm ci)")
+    if shutil.which("chromium") is None:
+        pytest.fail("chromium is not installed (CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh)")
+    subprocess.run(["make", "-s", "-C", str(REPO), "build/wasm/cbf-c.wasm"], check=True, capture_output=True)
+    spec = load(REPO / "spec" / "cbf.yaml")
+    tmp = tmp_path_factory.mktemp("workbench")
+    page = tmp / workbench.PAGE
+    page.write_text(workbench.page(spec, WASM.read_bytes()), encoding="utf-8")
+    profiles = [p.id for p in spec.profiles]
+    files = sorted(GOLDEN.glob("*.cbf"))
+    # a failing file whose first finding names a record: its row and its bytes light up with it
+    firsts = {f: _native(f, profiles[0]) for f in files}
+    failing = [f for f, (text, status) in firsts.items() if status == 1 and "(record " in text.split("\n", 1)[0]]
+    assert files and failing
+    jobs = tmp / "jobs.json"
+    # every file under the first profile; each other profile on the files it judges differently (the
+    # page passes the profile on; the engine's profiles are the conformance suite's to test), at most 8
+    feed = [(f, profiles[0]) for f in files]
+    for p in profiles[1:]:
+        feed += [(f, p) for f in files if _native(f, p) != firsts[f]][:8]
+    jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(failing[0])}))
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    res = subprocess.run(["node", str(DRIVER), str(page), str(SHOTS), str(jobs)], cwd=REPO, capture_output=True,
+                         text=True, timeout=600)
+    assert res.returncode == 0, res.stderr[-3000:]
+    out: dict[str, object] = json.loads(res.stdout)
+    out["expected"] = len(feed)
+    return out
+
+
+@functools.cache
+def _cbf_c() -> Path:
+    return built("cbf-c")
+
+
+@functools.cache
+def _native(path: Path, profile: str) -> tuple[str, int]:
+    """What cbf-c validate prints for the file under its own name (run in its folder), and its status."""
+    res = subprocess.run([str(_cbf_c()), "validate", "--max-findings", "0", "--profile", profile, path.name],
+                         cwd=path.parent, capture_output=True, text=True)
+    return res.stdout + res.stderr, res.returncode
+
+
+def test_the_page_prints_what_cbf_c_prints_for_every_golden_file(run: dict[str, object]) -> None:
+    results = run["results"]
+    assert isinstance(results, list) and len(results) == run["expected"]
+    differ = []
+    for r in results:
+        text, status = _native(Path(r["path"]), r["profile"])
+        if (r["text"], r["status"]) != (text, status):
+            differ.append(f"{Path(r['path']).name} [{r['profile']}]: page {r['status']} {r['text']!r}, "
+                          f"cbf-c {status} {text!r}")
+    assert not differ, "\n".join(differ[:5])
+
+
+def test_nothing_leaves_the_page(run: dict[str, object]) -> None:
+    assert run["requests"] == [run["url"]], "the page asked for more than itself"
+    fetched = run["fetched"]
+    assert isinstance(fetched, list) and fetched and all(f.endswith(" refused") for f in fetched), fetched
+    errors = run["errors"]
+    assert isinstance(errors, list)
+    assert all("Content Security Policy" in e for e in errors), errors  # only the refusals asked for
+
+
+def test_a_finding_selected_by_keyboard_marks_its_record_and_byte_at_390_and_1280_px(run: dict[str, object]) -> None:
+    assert run["selected"] == {"finding": 1, "row": 1, "hit": 1}
+    widths = run["widths"]
+    assert isinstance(widths, dict)
+    for w in ("390", "1280"):
+        assert widths[w] <= int(w), f"the page overflows at {w} px: {widths[w]} px wide"
+        assert (SHOTS / f"workbench-{w}.png").stat().st_size > 0

@@ -1,0 +1,81 @@
+// Drives the workbench page in headless Chromium (playwright-core, Debian's /usr/bin/chromium) for
+// tests/test_workbench_page.py: node drive.mjs PAGE.html SHOTS_DIR JOBS.json
+// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph}. Prints JSON:
+// each file's printed text and exit status as the page shows them, the requests the page made, the
+// console errors, what fetch() gave from inside the page, and the screenshots' paths and page widths.
+import { readFileSync } from 'node:fs';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { performance } from 'node:perf_hooks';
+import { pathToFileURL } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const [pagePath, shots, jobsPath] = process.argv.slice(2);
+const jobs = JSON.parse(readFileSync(jobsPath, 'utf-8'));
+const url = pathToFileURL(pagePath).href;
+// The flags of /work/.library/env/machines/polyglot.md: no background connections on a closed network.
+const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'wb-chromium-')), {
+  executablePath: process.env.CBF_CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+    '--disable-component-update', '--disable-sync'],
+});
+const page = await context.newPage();
+const requests = [];
+const errors = [];
+page.on('request', (r) => requests.push(r.url()));
+page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+page.on('pageerror', (e) => { errors.push(String(e)); process.stderr.write(`page error: ${e}\n`); });
+await page.goto(url);
+// As a reader does: pick the profile, choose the file; then wait until the page has shown that file
+// under that profile, and no newer request is pending.
+async function feed(path, profile) {
+  await page.selectOption('#profile', profile);
+  await page.setInputFiles('#file', path);
+  const name = path.split('/').pop();
+  // polled from here: Playwright's waitForFunction evaluates a string in the page, which the page's
+  // Content-Security-Policy refuses (no 'unsafe-eval'), as it should
+  for (let waited = 0; ; waited += 20) {
+    const done = await page.evaluate(([n, p]) => {
+      const d = document.body.dataset;
+      return d.file === n && d.profile === p && d.done === d.generation;
+    }, [name, profile]);
+    if (done) return;
+    if (waited > 60000) throw new Error(`the page did not show ${name} under ${profile} within 60 s`);
+    await new Promise((r) => { setTimeout(r, 20); });
+  }
+}
+const results = [];
+for (const [path, profile] of jobs.files) {
+  const t0 = performance.now();
+  await feed(path, profile);
+  const ms = performance.now() - t0; // choosing the file to its findings shown (polled every 20 ms)
+  results.push({ path, profile, ms, text: await page.textContent('#raw'),
+    status: Number(await page.getAttribute('#verdict', 'data-status')) });
+}
+// Nothing leaves the page: a fetch() from inside it is refused by the Content-Security-Policy.
+const fetched = await page.evaluate(async () => {
+  const out = [];
+  for (const u of ['https://example.com/', 'http://127.0.0.1:9/', 'data:text/plain,x']) {
+    try { await fetch(u); out.push(`${u} fetched`); } catch (e) { out.push(`${u} refused`); }
+  }
+  return out;
+});
+// Screenshots of a failing file with its first finding selected, at 390 and 1280 px.
+const widths = {};
+await feed(jobs.shot, 'default');
+await page.focus('#findings button');
+await page.keyboard.press('Enter');
+const selected = await page.evaluate(() => ({
+  finding: document.querySelectorAll('#findings .wb-selected').length,
+  row: document.querySelectorAll('#records tr.wb-selected').length,
+  hit: document.querySelectorAll('#hex .wb-hit').length,
+}));
+for (const w of [390, 1280]) {
+  await page.setViewportSize({ width: w, height: 900 });
+  widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
+  await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
+}
+await context.close();
+process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected })}\n`);
