@@ -382,6 +382,7 @@ class Vocabulary:
     cutter_keys: tuple[str, ...]
     check_kinds: tuple[str, ...]
     kernel_shapes: tuple[str, ...]  # per check kind, its kernel's shape (kernel_shape)
+    pass_kinds: tuple[str, ...]  # the kinds no kernel table holds: the engine's passes judge them (CBF__PASS_KINDS)
     check_kind_names: tuple[str, ...]
     field_kinds: tuple[str, ...]
 
@@ -518,6 +519,7 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=cutter_columns(spec).all, check_kinds=m(list(registry.CHECK_KINDS)),
         kernel_shapes=tuple(kernel_shape(k) for k in registry.CHECK_KINDS.values()),
+        pass_kinds=m([k.name for k in registry.CHECK_KINDS.values() if kernel_shape(k) in ("", "items")]),
         check_kind_names=tuple(registry.CHECK_KINDS), field_kinds=m(registry.FIELD_KINDS))
 
 
