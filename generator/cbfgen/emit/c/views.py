@@ -37,10 +37,10 @@ def _tags(spec: Spec) -> tuple[str, ...]:
     return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
 # The signature ("shape") of a targeted check kind's C kernel, cbf__<kind>_at (runtime/validator.c), from the
 # registry: a kind that judges a target's items (registry `items`) runs its own machine rules (machine.py); a
-# kind that compares a target's arguments with each other judges the target whole; every other one float
-# argument. The kernels are called through per-shape tables indexed by kind (validator_layouts.c.j2), so a
-# targeted kind the registry gains and the C engine lacks fails the build, naming its kernel.
-WHOLE_TARGET_KINDS = ("ordered",)
+# kind that compares a target's arguments with each other (registry `whole`) judges the target whole; every
+# other one float argument. The kernels are called through per-shape tables indexed by kind
+# (validator_layouts.c.j2), so a targeted kind the registry gains and the C engine lacks fails the build,
+# naming its kernel.
 
 
 def kernel_shape(kind: registry.CheckKind) -> str:
@@ -49,7 +49,7 @@ def kernel_shape(kind: registry.CheckKind) -> str:
         return ""
     if kind.items:
         return "items"
-    return "target" if kind.name in WHOLE_TARGET_KINDS else "argument"
+    return "target" if kind.whole else "argument"
 
 
 # -- rows -------------------------------------------------------------------------------------
