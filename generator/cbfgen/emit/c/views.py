@@ -71,7 +71,7 @@ class FieldRow:
     struct: str | None
     magic: int | None
     checksum: str  # CK_*
-    flags: str
+    flags: tuple[str, ...]  # RESERVED, TEXT, MAGIC (CBF__F_*)
     unit: str | None
     macro: str
     doc: str
@@ -87,8 +87,7 @@ class FieldRow:
 
 def field_row(f: Field, struct: str | None, units: dict[str, str]) -> FieldRow:
     type_, suffix = ctype(f)
-    flags = " | ".join(x for x in ("CBF__F_RESERVED" if f.reserved else "", "CBF__F_TEXT" if f.text else "",
-                                   "CBF__F_MAGIC" if f.magic is not None else "") if x) or "0"
+    flags = tuple(x for x, on in (("RESERVED", f.reserved), ("TEXT", f.text), ("MAGIC", f.magic is not None)) if on)
     return FieldRow(
         name=f.name, member=cname(f.name), ctype=type_, suffix=suffix, kind=macro(f.kind),
         role=("ROLE_" + macro(f.role)) if f.role else "ROLE_NONE", offset=f.offset, elem=f.elem_size,
@@ -208,8 +207,8 @@ class LayoutRow:
     struct: str
     size: int
     versions: tuple[str, ...]
-    vmask: str
-    pmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
+    pmask: tuple[int, ...]  # the indexes of the profiles it is accepted under, none: every profile (CBF__PBIT)
     profiles: tuple[str, ...]
     first_arg: int
     nargs: int
@@ -251,7 +250,7 @@ class CommandRow:
     orient: str
     shape: str
     cutter: int
-    vmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
     layouts: tuple[LayoutRow, ...]
     per_version: tuple[VersionLayouts, ...]
     first_ct: int
@@ -264,7 +263,7 @@ class SegmentRow:
     region: str
     start: int
     end: int
-    exclude: str
+    exclude: tuple[int, ...]  # the record head fields (index) the segment leaves out
 
 
 @dataclass(frozen=True)
@@ -312,7 +311,7 @@ class CheckRow:
     kind_name: str  # the registry's name
     severity: str
     error: int
-    vmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
     first: int
     n: int
     has_min: int
@@ -550,8 +549,9 @@ def _versions(spec: Spec) -> Versions:
         default_version=ids.index(spec.default_version), fallback_version=ids.index(spec.fallback_version))
 
 
-def _vmask(versions: tuple[str, ...] | list[str]) -> str:
-    return " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in versions)
+def _vmask(versions: tuple[str, ...] | list[str]) -> tuple[str, ...]:
+    """The macros of the versions (the templates spell the mask)."""
+    return tuple(macro(v) for v in versions)
 
 
 def _role_index(lay: Layout, role: dict[str, str] | None, keys: tuple[str, ...]) -> tuple[int, ...]:
@@ -601,7 +601,7 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
             raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not in the registry")
         rows.append(CheckRow(
             id=ch.id, macro=macro(ch.id), kind="KIND_" + macro(ch.kind), kind_name=ch.kind, severity=ch.severity,
-            error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
+            error=int(ch.severity == "error"), vmask=_vmask(ch.versions), first=len(targets),
             n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(0.0 if ch.min is None else ch.min),
             has_max=int(ch.max is not None), max=cfloat(0.0 if ch.max is None else ch.max),
             min_open=int(ch.min_exclusive),
@@ -642,7 +642,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
             macro=macro(c.name) + (("_" + macro(lay.variant)) if lay.variant else ""),
             member=cname(c.name) + suffix, struct=struct, size=lay.size, versions=tuple(lay.versions),
             vmask=_vmask(lay.versions),
-            pmask=" | ".join(f"CBF__PBIT({profiles.index(p)})" for p in lay.profiles) or "0",
+            pmask=tuple(profiles.index(p) for p in lay.profiles),
             profiles=tuple(lay.profiles), first_arg=first_arg, nargs=len(args), args=args, motion=motion,
             orient=orient, shape=_role_index(lay, c.shape, SHAPE_KEYS),
             cutter=_role_index(lay, c.cutter, cutter_columns(spec).all),
@@ -816,7 +816,7 @@ def _checksums(spec: Spec) -> Checksums:
         coverages.append(CoverageRow(name=name, first=len(segments), n=len(cov.segments), doc=cov.doc))
         segments.extend(SegmentRow(region="REGION_" + macro(s.region), start=s.start or 0,
                                    end=-1 if s.end is None else s.end,
-                                   exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
+                                   exclude=tuple(rec_names.index(x) for x in s.exclude))
                         for s in cov.segments)
     ckfields: list[CkFieldRow] = []
     check_index = {ch.id: i for i, ch in enumerate(spec.checks)}
