@@ -356,11 +356,13 @@ def test_c_engine_places_every_registered_kind_and_field_kind() -> None:
         assert not missing, f"{fn} lacks field kinds {missing}"
 
 
-@pytest.mark.parametrize("what", ["check kind", "field kind"])
+@pytest.mark.parametrize("what", ["check kind", "check kind of a pass", "field kind"])
 def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
                                                    monkeypatch: pytest.MonkeyPatch) -> None:
-    """A kind added to the registry and to no C switch: the header of today's spec no longer
-    compiles under mk/c.mk's flags (-Wswitch-enum -Werror), and the error names the kind."""
+    """A kind added to the registry and not to the C engine: the header of today's spec no longer
+    compiles under mk/c.mk's flags, and the error names the kind. A targeted check kind: its kernel
+    table names a kernel the engine lacks; a kind the engine judges in its own passes (no target): the
+    generated check against runtime/validator.c's CBF__PASS_KINDS; a field kind: -Wswitch-enum."""
     cc = _need("gcc")
     import cbfgen.emit.c as emitter
     from cbfgen import registry
@@ -371,6 +373,11 @@ def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
         extra = dict(CHECK_KINDS, zz_new_rule=rule)
         monkeypatch.setattr(registry, "CHECK_KINDS", extra)
         name = "cbf__zz_new_rule_at"
+    elif what == "check kind of a pass":  # judged by no kernel table: the engine's passes must list it
+        rule = dataclasses.replace(CHECK_KINDS["trailing"], name="zz_new_pass", doc="a new file rule")
+        assert not rule.targeted
+        monkeypatch.setattr(registry, "CHECK_KINDS", dict(CHECK_KINDS, zz_new_pass=rule))
+        name = "CBF__JUDGED_ZZ_NEW_PASS"
     else:
         monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
         name = "CBF_KIND_ZZ_NEW_TYPE"

@@ -4066,6 +4066,21 @@ typedef struct cbf__vctx {
     float mhi[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
 } cbf__vctx;
 
+/* The check kinds the engine judges in its own passes (validate.c, this file, machine.c, group_checks.c), not
+ * through a kernel table (validator_layouts.c.j2 holds the targeted kinds' kernels, cbf__<kind>_at). cbf.h
+ * checks this list against the registry when it compiles: a kind the registry gains that neither a kernel
+ * table nor this list holds fails the build, naming it (CBF__JUDGED_<KIND> undeclared); a kind listed here
+ * that the registry no longer has fails too (CBF__KIND_<KIND> undeclared). Adding a kind here is adding
+ * its pass: test_bindings holds each kind's constant to a use beyond its enum. */
+#define CBF__PASS_KINDS(X)                                                                                         \
+    X(TRUNCATED_HEADER) X(TRUNCATED_RECORD) X(PART_NUMBER) X(DESCRIPTOR_WORD) X(CUTTER_TABLE) X(FILE_CHECKSUM)    \
+    X(COMMAND_COUNT) X(HEADER_CHECKSUM) X(MAGIC) X(SEQUENCE) X(CODE_COPY) X(ARG_SIZE) X(ARG_CHECKSUM)             \
+    X(CONTINUITY) X(AVAILABILITY) X(VERSION) X(UNKNOWN_CODE) X(TRAILING) X(RESERVED_BYTE) X(STRING_TAIL)          \
+    X(STRING_ASCII) X(FINITE) X(ORIENTATION) X(SHAPE) X(MACHINE_LIMITS) X(DEPRECATED)
+#define CBF__JUDGED(k) CBF__JUDGED_##k = CBF__KIND_##k,
+#define CBF__ONE_MORE(k) +1
+enum { CBF__PASS_KINDS(CBF__JUDGED) CBF__JUDGED__COUNT = 0 CBF__PASS_KINDS(CBF__ONE_MORE) };
+
 static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap) CBF__PRINTF(5, 0);
 static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap)
 {
@@ -4686,7 +4701,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4690 "cbf.h"
+#line 4705 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4852,7 +4867,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4856 "cbf.h"
+#line 4871 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4889,7 +4904,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4893 "cbf.h"
+#line 4908 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -4907,6 +4922,10 @@ typedef void (*cbf__target_kernel)(cbf__vctx *v, int ci, size_t t, int cmd, int 
                                    size_t args_off);
 static const cbf__argument_kernel cbf__argument_kernels[31 + 1] = { NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, cbf__positive_at, cbf__nonzero_vector_at, cbf__range_at, cbf__nondecreasing_at, NULL, NULL, NULL, NULL, NULL };
 static const cbf__target_kernel cbf__target_kernels[31 + 1] = { NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, cbf__ordered_at, NULL, NULL, NULL, NULL };
+/* Every check kind no kernel table holds is judged by one of the engine's passes (CBF__PASS_KINDS,
+ * runtime/validator.c), once: a kind the registry gains and the engine does not judge fails the build here,
+ * naming it. */
+typedef char cbf__every_kind_judged_once[(CBF__JUDGED__COUNT == 26 && CBF__JUDGED_TRUNCATED_HEADER > 0 && CBF__JUDGED_TRUNCATED_RECORD > 0 && CBF__JUDGED_PART_NUMBER > 0 && CBF__JUDGED_DESCRIPTOR_WORD > 0 && CBF__JUDGED_CUTTER_TABLE > 0 && CBF__JUDGED_FILE_CHECKSUM > 0 && CBF__JUDGED_COMMAND_COUNT > 0 && CBF__JUDGED_HEADER_CHECKSUM > 0 && CBF__JUDGED_MAGIC > 0 && CBF__JUDGED_SEQUENCE > 0 && CBF__JUDGED_CODE_COPY > 0 && CBF__JUDGED_ARG_SIZE > 0 && CBF__JUDGED_ARG_CHECKSUM > 0 && CBF__JUDGED_CONTINUITY > 0 && CBF__JUDGED_AVAILABILITY > 0 && CBF__JUDGED_VERSION > 0 && CBF__JUDGED_UNKNOWN_CODE > 0 && CBF__JUDGED_TRAILING > 0 && CBF__JUDGED_RESERVED_BYTE > 0 && CBF__JUDGED_STRING_TAIL > 0 && CBF__JUDGED_STRING_ASCII > 0 && CBF__JUDGED_FINITE > 0 && CBF__JUDGED_ORIENTATION > 0 && CBF__JUDGED_SHAPE > 0 && CBF__JUDGED_MACHINE_LIMITS > 0 && CBF__JUDGED_DEPRECATED > 0) ? 1 : -1];
 /* CHECKPOINT: 32 argument bytes */
 CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
@@ -5871,7 +5890,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5875 "cbf.h"
+#line 5894 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

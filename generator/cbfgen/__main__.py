@@ -42,6 +42,7 @@ from . import emit as emit_pkg
 from . import ksc as ksc_mod
 from .diff import main as diff_cli
 from .loader import SpecError, load
+from .model import Spec
 
 EXIT_OK, EXIT_BREAKING, EXIT_BAD_INPUT = 0, 1, 2
 
@@ -74,17 +75,7 @@ def diff_main(argv: list[str]) -> int:
     return diff_cli(argv)  # its exit codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): cbfgen.diff
 
 
-def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else argv
-    if argv[:1] == ["changelog"]:
-        from .changelog import main as changelog_main  # only this subcommand needs git
-
-        return changelog_main(argv[1:])
-    if argv[:1] == ["diff"]:
-        try:
-            return diff_main(argv[1:])
-        except SystemExit as exc:  # argparse: usage errors are bad input
-            return EXIT_BAD_INPUT if exc.code else EXIT_OK
+def _parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(prog="cbfgen", description="Generate every CBF binding from the spec.",
                                  epilog="Exit codes: 0 written, 2 a spec that does not load or a tool that is "
                                         "missing (nothing written).")
@@ -101,7 +92,55 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--report", type=Path, metavar="FILE",
                     help="conformance report.json (failure lists in failures/ beside it) for the docs' "
                          "traceability matrix")
-    args = ap.parse_args(argv)
+    return ap
+
+
+def _subcommand(argv: list[str]) -> int | None:
+    """The exit code of a subcommand (changelog, diff); None: argv asks for generation."""
+    if argv[:1] == ["changelog"]:
+        from .changelog import main as changelog_main  # only this subcommand needs git
+
+        return changelog_main(argv[1:])
+    if argv[:1] == ["diff"]:
+        try:
+            return diff_main(argv[1:])
+        except SystemExit as exc:  # argparse: usage errors are bad input
+            return EXIT_BAD_INPUT if exc.code else EXIT_OK
+    return None
+
+
+def _missing_input(args: argparse.Namespace) -> str | None:
+    """The one line that names a --golden folder or --report file that is not there (None: both are)."""
+    if args.golden is not None and not args.golden.is_dir():
+        return f"{args.golden}: no such folder"
+    if args.report is not None and not args.report.is_file():
+        return f"{args.report}: no such file"
+    return None
+
+
+def _emit(spec: Spec, name: str, out: Path) -> int:
+    """Run one emitter into ``out``; the number of files written or removed."""
+    module = importlib.import_module(f"{emit_pkg.__name__}.{name}")
+    files: dict[str, bytes] = module.emit(spec)
+    changed = sum(write_atomic(out / rel, data) for rel, data in sorted(files.items()))
+    # Remove stale files in the top folders this emitter owns, except
+    # those produced by later build steps it declares (e.g. ksc output).
+    keep = tuple(getattr(module, "KEEP", ()))
+    for top in {Path(p).parts[0] for p in files}:
+        for p in sorted((out / top).rglob("*")):
+            rel = p.relative_to(out).as_posix()
+            if p.is_file() and rel not in files and not rel.startswith(keep) and "__pycache__" not in rel:
+                p.unlink()
+                changed += 1
+    return changed
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    code = _subcommand(argv)
+    if code is not None:
+        return code
+    args = _parser().parse_args(argv)
     try:
         spec = load(args.spec)
     except SpecError as exc:  # every problem of the spec, one `file:line: message` a line
@@ -112,36 +151,20 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     selected = args.only or emitters()
     compiler = None
-    if "kaitai" in selected and not args.no_ksc:
-        try:  # before anything is written: every binding or none
-            compiler = ksc_mod.find()
-        except ksc_mod.KscMissing as exc:
-            print(f"cbfgen: {exc}", file=sys.stderr)
-            return 2
-    for opt, path, want in ((args.golden, args.golden, "dir"), (args.report, args.report, "file")):
-        if opt is not None and not (path.is_dir() if want == "dir" else path.is_file()):
-            print(f"cbfgen: {path}: no such {'folder' if want == 'dir' else 'file'}", file=sys.stderr)
-            return 2
+    try:
+        if "kaitai" in selected and not args.no_ksc:
+            compiler = ksc_mod.find()  # before anything is written: every binding or none
+    except ksc_mod.KscMissing as exc:
+        print(f"cbfgen: {exc}", file=sys.stderr)
+        return 2
+    missing = _missing_input(args)
+    if missing is not None:
+        print(f"cbfgen: {missing}", file=sys.stderr)
+        return 2
     out = Path(args.out)
     if "docs" in selected:
         _docs_inputs(args.golden, args.report, out)
-    changed = 0
-    for name in selected:
-        module = importlib.import_module(f"{emit_pkg.__name__}.{name}")
-        files: dict[str, bytes] = module.emit(spec)
-        owned = {Path(p).parts[0] for p in files}
-        for rel, data in sorted(files.items()):
-            changed += write_atomic(out / rel, data)
-        # Remove stale files in the top folders this emitter owns, except
-        # those produced by later build steps it declares (e.g. ksc output).
-        keep = tuple(getattr(module, "KEEP", ()))
-        for top in owned:
-            root = out / top
-            for p in sorted(root.rglob("*")):
-                rel = p.relative_to(out).as_posix()
-                if p.is_file() and rel not in files and not rel.startswith(keep) and "__pycache__" not in rel:
-                    p.unlink()
-                    changed += 1
+    changed = sum(_emit(spec, name, out) for name in selected)
     if compiler is not None:
         try:
             ksc_mod.compile_parsers(compiler, out)

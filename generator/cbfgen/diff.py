@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .loader import SpecError, load
-from .model import CHECK_ATTRS, Check, Coverage, Field, HeaderLayout, Layout, Spec
+from .model import CHECK_ATTRS, Check, Command, Coverage, Field, HeaderLayout, Layout, Spec
 
 # `cbfgen diff`'s exit codes: the class of its worst change, or bad input.
 EXIT_NONE, EXIT_WIRE, EXIT_BAD_INPUT, EXIT_TEXT = 0, 1, 2, 3
@@ -255,64 +255,82 @@ def _compare_layouts(old: tuple[Layout, ...], new: tuple[Layout, ...], version: 
 
 
 # -- one version against another ----------------------------------------------------
+def _version_numbers(ov: Any, nv: Any, vid: str, same: bool, breaking: bool) -> list[Change]:
+    out: list[Change] = []
+    if (ov.major, ov.minor) != (nv.major, nv.minor) and same:
+        out.append(Change("version_number_changed", vid, None,
+                          f"header bytes match {ov.major}.{ov.minor} -> {nv.major}.{nv.minor}", breaking))
+    if ov.writable != nv.writable and same:
+        # Which versions the toolkit writes is policy, not the meaning of a file.
+        out.append(Change("writable_changed", vid, None, f"writable {ov.writable} -> {nv.writable}", False))
+    return out
+
+
+def _gone(old: Spec, new: Spec, oc: Command, olays: tuple[Layout, ...], new_vid: str,
+          breaking: bool) -> list[Change]:
+    """A command of the old version that the new one lacks: renamed (the same code, a new name), or removed."""
+    old_names = {c.name for c in old.commands}
+    renamed = [c.name for c in new.commands if c.code == oc.code and c.name not in old_names
+               and c.available_in(new_vid)]
+    if not renamed:
+        return [Change("command_removed", new_vid, oc.name, f"code 0x{oc.code:02X}", breaking)]
+    # a rename that keeps the old name among the command's former names is no text break for
+    # readers: CUT and JSON readers accept it, cbf.h and the Python package keep it as an alias
+    keeps = oc.name in new.command(renamed[0]).former_names
+    why = (f"{oc.name} stays a former name: CUT and JSON readers accept it, CBF_CMD_{oc.name} and "
+           f"CommandCode.{oc.name} stay as deprecated aliases; writers write {renamed[0]}" if keeps else
+           "the CUT keyword, the JSON form and the C and Python names change")
+    return [Change("command_renamed", new_vid, oc.name,
+                   f"{oc.name} renamed to {renamed[0]}, the same code 0x{oc.code:02X} ({why})", False,
+                   breaking, keeps),
+            *_compare_layouts(olays, new.command(renamed[0]).layouts_for(new_vid), new_vid, renamed[0], breaking)]
+
+
+def _kept_or_gone(old: Spec, old_vid: str, new: Spec, new_vid: str, oc: Command, breaking: bool) -> list[Change]:
+    """What became of one command of the old version in the new one."""
+    olays = oc.layouts_for(old_vid)
+    nc = next((c for c in new.commands if c.name == oc.name), None)
+    nlays = nc.layouts_for(new_vid) if nc else ()
+    if olays and not nlays:
+        return _gone(old, new, oc, olays, new_vid, breaking)
+    if not nlays or nc is None or not olays:
+        return []  # not in either, or added (reported by _added)
+    out: list[Change] = []
+    if oc.code != nc.code:
+        out.append(Change("command_code_changed", new_vid, oc.name,
+                          f"code 0x{oc.code:02X} -> 0x{nc.code:02X}", breaking))
+    return out + _compare_layouts(olays, nlays, new_vid, oc.name, breaking)
+
+
+def _sizes(layouts: tuple[Layout, ...]) -> str:
+    return "/".join(str(lay.size) if lay.repeated is None or lay.repeated.repeat is None else
+                    f"{lay.size} + {lay.repeated.size} n ({lay.repeated.repeat[0]} <= n <= "
+                    f"{lay.repeated.repeat[1]})" for lay in layouts)
+
+
+def _added(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: bool) -> list[Change]:
+    """The commands of the new version that the old one lacks (a rename is reported by _gone)."""
+    old_cmds = {c.name: c for c in old.commands}
+    new_names = {c.name for c in new.commands}
+    out: list[Change] = []
+    for nc in new.commands:
+        was = old_cmds.get(nc.name)
+        if not nc.available_in(new_vid) or (was is not None and was.available_in(old_vid)):
+            continue
+        if any(c.code == nc.code and c.available_in(old_vid) and c.name not in new_names for c in old.commands):
+            continue  # a rename, reported above
+        out.append(Change("command_added", new_vid, nc.name,
+                          f"code 0x{nc.code:02X}, {_sizes(nc.layouts_for(new_vid))} argument byte(s)", breaking))
+    return out
+
+
 def compare_version(old: Spec, old_vid: str, new: Spec, new_vid: str, breaking: bool) -> list[Change]:
     """The header and command table of old_vid in OLD against new_vid in NEW, labelled new_vid."""
-    out: list[Change] = []
-    ov, nv = old.version(old_vid), new.version(new_vid)
-    if (ov.major, ov.minor) != (nv.major, nv.minor) and old_vid == new_vid:
-        out.append(Change("version_number_changed", new_vid, None,
-                          f"header bytes match {ov.major}.{ov.minor} -> {nv.major}.{nv.minor}", breaking))
-    if ov.writable != nv.writable and old_vid == new_vid:
-        # Which versions the toolkit writes is policy, not the meaning of a file.
-        out.append(Change("writable_changed", new_vid, None, f"writable {ov.writable} -> {nv.writable}", False))
-    oh, nh = old.header_for(old_vid), new.header_for(new_vid)
-    out += _compare_header(oh, nh, new_vid, breaking)
-    new_cmds = {c.name: c for c in new.commands}
-    old_cmds = {c.name: c for c in old.commands}
+    out = _version_numbers(old.version(old_vid), new.version(new_vid), new_vid, old_vid == new_vid, breaking)
+    out += _compare_header(old.header_for(old_vid), new.header_for(new_vid), new_vid, breaking)
     for oc in old.commands:
-        olays = oc.layouts_for(old_vid)
-        nc = new_cmds.get(oc.name)
-        nlays = nc.layouts_for(new_vid) if nc else ()
-        if olays and not nlays:
-            renamed = [c.name for c in new.commands if c.code == oc.code and c.name not in old_cmds
-                       and c.available_in(new_vid)]
-            if renamed:
-                # a rename that keeps the old name among the command's former names is no text break for
-                # readers: CUT and JSON readers accept it, cbf.h and the Python package keep it as an alias
-                keeps = oc.name in new.command(renamed[0]).former_names
-                why = (f"{oc.name} stays a former name: CUT and JSON readers accept it, CBF_CMD_{oc.name} and "
-                       f"CommandCode.{oc.name} stay as deprecated aliases; writers write {renamed[0]}" if keeps else
-                       "the CUT keyword, the JSON form and the C and Python names change")
-                out.append(Change("command_renamed", new_vid, oc.name,
-                                  f"{oc.name} renamed to {renamed[0]}, the same code 0x{oc.code:02X} ({why})", False,
-                                  breaking, keeps))
-                out += _compare_layouts(olays, new.command(renamed[0]).layouts_for(new_vid), new_vid, renamed[0],
-                                        breaking)
-            else:
-                out.append(Change("command_removed", new_vid, oc.name, f"code 0x{oc.code:02X}", breaking))
-            continue
-        if not nlays or nc is None:
-            continue
-        if not olays:
-            continue  # reported below as added
-        if oc.code != nc.code:
-            out.append(Change("command_code_changed", new_vid, oc.name,
-                              f"code 0x{oc.code:02X} -> 0x{nc.code:02X}", breaking))
-        out += _compare_layouts(olays, nlays, new_vid, oc.name, breaking)
-    for nc in new.commands:
-        if not nc.available_in(new_vid):
-            continue
-        was = old_cmds.get(nc.name)
-        if was is not None and was.available_in(old_vid):
-            continue
-        if any(c.code == nc.code and c.available_in(old_vid) and c.name not in new_cmds for c in old.commands):
-            continue  # a rename, reported above
-        sizes = "/".join(str(lay.size) if lay.repeated is None or lay.repeated.repeat is None else
-                         f"{lay.size} + {lay.repeated.size} n ({lay.repeated.repeat[0]} <= n <= "
-                         f"{lay.repeated.repeat[1]})" for lay in nc.layouts_for(new_vid))
-        out.append(Change("command_added", new_vid, nc.name,
-                          f"code 0x{nc.code:02X}, {sizes} argument byte(s)", breaking))
-    return out
+        out += _kept_or_gone(old, old_vid, new, new_vid, oc, breaking)
+    return out + _added(old, old_vid, new, new_vid, breaking)
 
 
 def _compare_header(oh: HeaderLayout, nh: HeaderLayout, vid: str, breaking: bool) -> list[Change]:

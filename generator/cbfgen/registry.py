@@ -377,6 +377,7 @@ class CheckKind:
     target_shape: RoleArg | None = None  # what each target argument must be (None: the kind checks it itself)
     accepts: Callable[[Any], Accepts] | None = None  # a check (model.Check) -> the values it accepts
     items: bool = False  # a target may be a repeated argument group, judged item by item in every binding
+    whole: bool = False  # compares a target's arguments with each other: its kernels judge the target whole
 
     def accepted(self, check: Any) -> Accepts | None:
         """What ``check`` (of this kind) accepts in its targets; None: the kind bounds no value."""
@@ -408,8 +409,9 @@ class CheckKind:
 
 
 def _k(name: str, params: type[Params], scope: Scope, doc: str, kaitai: bool = False,
-       target: RoleArg | None = None, accepts: Callable[[Any], Accepts] | None = None) -> CheckKind:
-    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target, accepts=accepts)
+       target: RoleArg | None = None, accepts: Callable[[Any], Accepts] | None = None,
+       whole: bool = False) -> CheckKind:
+    return CheckKind(name, params, scope, doc, kaitai=kaitai, target_shape=target, accepts=accepts, whole=whole)
 
 
 # In the order of the C engine's kind enum (and of the schema's list).
@@ -449,7 +451,8 @@ _KINDS = (
        accepts=lambda check: Accepts(min=check.min, max=check.max, min_open=check.min_exclusive,
                                      max_open=check.max_exclusive)),
     _k("nondecreasing", TargetParams, "record", "a target argument does not fall from record to record", target=_NUM),
-    _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM),
+    _k("ordered", TargetParams, "record", "a target's arguments are in non-decreasing order", target=_NUM,
+       whole=True),
     _k("orientation", ScopedParams, "record", "a 5-axis command starts at the current orientation"),
     _k("shape", ScopedParams, "record", "STARTSHAPE ... ENDSHAPE enclose their count of motions"),
     CheckKind("machine_limits", MachineLimitsParams, "record", "target arguments lie within the machine's limits",

@@ -253,6 +253,35 @@ def fill_arg_checksums(lay: T.LayoutInfo, head: bytes, raw: Buffer) -> bytes:
 
 
 # -- encode --------------------------------------------------------------------
+def _refuse_unwritable(model: Cbf, vid: str | None) -> None:
+    """What pack_file refuses to write unless it keeps stored values: a version it does not write,
+    more records than the count holds, trailing bytes."""
+    if vid is None or not T.VERSION_BY_ID[vid].writable:
+        writable = ", ".join(v.id for v in T.VERSIONS if v.writable)
+        major, minor = model.version
+        raise EncodeError(f"header: version {major}.{minor} is not writable (writable: {writable})")
+    if len(model.records) > T.LIMITS["max_commands"]:
+        raise EncodeError(f"{len(model.records)} commands, at most {T.LIMITS['max_commands']} fit the count")
+    if model.trailing:
+        raise EncodeError("trailing bytes can only be written with keep_stored")
+
+
+def _written_args(code: int, raw: bytes, i: int, vid: str | None, profile: str, at: int) -> bytes:
+    """Record i's argument bytes as written (its profile's layout), refused when its command is unknown
+    or not in the version, no layout has its size, or a string is not one the format carries (at: the
+    arguments' offset in the file)."""
+    cmd = T.BY_CODE.get(code)
+    if cmd is None:
+        raise EncodeError(f"record {i}: unknown command code 0x{code:02X}")
+    if not T.available(cmd, vid):
+        raise EncodeError(f"record {i}: {cmd.name} is not available in version {vid}")
+    lay = cmd.layout_for_size(vid or "", len(raw))
+    if lay is None:
+        raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
+    check_strings(lay.args, bytes(raw), at, f"record {i}: {cmd.name}")
+    return _profile_layout(cmd, vid or "", profile, raw, i)
+
+
 def pack_file(model: Cbf, *, keep_stored: bool = False, profile: str = "default") -> bytes:
     """The bytes of a Cbf, NOT validated: ``cbf.encode`` (writer.py) is the writer, which
     refuses a result that does not validate. By default fills sequence numbers, code copies,
@@ -267,13 +296,7 @@ def pack_file(model: Cbf, *, keep_stored: bool = False, profile: str = "default"
         raise EncodeError(f"header: version {major}.{minor} needs layout {info.id}, got {type(model.header).__name__}")
     records = model.records
     if not keep_stored:
-        if vid is None or not T.VERSION_BY_ID[vid].writable:
-            writable = ", ".join(v.id for v in T.VERSIONS if v.writable)
-            raise EncodeError(f"header: version {major}.{minor} is not writable (writable: {writable})")
-        if len(records) > T.LIMITS["max_commands"]:
-            raise EncodeError(f"{len(records)} commands, at most {T.LIMITS['max_commands']} fit the count")
-        if model.trailing:
-            raise EncodeError("trailing bytes can only be written with keep_stored")
+        _refuse_unwritable(model, vid)
     out = bytearray(pack_fields(info.fields, info.struct, model.header, "header"))
     if not keep_stored:
         check_strings(info.fields, bytes(out), 0, "header")
@@ -297,16 +320,7 @@ def pack_file(model: Cbf, *, keep_stored: bool = False, profile: str = "default"
                 chk = arg_checksum(raw)
         else:
             seq, copy = i & T.SEQ_MASK, r.code  # the checksum of what is written, below
-            cmd = T.BY_CODE.get(r.code)
-            if cmd is None:
-                raise EncodeError(f"record {i}: unknown command code 0x{r.code:02X}")
-            if not T.available(cmd, vid):
-                raise EncodeError(f"record {i}: {cmd.name} is not available in version {vid}")
-            lay = cmd.layout_for_size(vid or "", len(raw))
-            if lay is None:
-                raise EncodeError(f"record {i}: {cmd.name} has no layout of {len(raw)} bytes in version {vid}")
-            check_strings(lay.args, bytes(raw), len(out) + T.HEAD_SIZE, f"record {i}: {cmd.name}")
-            raw = _profile_layout(cmd, vid or "", profile, raw, i)
+            raw = _written_args(r.code, raw, i, vid, profile, len(out) + T.HEAD_SIZE)
             chk = 0
         head_vals[T.I_SEQ], head_vals[T.I_CODE], head_vals[T.I_COPY] = seq, r.code, copy
         head_vals[T.I_SIZE], head_vals[T.I_RES], head_vals[T.I_CHK] = len(raw), r.reserved, chk

@@ -21,7 +21,7 @@ from ...model import Spec
 from ...options import option_rules
 from ...render import environment
 from .algorithms import algorithm_tables
-from .cnames import cfloat, cname, comment, ctype, macro
+from .cnames import c_or, cfloat, cname, comment, ctype, macro
 from .views import CContext, context
 
 __all__ = ["CContext", "cfloat", "cname", "comment", "context", "ctype", "emit", "macro", "runtime_section",
@@ -73,6 +73,7 @@ def emit(spec: Spec) -> dict[str, bytes]:
     env.filters["cfloat"] = cfloat
     env.filters["cname"] = cname
     env.filters["macro"] = macro
+    env.filters["c_or"] = c_or
     env.filters["wrap"] = lambda s, width=76, indent="": ("\n" + indent).join(textwrap.wrap(s, width))
     names = context(spec).namespace()
     assert "options" not in names

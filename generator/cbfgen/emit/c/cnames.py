@@ -71,3 +71,8 @@ def member_doc(f: Field, units: dict[str, str]) -> str:
     if f.reserved:
         extra.append("reserved, kept verbatim")
     return " ".join(parts) + " [" + "; ".join(extra) + "]"
+
+
+def c_or(items: tuple[object, ...] | list[object], each: str, empty: str) -> str:
+    """A C bit mask: each item spelled by ``each`` (a str.format pattern), joined by |, or ``empty``."""
+    return " | ".join(each.format(x) for x in items) or empty

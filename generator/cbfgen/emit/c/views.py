@@ -37,10 +37,10 @@ def _tags(spec: Spec) -> tuple[str, ...]:
     return CHECKSUM_TAGS + tuple(f.field for f in spec.checksums.fields if f.field not in CHECKSUM_TAGS)
 # The signature ("shape") of a targeted check kind's C kernel, cbf__<kind>_at (runtime/validator.c), from the
 # registry: a kind that judges a target's items (registry `items`) runs its own machine rules (machine.py); a
-# kind that compares a target's arguments with each other judges the target whole; every other one float
-# argument. The kernels are called through per-shape tables indexed by kind (validator_layouts.c.j2), so a
-# targeted kind the registry gains and the C engine lacks fails the build, naming its kernel.
-WHOLE_TARGET_KINDS = ("ordered",)
+# kind that compares a target's arguments with each other (registry `whole`) judges the target whole; every
+# other one float argument. The kernels are called through per-shape tables indexed by kind
+# (validator_layouts.c.j2), so a targeted kind the registry gains and the C engine lacks fails the build,
+# naming its kernel.
 
 
 def kernel_shape(kind: registry.CheckKind) -> str:
@@ -49,7 +49,7 @@ def kernel_shape(kind: registry.CheckKind) -> str:
         return ""
     if kind.items:
         return "items"
-    return "target" if kind.name in WHOLE_TARGET_KINDS else "argument"
+    return "target" if kind.whole else "argument"
 
 
 # -- rows -------------------------------------------------------------------------------------
@@ -71,7 +71,7 @@ class FieldRow:
     struct: str | None
     magic: int | None
     checksum: str  # CK_*
-    flags: str
+    flags: tuple[str, ...]  # RESERVED, TEXT, MAGIC (CBF__F_*)
     unit: str | None
     macro: str
     doc: str
@@ -87,8 +87,7 @@ class FieldRow:
 
 def field_row(f: Field, struct: str | None, units: dict[str, str]) -> FieldRow:
     type_, suffix = ctype(f)
-    flags = " | ".join(x for x in ("CBF__F_RESERVED" if f.reserved else "", "CBF__F_TEXT" if f.text else "",
-                                   "CBF__F_MAGIC" if f.magic is not None else "") if x) or "0"
+    flags = tuple(x for x, on in (("RESERVED", f.reserved), ("TEXT", f.text), ("MAGIC", f.magic is not None)) if on)
     return FieldRow(
         name=f.name, member=cname(f.name), ctype=type_, suffix=suffix, kind=macro(f.kind),
         role=("ROLE_" + macro(f.role)) if f.role else "ROLE_NONE", offset=f.offset, elem=f.elem_size,
@@ -208,8 +207,8 @@ class LayoutRow:
     struct: str
     size: int
     versions: tuple[str, ...]
-    vmask: str
-    pmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
+    pmask: tuple[int, ...]  # the indexes of the profiles it is accepted under, none: every profile (CBF__PBIT)
     profiles: tuple[str, ...]
     first_arg: int
     nargs: int
@@ -251,7 +250,7 @@ class CommandRow:
     orient: str
     shape: str
     cutter: int
-    vmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
     layouts: tuple[LayoutRow, ...]
     per_version: tuple[VersionLayouts, ...]
     first_ct: int
@@ -264,7 +263,7 @@ class SegmentRow:
     region: str
     start: int
     end: int
-    exclude: str
+    exclude: tuple[int, ...]  # the record head fields (index) the segment leaves out
 
 
 @dataclass(frozen=True)
@@ -312,7 +311,7 @@ class CheckRow:
     kind_name: str  # the registry's name
     severity: str
     error: int
-    vmask: str
+    vmask: tuple[str, ...]  # the macros of its versions (CBF__VBIT(CBF_V*))
     first: int
     n: int
     has_min: int
@@ -382,6 +381,7 @@ class Vocabulary:
     cutter_keys: tuple[str, ...]
     check_kinds: tuple[str, ...]
     kernel_shapes: tuple[str, ...]  # per check kind, its kernel's shape (kernel_shape)
+    pass_kinds: tuple[str, ...]  # the kinds no kernel table holds: the engine's passes judge them (CBF__PASS_KINDS)
     check_kind_names: tuple[str, ...]
     field_kinds: tuple[str, ...]
 
@@ -518,6 +518,7 @@ def _vocabulary(spec: Spec) -> Vocabulary:
         orient_keys=m(ORIENT_KEYS), shape_kinds=m(SHAPE_KINDS), shape_keys=m(SHAPE_KEYS),
         cutter_keys=cutter_columns(spec).all, check_kinds=m(list(registry.CHECK_KINDS)),
         kernel_shapes=tuple(kernel_shape(k) for k in registry.CHECK_KINDS.values()),
+        pass_kinds=m([k.name for k in registry.CHECK_KINDS.values() if kernel_shape(k) in ("", "items")]),
         check_kind_names=tuple(registry.CHECK_KINDS), field_kinds=m(registry.FIELD_KINDS))
 
 
@@ -548,8 +549,9 @@ def _versions(spec: Spec) -> Versions:
         default_version=ids.index(spec.default_version), fallback_version=ids.index(spec.fallback_version))
 
 
-def _vmask(versions: tuple[str, ...] | list[str]) -> str:
-    return " | ".join(f"CBF__VBIT(CBF_V{macro(v)})" for v in versions)
+def _vmask(versions: tuple[str, ...] | list[str]) -> tuple[str, ...]:
+    """The macros of the versions (the templates spell the mask)."""
+    return tuple(macro(v) for v in versions)
 
 
 def _role_index(lay: Layout, role: dict[str, str] | None, keys: tuple[str, ...]) -> tuple[int, ...]:
@@ -599,7 +601,7 @@ def _checks(spec: Spec) -> tuple[tuple[CheckRow, ...], list[tuple[int, int, str,
             raise ValueError(f"C binding: check {ch.id}: kind {ch.kind!r} is not in the registry")
         rows.append(CheckRow(
             id=ch.id, macro=macro(ch.id), kind="KIND_" + macro(ch.kind), kind_name=ch.kind, severity=ch.severity,
-            error=int(ch.severity == "error"), vmask=_vmask(ch.versions) or "0", first=len(targets),
+            error=int(ch.severity == "error"), vmask=_vmask(ch.versions), first=len(targets),
             n=len(ch.targets), has_min=int(ch.min is not None), min=cfloat(0.0 if ch.min is None else ch.min),
             has_max=int(ch.max is not None), max=cfloat(0.0 if ch.max is None else ch.max),
             min_open=int(ch.min_exclusive),
@@ -640,7 +642,7 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
             macro=macro(c.name) + (("_" + macro(lay.variant)) if lay.variant else ""),
             member=cname(c.name) + suffix, struct=struct, size=lay.size, versions=tuple(lay.versions),
             vmask=_vmask(lay.versions),
-            pmask=" | ".join(f"CBF__PBIT({profiles.index(p)})" for p in lay.profiles) or "0",
+            pmask=tuple(profiles.index(p) for p in lay.profiles),
             profiles=tuple(lay.profiles), first_arg=first_arg, nargs=len(args), args=args, motion=motion,
             orient=orient, shape=_role_index(lay, c.shape, SHAPE_KEYS),
             cutter=_role_index(lay, c.cutter, cutter_columns(spec).all),
@@ -651,93 +653,157 @@ def _layout_rows(spec: Spec, c: Command, ci: int, first: int, first_arg: int, pr
     return out
 
 
-def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
-    """The commands with their layouts, and the checks with their targets: each layout's plan
-    reads the (check, target) pairs of its command, so both are built here."""
-    check_rows, targets = _checks(spec)
-    profiles = [p.id for p in spec.profiles]
-    # every layout's index and arguments, for the targets' argument index per layout
-    flat = [(ci, lay) for ci, c in enumerate(spec.commands) for lay in c.layouts]
-    tnames = [n for _, _, _, names in targets for n in names]
-    tindex = [tuple((next((i for i, a in enumerate(lay.args) if a.name == n), -1) if ci == tc else -1)
-                    for ci, lay in flat)
-              for tc, _, _, names in targets for n in names]
-    tfirst = [sum(len(t[3]) for t in targets[:k]) for k in range(len(targets))]
-    # (check, target) pairs grouped by command, so that the validator visits only the checks that name
-    # the record's command (in check order); and per layout, the pairs whose kernel runs there
-    ctargets: list[CheckTarget] = []
-    first_ct: list[int] = []
-    planned: dict[int, list[PlannedCheck]] = {}
+@dataclass(frozen=True)
+class _Targets:
+    """The checks' targets, flat (command index, check index, text, argument names), and per target
+    argument its index in each layout (-1: the layout does not carry it)."""
+
+    rows: tuple[tuple[int, int, str, tuple[str, ...]], ...]
+    names: tuple[str, ...]  # every target's argument names, in order
+    index: tuple[tuple[int, ...], ...]  # per target argument, its index in each layout
+    first: tuple[int, ...]  # per target, its first argument in names and index
+
+    def arg_rows(self, target: int, layout: int) -> list[int]:
+        """The indexes (in the layout) of the arguments a target names (-1: not in the layout)."""
+        return [self.index[self.first[target] + a][layout] for a in range(len(self.rows[target][3]))]
+
+
+def _flat_layouts(spec: Spec) -> list[tuple[int, Layout]]:
+    """Every layout with its command's index, in cbf__layouts order."""
+    return [(ci, lay) for ci, c in enumerate(spec.commands) for lay in c.layouts]
+
+
+def _arg_index(lay: Layout, name: str) -> int:
+    return next((i for i, a in enumerate(lay.args) if a.name == name), -1)
+
+
+def _target_table(spec: Spec, rows: list[tuple[int, int, str, tuple[str, ...]]]) -> _Targets:
+    flat = _flat_layouts(spec)
+    index = tuple(tuple(_arg_index(lay, n) if ci == tc else -1 for ci, lay in flat)
+                  for tc, _, _, names in rows for n in names)
+    first = tuple(sum(len(t[3]) for t in rows[:k]) for k in range(len(rows)))
+    return _Targets(rows=tuple(rows), names=tuple(n for *_, names in rows for n in names), index=index, first=first)
+
+
+def _by_command(spec: Spec, check_rows: tuple[CheckRow, ...], targets: _Targets) -> tuple[list[CheckTarget], list[int]]:
+    """The (check, target) pairs grouped by command, so that the validator visits only the checks that
+    name the record's command (in check order), and each command's first pair (one more: the end)."""
+    pairs: list[CheckTarget] = []
+    first: list[int] = []
     for ci in range(len(spec.commands)):
-        first_ct.append(len(ctargets))
-        ctargets.extend(CheckTarget(check=t[1], target=ti, text=f"{check_rows[t[1]].id}: {t[2]}")
-                        for ti, t in enumerate(targets) if t[0] == ci)
-    first_ct.append(len(ctargets))
-    for li, (ci, lay) in enumerate(flat):
-        first_arg = sum(len(x.args) for _, x in flat[:li])
-        for ct in ctargets[first_ct[ci]:first_ct[ci + 1]]:
-            rows = [tindex[tfirst[ct.target] + a][li] for a in range(len(targets[ct.target][3]))]
-            floats = tuple(first_arg + i for i in rows if i >= 0 and lay.args[i].kind == "float")
-            kind = registry.CHECK_KINDS[check_rows[ct.check].kind_name]
-            shape = kernel_shape(kind)
-            if shape == "items":
-                continue  # its own rules (machine.py), called from the layout function too
-            if lay.repeated is not None and len(lay.args) - 1 in rows:
-                # a repeated group is judged item by item by the kinds that know items (machine_limits)
-                raise ValueError(f"C binding: check {check_rows[ct.check].id} ({check_rows[ct.check].kind_name}) "
-                                 f"targets the repeated argument group {lay.command} {lay.args[-1].name}: only "
-                                 "machine_limits judges a group, item by item")
-            # a check finds nothing in a layout without its float arguments (ordered: without all of them)
-            if floats if shape == "argument" else len(floats) == len(rows):
-                planned.setdefault(li, []).append(PlannedCheck(check=ct.check, target=ct.target, kind=macro(kind.name),
-                                                               shape=shape, text=ct.text, args=floats))
-    layouts: list[LayoutRow] = []
-    commands: list[CommandRow] = []
+        first.append(len(pairs))
+        pairs.extend(CheckTarget(check=t[1], target=ti, text=f"{check_rows[t[1]].id}: {t[2]}")
+                     for ti, t in enumerate(targets.rows) if t[0] == ci)
+    first.append(len(pairs))
+    return pairs, first
+
+
+def _planned_pair(lay: Layout, li: int, first_arg: int, ct: CheckTarget, row: CheckRow,
+                  targets: _Targets) -> PlannedCheck | None:
+    """The kernel a layout's records run for a (check, target) pair of its command; None when the
+    kind judges items (its own rules, machine.py) or the layout lacks the float arguments it reads."""
+    rows = targets.arg_rows(ct.target, li)
+    floats = tuple(first_arg + i for i in rows if i >= 0 and lay.args[i].kind == "float")
+    kind = registry.CHECK_KINDS[row.kind_name]
+    shape = kernel_shape(kind)
+    if shape == "items":
+        return None  # its own rules (machine.py), called from the layout function too
+    if lay.repeated is not None and len(lay.args) - 1 in rows:
+        # a repeated group is judged item by item by the kinds that know items (machine_limits)
+        raise ValueError(f"C binding: check {row.id} ({row.kind_name}) targets the repeated argument group "
+                         f"{lay.command} {lay.args[-1].name}: only machine_limits judges a group, item by item")
+    # a check finds nothing in a layout without its float arguments (a whole target: without all of them)
+    reads = bool(floats) if shape == "argument" else len(floats) == len(rows)
+    return PlannedCheck(check=ct.check, target=ct.target, kind=macro(kind.name), shape=shape, text=ct.text,
+                        args=floats) if reads else None
+
+
+def _planned(spec: Spec, check_rows: tuple[CheckRow, ...], targets: _Targets, pairs: list[CheckTarget],
+             first_ct: list[int]) -> dict[int, list[PlannedCheck]]:
+    """Per layout (index), the (check, target) pairs whose kernel runs on its records."""
+    planned: dict[int, list[PlannedCheck]] = {}
+    first_arg = 0
+    for li, (ci, lay) in enumerate(_flat_layouts(spec)):
+        for ct in pairs[first_ct[ci]:first_ct[ci + 1]]:
+            got = _planned_pair(lay, li, first_arg, ct, check_rows[ct.check], targets)
+            if got is not None:
+                planned.setdefault(li, []).append(got)
+        first_arg += len(lay.args)
+    return planned
+
+
+def _candidates(spec: Spec, c: Command, first: int) -> list[list[int]]:
+    """Decode candidates per version: the version's own layouts in spec order, else every layout,
+    newest first (PROTOCOL.md)."""
     vorder = {v.id: i for i, v in enumerate(spec.versions)}
-    cands_all: list[list[list[int]]] = []
+    newest_first = sorted(range(len(c.layouts)), key=lambda i: -max(vorder[x] for x in c.layouts[i].versions))
+    return [[first + i for i, lay in enumerate(c.layouts) if v.id in lay.versions] or [first + i for i in newest_first]
+            for v in spec.versions]
+
+
+def _role_macro(prefix: str, role: dict[str, str] | None) -> str:
+    return f"{prefix}_" + (macro(role["kind"]) if role else "NONE")
+
+
+def _command_row(spec: Spec, ci: int, layouts: list[LayoutRow], first: int, cands: list[list[int]],
+                 max_layouts: int, first_ct: list[int]) -> CommandRow:
+    c = spec.commands[ci]
+    mine = tuple(lay for lay in layouts if lay.command == ci)
+    return CommandRow(
+        index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=c.doc, clause=c.clause,
+        first=first, nlayouts=len(c.layouts),
+        cands=tuple(tuple(row + [-1] * (max_layouts - len(row))) for row in cands),
+        motion=_role_macro("MOTION", c.motion), orient=_role_macro("ORIENT", c.orientation),
+        shape=_role_macro("SHAPE", c.shape), cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
+        per_version=tuple(VersionLayouts(macro=macro(v.id), layouts=tuple(x for x in mine if v.id in x.versions))
+                          for v in spec.versions),
+        first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci],
+        former=tuple(macro(n) for n in c.former_names))
+
+
+def _deprecated_by_layout(spec: Spec) -> tuple[int, ...]:
+    """Per layout, the deprecation check that names it (-1: none)."""
+    def check_of(c: Command, lay: Layout) -> int:
+        return next((i for i, ch in enumerate(spec.checks)
+                     if ch.kind == "deprecated" and ch.deprecates_layout(c.name, lay.variant)), -1)
+
+    return tuple(check_of(c, lay) for c in spec.commands for lay in c.layouts) or (-1,)
+
+
+def _commands(spec: Spec, planned: dict[int, list[PlannedCheck]], first_ct: list[int]) -> Commands:
+    profiles = [p.id for p in spec.profiles]
+    layouts: list[LayoutRow] = []
     firsts: list[int] = []
+    cands_all: list[list[list[int]]] = []
     for ci, c in enumerate(spec.commands):
-        first = len(layouts)
-        firsts.append(first)
-        layouts.extend(_layout_rows(spec, c, ci, first, sum(len(x.args) for x in layouts), profiles, planned))
-        # Decode candidates per version: the version's own layouts in spec order, else every
-        # layout, newest first (PROTOCOL.md).
-        cands = []
-        for v in spec.versions:
-            own = [first + i for i, lay in enumerate(c.layouts) if v.id in lay.versions]
-            newest_first = sorted(range(len(c.layouts)), key=lambda i: -max(vorder[x] for x in c.layouts[i].versions))
-            cands.append(own or [first + i for i in newest_first])
-        cands_all.append(cands)
+        firsts.append(len(layouts))
+        cands_all.append(_candidates(spec, c, len(layouts)))
+        layouts.extend(_layout_rows(spec, c, ci, len(layouts), sum(len(x.args) for x in layouts), profiles, planned))
     max_layouts = max((len(row) for cands in cands_all for row in cands), default=0)
-    for ci, c in enumerate(spec.commands):
-        mine = tuple(lay for lay in layouts if lay.command == ci)
-        commands.append(CommandRow(
-            index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=c.doc, clause=c.clause,
-            first=firsts[ci], nlayouts=len(c.layouts),
-            cands=tuple(tuple(row + [-1] * (max_layouts - len(row))) for row in cands_all[ci]),
-            motion=("MOTION_" + macro(c.motion["kind"])) if c.motion else "MOTION_NONE",
-            orient=("ORIENT_" + macro(c.orientation["kind"])) if c.orientation else "ORIENT_NONE",
-            shape=("SHAPE_" + macro(c.shape["kind"])) if c.shape else "SHAPE_NONE",
-            cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
-            per_version=tuple(VersionLayouts(macro=macro(v.id), layouts=tuple(x for x in mine if v.id in x.versions))
-                              for v in spec.versions),
-            first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci],
-            former=tuple(macro(n) for n in c.former_names)))
+    commands = [_command_row(spec, ci, layouts, firsts[ci], cands_all[ci], max_layouts, first_ct)
+                for ci in range(len(spec.commands))]
     code_of = {c.code: c for c in commands}
-    cmds = Commands(
+    return Commands(
         commands=tuple(commands), sorted_commands=tuple(sorted(commands, key=lambda c: c.code)),
         index_by_code=tuple(code_of[k].index if k in code_of else -1 for k in range(256)),
         names_by_code=tuple(code_of[k].name if k in code_of else None for k in range(256)),
         layouts=tuple(layouts), arg_rows=tuple(a for lay in layouts for a in lay.args), max_layouts=max_layouts,
         max_arg=max([lay.max_size for lay in layouts] + [0]))
-    target_rows = tuple(TargetRow(command=t[0], first=tfirst[k], n=len(t[3]), text=t[2])
-                        for k, t in enumerate(targets))
+
+
+def _commands_and_checks(spec: Spec) -> tuple[Commands, Checks]:
+    """The commands with their layouts, and the checks with their targets: each layout's plan
+    reads the (check, target) pairs of its command, so both are built here."""
+    check_rows, rows = _checks(spec)
+    targets = _target_table(spec, rows)
+    pairs, first_ct = _by_command(spec, check_rows, targets)
+    cmds = _commands(spec, _planned(spec, check_rows, targets, pairs, first_ct), first_ct)
+    target_rows = tuple(TargetRow(command=t[0], first=targets.first[k], n=len(t[3]), text=t[2])
+                        for k, t in enumerate(rows))
     checks = Checks(checks=check_rows, targets=target_rows or (TargetRow(command=-1, first=0, n=0, text="none"),),
-                    ntargets=len(targets), tnames=tuple(tnames) or ("",),
-                    tindex=tuple(tindex) or (tuple([-1] * len(layouts)),),
-                    deprecated=tuple(next((i for i, ch in enumerate(spec.checks) if ch.kind == "deprecated"
-                                           and ch.deprecates_layout(c.name, lay.variant)), -1)
-                                     for c in spec.commands for lay in c.layouts) or (-1,))
+                    ntargets=len(rows), tnames=targets.names or ("",),
+                    tindex=targets.index or (tuple([-1] * len(cmds.layouts)),),
+                    deprecated=_deprecated_by_layout(spec))
     return cmds, checks
 
 
@@ -750,7 +816,7 @@ def _checksums(spec: Spec) -> Checksums:
         coverages.append(CoverageRow(name=name, first=len(segments), n=len(cov.segments), doc=cov.doc))
         segments.extend(SegmentRow(region="REGION_" + macro(s.region), start=s.start or 0,
                                    end=-1 if s.end is None else s.end,
-                                   exclude=" | ".join(f"(1u << {rec_names.index(x)})" for x in s.exclude) or "0u")
+                                   exclude=tuple(rec_names.index(x) for x in s.exclude))
                         for s in cov.segments)
     ckfields: list[CkFieldRow] = []
     check_index = {ch.id: i for i, ch in enumerate(spec.checks)}

@@ -409,25 +409,42 @@ def _document(spec: Spec) -> dict[str, Any]:
             "notes": _notes(spec)}
 
 
+def _settable_fields(spec: Spec) -> list[Any]:
+    """The header fields a CUT text may set (no derived role), once each, in header order."""
+    fields: list[Any] = []
+    for h in spec.headers.values():
+        for f in h.fields:
+            if f.role not in registry.DERIVED_HEADER_ROLES and f.name not in [g.name for g in fields]:
+                fields.append(f)
+    return fields
+
+
+def _cut_part(spec: Spec) -> str:
+    """The part number of the CUT specification 300071 cites (meta.related)."""
+    return next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))), "?")
+
+
+def _version_keyword(spec: Spec, lower: bool) -> str:
+    """The keyword of the command that sets the format version ("" when none does)."""
+    cmd = next((c for c in spec.commands if c.sets and "format_version" in c.sets), None)
+    if cmd is None:
+        return ""
+    return cmd.name.lower() if lower else cmd.name
+
+
 def _cut_doc(spec: Spec) -> dict[str, Any]:
     """What the companion document needs beyond spec.cut: the keywords, the header fields a CUT text
     may set, the descriptor fields of the default version, the versions without a configuration
     descriptor, the checks that report an empty descriptor, the keyword of the VERSION-like command."""
     lower = spec.cut["keyword_case"] == "lower"
     keywords = [c.name.lower() if lower else c.name for c in spec.commands]
-    fields: list[Any] = []
-    for h in spec.headers.values():
-        for f in h.fields:
-            if f.role not in registry.DERIVED_HEADER_ROLES and f.name not in [g.name for g in fields]:
-                fields.append(f)
     head = spec.header_for(spec.default_version)
     by_role = {f.role: f for f in head.fields}
-    version_cmd = next((c for c in spec.commands if c.sets and "format_version" in c.sets), None)
     # the decision that makes this page 300072's stand-in: the one whose text names the CUT document
     cut_note = next((d.id for d in spec.decisions if "companion document" in d.text), "")
     quoted = [f'"{k}"' for k in keywords]
     rows = [" | ".join(quoted[k:k + 5]) for k in range(0, len(quoted), 5)]
-    return {"keywords": keywords, "keyword_alts": "\n                | ".join(rows), "fields": fields,
+    return {"keywords": keywords, "keyword_alts": "\n                | ".join(rows), "fields": _settable_fields(spec),
             "implant": by_role.get("implant_descriptor"),
             "config": by_role.get("configuration_descriptor"),
             "no_config": [v.id for v in spec.versions
@@ -435,11 +452,9 @@ def _cut_doc(spec: Spec) -> dict[str, Any]:
             "descriptor_checks": spec.checks_of_kind("descriptor_word"),
             # the clauses that send the reader to the CUT document: those the CUT decision notes
             "note": cut_note,
-            # the part number of the CUT specification 300071 cites (meta.related)
-            "part": next((str(r["id"]) for r in spec.meta.get("related", []) if "(CUT)" in str(r.get("title", ""))),
-                         "?"),
+            "part": _cut_part(spec),
             "citing": [str(c["number"]) for c in spec.meta.get("clauses", []) if cut_note in c.get("notes", [])],
-            "version_command": (version_cmd.name.lower() if lower else version_cmd.name) if version_cmd else "",
+            "version_command": _version_keyword(spec, lower),
             # the arguments that take the rest of the line (text: true), "COMMAND's arg", once each
             "text_args": list(dict.fromkeys(f"{c.name}'s {a.name}" for c in spec.commands for lay in c.layouts
                                             for a in lay.args if a.text)),

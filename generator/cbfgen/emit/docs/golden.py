@@ -150,33 +150,47 @@ def header_example(spec: Spec, cases: list[Case]) -> tuple[str, str] | None:
 EXAMPLE_RECORDS = 40  # the companion document's example file: a valid case of at most this many records
 
 
+def _example_records(spec: Spec, case: Case) -> list[Any] | None:
+    """The records of a case the complete example may show (None: the case does not qualify): a valid
+    case of the default version, no finding under the default profile, at most EXAMPLE_RECORDS records,
+    each with a keyword line of a layout no profile restricts."""
+    if not case.name.startswith("valid.") or not case.decode_ok or any(prof == "default" for prof, *_ in case.findings):
+        return None
+    if hexdump.version_of(spec, case.data) != spec.default_version or \
+            len(case.data) < spec.header_for(spec.default_version).size:
+        return None
+    recs = list(hexdump.records(spec, case.data))
+    if len(recs) > EXAMPLE_RECORDS or any(r.command is None or r.layout is None or r.layout.profiles
+                                          or not _plain(spec, r.layout, r.raw_args) for r in recs):
+        return None
+    return recs
+
+
+def _header_lines(spec: Spec, data: bytes) -> list[str]:
+    """The CUT header line, and the header_ext line when the configuration descriptor is set."""
+    cut = spec.cut
+    lines = []
+    for f in spec.header_for(spec.default_version).fields:
+        if f.role in ("implant_descriptor", "configuration_descriptor"):
+            value = _word(spec, data[f.offset:f.offset + f.size]).strip()
+            key = cut["header_keyword"] if f.role == "implant_descriptor" else cut["header_ext_keyword"]
+            if f.role == "implant_descriptor" or value:
+                lines.append(f"{key} {value}".rstrip())
+    return lines
+
+
 def cut_example(spec: Spec, cases: list[Case]) -> tuple[str, str] | None:
     """(case name, CUT text) of the companion document's complete example: of the valid cases of the
     default version without findings under the default profile whose records all have a keyword line,
     the one with the most distinct commands (at most EXAMPLE_RECORDS records). The text is what the CUT
     writer writes: the header line, the header_ext line when the configuration descriptor is set, one line a record."""
-    cut = spec.cut
     best: tuple[int, str, str] | None = None
-    header = spec.header_for(spec.default_version)
     for case in cases:
-        if not case.name.startswith("valid.") or not case.decode_ok or any(
-                prof == "default" for prof, *_ in case.findings):
+        recs = _example_records(spec, case)
+        if recs is None:
             continue
-        if hexdump.version_of(spec, case.data) != spec.default_version or len(case.data) < header.size:
-            continue
-        recs = list(hexdump.records(spec, case.data))
-        if len(recs) > EXAMPLE_RECORDS or any(r.command is None or r.layout is None or r.layout.profiles
-                                              or not _plain(spec, r.layout, r.raw_args) for r in recs):
-            continue
-        lines = []
-        for f in header.fields:
-            if f.role in ("implant_descriptor", "configuration_descriptor"):
-                value = _word(spec, case.data[f.offset:f.offset + f.size]).strip()
-                key = cut["header_keyword"] if f.role == "implant_descriptor" else cut["header_ext_keyword"]
-                if f.role == "implant_descriptor" or value:
-                    lines.append(f"{key} {value}".rstrip())
-        lines += [cut_line(spec, r.command, r.layout, r.raw_args) for r in recs
-                  if r.command is not None and r.layout is not None]
+        lines = _header_lines(spec, case.data) + [cut_line(spec, r.command, r.layout, r.raw_args) for r in recs
+                                                  if r.command is not None and r.layout is not None]
         distinct = len({r.command.name for r in recs if r.command is not None})
         if best is None or distinct > best[0]:
             best = (distinct, case.name, "\n".join(lines) + "\n")

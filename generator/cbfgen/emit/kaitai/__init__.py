@@ -115,19 +115,20 @@ def _candidates(spec: Spec, cmd: Command, vid: str) -> tuple[Layout, ...]:
     return own if own else cmd.layouts
 
 
-def build(spec: Spec) -> dict[str, Any]:
-    m = spec.meta
-    enc = "ISO-8859-1"  # strings are ASCII (N4); bytes map 1:1 so that nothing is lost
+ENCODING = "ISO-8859-1"  # strings are ASCII (N4); bytes map 1:1 so that nothing is lost
+
+
+def _header_types(spec: Spec) -> dict[str, Any]:
+    """The header type and one type per header layout. The fields every layout shares from offset 0
+    (the loader makes sure the version fields are among them: version_index reads them), then the
+    rest per layout."""
     vids = [v.id for v in spec.versions]
     first = next(iter(spec.headers.values()))
-    # Header: the fields every layout shares from offset 0 (the loader makes sure the version fields
-    # are among them: version_index reads them), then the rest per layout.
     common: list[Field] = list(common_header_prefix(tuple(spec.headers.values())))
     common_names = {f.name for f in common}
-    tails = {h.id: [f for f in h.fields if f.name not in common_names] for h in spec.headers.values()}
     header_type: dict[str, Any] = {
         "doc": f"File header ({first.clause}); after the version field its layout depends on the version.",
-        "seq": [_field_attr(f, enc, first.clause, spec.revision) for f in common] + [{
+        "seq": [_field_attr(f, ENCODING, first.clause, spec.revision) for f in common] + [{
             "id": "layout",
             "type": {"switch-on": "version_index",
                      "cases": {i: f"header_{ident(spec.version(v).header)}" for i, v in enumerate(vids, 1)}},
@@ -145,75 +146,99 @@ def build(spec: Spec) -> dict[str, Any]:
     for role in ("version_major", "version_minor"):
         vf = spec.common_header_field(role)
         if vf.name not in common_names:
-            attr = _field_attr(vf, enc, first.clause, spec.revision)
+            attr = _field_attr(vf, ENCODING, first.clause, spec.revision)
             del attr["id"]
             header_type["instances"][vf.name] = {"pos": vf.offset, **attr}
     types: dict[str, Any] = {"header": header_type}
-    for hid, fields in tails.items():
+    for hid, h in spec.headers.items():
         types[f"header_{ident(hid)}"] = {
-            "doc": _doc(spec.headers[hid].doc),
-            "seq": [_field_attr(f, enc, spec.headers[hid].clause, spec.revision) for f in fields],
+            "doc": _doc(h.doc),
+            "seq": [_field_attr(f, ENCODING, h.clause, spec.revision) for f in h.fields if f.name not in common_names],
         }
-    # Record head, with the code copy, version gating and argument sizes as valid: expressions.
-    rec = spec.record
-    head: list[dict[str, Any]] = []
-    by_role = {f.role: f for f in rec.fields}
-    size_cases: list[str] = []
-    for cmd in spec.commands:
-        conds = []
-        for i, v in enumerate(vids, 1):
-            sizes = sorted({lay.size for lay in _candidates(spec, cmd, v) if lay.repeated is None})
-            # a repeated group (issue 25, point 3): every nb = size + k n, n in min..max
-            groups = sorted({_group_size_cond(lay) for lay in _candidates(spec, cmd, v) if lay.repeated is not None})
-            conds.append(f"(_root.header.version_index == {i} and ("
-                         + " or ".join([*(f"_ == {s}" for s in sizes), *groups]) + "))")
-        size_cases.append(f"{by_role['code'].name} == {cmd.code} ? ({' or '.join(conds)})")
-    size_expr = " : ".join(size_cases) + " : true"
+    return types
+
+
+def _size_condition(spec: Spec, cmd: Command, i: int, vid: str) -> str:
+    """The argument sizes a record of ``cmd`` may have in files of version ``vid`` (index i)."""
+    cands = _candidates(spec, cmd, vid)
+    sizes = sorted({lay.size for lay in cands if lay.repeated is None})
+    # a repeated group (issue 25, point 3): every nb = size + k n, n in min..max
+    groups = sorted({_group_size_cond(lay) for lay in cands if lay.repeated is not None})
+    return f"(_root.header.version_index == {i} and (" + " or ".join([*(f"_ == {s}" for s in sizes), *groups]) + "))"
+
+
+def _size_expr(spec: Spec, code_name: str) -> str:
+    """The arg_size field's valid: expression: per command code, the sizes of each version."""
+    vids = [v.id for v in spec.versions]
+    cases = [f"{code_name} == {cmd.code} ? ("
+             + " or ".join(_size_condition(spec, cmd, i, v) for i, v in enumerate(vids, 1)) + ")"
+             for cmd in spec.commands]
+    return " : ".join(cases) + " : true"
+
+
+def _gates(spec: Spec) -> list[str]:
+    """Version gating (the availability checks) as valid: conditions on the code field."""
+    vids = [v.id for v in spec.versions]
     gates = []
     for ch in spec.checks_of_kind("availability"):
         for v in ch.versions:
             missing = [c.code for c in spec.commands if not c.available_in(v)]
             if missing:
-                i = vids.index(v) + 1
-                gates.append(f"not (_root.header.version_index == {i} and (" +
-                             " or ".join(f"_ == {c}" for c in missing) + "))")
-    for f in rec.fields:
-        attr = _field_attr(f, enc, rec.clause, spec.revision)
-        if f.role == "code" and gates:
-            attr["valid"] = {"expr": " and ".join(gates)}
-            attr["doc"] += " Version gating (" + ", ".join(c.id for c in spec.checks_of_kind("availability")) + \
-                ") is a valid: expression."
-        if f.role == "code_copy":
-            attr["valid"] = {"expr": f"_ == {by_role['code'].name}"}
-        if f.role == "arg_size":
-            attr["valid"] = {"expr": size_expr}
-        head.append(attr)
-    cases: dict[str, str] = {}
+                gates.append(f"not (_root.header.version_index == {vids.index(v) + 1} and ("
+                             + " or ".join(f"_ == {c}" for c in missing) + "))")
+    return gates
+
+
+def _args_cases(spec: Spec) -> dict[int, str]:
+    """The args switch: (code, nb, version index) -> the layout type (one case per distinct nb)."""
+    cases: dict[int, str] = {}
     for cmd in spec.commands:
-        for i, v in enumerate(vids, 1):
-            seen: set[int] = set()
+        for i, v in enumerate((v.id for v in spec.versions), 1):
             for lay in _candidates(spec, cmd, v):
                 for nb in lay.sizes:  # one size, or every nb of a repeated group
-                    if nb in seen:
-                        continue
-                    seen.add(nb)
-                    cases[f"{cmd.code * 65536 + nb * 256 + i}"] = _layout_type(lay)
+                    cases.setdefault(cmd.code * 65536 + nb * 256 + i, _layout_type(lay))
+    return cases
+
+
+def _head_attr(spec: Spec, f: Field, gates: list[str], size_expr: str, code_name: str) -> dict[str, Any]:
+    """A record head field, with the code copy, version gating and argument sizes as valid: expressions."""
+    attr = _field_attr(f, ENCODING, spec.record.clause, spec.revision)
+    if f.role == "code" and gates:
+        attr["valid"] = {"expr": " and ".join(gates)}
+        attr["doc"] += " Version gating (" + ", ".join(c.id for c in spec.checks_of_kind("availability")) + \
+            ") is a valid: expression."
+    if f.role == "code_copy":
+        attr["valid"] = {"expr": f"_ == {code_name}"}
+    if f.role == "arg_size":
+        attr["valid"] = {"expr": size_expr}
+    return attr
+
+
+def _record_type(spec: Spec) -> dict[str, Any]:
+    rec = spec.record
+    by_role = {f.role: f for f in rec.fields}
     code_name, size_name = by_role["code"].name, by_role["arg_size"].name
+    gates, size_expr = _gates(spec), _size_expr(spec, code_name)
+    head = [_head_attr(spec, f, gates, size_expr, code_name) for f in rec.fields]
     head.append({
         "id": "args",
         "size": size_name,
         "type": {"switch-on": (f"{code_name}.as<s4> * 65536 + {size_name}.as<s4> * 256"
                                " + _root.header.version_index.as<s4>"),
-                 "cases": {int(k): v for k, v in cases.items()}},
+                 "cases": _args_cases(spec)},
         "doc": "The command's arguments: the layout of the file's version whose size matches (for a command "
                "the version lacks, any of its layouts); raw bytes for an unknown code.",
     })
-    types["record"] = {
+    return {
         "doc": _doc(rec.doc) + " Not expressible here: " + ", ".join(
             f"{c.id} ({c.kind})" for c in spec.checks if c.kind in ("arg_checksum", "sequence")) + ".",
         "seq": head,
         "instances": {"command": {"value": code_name, "enum": "command", "doc": "The command code as the enum (5.2)."}},
     }
+
+
+def _layout_types(spec: Spec) -> dict[str, Any]:
+    types: dict[str, Any] = {}
     for cmd in spec.commands:
         for lay in cmd.layouts:
             types[_layout_type(lay)] = {
@@ -221,20 +246,35 @@ def build(spec: Spec) -> dict[str, Any]:
                             + (f" Accepted under profile {', '.join(lay.profiles)}." if lay.profiles else "")
                             + (f" {lay.doc}" if lay.doc else "")),
                 "doc-ref": f"{spec.revision}, {lay.clause or cmd.clause}",
-                "seq": [_group_attr(lay, _field_attr(a, enc, None, spec.revision)) if a.repeat is not None
-                        else _field_attr(a, enc, None, spec.revision) for a in lay.args],
+                "seq": [_group_attr(lay, _field_attr(a, ENCODING, None, spec.revision)) if a.repeat is not None
+                        else _field_attr(a, ENCODING, None, spec.revision) for a in lay.args],
             }
+    return types
+
+
+def _meta(spec: Spec) -> dict[str, Any]:
+    m = spec.meta
+    meta: dict[str, Any] = {
+        "id": m["id"],
+        "title": f"{m['title']} ({spec.revision})",
+        "file-extension": m["file_extension"],
+        "xref": {k: v[0] if len(v) == 1 else list(v) for k, v in m.get("xref", {}).items()},
+        "license": m["license"],
+        "ks-version": "0.11",
+        "endian": "le" if m["byte_order"] == "little" else "be",
+    }
+    if not meta["xref"]:  # optional in the spec: no empty mapping in the .ksy
+        del meta["xref"]
+    return meta
+
+
+def build(spec: Spec) -> dict[str, Any]:
+    m = spec.meta
+    first = next(iter(spec.headers.values()))
+    types = {**_header_types(spec), "record": _record_type(spec), **_layout_types(spec)}
     not_here = [c for c in spec.checks if not CHECK_KINDS[c.kind].kaitai]
     ksy: dict[str, Any] = {
-        "meta": {
-            "id": m["id"],
-            "title": f"{m['title']} ({spec.revision})",
-            "file-extension": m["file_extension"],
-            "xref": {k: v[0] if len(v) == 1 else list(v) for k, v in m.get("xref", {}).items()},
-            "license": m["license"],
-            "ks-version": "0.11",
-            "endian": "le" if m["byte_order"] == "little" else "be",
-        },
+        "meta": _meta(spec),
         "doc": _doc(m["doc"]) + " Generated from spec/cbf.yaml; do not edit. Kaitai checks here the magic "
                "numbers, the code copy, the argument size per command and version, and version gating. It cannot "
                "check: " + "; ".join(f"{c.id} ({_doc(c.text)})" for c in not_here) + ".",
@@ -247,8 +287,6 @@ def build(spec: Spec) -> dict[str, Any]:
         "types": types,
         "enums": {"command": {c.code: {"id": c.name.lower(), "doc": _doc(c.doc)} for c in spec.sorted_commands}},
     }
-    if not ksy["meta"]["xref"]:  # optional in the spec: no empty mapping in the .ksy
-        del ksy["meta"]["xref"]
     escaped: dict[str, Any] = _escape_docs(ksy)
     return escaped
 

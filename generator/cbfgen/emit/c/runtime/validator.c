@@ -25,6 +25,21 @@ typedef struct cbf__vctx {
     float mhi[CBF_MACHINE__COUNT][CBF_MACHINE_MAX_AXES];
 } cbf__vctx;
 
+/* The check kinds the engine judges in its own passes (validate.c, this file, machine.c, group_checks.c), not
+ * through a kernel table (validator_layouts.c.j2 holds the targeted kinds' kernels, cbf__<kind>_at). cbf.h
+ * checks this list against the registry when it compiles: a kind the registry gains that neither a kernel
+ * table nor this list holds fails the build, naming it (CBF__JUDGED_<KIND> undeclared); a kind listed here
+ * that the registry no longer has fails too (CBF__KIND_<KIND> undeclared). Adding a kind here is adding
+ * its pass: test_bindings holds each kind's constant to a use beyond its enum. */
+#define CBF__PASS_KINDS(X)                                                                                         \
+    X(TRUNCATED_HEADER) X(TRUNCATED_RECORD) X(PART_NUMBER) X(DESCRIPTOR_WORD) X(CUTTER_TABLE) X(FILE_CHECKSUM)    \
+    X(COMMAND_COUNT) X(HEADER_CHECKSUM) X(MAGIC) X(SEQUENCE) X(CODE_COPY) X(ARG_SIZE) X(ARG_CHECKSUM)             \
+    X(CONTINUITY) X(AVAILABILITY) X(VERSION) X(UNKNOWN_CODE) X(TRAILING) X(RESERVED_BYTE) X(STRING_TAIL)          \
+    X(STRING_ASCII) X(FINITE) X(ORIENTATION) X(SHAPE) X(MACHINE_LIMITS) X(DEPRECATED)
+#define CBF__JUDGED(k) CBF__JUDGED_##k = CBF__KIND_##k,
+#define CBF__ONE_MORE(k) +1
+enum { CBF__PASS_KINDS(CBF__JUDGED) CBF__JUDGED__COUNT = 0 CBF__PASS_KINDS(CBF__ONE_MORE) };
+
 static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap) CBF__PRINTF(5, 0);
 static void cbf__vsay(cbf__vctx *v, int ci, long rec, size_t off, const char *fmt, va_list ap)
 {

@@ -272,19 +272,8 @@ def _obj(value: Any, where: str) -> dict[str, Any]:
     return value
 
 
-def from_canonical(doc: Any) -> Cbf:
-    """A model from canonical JSON. Stored fields may be left out; encode fills them."""
-    from .codec import decode_header
-
-    d = _obj(doc, "$")
-    extra = set(d) - {"header", "records", "trailing"}
-    if extra:
-        raise JsonShapeError(f"$: unknown key {sorted(extra)[0]!r}")
-    h = _obj(d.get("header"), "$.header")
-    major = _uint(h.get(T.VMAJOR.name, 0), f"$.header.{T.VMAJOR.name}", 1)
-    minor = _uint(h.get(T.VMINOR.name, 0), f"$.header.{T.VMINOR.name}", 1)
-    vid = T.version_id(major, minor) or T.FALLBACK_VERSION
-    info = T.HEADERS[T.VERSION_BY_ID[vid].header]
+def _header_values(h: dict[str, Any], info: Any) -> dict[str, Any]:
+    """The header's values by field: given, or the stored fields' and strings' defaults."""
     hv: dict[str, Any] = {}
     for f in info.fields:
         if f.name in h:
@@ -300,53 +289,83 @@ def from_canonical(doc: Any) -> Cbf:
     unknown = set(h) - {f.name for f in info.fields}
     if unknown:
         raise JsonShapeError(f"$.header: unknown key {sorted(unknown)[0]!r} for header layout {info.id}")
-    header = decode_header(_pack_json(info.fields, info.struct, hv, "$.header"))
+    return hv
+
+
+_NAMES = {f.role: f.name for f in T.RECORD_FIELDS}
+
+
+def _record_code(r: dict[str, Any], w: str) -> int:
+    """The record's code: given, or its command's (by any of its names)."""
+    code = r.get(_NAMES["code"])
+    if code is None:
+        cname = r.get("command")
+        if cname not in T.BY_ANY_NAME:
+            raise JsonShapeError(f"{w}: needs {_NAMES['code']} or a known command name, got {cname!r}")
+        code = T.BY_ANY_NAME[cname].code
+    return _uint(code, f"{w}.{_NAMES['code']}", 1)
+
+
+def _record_args(r: dict[str, Any], w: str, cmd: Any, code: int, vid: str) -> bytes:
+    """The record's argument bytes: its args packed in the layout whose names (and size) they match,
+    or its raw_args."""
+    args = r.get("args")
+    if args is None:
+        return _hex(r.get("raw_args", ""), f"{w}.raw_args")
+    a = _obj(args, f"{w}.args")
+    if cmd is None:
+        raise JsonShapeError(f"{w}.args: unknown code 0x{code:02X} takes raw_args only")
+    want_size = r.get(_NAMES["arg_size"])
+    lay = next((x for x in cmd.candidates(vid) + cmd.layouts
+                if {f.name for f in x.args} == set(a) and (want_size is None or want_size == x.size)
+                and _items_fit(x, a)), None)
+    if lay is None:
+        raise JsonShapeError(f"{w}.args: keys {sorted(a)} match no layout of {cmd.name}")
+    return _pack_json(lay.args, lay.struct.__class__(lay.bits.format), a, f"{w}.args")
+
+
+def _record(rv: Any, i: int, vid: str) -> Record:
+    w = f"$.records[{i}]"
+    r = _obj(rv, w)
+    bad = set(r) - (set(_NAMES.values()) | {"offset", "command", "args", "raw_args"})
+    if bad:
+        raise JsonShapeError(f"{w}: unknown key {sorted(bad)[0]!r}")
+    code = _record_code(r, w)
+    cmd = T.BY_CODE.get(code)
+    if r.get("command") is not None and (cmd is None or T.BY_ANY_NAME.get(r["command"]) is not cmd):
+        raise JsonShapeError(f"{w}.command: {r['command']!r} does not match code 0x{code:02X}")
+    raw = _record_args(r, w, cmd, code, vid)
+    size = r.get(_NAMES["arg_size"])
+    if size is not None and size != len(raw):
+        raise JsonShapeError(f"{w}.{_NAMES['arg_size']}: {size}, but the arguments are {len(raw)} bytes")
+
+    def opt(role: str, size: int) -> int | None:
+        v = r.get(_NAMES[role])
+        return None if v is None else _uint(v, f"{w}.{_NAMES[role]}", size)
+
+    return Record(code=code, raw_args=raw, sequence=opt("sequence", 2) or 0,
+                  code_copy=opt("code_copy", 1), reserved=opt("reserved", 1) or 0,
+                  arg_checksum=opt("checksum", T.ARG_CHECKSUM.size))
+
+
+def from_canonical(doc: Any) -> Cbf:
+    """A model from canonical JSON. Stored fields may be left out; encode fills them."""
+    from .codec import decode_header
+
+    d = _obj(doc, "$")
+    extra = set(d) - {"header", "records", "trailing"}
+    if extra:
+        raise JsonShapeError(f"$: unknown key {sorted(extra)[0]!r}")
+    h = _obj(d.get("header"), "$.header")
+    major = _uint(h.get(T.VMAJOR.name, 0), f"$.header.{T.VMAJOR.name}", 1)
+    minor = _uint(h.get(T.VMINOR.name, 0), f"$.header.{T.VMINOR.name}", 1)
+    vid = T.version_id(major, minor) or T.FALLBACK_VERSION
+    info = T.HEADERS[T.VERSION_BY_ID[vid].header]
+    header = decode_header(_pack_json(info.fields, info.struct, _header_values(h, info), "$.header"))
     recs = d.get("records", [])
     if not isinstance(recs, list):
         raise JsonShapeError("$.records: expected a list")
-    names = {f.role: f.name for f in T.RECORD_FIELDS}
-    known = set(names.values()) | {"offset", "command", "args", "raw_args"}
-    out: list[Record] = []
-    for i, rv in enumerate(recs):
-        w = f"$.records[{i}]"
-        r = _obj(rv, w)
-        bad = set(r) - known
-        if bad:
-            raise JsonShapeError(f"{w}: unknown key {sorted(bad)[0]!r}")
-        code = r.get(names["code"])
-        if code is None:
-            cname = r.get("command")
-            if cname not in T.BY_ANY_NAME:
-                raise JsonShapeError(f"{w}: needs {names['code']} or a known command name, got {cname!r}")
-            code = T.BY_ANY_NAME[cname].code
-        code = _uint(code, f"{w}.{names['code']}", 1)
-        cmd = T.BY_CODE.get(code)
-        if r.get("command") is not None and (cmd is None or T.BY_ANY_NAME.get(r["command"]) is not cmd):
-            raise JsonShapeError(f"{w}.command: {r['command']!r} does not match code 0x{code:02X}")
-        args = r.get("args")
-        if args is not None:
-            a = _obj(args, f"{w}.args")
-            if cmd is None:
-                raise JsonShapeError(f"{w}.args: unknown code 0x{code:02X} takes raw_args only")
-            want_size = r.get(names["arg_size"])
-            lay = next((x for x in cmd.candidates(vid) + cmd.layouts
-                        if {f.name for f in x.args} == set(a) and (want_size is None or want_size == x.size)
-                        and _items_fit(x, a)), None)
-            if lay is None:
-                raise JsonShapeError(f"{w}.args: keys {sorted(a)} match no layout of {cmd.name}")
-            raw = _pack_json(lay.args, lay.struct.__class__(lay.bits.format), a, f"{w}.args")
-        else:
-            raw = _hex(r.get("raw_args", ""), f"{w}.raw_args")
-        size = r.get(names["arg_size"])
-        if size is not None and size != len(raw):
-            raise JsonShapeError(f"{w}.{names['arg_size']}: {size}, but the arguments are {len(raw)} bytes")
-
-        def opt(role: str, size: int, r: dict[str, Any] = r, w: str = w) -> int | None:
-            v = r.get(names[role])
-            return None if v is None else _uint(v, f"{w}.{names[role]}", size)
-
-        out.append(Record(code=code, raw_args=raw, sequence=opt("sequence", 2) or 0,
-                          code_copy=opt("code_copy", 1), reserved=opt("reserved", 1) or 0,
-                          arg_checksum=opt("checksum", T.ARG_CHECKSUM.size)))
+    out = [_record(rv, i, vid) for i, rv in enumerate(recs)]
     trailing = _hex(d.get("trailing", ""), "$.trailing")
     return Cbf(header, tuple(out), trailing)
+

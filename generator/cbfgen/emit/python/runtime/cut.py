@@ -100,55 +100,71 @@ def _sized(cmd: T.CommandInfo, lay: T.LayoutInfo, nb: int) -> T.LayoutInfo:
     return next((x for x in cmd.layouts if x.variant == lay.variant and x.size == nb), lay)
 
 
-def _record_line(r: Record, version: str, profile: str) -> str:
+def _float_text(f: Any, v: tuple[Any, ...]) -> list[str] | None:
+    """A float argument's words (None: a value that is not finite has no keyword line)."""
+    if not all(finite(b) for b in v):
+        return None
+    text = [format_float(b) for b in v]
+    if f.per:  # a repeated group: its n values or vectors, one after another
+        return text if f.per == 1 else [
+            f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text[k:k + f.per])} {C['vector_close']}"
+            for k in range(0, f.count, f.per)]
+    return [f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text)} {C['vector_close']}"
+            if f.count > 1 else text[0]]
+
+
+def _last_text(lay: T.LayoutInfo, k: int) -> bool:
+    """Whether argument k is the last one before only reserved arguments (a text argument must be)."""
+    return k == len(lay.args) - 1 - sum(1 for g in lay.args[k + 1:] if g.reserved)
+
+
+def _arg_words(cmd: T.CommandInfo, lay: T.LayoutInfo, k: int, v: tuple[Any, ...], profile: str) -> list[str] | None:
+    """Argument k's words on the keyword line (None: the record has no keyword line)."""
+    f = lay.args[k]
+    if f.kind == "float":
+        return _float_text(f, v)
+    if f.is_int:
+        return list(map(str, v)) if f.per else [str(v[0])]
+    if f.kind == "bytes":
+        return None if any(v[0]) else []
+    if f.text:
+        if not _plain_text(v[0]) or not _last_text(lay, k):
+            return None
+        value = v[0].rstrip(T.PAD).decode("ascii")
+        return [value] if value else []
+    if not _plain_word(v[0]):
+        return None
+    word = v[0].rstrip(T.PAD).decode("ascii")
+    _profile_word(profile, cmd.name, f.name, word)
+    return [word]
+
+
+def _keyword_line(r: Record, version: str, profile: str) -> str | None:
+    """The record's keyword line, or None when it has none (no plain layout, a reserved byte, a code
+    copy, a value only the record line keeps)."""
     cmd = T.BY_CODE.get(r.code)
     lay = _plain_layout(cmd, version, profile) if cmd else None
-    if cmd is not None and lay is not None:
-        lay = _sized(cmd, lay, len(r.raw_args))
-    plain = (cmd is not None and lay is not None and lay.size == len(r.raw_args) and r.reserved == 0
-             and (r.code_copy is None or r.code_copy == r.code))
-    parts: list[str] = []
-    if plain and cmd is not None and lay is not None:
-        vals = lay.bits.unpack(r.raw_args)
-        j = 0
-        parts.append(keyword(cmd))
-        for k, f in enumerate(lay.args):
-            v = vals[j:j + f.count]
-            j += f.count
-            if f.kind == "float":
-                if not all(finite(b) for b in v):
-                    plain = False
-                    break
-                text = [format_float(b) for b in v]
-                if f.per:  # a repeated group: its n values or vectors, one after another
-                    parts.extend(text if f.per == 1 else (
-                        f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text[k:k + f.per])} "
-                        f"{C['vector_close']}" for k in range(0, f.count, f.per)))
-                    continue
-                parts.append(f"{C['vector_open']} {(C['vector_separator'] + ' ').join(text)} {C['vector_close']}"
-                             if f.count > 1 else text[0])
-            elif f.is_int:
-                parts.extend(map(str, v) if f.per else [str(v[0])])
-            elif f.kind == "bytes":
-                if any(v[0]):
-                    plain = False
-                    break
-            elif f.text:
-                if not _plain_text(v[0]) or k != len(lay.args) - 1 - sum(1 for g in lay.args[k + 1:] if g.reserved):
-                    plain = False
-                    break
-                value = v[0].rstrip(T.PAD).decode("ascii")
-                if value:
-                    parts.append(value)
-            else:
-                if not _plain_word(v[0]):
-                    plain = False
-                    break
-                word = v[0].rstrip(T.PAD).decode("ascii")
-                _profile_word(profile, cmd.name, f.name, word)
-                parts.append(word)
-    if plain:
-        return _SEP.join(parts)
+    if cmd is None or lay is None:
+        return None
+    lay = _sized(cmd, lay, len(r.raw_args))
+    if lay.size != len(r.raw_args) or r.reserved != 0 or (r.code_copy is not None and r.code_copy != r.code):
+        return None
+    vals = lay.bits.unpack(r.raw_args)
+    parts = [keyword(cmd)]
+    j = 0
+    for k, f in enumerate(lay.args):
+        words = _arg_words(cmd, lay, k, vals[j:j + f.count], profile)
+        if words is None:
+            return None
+        parts.extend(words)
+        j += f.count
+    return _SEP.join(parts)
+
+
+def _record_line(r: Record, version: str, profile: str) -> str:
+    line = _keyword_line(r, version, profile)
+    if line is not None:
+        return line
     copy = r.code if r.code_copy is None else r.code_copy
     line = f"{EXT['record_keyword']} {r.code:02x} {copy:02x} {r.reserved:02x}"
     return line + (f" {bytes(r.raw_args).hex()}" if r.raw_args else "")
@@ -181,6 +197,63 @@ def _column(u8: Any, at: Any, offset: int, size: int, count: int = 1) -> Any:
     return np.ascontiguousarray(u8[idx]).view(f"{T.BO}u{size}").astype(np.uint64)
 
 
+def _key_template(k: int, version: str, profile: str) -> tuple[T.LayoutInfo, str] | None:
+    """The layout and line template of the records of key k (code << 16 | nb), None: no template."""
+    cmd = T.BY_CODE.get(k >> 16)
+    lay = _plain_layout(cmd, version, profile) if cmd else None
+    if cmd is None or lay is None:
+        return None
+    lay = _sized(cmd, lay, k & 0xFFFF)
+    tmpl = _template(cmd, lay) if lay.size == k & 0xFFFF else None
+    return None if tmpl is None else (lay, tmpl)
+
+
+def _layout_columns(u8: Any, base: Any, lay: T.LayoutInfo) -> tuple[Any, list[tuple[str, Any]]]:
+    """The rows a template can write (finite floats, zero reserved bytes) and the template's columns."""
+    import numpy as np
+
+    good = np.ones(len(base), dtype=bool)
+    cols: list[tuple[str, Any]] = []
+    for f in lay.args:
+        if f.kind == "float":
+            vals = _column(u8, base, f.offset, f.elem_size, f.count)
+            good &= ((vals & 0x7F800000) != 0x7F800000).all(axis=1)
+            cols.extend(("float", vals[:, j]) for j in range(f.count))
+        elif f.kind == "uint" and f.per:
+            ints = _column(u8, base, f.offset, f.elem_size, f.count)
+            cols.extend(("uint", ints[:, j]) for j in range(f.count))
+        elif f.kind == "uint":
+            cols.append(("uint", _column(u8, base, f.offset, f.elem_size)[:, 0]))
+        else:
+            good &= (np.ascontiguousarray(u8[base[:, None] + (f.offset + np.arange(f.size))]) == 0).all(axis=1)
+    return good, cols
+
+
+def _fill(lines: Any, groups: list[tuple[Any, str, list[tuple[str, Any]]]]) -> None:
+    """Each group's lines from its template, its floats formatted once per distinct value."""
+    import numpy as np
+
+    from .floats import format_floats
+
+    floats = [c for _, _, cols in groups for kind, c in cols if kind == "float"]
+    if not floats:
+        for rows, tmpl, _ in groups:
+            lines[rows] = [tmpl] * len(rows)
+        return
+    uniq, inverse = np.unique(np.concatenate(floats), return_inverse=True)
+    texts = np.array(format_floats(uniq.astype(np.uint32)), dtype=object)[inverse]
+    pos = 0
+    for rows, tmpl, cols in groups:
+        args = []
+        for kind, c in cols:
+            if kind == "float":
+                args.append(texts[pos:pos + len(c)].tolist())
+                pos += len(c)
+            else:
+                args.append(c.tolist())
+        lines[rows] = list(map(tmpl.format, *args)) if args else [tmpl] * len(rows)
+
+
 def _record_lines(records: Any, version: str, profile: str) -> list[str]:
     """The lines of the records, in order. The records of a decoded file are read as numpy
     columns, a layout at a time, and their floats formatted once per distinct value
@@ -190,8 +263,6 @@ def _record_lines(records: Any, version: str, profile: str) -> list[str]:
     if source is None or len(records) < 64:
         return _lines_one_by_one(records, range(len(records)), version, profile)
     import numpy as np
-
-    from .floats import format_floats
 
     buf, offsets = source
     u8 = np.frombuffer(buf, dtype=np.uint8)
@@ -205,48 +276,16 @@ def _record_lines(records: Any, version: str, profile: str) -> list[str]:
     key = head["code"] * 65536 + head["arg_size"]
     groups: list[tuple[Any, str, list[tuple[str, Any]]]] = []
     for k in np.unique(key[plain]).tolist():
-        cmd = T.BY_CODE.get(k >> 16)
-        lay = _plain_layout(cmd, version, profile) if cmd else None
-        lay = _sized(cmd, lay, k & 0xFFFF) if cmd and lay else lay
-        tmpl = _template(cmd, lay) if cmd and lay and lay.size == k & 0xFFFF else None
-        if lay is None or tmpl is None:
+        got = _key_template(k, version, profile)
+        if got is None:
             continue
+        lay, tmpl = got
         rows = np.flatnonzero(plain & (key == k))
-        base = at[rows] + T.HEAD_SIZE
-        good = np.ones(len(rows), dtype=bool)
-        cols: list[tuple[str, Any]] = []
-        for f in lay.args:
-            if f.kind == "float":
-                vals = _column(u8, base, f.offset, f.elem_size, f.count)
-                good &= ((vals & 0x7F800000) != 0x7F800000).all(axis=1)
-                cols.extend(("float", vals[:, j]) for j in range(f.count))
-            elif f.kind == "uint" and f.per:
-                ints = _column(u8, base, f.offset, f.elem_size, f.count)
-                cols.extend(("uint", ints[:, j]) for j in range(f.count))
-            elif f.kind == "uint":
-                cols.append(("uint", _column(u8, base, f.offset, f.elem_size)[:, 0]))
-            else:
-                good &= (np.ascontiguousarray(u8[base[:, None] + (f.offset + np.arange(f.size))]) == 0).all(axis=1)
+        good, cols = _layout_columns(u8, at[rows] + T.HEAD_SIZE, lay)
         rows = rows[good]
         groups.append((rows, tmpl, [(kind, c[good]) for kind, c in cols]))
         done[rows] = True
-    floats = [c for _, _, cols in groups for kind, c in cols if kind == "float"]
-    if floats:
-        uniq, inverse = np.unique(np.concatenate(floats), return_inverse=True)
-        texts = np.array(format_floats(uniq.astype(np.uint32)), dtype=object)[inverse]
-        pos = 0
-        for rows, tmpl, cols in groups:
-            args = []
-            for kind, c in cols:
-                if kind == "float":
-                    args.append(texts[pos:pos + len(c)].tolist())
-                    pos += len(c)
-                else:
-                    args.append(c.tolist())
-            lines[rows] = list(map(tmpl.format, *args)) if args else [tmpl] * len(rows)
-    else:
-        for rows, tmpl, _ in groups:
-            lines[rows] = [tmpl] * len(rows)
+    _fill(lines, groups)
     rest = np.flatnonzero(~done).tolist()
     lines[rest] = _lines_one_by_one(records, rest, version, profile) if rest else []
     return list(lines.tolist())
@@ -673,6 +712,62 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
             raise cur.fail(f"{name} is already set on line {set_on[name]}; a header line is given once")
         set_on[name] = cur.line
 
+    def descriptor(cur: _Cursor, key: str) -> None:
+        role = "implant_descriptor" if key == C["header_keyword"] else "configuration_descriptor"
+        f = info.by_role(role)
+        if f is None:
+            raise cur.fail(f"version {vid} has no {role.replace('_', ' ')}")
+        once(cur, f.name)
+        value = cur.rest()
+        if len(value) > f.size:
+            raise cur.fail(f"{len(value)} characters, the {f.name} holds {f.size}")
+        fields[f.name] = value
+
+    def checksum(cur: _Cursor, n: int) -> None:
+        once(cur, C["checksum_keyword"])
+        w = cur.word("checksum")
+        if not (w.isascii() and w.isdigit()):
+            raise cur.fail(f"{_show(w)} is not a number")
+        cur.end()
+        stated.append((n, w))
+
+    def header_field(cur: _Cursor) -> None:
+        name = cur.word("field name")
+        f = next((g for g in info.fields if g.name == name and g.role not in T.DERIVED_ROLES), None)
+        if f is None:
+            raise cur.fail(f"{_show(name)} is not a writable header field of layout {info.id}")
+        once(cur, f.name)
+        raw = _hex(cur, name)
+        if len(raw) != f.size:
+            raise cur.fail(f"{name}: {len(raw)} bytes, the field holds {f.size}")
+        cur.end()
+        fields[f.name] = (raw.rstrip(T.PAD).decode("latin-1") if f.kind == "string"
+                          else int.from_bytes(raw, "little" if T.BO == "<" else "big", signed=f.kind == "sint")
+                          if f.is_int
+                          else raw)
+
+    def raw_record(cur: _Cursor) -> Record:
+        code = _hex(cur, "code")
+        copy = _hex(cur, "code copy")
+        res = _hex(cur, "reserved byte")
+        if not (len(code) == len(copy) == len(res) == 1):
+            raise cur.fail("code, code copy and reserved byte are one hex byte each")
+        cur.skip()
+        raw = _hex(cur, "arguments") if cur.pos < len(cur.text) else b""
+        if len(raw) > T.LIMITS["max_arg_size"]:
+            raise cur.fail(f"{len(raw)} argument bytes, at most {T.LIMITS['max_arg_size']}")
+        cur.end()
+        return Record(code=code[0], raw_args=raw, code_copy=copy[0], reserved=res[0])
+
+    def keyword_record(cur: _Cursor, key: str, kw: str, n: int) -> Record:
+        cmd = _BY_KEYWORD.get(key)
+        if cmd is None:
+            raise CutSyntaxError(f"unknown keyword {_show(kw)}", line=n)
+        lay = _plain_layout(cmd, vid, profile)
+        if lay is None:
+            raise cur.fail(f"not available in version {vid}")
+        return Record(code=cmd.code, raw_args=_parse_args(cur, lay))
+
     def careful(n: int, line: str) -> Record | None:
         """One line, read by the careful parser (issue 13): a record, or None for a header line."""
         stripped = line.strip(" ")
@@ -684,56 +779,15 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
         if kw == vkw:
             return None
         if key in (C["header_keyword"], C["header_ext_keyword"]):
-            role = "implant_descriptor" if key == C["header_keyword"] else "configuration_descriptor"
-            f = info.by_role(role)
-            if f is None:
-                raise cur.fail(f"version {vid} has no {role.replace('_', ' ')}")
-            once(cur, f.name)
-            value = cur.rest()
-            if len(value) > f.size:
-                raise cur.fail(f"{len(value)} characters, the {f.name} holds {f.size}")
-            fields[f.name] = value
+            descriptor(cur, key)
         elif key == C["checksum_keyword"]:
-            once(cur, C["checksum_keyword"])
-            w = cur.word("checksum")
-            if not (w.isascii() and w.isdigit()):
-                raise cur.fail(f"{_show(w)} is not a number")
-            cur.end()
-            stated.append((n, w))
+            checksum(cur, n)
         elif kw == fkw:
-            name = cur.word("field name")
-            f = next((g for g in info.fields if g.name == name and g.role not in T.DERIVED_ROLES), None)
-            if f is None:
-                raise cur.fail(f"{_show(name)} is not a writable header field of layout {info.id}")
-            once(cur, f.name)
-            raw = _hex(cur, name)
-            if len(raw) != f.size:
-                raise cur.fail(f"{name}: {len(raw)} bytes, the field holds {f.size}")
-            cur.end()
-            fields[f.name] = (raw.rstrip(T.PAD).decode("latin-1") if f.kind == "string"
-                              else int.from_bytes(raw, "little" if T.BO == "<" else "big", signed=f.kind == "sint")
-                              if f.is_int
-                              else raw)
+            header_field(cur)
         elif kw == rkw:
-            code = _hex(cur, "code")
-            copy = _hex(cur, "code copy")
-            res = _hex(cur, "reserved byte")
-            if not (len(code) == len(copy) == len(res) == 1):
-                raise cur.fail("code, code copy and reserved byte are one hex byte each")
-            cur.skip()
-            raw = _hex(cur, "arguments") if cur.pos < len(cur.text) else b""
-            if len(raw) > T.LIMITS["max_arg_size"]:
-                raise cur.fail(f"{len(raw)} argument bytes, at most {T.LIMITS['max_arg_size']}")
-            cur.end()
-            return Record(code=code[0], raw_args=raw, code_copy=copy[0], reserved=res[0])
+            return raw_record(cur)
         else:
-            cmd = _BY_KEYWORD.get(key)
-            if cmd is None:
-                raise CutSyntaxError(f"unknown keyword {_show(kw)}", line=n)
-            lay = _plain_layout(cmd, vid, profile)
-            if lay is None:
-                raise cur.fail(f"not available in version {vid}")
-            return Record(code=cmd.code, raw_args=_parse_args(cur, lay))
+            return keyword_record(cur, key, kw, n)
         return None
 
     out = _Records()

@@ -81,40 +81,48 @@ DEFAULT = Machine(_limits(T.SPEC["machine"]), given=False)
 
 
 # -- machine files ----------------------------------------------------------------------
+def _object_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | None:
+    if not isinstance(value, dict):
+        return f"{path}: expected an object"
+    props = schema.get("properties", {})
+    seen: set[Any] = set()
+    for key, v in value.pairs if isinstance(value, Pairs) else value.items():
+        if key in seen:
+            return f"{path}: duplicate key '{key}'"
+        seen.add(key)
+        if key not in props:
+            if schema.get("additionalProperties") is False:
+                return f"{path}: unknown key '{key}' (known: {', '.join(props)})"
+            continue
+        err = _schema_errors(v, props[key], f"{path}.{key}")
+        if err:
+            return err
+    return next((f"{path}: missing '{key}'" for key in schema.get("required", []) if key not in value), None)
+
+
+def _array_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | None:
+    if not isinstance(value, list):
+        return f"{path}: expected a list"
+    for i, v in enumerate(value):
+        err = _schema_errors(v, schema.get("items", {}), f"{path}[{i}]")
+        if err:
+            return err
+    if "minItems" in schema and len(value) != schema["minItems"]:
+        return f"{path}: expected {schema['minItems']} items, got {len(value)}"
+    return None
+
+
 def _schema_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | None:
     """The first breach of ``schema`` (the subset machine.schema.json uses), as "PATH: what", in
     the order a reader meets it: each key or item in turn, then what is missing (cbf-c's reader
     reads the file the same way and says the same)."""
     want = schema.get("type")
     if want == "object":
-        if not isinstance(value, dict):
-            return f"{path}: expected an object"
-        props = schema.get("properties", {})
-        seen: set[Any] = set()
-        for key, v in value.pairs if isinstance(value, Pairs) else value.items():
-            if key in seen:
-                return f"{path}: duplicate key '{key}'"
-            seen.add(key)
-            if key not in props:
-                if schema.get("additionalProperties") is False:
-                    return f"{path}: unknown key '{key}' (known: {', '.join(props)})"
-                continue
-            err = _schema_errors(v, props[key], f"{path}.{key}")
-            if err:
-                return err
-        for key in schema.get("required", []):
-            if key not in value:
-                return f"{path}: missing '{key}'"
-        return None
+        return _object_errors(value, schema, path)
     if want == "array":
-        if not isinstance(value, list):
-            return f"{path}: expected a list"
-        for i, v in enumerate(value):
-            err = _schema_errors(v, schema.get("items", {}), f"{path}[{i}]")
-            if err:
-                return err
-        if "minItems" in schema and len(value) != schema["minItems"]:
-            return f"{path}: expected {schema['minItems']} items, got {len(value)}"
+        err = _array_errors(value, schema, path)
+        if err:
+            return err
     if want == "number" and (isinstance(value, bool) or not isinstance(value, (int, float))):
         return f"{path}: expected a number"
     if want == "number" and not _finite(value):

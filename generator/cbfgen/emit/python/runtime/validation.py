@@ -49,33 +49,22 @@ def validate(data: Buffer | Cbf, *, profile: str = "default", part_number: str |
     return list(iter_findings(data, profile=profile, part_number=part_number, cutters=cutters, machine=machine))
 
 
-def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: str | None = None,
-                  cutters: Cutters | None = None, machine: Machine | None = None) -> Iterator[Finding]:
-    """validate's findings, in its order, made one at a time as they are read: memory stays
-    bounded however many findings a file gives (the checks run now; bad arguments raise now)."""
-    framing: tuple[Sequence[int], int] | None = None
+def _source(data: Buffer | Cbf) -> tuple[bytes, tuple[Sequence[int], int] | None]:
+    """The bytes to judge, and their framing when decode made the model and nobody changed it since."""
     if isinstance(data, Cbf):
         reuse = _decoded_source(data)
         if reuse is not None:
-            data, framing = reuse
-        else:
-            data = pack_file(data, keep_stored=True)
-    buf = bytes(data)
-    if profile not in T.PROFILES:
-        raise ValueError(f"unknown profile {profile!r}; known: {', '.join(T.PROFILES)}")
-    out = _Out()
-    n = len(buf)
-    if n < T.HEADER_SIZE:
-        out.add("truncated_header", None, 0, f"file is {n} bytes, the header needs {T.HEADER_SIZE}")
-        return iter(out.findings)
-    vid, info = header_info(buf)
-    hvals = info.struct.unpack_from(buf, 0)
-    header = {f.name: v for f, v in zip(info.fields, hvals, strict=True)}
+            return bytes(reuse[0]), reuse[1]
+        data = pack_file(data, keep_stored=True)
+    return bytes(data), None
+
+
+def _header_findings(out: _Out, buf: bytes, vid: str | None, header: dict[str, Any], info: Any) -> None:
+    """The version, the magic numbers, the header checksums and the header's strings."""
     if vid is None:
         out.add("version", None, T.VMAJOR.offset,
                 f"version {buf[T.VMAJOR.offset]}.{buf[T.VMINOR.offset]} is not a version of this spec; "
                 f"read as {T.FALLBACK_VERSION}")
-    version = vid or T.FALLBACK_VERSION
     for f in (T.START, T.END):
         if header[f.name] != f.magic:
             out.add("magic", None, f.offset, f"{f.name} is 0x{header[f.name]:08X}, expected 0x{f.magic:08X}")
@@ -91,8 +80,9 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
         if f.kind == "string":
             out.findings.extend(header_string_findings(header[f.name], f.offset, f.name))
 
-    offsets, end = framing if framing is not None else frame(buf)
-    count = header[T.COUNT.name]
+
+def _framing_findings(out: _Out, n: int, offsets: Sequence[int], end: int, count: int) -> None:
+    """A record cut off, bytes after the last record, a count that is not the number of records."""
     truncated = False
     if end < n:
         if len(offsets) < count:
@@ -105,22 +95,48 @@ def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: 
         out.add("command_count", None, T.COUNT.offset,
                 f"header count {count}, the file holds {len(offsets)} records")
 
-    fsum = T.HEADER_CHECKSUM_FIELDS.get("file")
-    if fsum is not None:
-        stored = header[fsum.name]
-        prof = T.PROFILES[profile]
-        alg = file_algorithm(profile)
-        if not any(_field_sum("file", buf, offsets, cov, algorithm=alg) == stored for cov in prof["file_coverages"]):
-            want = _field_sum("file", buf, offsets, prof["file_coverages"][0], algorithm=alg)
-            msg = f"stored file checksum {stored}, computed {want}"
-            for cov in prof["hint_coverages"]:
-                # a hint coverage is computed as the profile that accepts it computes it
-                owner = _profile_with(cov)
-                hint_alg = file_algorithm(owner) if owner in T.PROFILES else alg
-                if _field_sum("file", buf, offsets, cov, algorithm=hint_alg) == stored:
-                    msg += f"; it matches coverage {cov} (use profile {owner})"
-            out.add("file_checksum", None, fsum.offset, msg)
 
+def _file_checksum(out: _Out, buf: bytes, offsets: Sequence[int], header: dict[str, Any], profile: str) -> None:
+    """The file checksum against the profile's coverages (and which other coverage it matches)."""
+    fsum = T.HEADER_CHECKSUM_FIELDS.get("file")
+    if fsum is None:
+        return
+    stored = header[fsum.name]
+    prof = T.PROFILES[profile]
+    alg = file_algorithm(profile)
+    if any(_field_sum("file", buf, offsets, cov, algorithm=alg) == stored for cov in prof["file_coverages"]):
+        return
+    want = _field_sum("file", buf, offsets, prof["file_coverages"][0], algorithm=alg)
+    msg = f"stored file checksum {stored}, computed {want}"
+    for cov in prof["hint_coverages"]:
+        # a hint coverage is computed as the profile that accepts it computes it
+        owner = _profile_with(cov)
+        hint_alg = file_algorithm(owner) if owner in T.PROFILES else alg
+        if _field_sum("file", buf, offsets, cov, algorithm=hint_alg) == stored:
+            msg += f"; it matches coverage {cov} (use profile {owner})"
+    out.add("file_checksum", None, fsum.offset, msg)
+
+
+def iter_findings(data: Buffer | Cbf, *, profile: str = "default", part_number: str | None = None,
+                  cutters: Cutters | None = None, machine: Machine | None = None) -> Iterator[Finding]:
+    """validate's findings, in its order, made one at a time as they are read: memory stays
+    bounded however many findings a file gives (the checks run now; bad arguments raise now)."""
+    buf, framing = _source(data)
+    if profile not in T.PROFILES:
+        raise ValueError(f"unknown profile {profile!r}; known: {', '.join(T.PROFILES)}")
+    out = _Out()
+    n = len(buf)
+    if n < T.HEADER_SIZE:
+        out.add("truncated_header", None, 0, f"file is {n} bytes, the header needs {T.HEADER_SIZE}")
+        return iter(out.findings)
+    vid, info = header_info(buf)
+    hvals = info.struct.unpack_from(buf, 0)
+    header = {f.name: v for f, v in zip(info.fields, hvals, strict=True)}
+    version = vid or T.FALLBACK_VERSION
+    _header_findings(out, buf, vid, header, info)
+    offsets, end = framing if framing is not None else frame(buf)
+    _framing_findings(out, n, offsets, end, header[T.COUNT.name])
+    _file_checksum(out, buf, offsets, header, profile)
     stream = record_findings(buf, offsets, version, profile, cutters, machine)
     if part_number is not None:
         _part_number(out, info, header, part_number)
