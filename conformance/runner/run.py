@@ -19,6 +19,8 @@ import yaml
 
 from .about import SPEC_REVISION, VERSION, version_line
 from .compare import findings_difference, first_difference
+from .quoting import line as one_line
+from .quoting import quote
 from .testee import Binding, Testee, TesteeError, install_handlers
 
 # libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster.
@@ -324,7 +326,7 @@ def main_run(args: argparse.Namespace) -> int:
         missing = b.missing()
         results: dict[str, dict[str, Any]] = {}
         if missing:
-            print(f"conformance: {b.name}: not built ({', '.join(missing)}); every case skipped", file=human)
+            print(f"conformance: {quote(b.name)}: not built ({', '.join(missing)}); every case skipped", file=human)
             results = {c.name: {"status": "skip", "message": "binding not built"} for c in cases}
             report["bindings"][b.name] = {"available": False, "results": results}
             continue
@@ -360,7 +362,7 @@ def main_run(args: argparse.Namespace) -> int:
         os.replace(tmp, out)
     if args.junit:
         write_junit(args.junit, report, cases)
-    problems = [f"{n}: {c}: FAIL {r['message']}" for n, b in report["bindings"].items()
+    problems = [f"{quote(n)}: {quote(c)}: FAIL {one_line(r['message'])}" for n, b in report["bindings"].items()
                 for c, r in b["results"].items() if kind(r) == "fail" and not r.get("not_run")]
     report["problems"] = problems + notes
     if args.json:
@@ -413,7 +415,7 @@ def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
     for name, b in report["bindings"].items():
         results = b["results"]
         n = counts(results)
-        suite = ET.SubElement(suites, "testsuite", name=name, tests=str(len(results)), failures=str(n["failed"]),
+        suite = ET.SubElement(suites, "testsuite", name=quote(name), tests=str(len(results)), failures=str(n["failed"]),
                               errors="0", skipped=str(n["skipped"] + n["expected_failures"]))
         props = ET.SubElement(suite, "properties")
         for key, value in (("kit.version", report["kit"]["version"]),
@@ -424,17 +426,17 @@ def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
             r = results.get(c.name)
             if r is None:
                 continue
-            tc = ET.SubElement(suite, "testcase", classname=f"{name}.{c.group}", name=c.name)
+            tc = ET.SubElement(suite, "testcase", classname=quote(f"{name}.{c.group}"), name=quote(c.name))
             k = kind(r)
             if k == "fail":
-                ET.SubElement(tc, "failure", message=r["message"]).text = r["message"]
+                ET.SubElement(tc, "failure", message=one_line(r["message"])).text = one_line(r["message"])
             elif k == "xfail":
-                ET.SubElement(tc, "skipped", message=f"expected failure (failure list): {r['message']}",
+                ET.SubElement(tc, "skipped", message=one_line(f"expected failure (failure list): {r['message']}"),
                               type="expected-failure")
                 tp = ET.SubElement(tc, "properties")
                 ET.SubElement(tp, "property", name="expected_failure", value="true")
             elif k == "skip":
-                ET.SubElement(tc, "skipped", message=r["message"])
+                ET.SubElement(tc, "skipped", message=one_line(r["message"]))
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_bytes(ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n")
     os.replace(tmp, path)
@@ -444,7 +446,7 @@ def _print_matrix(report: dict[str, Any], cases: list[Case], out: TextIO) -> Non
     groups = sorted({c.group for c in cases})
     names = list(report["bindings"])
     width = max([len(g) for g in groups] + [10])
-    print("group".ljust(width) + "".join(f"  {n:>16}" for n in names), file=out)
+    print("group".ljust(width) + "".join(f"  {quote(n):>16}" for n in names), file=out)
     for g in groups:
         row = g.ljust(width)
         for n in names:

@@ -18,10 +18,14 @@
  * Each such input gets one line on stderr naming the file and what is wrong.
  * validate with several files exits with the highest status of any of them.
  */
+#define _POSIX_C_SOURCE 200809L /* open, fstat, O_NONBLOCK: only regular files are read (issue #35) */
 #define CBF_IMPLEMENTATION
 #include "cbf.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,17 +38,44 @@ enum { EXIT_OK = 0, EXIT_FINDINGS = 1, EXIT_USAGE = 2 };
 
 /* ---- shared by the testee and the tool (generated from common.inc.j2) ---- */
 
-/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it). */
+/* What a file that is not a regular one is, as cbf says it (cbf.files.kind_of). */
+static const char *not_regular(mode_t mode)
+{
+    return S_ISDIR(mode) ? "is a directory" : S_ISFIFO(mode) ? "is a FIFO; only regular files are read"
+         : S_ISCHR(mode) ? "is a character device; only regular files are read"
+         : S_ISBLK(mode) ? "is a block device; only regular files are read"
+         : S_ISSOCK(mode) ? "is a socket; only regular files are read" : "is not a regular file; only regular files are read";
+}
+
+/* Read a whole file into buf; returns its size or -1 (what went wrong in *why, as cbf says it).
+ * Only a regular file is opened: its status is looked at first, and it is opened without
+ * blocking (a FIFO named like a CBF file cannot hang the tool), then looked at again. */
 static long read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
 {
     FILE *fp;
+    struct stat st;
+    int fd;
     size_t n = 0;
     errno = 0;
-    fp = fopen(path, "rb");
     *why = "cannot open";
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
+        if (errno)
+            *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied" : "cannot open";
+        else
+            *why = not_regular(st.st_mode);
+        return -1;
+    }
+    fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        *why = fd < 0 ? (errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied" : "cannot open")
+                      : not_regular(st.st_mode);
+        if (fd >= 0)
+            (void)close(fd);
+        return -1;
+    }
+    fp = fdopen(fd, "rb");
     if (!fp) {
-        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
-             : errno == EISDIR ? "is a directory" : "cannot open";
+        (void)close(fd);
         return -1;
     }
     for (;;) {
@@ -124,9 +155,9 @@ static long opt_read(const char *path, char *buf, size_t max, const char *what)
     size_t i = 0;
     if (n < 0) {
         if (strcmp(why, "file too large") == 0)
-            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max,
-                            what) - 1;
-        return opt_fail("%s: cannot read %s (%s)", path, what, why) - 1;
+            return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)",
+                            cbf_quoted(path, CBF_QUOTE_NAME), (unsigned long)max, what) - 1;
+        return opt_fail("%s: cannot read %s (%s)", cbf_quoted(path, CBF_QUOTE_NAME), what, why) - 1;
     }
     buf[n] = 0;
     while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
@@ -140,7 +171,7 @@ static long opt_read(const char *path, char *buf, size_t max, const char *what)
         if (u[0] >= 0xC2 && u[0] <= 0xDF) len = 2;
         else if (u[0] >= 0xE0 && u[0] <= 0xEF) len = 3;
         else if (u[0] >= 0xF0 && u[0] <= 0xF4) len = 4;
-        else return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+        else return opt_fail("%s: offset %lu: not UTF-8 text", cbf_quoted(path, CBF_QUOTE_NAME), (unsigned long)i) - 1;
         if (u[0] == 0xE0) lo = 0xA0;
         if (u[0] == 0xED) hi = 0x9F;
         if (u[0] == 0xF0) lo = 0x90;
@@ -148,12 +179,12 @@ static long opt_read(const char *path, char *buf, size_t max, const char *what)
         for (k = 1; k < len; k++) {
             unsigned char a = k == 1 ? lo : 0x80, b = k == 1 ? hi : 0xBF;
             if (k >= left || u[k] < a || u[k] > b)
-                return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+                return opt_fail("%s: offset %lu: not UTF-8 text", cbf_quoted(path, CBF_QUOTE_NAME), (unsigned long)i) - 1;
         }
         i += len;
     }
     if (memchr(buf, 0, (size_t)n))
-        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
+        return opt_fail("%s: offset %lu: not text (a NUL byte)", cbf_quoted(path, CBF_QUOTE_NAME),
                         (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
     return n;
 }
@@ -733,14 +764,16 @@ static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLU
     for (k = 0; k < CBF_CUTTER_VALUES; k++) {
         const char *text = cell[1 + k], *why = opt_number(text, &v[k]);
         if (why)
-            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, text, why);
+            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column,
+                            cbf_quoted(text, CBF_QUOTE_NAME), why);
         if (opt_cutter_values[k].positive && v[k] <= 0.0)
             return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
                             opt_cutter_values[k].column, text, opt_cutter_values[k].check);
     }
     for (k = 0; k < ncutters; k++)
         if (strcmp(cutter_names[k], name) == 0)
-            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line, name,
+            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line,
+                            cbf_quoted(name, CBF_QUOTE_NAME),
                             cutter_lines[k]);
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
@@ -925,10 +958,11 @@ static int cutters_rows(cj *j)
             for (k = 0; k < OPT_CUTTER_COLUMNS && strcmp(key, opt_cutter_columns[k]) != 0; k++)
                 ;
             if (k == OPT_CUTTER_COLUMNS)
-                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
+                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline,
+                                cbf_quoted(key, CBF_QUOTE_NAME),
                                 opt_columns_list);
             if (have[k])
-                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, key);
+                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, cbf_quoted(key, CBF_QUOTE_NAME));
             cj_ws(j);
             if (j->s[j->i] == ':')
                 j->i++;
@@ -977,7 +1011,8 @@ static int cutters_yaml(const char *path)
         kline = cj_line(&j);
         cj_scalar(&j, key, sizeof key);
         if (strcmp(key, "cutters") != 0)
-            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline, key);
+            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline,
+                            cbf_quoted(key, CBF_QUOTE_NAME));
         if (seen++)
             return opt_fail("%s: line %lu: duplicate key 'cutters'", path, kline);
         cj_ws(&j);
@@ -1001,19 +1036,21 @@ static int opt_is_yaml(const char *path)
 static int load_cutters(const char *path)
 {
     long n;
+    static char shown[8192]; /* the name as messages show it (the quoting rule) */
     ncutters = 0;
-    cutter_file = path;
+    (void)cbf_quote(shown, sizeof shown, path, strlen(path), CBF_QUOTE_NAME);
+    cutter_file = shown;
     n = opt_read(path, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
     if (opt_is_yaml(path)) {
-        if (!cutters_yaml(path))
+        if (!cutters_yaml(shown))
             return 0;
     } else if (!cutters_csv(cutter_text)) {
         return 0;
     }
     if (!ncutters)
-        return opt_fail("%s: no cutters (the table is empty)", path);
+        return opt_fail("%s: no cutters (the table is empty)", shown);
     return 1;
 }
 
@@ -1227,7 +1264,7 @@ static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
         j->i++;
         for (k = 0; k < nkeys; k++)
             if (strcmp(keys[k], key) == 0)
-                return mj_fail(j, path, "duplicate key '%s'", key);
+                return mj_fail(j, path, "duplicate key '%s'", cbf_quoted(key, CBF_QUOTE_NAME));
         if (nkeys < 16)
             (void)snprintf(keys[nkeys++], sizeof keys[0], "%s", key);
         if (!on_key(j, path, key, ctx))
@@ -1251,7 +1288,7 @@ static int mj_unknown(mjson *j, const char *path, const char *key, const char *c
     list[0] = 0;
     for (k = 0; known[k]; k++)
         at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
-    return mj_fail(j, path, "unknown key '%s' (known: %s)", key, list);
+    return mj_fail(j, path, "unknown key '%s' (known: %s)", cbf_quoted(key, CBF_QUOTE_NAME), list);
 }
 
 /* A string the reader keeps nowhere (name, doc, decision). */
@@ -1444,6 +1481,7 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
 static int load_machine(const char *path)
 {
     long n = opt_read(path, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    static char shown[8192]; /* the name as messages show it (the quoting rule) */
     mjson j;
     unsigned has_limits = 0;
     int li, a;
@@ -1452,21 +1490,22 @@ static int load_machine(const char *path)
         return 0;
     }
     memset(&machine_file, 0, sizeof machine_file);
+    (void)cbf_quote(shown, sizeof shown, path, strlen(path), CBF_QUOTE_NAME);
     j.s = machine_text;
     j.n = (size_t)n;
     if (opt_is_yaml(path)) {
-        if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
+        if (!yj_translate(shown, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
             (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
             return 0;
         }
         j.s = machine_json;
         j.n = strlen(machine_json);
-    } else if (!opt_json_depth(path, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
+    } else if (!opt_json_depth(shown, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;
     }
     j.i = 0;
-    j.file = path;
+    j.file = shown;
     if (!mj_object(&j, "$", mj_top_key, &has_limits))
         return 0;
     if (mj_peek(&j) != -1)
@@ -1561,12 +1600,12 @@ static int finding_cmp(const void *pa, const void *pb)
 /* One line per finding, as cbf prints it (README): file:offset: severity check (record N): message */
 static void print_finding(const char *file, const held_finding *f)
 {
-    printf("%s:%lu: %s %s (", file, f->offset, f->error ? "error" : "warning", f->check);
+    printf("%s:%lu: %s %s (", cbf_quoted(file, CBF_QUOTE_NAME), f->offset, f->error ? "error" : "warning", f->check);
     if (f->record >= 0)
         printf("record %ld", f->record);
     else
         printf("header");
-    printf("): %s\n", f->message);
+    printf("): %s\n", cbf_quoted(f->message, CBF_QUOTE_TEXT));
 }
 
 /* Read path into file_buf; 0 and one line on stderr when it cannot be read, is
@@ -1580,15 +1619,17 @@ static int read_cbf(const char *path, size_t *size)
     size_t nf, i, nmagic = 0, nright = 0, first = 0;
     long n = read_file(path, file_buf, sizeof file_buf, &why);
     if (n < 0) {
-        fprintf(stderr, "cbf-c: %s: %s\n", path, why);
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_quoted(path, CBF_QUOTE_NAME), why);
         return 0;
     }
     if ((unsigned long)n > MAX_FILE_SIZE) {
-        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", path, MAX_FILE_SIZE);
+        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n",
+                cbf_quoted(path, CBF_QUOTE_NAME), MAX_FILE_SIZE);
         return 0;
     }
     if ((size_t)n < CBF_HEADER_SIZE) {
-        fprintf(stderr, "cbf-c: %s: offset 0: file is %ld bytes, the header needs %d: not a CBF file\n", path, n,
+        fprintf(stderr, "cbf-c: %s: offset 0: file is %ld bytes, the header needs %d: not a CBF file\n",
+                cbf_quoted(path, CBF_QUOTE_NAME), n,
                 CBF_HEADER_SIZE);
         return 0;
     }
@@ -1607,7 +1648,7 @@ static int read_cbf(const char *path, size_t *size)
             text = (file_buf[i] >= 0x20u && file_buf[i] < 0x7Fu) || file_buf[i] == '\t' || file_buf[i] == '\r'
                    || file_buf[i] == '\n';
         fprintf(stderr, "cbf-c: %s: offset %u: not a CBF file: no magic number of the header is right (",
-                path, (unsigned)fields[first].offset);
+                cbf_quoted(path, CBF_QUOTE_NAME), (unsigned)fields[first].offset);
         for (i = 0; i < nf; i++)
             if (fields[i].flags & CBF_FIELD_MAGIC)
                 fprintf(stderr, "%s%s", i == first ? "" : ", ", fields[i].name);
@@ -1658,28 +1699,28 @@ static int cmd_validate(int argc, char **argv)
         if (strcmp(argv[i], "--profile") == 0 && i + 1 < argc) {
             opt.profile = cbf_profile_find(argv[++i]);
             if (opt.profile < 0) {
-                fprintf(stderr, "cbf-c: unknown profile %s\n", argv[i]);
+                fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
                 return EXIT_USAGE;
             }
         } else if (strcmp(argv[i], "--part-number") == 0 && i + 1 < argc) {
             opt.part_number = argv[++i];
         } else if (strcmp(argv[i], "--cutters") == 0 && i + 1 < argc) {
             if (!load_cutters(argv[++i])) {
-                fprintf(stderr, "cbf-c: %s\n", opt_why); /* names the table, the line and the limit (issue 28) */
+                fprintf(stderr, "cbf-c: %s\n", cbf_quoted(opt_why, CBF_QUOTE_TEXT)); /* names the table, the line and the limit (issue 28) */
                 return EXIT_USAGE;
             }
             opt.cutters = cutters;
             opt.ncutters = ncutters;
         } else if (strcmp(argv[i], "--machine") == 0 && i + 1 < argc) { /* machine limits (L1): errors */
             if (!load_machine(argv[++i])) {
-                fprintf(stderr, "cbf-c: %s\n", machine_why);
+                fprintf(stderr, "cbf-c: %s\n", cbf_quoted(machine_why, CBF_QUOTE_TEXT));
                 return EXIT_USAGE;
             }
             opt.machine = &machine_file;
         } else if (strcmp(argv[i], "--max-findings") == 0 && i + 1 < argc) {
             long v = parse_count(argv[++i]);
             if (v < 0) {
-                fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", argv[i]);
+                fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
                 return EXIT_USAGE;
             }
             max_findings = (size_t)v;
@@ -1705,7 +1746,7 @@ static int cmd_validate(int argc, char **argv)
         nheld = 0;
         errors = cbf_validate(file_buf, n, &opt, hold_finding, NULL);
         if (out_of_memory) {
-            fprintf(stderr, "cbf-c: %s: out of memory holding its findings\n", argv[i]);
+            fprintf(stderr, "cbf-c: %s: out of memory holding its findings\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
             return EXIT_USAGE;
         }
         if (errors > 0 && status < EXIT_FINDINGS)
@@ -1717,9 +1758,9 @@ static int cmd_validate(int argc, char **argv)
             free(held[k].message);
         }
         if (max_findings && nheld > max_findings)
-            printf("%s: %lu more finding(s) not shown (--max-findings 0 prints all)\n", argv[i],
+            printf("%s: %lu more finding(s) not shown (--max-findings 0 prints all)\n", cbf_quoted(argv[i], CBF_QUOTE_NAME),
                    (unsigned long)(nheld - max_findings));
-        printf("%s: %s: %ld error(s), %ld warning(s) [profile %s]\n", argv[i], errors > 0 ? "FAIL" : "ok", errors,
+        printf("%s: %s: %ld error(s), %ld warning(s) [profile %s]\n", cbf_quoted(argv[i], CBF_QUOTE_NAME), errors > 0 ? "FAIL" : "ok", errors,
                (long)nheld - errors, profile_names[opt.profile]);
     }
     if (!files) {
@@ -1806,7 +1847,7 @@ static int cmd_dump(const char *path)
     while ((rc = cbf_next_record(&r, &rec)) == 1) {}
     if (rc < 0) {
         fprintf(stderr, "cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) "
-                "(%s)\n", path, (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
+                "(%s)\n", cbf_quoted(path, CBF_QUOTE_NAME), (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
                 (unsigned long)r.header.count, cbf_strerror(rc));
         return EXIT_USAGE;
     }
