@@ -216,8 +216,8 @@ def test_hostile_names_in_every_other_command(hostile_dir: Path, tmp_path: Path)
     for k, raw in enumerate(worst):
         name = os.fsdecode(raw)
         for argv in _tool_runs(name, tmp_path):
-            if argv[0] == "plot" and k:
-                continue  # matplotlib is slow to start: one name draws
+            if k and argv[0] not in ("info", "stats"):
+                continue  # every command for one name, the readers for the others (each run starts Python)
             res = py(*argv, cwd=hostile_dir)
             assert_clean(res)
             if "--json" in argv and res.returncode == 0:
@@ -341,10 +341,11 @@ def test_a_file_of_65536_findings_gives_sarif_github_accepts(tmp_path: Path) -> 
     assert res.returncode == 1
     assert len(res.stdout) <= 10 * 1000 * 1000  # GitHub's limit of an upload (and gzip makes it far smaller)
     run = json.loads(res.stdout)["runs"][0]
-    assert len(run["results"]) == SARIF_MAX_RESULTS == 25_000
-    assert run["properties"]["resultsLeftOut"] == n - SARIF_MAX_RESULTS
+    kept = len(run["results"])
+    assert 20_000 <= kept <= SARIF_MAX_RESULTS == 25_000  # GitHub's results a run (and its 10 MB)
+    assert run["properties"]["resultsLeftOut"] == n - kept
     notes = [x["message"]["text"] for x in run["invocations"][0]["toolExecutionNotifications"]]
-    assert any(f"{n - SARIF_MAX_RESULTS} result(s) left out" in t for t in notes)
+    assert any(f"{n - kept} result(s) left out" in t for t in notes)
 
 
 def test_max_findings_caps_every_format(tmp_path: Path) -> None:
@@ -476,6 +477,12 @@ def test_a_folder_1000_levels_deep(tmp_path: Path) -> None:
         deep = deep / "d"
         os.mkdir(deep)
     shutil.copy(BAD, deep / "bad.cbf")
-    res = py("validate", "tree", cwd=tmp_path, timeout=120)
-    assert res.returncode == 1 and b"1 file(s): 0 ok, 1 failed" in res.stdout, res.stderr
-    assert res.stderr == b""
+    try:
+        res = py("validate", "tree", cwd=tmp_path, timeout=120)
+        assert res.returncode == 1 and b"1 file(s): 0 ok, 1 failed" in res.stdout, res.stderr
+        assert res.stderr == b""
+    finally:  # shutil.rmtree (and pytest's clean-up) recurse: remove it level by level
+        (deep / "bad.cbf").unlink()
+        while deep != tmp_path:
+            deep.rmdir()
+            deep = deep.parent

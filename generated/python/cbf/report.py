@@ -32,6 +32,8 @@ SARIF_SCHEMA = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schem
 # GitHub code scanning refuses a run of more results (docs.github.com, "SARIF results exceed
 # limit": results per run, 25,000; only the top 5,000 are shown).
 SARIF_MAX_RESULTS = 25_000
+# ... and a file over 10 MB ("SARIF file is too large"): the results stop short of that, uncompressed.
+SARIF_MAX_BYTES = 10_000_000
 INPUT_RULE = "cbf.input"  # the rule of an input that could not be validated (not CBF, unreadable)
 
 
@@ -229,7 +231,9 @@ def sarif(results: Sequence[FileResult], profile: str, max_findings: int = 0, ba
     version, rev = _tool_version()
     rules = [_rule(c, docs_url) for c in T.CHECKS] + [_input_rule()]
     index = {c["id"]: i for i, c in enumerate(T.CHECKS)}
-    out: list[dict[str, Any]] = []
+    out: list[str] = []  # each result as its JSON text: the size is counted as they are made
+    size = 0
+    budget = SARIF_MAX_BYTES - 400_000  # the rules, the run and the notes stay well under this
     left = {"max_findings": 0, "max_results": 0}
     for r in results:
         artifact = _artifact(r.path, base)
@@ -246,7 +250,7 @@ def sarif(results: Sequence[FileResult], profile: str, max_findings: int = 0, ba
                               _sentence(f"{_where(f).capitalize()}{at}: {line(f.message)}"),
                               f"{f.check}\0{f.record}\0{f.offset}\0{f.message}"))
         for rule_id, level, offset, message, key in items:
-            if len(out) >= max_results:
+            if len(out) >= max_results or size > budget:
                 left["max_results"] += 1
                 continue
             res: dict[str, Any] = {"ruleId": rule_id, "ruleIndex": index.get(rule_id, len(T.CHECKS)),
@@ -258,12 +262,15 @@ def sarif(results: Sequence[FileResult], profile: str, max_findings: int = 0, ba
             # stable across runs (code scanning matches alerts by it): the file, check, record, offset, message
             res["partialFingerprints"] = {"cbfFinding/v1": hashlib.sha256(
                 f"{name}\0{key}".encode("utf-8", "surrogateescape")).hexdigest()[:32]}
-            out.append(res)
+            text = json.dumps(res, separators=(",", ":"))
+            size += len(text) + 1
+            out.append(text)
     notes: list[dict[str, Any]] = []
     if left["max_results"]:
         notes.append({"level": "warning", "message": {"text": (
             f"{left['max_results']} result(s) left out: GitHub code scanning accepts at most {max_results} "
-            f"results per run; the first {max_results} in input order are here.")}})
+            f"results per run and a file of at most {SARIF_MAX_BYTES // 1_000_000} MB; the first {len(out)} "
+            f"in input order are here.")}})
     if left["max_findings"]:
         notes.append({"level": "note", "message": {"text": (
             f"{left['max_findings']} finding(s) left out by --max-findings {max_findings} "
@@ -278,9 +285,11 @@ def sarif(results: Sequence[FileResult], profile: str, max_findings: int = 0, ba
         "originalUriBaseIds": {"SRCROOT": {"uri": _base_uri(base)}},
         "invocations": [{"executionSuccessful": True, "toolExecutionNotifications": notes,
                          "properties": {"profile": profile}}],
-        "results": out,
+        "results": [],
         "properties": {"resultsLeftOut": left["max_results"], "findingsLeftOut": left["max_findings"]}}
-    return json.dumps({"$schema": SARIF_SCHEMA, "version": "2.1.0", "runs": [run]}, separators=(",", ":")) + "\n"
+    head, tail = json.dumps({"$schema": SARIF_SCHEMA, "version": "2.1.0", "runs": [run]},
+                            separators=(",", ":")).split('"results":[]', 1)  # the one such key: rules hold none
+    return f'{head}"results":[{",".join(out)}]{tail}\n'
 
 
 def _gh_data(s: str) -> str:
