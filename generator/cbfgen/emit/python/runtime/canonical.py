@@ -23,6 +23,7 @@ from .errors import JsonShapeError
 from .floats import NotDecimal, OutOfRange, read_decimal
 from .floats import float_bits as _nearest_bits
 from .model import Cbf, Record
+from .quoting import quote
 
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
@@ -88,7 +89,7 @@ def _find_duplicate(doc: Any) -> tuple[str, str] | None:
         if isinstance(node, _Duplicates):
             return path, node.duplicate
         if isinstance(node, dict):
-            stack.extend((v, f"{path}.{k}") for k, v in reversed(node.items()))
+            stack.extend((v, f"{path}.{quote(k)}") for k, v in reversed(node.items()))
         elif isinstance(node, list):
             stack.extend((v, f"{path}[{i}]") for i, v in reversed(list(enumerate(node))))
     return None
@@ -103,7 +104,7 @@ def loads(text: str) -> Any:
                      object_pairs_hook=_pairs)
     found = _find_duplicate(doc)
     if found is not None:
-        raise JsonShapeError(f"{found[0]}: duplicate key {found[1]!r}: text must not say a thing twice")
+        raise JsonShapeError(f"{found[0]}: duplicate key '{quote(found[1])}': text must not say a thing twice")
     return doc
 
 
@@ -279,7 +280,7 @@ def from_canonical(doc: Any) -> Cbf:
     d = _obj(doc, "$")
     extra = set(d) - {"header", "records", "trailing"}
     if extra:
-        raise JsonShapeError(f"$: unknown key {sorted(extra)[0]!r}")
+        raise JsonShapeError(f"$: unknown key '{quote(sorted(extra)[0])}'")
     h = _obj(d.get("header"), "$.header")
     major = _uint(h.get(T.VMAJOR.name, 0), f"$.header.{T.VMAJOR.name}", 1)
     minor = _uint(h.get(T.VMINOR.name, 0), f"$.header.{T.VMINOR.name}", 1)
@@ -299,7 +300,7 @@ def from_canonical(doc: Any) -> Cbf:
             raise JsonShapeError(f"$.header: missing {f.name}")
     unknown = set(h) - {f.name for f in info.fields}
     if unknown:
-        raise JsonShapeError(f"$.header: unknown key {sorted(unknown)[0]!r} for header layout {info.id}")
+        raise JsonShapeError(f"$.header: unknown key '{quote(sorted(unknown)[0])}' for header layout {info.id}")
     header = decode_header(_pack_json(info.fields, info.struct, hv, "$.header"))
     recs = d.get("records", [])
     if not isinstance(recs, list):
@@ -312,7 +313,7 @@ def from_canonical(doc: Any) -> Cbf:
         r = _obj(rv, w)
         bad = set(r) - known
         if bad:
-            raise JsonShapeError(f"{w}: unknown key {sorted(bad)[0]!r}")
+            raise JsonShapeError(f"{w}: unknown key '{quote(sorted(bad)[0])}'")
         code = r.get(names["code"])
         if code is None:
             cname = r.get("command")
