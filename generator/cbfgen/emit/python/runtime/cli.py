@@ -1167,7 +1167,8 @@ def _hexdump_parser(sub: Any, profiles: list[str]) -> None:
                                        "with its value, findings marked (the golden pages' view)",
                        description="Print FILE as hex, 16 bytes a row, each run of bytes named by the field it "
                                    "is and its value; a row holding a finding's offset ends with \u25c0 and the "
-                                   "finding. The same view the format reference draws for its golden files.")
+                                   "finding as validate prints it (FILE:OFFSET: severity check (record N): "
+                                   "message). The same view the format reference draws for its golden files.")
     h.add_argument("file", help="CBF file, or - for stdin")
     h.add_argument("--record", type=_count, metavar="N", help="only record N (0-based)")
     h.add_argument("--header", action="store_true", help="only the header")
@@ -1183,16 +1184,19 @@ def cmd_hexdump(a: argparse.Namespace) -> int:
 
     data = _read(a.file, _max_file_size())
     _refuse_not_cbf(a.file, data)  # as validate: exit 2, one line, for input that is not a CBF file
+    from .report import finding_line
+
     marks: list[hexdump.Mark] = []
+    errors = 0
     if not a.no_findings:
         for f in validate(data, profile=a.profile):
-            text = f"{f.severity} {f.check}" + (f" (record {f.record})" if f.record is not None else "") + \
-                f": {f.message}"
+            # each mark is the finding as validate prints it: the file (quoted) and the offset name it
+            errors += f.severity == "error"
             marks.append(hexdump.Mark(f.offset if f.offset is not None else len(data),
-                                      "".join(c if c.isprintable() else f"\\x{ord(c):02x}" for c in text)))
+                                      finding_line(a.file, f).rstrip("\n")))
     _out(hexdump.dump(hexdump.for_runtime(), data, max_lines=a.max_lines or None, only_record=a.record,
                       header_only=a.header, marks=marks) + "\n")
-    return EXIT_FINDINGS if any(m.text.startswith("error ") for m in marks) else EXIT_OK
+    return EXIT_FINDINGS if errors else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
