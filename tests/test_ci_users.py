@@ -4,9 +4,12 @@ accept, names that always encode, file systems that bite.
 1. Hostile file names (a forged ``::error`` workflow command, line feeds, carriage returns, bytes
    that are not UTF-8, terminal escapes, U+2028) and hostile contents (a duplicate JSON key, an
    unknown machine-file key, a repeated cutter, a header string holding escapes) go through every
-   command and every --format of both tools: no output line starts with ``::`` (but the github
-   format's own commands, one per finding), none carries an input's line break, every output is
-   UTF-8 and parses (JSON, XML, SVG). Both tools print the same quoted name (one rule).
+   command and every format option of cbf (read from its parser: a new command or format joins the
+   test or fails it), both commands of cbf-c, the pre-commit hooks' entries and the conformance kit
+   (a hostile --name, a testee whose answers hold forged commands): no output line starts with ``::``
+   (but the github format's own commands, one per finding), none carries an input's line break,
+   every output is UTF-8 and parses (JSON, XML, SVG). Both tools print the same quoted name (one
+   rule). The command lines run in one process each (tests/cli_many.py), one real process a format.
 2. SARIF: Microsoft's SARIF multitool (npm, pinned in package.json) finds 0 errors and 0 warnings
    under ``--rule-kind Gh;Sarif``; the 65,536 findings of a file with one bad byte in every record
    give a SARIF of at most GitHub's 25,000 results (and under its 10 MB) that says what it left
@@ -19,9 +22,11 @@ accept, names that always encode, file systems that bite.
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import re
+import shlex
 import shutil
 import socket
 import subprocess
@@ -34,11 +39,14 @@ from urllib.parse import unquote_to_bytes
 
 import jsonschema
 import pytest
+import yaml
 from c_programs import built
-from conftest import ENV, REPO
+from cli_many import run_many
+from conftest import ENV, REPO, unprivileged_prefix
 
 import cbf
 from cbf import tables as T
+from cbf.cli import parser as cli_parser
 from cbf.quoting import quote, unquote
 
 GOLDEN = REPO / "conformance" / "golden"
@@ -52,6 +60,7 @@ FORGED = b"::"  # GitHub runs a line starting with it as a workflow command
 HOSTILE = [b"::error file=README.md,line=1,title=Forged::all good", b"a\n::stop-commands::x",
            b"r\r::warning ::x", b"b\xff\xfe", b"c\x01\x1b[31m", "\u2028::error ::u".encode(), b" ::lead",
            b'q"\\', b"%41#?=&;,x"]
+Result = subprocess.CompletedProcess[str]
 BREAKS = (b"\r", b"\x1b", "\u2028".encode(), "\u0085".encode(), b"\x01")
 
 
@@ -151,86 +160,218 @@ def test_the_rule_reads_back_and_never_starts_a_command() -> None:
 
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_hostile_names_in_every_format(fmt: str, hostile_dir: Path) -> None:
+    """A real process a format (the checked writer to file descriptor 1, a strict UTF-8 stdout): a folder
+    of hostile names (./NAME)."""
     names = _names(hostile_dir)
     found = {n: len(cbf.validate((hostile_dir / os.fsdecode(n)).read_bytes())) for n in names if b" not" not in n}
-    for args in (["."], [os.fsdecode(n) for n in names]):  # a folder (./NAME), and each name as given
-        res = py("validate", "--format", fmt, "--max-findings", "0", *args, cwd=hostile_dir)
-        assert res.returncode == 2  # the text file is not validated
-        refused = 1
-        assert_clean(res, sum(found.values()) + refused if fmt == "github" else None)
-        doc = parses(fmt, res.stdout)
-        if fmt == "json":
-            got = {unquote(f["file"]).removeprefix(b"./") for f in doc["files"]}  # type: ignore[index]
-            assert got == set(names)  # exact bytes back
-        elif fmt == "sarif":
-            uris = {unquote_to_bytes(r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"])
-                    for r in doc["runs"][0]["results"]}  # type: ignore[index]
-            assert uris == {n for n in names if found.get(n, 1)}  # percent-encoded bytes: exact
-        elif fmt == "gitlab":
-            jsonschema.validate(doc, GITLAB_SCHEMA)
-        elif fmt == "junit":
-            cases = doc.findall("./testsuite/testcase")  # type: ignore[attr-defined]
-            assert {unquote(c.get("name")).removeprefix(b"./") for c in cases} == set(names)
+    res = py("validate", "--format", fmt, "--max-findings", "0", ".", cwd=hostile_dir)
+    assert res.returncode == 2  # the text file is not validated
+    refused = 1
+    assert_clean(res, sum(found.values()) + refused if fmt == "github" else None)
+    doc = parses(fmt, res.stdout)
+    if fmt == "json":
+        got = {unquote(f["file"]).removeprefix(b"./") for f in doc["files"]}  # type: ignore[index]
+        assert got == set(names)  # exact bytes back
+    elif fmt == "sarif":
+        uris = {unquote_to_bytes(r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"])
+                for r in doc["runs"][0]["results"]}  # type: ignore[index]
+        assert uris == {n for n in names if found.get(n, 1)}  # percent-encoded bytes: exact
+    elif fmt == "gitlab":
+        jsonschema.validate(doc, GITLAB_SCHEMA)
+    elif fmt == "junit":
+        cases = doc.findall("./testsuite/testcase")  # type: ignore[attr-defined]
+        assert {unquote(c.get("name")).removeprefix(b"./") for c in cases} == set(names)
 
 
-def test_one_hostile_name_alone_streams_quoted(hostile_dir: Path) -> None:
-    for name in _names(hostile_dir):
-        for fmt in ("text", "json"):
-            res = py("validate", "--format", fmt, os.fsdecode(name), cwd=hostile_dir)
-            assert_clean(res)
-            if fmt == "json" and res.returncode != 2:
-                assert unquote(json.loads(res.stdout)["file"]) == name
+# -- every command and every format of cbf, in one process (tests/cli_many.py) --------------------------
+def _subcommands() -> dict[str, argparse.ArgumentParser]:
+    for action in cli_parser()._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            return dict(action.choices)
+    raise AssertionError("the cbf parser has no subcommands")
 
 
-def test_both_tools_print_the_same_quoted_name(hostile_dir: Path, cbf_c: Path) -> None:
-    for name in _names(hostile_dir):
-        a, b = py("validate", os.fsdecode(name), cwd=hostile_dir), c(cbf_c, "validate", name, cwd=hostile_dir)
+SUBCOMMANDS = _subcommands()
+# The options that choose what a command writes (or reads): each of their choices is run, each flag once.
+FORMAT_OPTIONS = ("--format", "--to", "--json", "--input-format")
+
+
+def _format_uses() -> set[tuple[str, str, str | None]]:
+    """(command, option, choice) for every output format the parser offers."""
+    out: set[tuple[str, str, str | None]] = set()
+    for name, sub in SUBCOMMANDS.items():
+        for a in sub._actions:
+            for opt in set(a.option_strings) & set(FORMAT_OPTIONS):
+                out |= {(name, opt, str(c)) for c in a.choices} if a.choices else {(name, opt, None)}
+    return out
+
+
+def _covered(argvs: Sequence[Sequence[str]]) -> set[tuple[str, str, str | None]]:
+    got: set[tuple[str, str, str | None]] = set()
+    for argv in argvs:
+        for i, arg in enumerate(argv):
+            if arg in FORMAT_OPTIONS:
+                value = argv[i + 1] if i + 1 < len(argv) and not argv[i + 1].startswith("-") else None
+                got.add((argv[0], arg, value if arg != "--json" else None))
+    return got
+
+
+def _every_command(p: str, out: Path, first: bool) -> list[list[str]]:
+    """Every command of cbf on one input (a hostile name, or a file with hostile contents), in every format;
+    the slow ones (plot, convert) for the first input only."""
+    writable = [v.id for v in T.VERSIONS if v.writable]
+    o = os.fsdecode(bytes(out) + b"/" + os.fsencode(p).rsplit(b"/", 1)[-1])  # an output of the same hostile name
+    runs = [["validate", "--format", f, "--max-findings", "0", p] for f in FORMATS]
+    runs += [["validate", "--json", p], ["validate", "--part-number", HOSTILE_VALUE, p],
+             ["info", p], ["info", "--json", p], ["stats", p], ["stats", "--json", p],
+             ["diff", p, str(CLEAN)], ["diff", "--json", str(CLEAN), p], ["hexdump", p],
+             ["decode", p], ["decode", "--to", "json", p, "-o", o + ".json"], ["decode", "--to", "cut", p],
+             ["decode", "--to", "cut", p, "-o", o + ".cut"],
+             ["encode", "--check", "--input-format", "json", o + ".json"],
+             ["encode", "--input-format", "cut", o + ".cut", "-o", o + ".again.cbf"]]
+    if first:
+        runs += [["convert", p, "--to-version", writable[-1], "-o", o + ".c.cbf"],
+                 ["convert", p, "--to-version", writable[-1], "--fill", HOSTILE_VALUE, "-o", o + ".d.cbf"],
+                 ["plot", p, "--format", "svg", "-o", "-"],
+                 *(["plot", p, "--format", f, "-o", f"{o}.{f}"] for f in ("png", "pdf"))]
+    return runs
+
+
+HOSTILE_VALUE = "::error file=x::forged\n\r\x1b[2J"
+
+
+def _clean_text(res: subprocess.CompletedProcess[str], binary_ok: bool = False) -> None:
+    """assert_clean for a result of cli_many (text decoded from a strict UTF-8 stream); the github format's
+    own commands each one well-formed line."""
+    assert "Traceback" not in res.stderr, (res.args, res.stderr)
+    stdout = "" if binary_ok else res.stdout
+    github = "github" in list(res.args)
+    assert_clean(subprocess.CompletedProcess(res.args, res.returncode, stdout.encode(), res.stderr.encode()),
+                 sum(ln.startswith("::") for ln in stdout.split("\n")) if github else None)
+
+
+@pytest.fixture(scope="module")
+def every_command(hostile_dir: Path, tmp_path_factory: pytest.TempPathFactory) -> list[Result]:
+    """Every command and format of cbf on every hostile name, in one process."""
+    out = tmp_path_factory.mktemp("every_out")
+    argvs = [argv for k, n in enumerate(_names(hostile_dir))
+             for argv in _every_command(os.fsdecode(bytes(hostile_dir) + b"/" + n), out, k == 0)]
+    return [r for r, _ in run_many(argvs, ENV_STRICT, timeout=600)]
+
+
+def test_hostile_names_through_every_command_and_format(every_command: list[Result]) -> None:
+    argvs = [list(r.args) for r in every_command]
+    assert {a[0] for a in argvs} == set(SUBCOMMANDS)  # a new command joins this test, or it fails
+    assert _covered(argvs) == _format_uses()  # and so does a new format
+    for res in every_command:
+        argv = list(res.args)
+        _clean_text(res, binary_ok="-o" in argv and argv[argv.index("-o") + 1] == "-" and "svg" not in argv)
+        fmt = argv[argv.index("--format") + 1] if "--format" in argv else "json" if "--json" in argv else "text"
+        if argv[0] == "validate" and res.stdout:  # a file a report refuses is in it
+            parses(fmt, res.stdout.encode())
+        elif res.returncode == 2:
+            assert len(res.stderr.splitlines()) == 1, (argv, res.stderr)  # one line, naming what and where
+        elif "--json" in argv or argv[:2] == ["decode", argv[1]] and "-o" not in argv and "cut" not in argv:
+            doc = json.loads(res.stdout)
+            assert isinstance(doc, dict)
+        elif argv[0] == "plot" and "svg" in argv:
+            ET.fromstring(res.stdout.encode())  # the title (the name) leaves the SVG well-formed
+
+
+def test_one_hostile_name_alone_gives_its_bytes_back(every_command: list[Result], hostile_dir: Path) -> None:
+    """JSON holds the exact bytes of a name (the quoted form where they are not UTF-8)."""
+    seen = set()
+    for res in every_command:
+        argv = list(res.args)
+        if argv[:2] == ["validate", "--json"] and res.returncode != 2:
+            name = os.fsencode(argv[-1])
+            assert unquote(json.loads(res.stdout)["file"]) == name
+            seen.add(name)
+    assert len(seen) >= len(HOSTILE) - 1  # all but the text file not CBF
+
+
+def test_both_tools_print_the_same_quoted_name(every_command: list[Result], hostile_dir: Path,
+                                               cbf_c: Path) -> None:
+    by_name = {os.fsencode(r.args[-1]): r for r in every_command if list(r.args[:5]) == [
+        "validate", "--format", "text", "--max-findings", "0"]}
+    assert len(by_name) == len(_names(hostile_dir))
+    for name, a in by_name.items():
+        b = c(cbf_c, "validate", "--max-findings", "0", name)
         assert_clean(b)
         assert a.returncode == b.returncode
-        assert a.stdout == b.stdout, (name, a.stdout, b.stdout)
-        assert a.stderr.replace(b"cbf: ", b"", 1).split(b":")[0] == b.stderr.replace(b"cbf-c: ", b"", 1).split(b":")[0]
-        d = c(cbf_c, "dump", name, cwd=hostile_dir)
-        assert_clean(d)
+        assert a.stdout.encode() == b.stdout, (name, a.stdout, b.stdout)
+        assert a.stderr.replace("cbf: ", "", 1).split(":")[0].encode() == \
+            b.stderr.replace(b"cbf-c: ", b"", 1).split(b":")[0]
+        assert_clean(c(cbf_c, "dump", name))
+    for argv in (["validate", "--profile", HOSTILE_VALUE, str(CLEAN)], ["validate", "--max-findings", HOSTILE_VALUE,
+                 str(CLEAN)], ["validate", "--part-number", HOSTILE_VALUE, str(BAD)]):
+        res = c(cbf_c, *argv)
+        assert_clean(res)
+        assert res.returncode in (1, 2) if "--part-number" in argv else res.returncode == 2
 
 
-def _tool_runs(name: str, tmp: Path) -> Iterator[tuple[str, ...]]:
-    out = tmp / "out"
-    out.mkdir(exist_ok=True)
-    writable = [v.id for v in T.VERSIONS if v.writable]
-    yield "info", name
-    yield "info", "--json", name
-    yield "decode", name
-    yield "decode", "--to", "cut", name, "-o", str(out / "x.cut")
-    yield "convert", name, "--to-version", writable[-1], "-o", str(out / "c.cbf")
-    yield "stats", name
-    yield "stats", "--json", name
-    yield "diff", name, name
-    yield "diff", "--json", name, name
-    yield "plot", name, "-o", str(out / "p.svg")
+def test_the_pre_commit_hooks_entries(hostile_dir: Path, tmp_path: Path) -> None:
+    """Each hook of .pre-commit-hooks.yaml as pre-commit runs it (its entry, then the staged names its
+    `files` pattern takes) on hostile names; test_release runs the real pre-commit on one."""
+    hooks = yaml.safe_load((REPO / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))
+    for k, raw in enumerate(HOSTILE):  # a CUT file under each hostile name, the half of them not encoding
+        cut = tmp_path / os.fsdecode(raw + b".cut")
+        cut.write_text(cbf.to_cut(cbf.decode(CLEAN.read_bytes())) if k % 2 else "NOT A COMMAND\n", encoding="utf-8")
+    argvs = []
+    for hook in hooks:
+        entry = shlex.split(hook["entry"])
+        assert entry[0] == "cbf"
+        staged = [os.fsdecode(bytes(d) + b"/" + os.fsencode(p.name)) for d in (hostile_dir, tmp_path)
+                  for p in sorted(d.iterdir()) if re.search(hook["files"], p.name)]
+        assert len(staged) >= len(HOSTILE)
+        argvs.append([*entry[1:], *staged])
+    results = run_many(argvs, ENV_STRICT, timeout=300)
+    for res, _ in results:
+        _clean_text(res)
+        assert res.returncode in (1, 2) and res.stdout + res.stderr
 
 
-def test_hostile_names_in_every_other_command(hostile_dir: Path, tmp_path: Path) -> None:
-    # the worst three (a forged command, a line feed, bytes that are not UTF-8), one clean and two with findings
-    worst = [n for n in _names(hostile_dir) if n.startswith((HOSTILE[0] + b".", HOSTILE[1][:2], HOSTILE[3][:2]))]
-    assert len(worst) == 3
-    for k, raw in enumerate(worst):
-        name = os.fsdecode(raw)
-        for argv in _tool_runs(name, tmp_path):
-            if k and argv[0] not in ("info", "stats"):
-                continue  # every command for one name, the readers for the others (each run starts Python)
-            res = py(*argv, cwd=hostile_dir)
-            assert_clean(res)
-            if "--json" in argv and res.returncode == 0:
-                doc = json.loads(res.stdout)
-                assert raw in {unquote(doc.get(k, "")) for k in ("file", "a")}
-            if argv[0] == "plot" and res.returncode == 0:
-                ET.parse(tmp_path / "out" / "p.svg")  # the title (the name) leaves the SVG well-formed
-        cut = Path(os.fsdecode(bytes(tmp_path) + b"/" + raw + b".cut"))
-        cut.write_text("NOT A COMMAND\n", encoding="utf-8")
-        for argv in (("encode", "--check", str(cut)), ("encode", str(cut), "-o", str(tmp_path / "e.cbf"))):
-            res = py(*argv)
-            assert res.returncode == 2 and res.stderr.count(b"\n") == 1
-            assert_clean(res)
+def test_the_kit_quotes_a_hostile_testee_and_name(tmp_path: Path) -> None:
+    """cbf-conformance with a testee whose every answer holds a forged command, a line break and escapes,
+    under a hostile --name: its text, JSON and JUnit reports."""
+    (tmp_path / "evil.py").write_text(EVIL_TESTEE, encoding="utf-8")
+    name = "::error n\nx\x1b[2J"
+    base = [sys.executable, "-m", "conformance.runner", "--testee", f"{sys.executable} evil.py", "--name", name,
+            "--case", "check.6.2"]
+    for extra in ([], ["--json", "--junit", "j.xml"], ["--failure-list", "known.txt", "--fix"]):
+        (tmp_path / "known.txt").write_text("", encoding="utf-8")
+        res = subprocess.run([*base, *extra], cwd=tmp_path, capture_output=True, timeout=120,
+                             env=dict(ENV_STRICT, PYTHONPATH=os.pathsep.join([str(REPO), ENV["PYTHONPATH"]])))
+        assert res.returncode == 1 and b"Traceback" not in res.stderr, res.stderr
+        assert_clean(res)
+        if "--json" in extra:
+            report = json.loads(res.stdout)
+            assert name in report["bindings"]
+            ET.parse(tmp_path / "j.xml")
+        if "--fix" in extra:  # the list it writes holds one case a line, its comments stay comments
+            listed = [ln for ln in (tmp_path / "known.txt").read_text(encoding="utf-8").splitlines()
+                      if not ln.startswith("#")]
+            assert listed and all(ln.startswith("check.6.2") for ln in listed), listed
+
+
+EVIL_TESTEE = r"""
+import json, sys
+EVIL = "
+::error file=README.md::forged
+[2J "
+for line in sys.stdin:
+    op = json.loads(line).get("op")
+    if op == "quit":
+        break
+    if op == "validate":
+        answer = {"ok": True, "findings": [{"check": EVIL, "severity": "error", "record": 0, "offset": 0,
+                                            "message": EVIL}]}
+    elif op in ("decode", "encode"):
+        answer = {"ok": False, "error": {"kind": EVIL, "offset": 0, "message": EVIL}}
+    else:
+        answer = {"skipped": True}
+    print(json.dumps(answer), flush=True)
+"""
 
 
 def _header_string_field() -> T.FieldInfo:
@@ -240,7 +381,7 @@ def _header_string_field() -> T.FieldInfo:
 
 def test_hostile_contents(tmp_path: Path, cbf_c: Path) -> None:
     """Values from inside files: a duplicate JSON key, an unknown machine-file key, a repeated
-    cutter name, a header string with a forged command and a terminal escape."""
+    cutter name, a header string with a forged command and a terminal escape (through every command)."""
     evil = "\n::error file=x::forged\x1b[2J"
     doc = json.loads(py("decode", str(CLEAN)).stdout)
     text = json.dumps(doc)
@@ -250,13 +391,9 @@ def test_hostile_contents(tmp_path: Path, cbf_c: Path) -> None:
     dup.write_text(text[:-1] + ', "x": ' + inner + "}", encoding="utf-8")  # JSON text in a .cut file
     out = tmp_path / "o.cbf"
     writable = [v.id for v in T.VERSIONS if v.writable]
-    for argv in (("encode", "--check", str(dup)), ("stats", str(dup)), ("diff", str(dup), str(CLEAN)),
-                 ("convert", str(dup), "--to-version", writable[-1], "-o", str(out)),
-                 ("plot", str(dup), "-o", str(tmp_path / "p.svg"))):
-        res = py(*argv)
-        assert res.returncode == 2, argv
-        assert b"duplicate key" in res.stderr, (argv, res.stderr)
-        assert_clean(res)
+    dup_runs = [["encode", "--check", str(dup)], ["stats", str(dup)], ["diff", str(dup), str(CLEAN)],
+                ["convert", str(dup), "--to-version", writable[-1], "-o", str(out)],
+                ["plot", str(dup), "-o", str(tmp_path / "p.svg")]]
     machine = tmp_path / "m.json"
     machine.write_text(json.dumps({evil: 1}), encoding="utf-8")
     cutters = tmp_path / "t.yaml"
@@ -265,59 +402,53 @@ def test_hostile_contents(tmp_path: Path, cbf_c: Path) -> None:
     name = json.dumps(evil[: TABLE["max_name"]])  # as long as a cutter record's name may be
     cutters.write_text(f"cutters:\n- {{name: {name}, length: 1, radius: 1}}\n"
                        f"- {{name: {name}, length: 1, radius: 1}}\n", encoding="utf-8")
-    for opt, path, needle in (("--machine", machine, b"unknown key"), ("--cutters", cutters, b"given twice")):
-        for res in (py("validate", opt, str(path), str(CLEAN)), c(cbf_c, "validate", opt, str(path), str(CLEAN))):
-            assert res.returncode == 2 and needle in res.stderr, res.stderr
-            assert_clean(res)
+    opt_runs = [["validate", "--machine", str(machine), str(CLEAN)],
+                ["validate", "--cutters", str(cutters), str(CLEAN)]]
     f = _header_string_field()
     data = bytearray(CLEAN.read_bytes())
     value = b"\n::warning ::forged\x1b[2J\r\x85"[: f.size]
     data[f.offset:f.offset + len(value)] = value
     header = tmp_path / "header.cbf"
     header.write_bytes(bytes(data))
-    for res in (py("info", str(header)), py("info", "--json", str(header)), py("validate", str(header)),
-                py("validate", "--format", "junit", str(header), str(CLEAN)), c(cbf_c, "dump", str(header)),
-                c(cbf_c, "validate", str(header))):
-        assert res.returncode in (0, 1), res
-        assert_clean(res)
-    assert b'"\\n::warning' in py("info", str(header)).stdout  # quoted, escapes visible
+    header_runs = _every_command(str(header), tmp_path, True)
+    results = [r for r, _ in run_many([*dup_runs, *opt_runs, *header_runs], ENV_STRICT, timeout=300)]
+    for res in results[:len(dup_runs)]:
+        assert res.returncode == 2 and "duplicate key" in res.stderr, (res.args, res.stderr)
+        _clean_text(res)
+    for res, needle in zip(results[len(dup_runs):len(dup_runs) + 2], ("unknown key", "given twice"), strict=True):
+        assert res.returncode == 2 and needle in res.stderr, res.stderr
+        _clean_text(res)
+    for res in results[len(dup_runs) + 2:]:
+        argv = list(res.args)
+        _clean_text(res, binary_ok="-o" in argv and argv[argv.index("-o") + 1] == "-" and "svg" not in argv)
+        if argv[0] in ("validate", "info", "stats", "hexdump", "decode", "diff"):  # they read it
+            assert res.returncode in (0, 1), (argv, res.stderr)
+        elif res.returncode == 2:  # encode, convert: the writer refuses what it cannot write, in one line
+            assert len(res.stderr.splitlines()) == 1, (argv, res.stderr)
+        if argv == ["info", str(header)]:
+            assert '"\\n::warning' in res.stdout  # quoted, escapes visible
+    for argv in (["validate", "--machine", str(machine), str(CLEAN)], ["validate", "--cutters", str(cutters),
+                 str(CLEAN)], ["dump", str(header)], ["validate", str(header)]):
+        cres = c(cbf_c, *argv)
+        assert cres.returncode in ((0, 1) if str(header) in argv else (2,)), (argv, cres.stderr)
+        assert_clean(cres)
 
 
 # -- SARIF and GitLab as the platforms take them ------------------------------------------------------
-def _multitool(sarif: Path) -> list[dict[str, object]]:
+def _multitool(*sarifs: Path) -> dict[str, list[dict[str, object]]]:
+    """The multitool's Gh;Sarif results for each file (its name), in one run (a .NET start costs seconds)."""
     if not MULTITOOL.exists():
         pytest.skip("the SARIF multitool is not installed (npm ci installs it: package.json)")
-    log = sarif.with_suffix(".validation.sarif")
-    res = subprocess.run([str(MULTITOOL), "validate", "--rule-kind", "Gh;Sarif", str(sarif), "-o", str(log),
+    log = sarifs[0].with_name("validation.sarif")
+    res = subprocess.run([str(MULTITOOL), "validate", "--rule-kind", "Gh;Sarif", *map(str, sarifs), "-o", str(log),
                           "--log", "ForceOverwrite"], capture_output=True, text=True, timeout=540,
                          env=dict(os.environ, DOTNET_CLI_TELEMETRY_OPTOUT="1"))
     assert res.returncode == 0, res.stdout + res.stderr
-    results: list[dict[str, object]] = json.loads(log.read_text(encoding="utf-8"))["runs"][0]["results"]
-    return results
-
-
-def test_the_multitool_accepts_our_sarif(hostile_dir: Path, tmp_path: Path) -> None:
-    out = tmp_path / "cbf.sarif"
-    res = py("validate", "--format", "sarif", "--docs-url", "https://docs.example.org/cbf/index.html",
-             "--base", str(REPO), str(GOLDEN), str(hostile_dir), str(tmp_path / "missing.cbf"))
-    out.write_bytes(res.stdout)
-    doc = json.loads(res.stdout)
-    run = doc["runs"][0]
-    driver = run["tool"]["driver"]
-    assert driver["version"] and all(r["fullDescription"]["text"] and r["help"]["markdown"] for r in driver["rules"])
-    assert all("#check-" in r["helpUri"] for r in driver["rules"] if r["id"] in {c["id"] for c in T.CHECKS})
-    assert all(str(r["locations"][0]["physicalLocation"]["region"].get("byteOffset")) in r["message"]["text"]
-               for r in run["results"] if "byteOffset" in r["locations"][0]["physicalLocation"]["region"])
-    assert any(r["ruleId"] == "cbf.input" for r in run["results"])  # files that are not CBF are results
-    assert all(r["locations"][0]["physicalLocation"]["artifactLocation"].get("uriBaseId") == "SRCROOT"
-               for r in run["results"] if not r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
-               .startswith("file:"))
-    assert _multitool(out) == []  # 0 errors, 0 warnings
-    # the test can fail: a rule without its help is an error GitHub's rules report
-    del run["tool"]["driver"]["rules"][0]["help"]
-    bad = tmp_path / "bad.sarif"
-    bad.write_text(json.dumps(doc), encoding="utf-8")
-    assert _multitool(bad)
+    out: dict[str, list[dict[str, object]]] = {p.name: [] for p in sarifs}
+    for r in json.loads(log.read_text(encoding="utf-8"))["runs"][0]["results"]:
+        uri = r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+        out[unquote_to_bytes(uri).decode().rsplit("/", 1)[-1]].append(r)
+    return out
 
 
 def _one_bad_byte_a_record(src: Path, tmp: Path) -> tuple[Path, int]:
@@ -332,15 +463,26 @@ def _one_bad_byte_a_record(src: Path, tmp: Path) -> tuple[Path, int]:
     return path, len(cbf.validate(bytes(data)))
 
 
-def test_a_file_of_65536_findings_gives_sarif_github_accepts(tmp_path: Path) -> None:
+@pytest.fixture(scope="module")
+def big_sarif(tmp_path_factory: pytest.TempPathFactory) -> tuple[bytes, int]:
+    """`cbf validate --format sarif` of the 65,535-record file with one bad byte in every record (made once),
+    and its number of findings."""
+    path, n = _one_bad_byte_a_record(GOLDEN / "big.v3.65535.cbf", tmp_path_factory.mktemp("big"))
+    res = py("validate", "--format", "sarif", "--docs-url", DOCS, str(path), timeout=300)
+    assert res.returncode == 1
+    return res.stdout, n
+
+
+DOCS = "https://docs.example.org/cbf/index.html"
+
+
+def test_a_file_of_65536_findings_gives_sarif_github_accepts(big_sarif: tuple[bytes, int]) -> None:
     from cbf.report import SARIF_MAX_RESULTS
 
-    path, n = _one_bad_byte_a_record(GOLDEN / "big.v3.65535.cbf", tmp_path)
+    out, n = big_sarif
     assert n > SARIF_MAX_RESULTS
-    res = py("validate", "--format", "sarif", str(path), timeout=300)
-    assert res.returncode == 1
-    assert len(res.stdout) <= 10 * 1000 * 1000  # GitHub's limit of an upload (and gzip makes it far smaller)
-    run = json.loads(res.stdout)["runs"][0]
+    assert len(out) <= 10 * 1000 * 1000  # GitHub's limit of an upload (and gzip makes it far smaller)
+    run = json.loads(out)["runs"][0]
     kept = len(run["results"])
     assert 20_000 <= kept <= SARIF_MAX_RESULTS == 25_000  # GitHub's results a run (and its 10 MB)
     assert run["properties"]["resultsLeftOut"] == n - kept
@@ -348,14 +490,46 @@ def test_a_file_of_65536_findings_gives_sarif_github_accepts(tmp_path: Path) -> 
     assert any(f"{n - kept} result(s) left out" in t for t in notes)
 
 
+def test_the_multitool_accepts_our_sarif(hostile_dir: Path, tmp_path: Path, big_sarif: tuple[bytes, int]) -> None:
+    """One multitool run: the golden files and the hostile names (every rule, files not CBF as results), the
+    65,536-finding file's SARIF (its cap note; its results cut to 50 of the same shape: the multitool takes
+    minutes over 9 MB), and, so that the test can fail, the first with a rule's help taken out."""
+    out = tmp_path / "cbf.sarif"
+    res = py("validate", "--format", "sarif", "--docs-url", DOCS, "--base", str(REPO), str(GOLDEN), str(hostile_dir),
+             str(tmp_path / "missing.cbf"))
+    out.write_bytes(res.stdout)
+    doc = json.loads(res.stdout)
+    run = doc["runs"][0]
+    driver = run["tool"]["driver"]
+    assert driver["version"] and all(r["fullDescription"]["text"] and r["help"]["markdown"] for r in driver["rules"])
+    assert all("#check-" in r["helpUri"] for r in driver["rules"] if r["id"] in {c["id"] for c in T.CHECKS})
+    assert all(str(r["locations"][0]["physicalLocation"]["region"].get("byteOffset")) in r["message"]["text"]
+               for r in run["results"] if "byteOffset" in r["locations"][0]["physicalLocation"]["region"])
+    assert any(r["ruleId"] == "cbf.input" for r in run["results"])  # files that are not CBF are results
+    assert all(r["locations"][0]["physicalLocation"]["artifactLocation"].get("uriBaseId") == "SRCROOT"
+               for r in run["results"] if not r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+               .startswith("file:"))
+    big = json.loads(big_sarif[0])
+    big["runs"][0]["results"] = big["runs"][0]["results"][:50]
+    capped = tmp_path / "capped.sarif"
+    capped.write_text(json.dumps(big), encoding="utf-8")
+    del run["tool"]["driver"]["rules"][0]["help"]  # a rule without its help is an error GitHub's rules report
+    bad = tmp_path / "bad.sarif"
+    bad.write_text(json.dumps(doc), encoding="utf-8")
+    found = _multitool(out, capped, bad)
+    assert found["cbf.sarif"] == [] and found["capped.sarif"] == []  # 0 errors, 0 warnings
+    assert found["bad.sarif"]
+
+
 def test_max_findings_caps_every_format(tmp_path: Path) -> None:
     path, n = _one_bad_byte_a_record(CLEAN, tmp_path)
     cap = 3
     assert n > cap
     shutil.copy(CLEAN, tmp_path / "clean.cbf")
-    for fmt in FORMATS:
-        res = py("validate", "--format", fmt, "--max-findings", str(cap), path.name, "clean.cbf", cwd=tmp_path)
-        doc = parses(fmt, res.stdout)
+    runs = run_many([["validate", "--format", fmt, "--max-findings", str(cap), "--base", str(tmp_path), str(path),
+                      str(tmp_path / "clean.cbf")] for fmt in FORMATS], ENV_STRICT, timeout=300)
+    for fmt, (res, _) in zip(FORMATS, runs, strict=True):
+        doc = parses(fmt, res.stdout.encode())
         if fmt == "text":
             assert str(doc).count(": error ") == cap and f"{n - cap} more finding(s)" in str(doc)
         elif fmt == "json":
@@ -367,7 +541,8 @@ def test_max_findings_caps_every_format(tmp_path: Path) -> None:
             run = doc["runs"][0]  # type: ignore[index]
             assert len(run["results"]) == cap and run["properties"]["findingsLeftOut"] == n - cap
         elif fmt == "github":
-            assert_clean(res, cap + 1)
+            _clean_text(res)
+            assert sum(ln.startswith("::") for ln in res.stdout.splitlines()) == cap + 1
         else:
             assert len(doc) == cap + 1 and doc[-1]["severity"] == "info"  # type: ignore[index,arg-type]
             jsonschema.validate(doc, GITLAB_SCHEMA)
@@ -431,19 +606,25 @@ def test_fifo_device_and_socket_are_refused_unopened(open_tmp: Path, cbf_c: Path
     os.mkfifo(folder / "x.cbf")
     shutil.copy(CLEAN, folder / "ok.cbf")
     try:
-        for path, kind in ((fifo, "a FIFO"), (sock_path, "a socket"), (Path(os.devnull), "a character device")):
-            for argv in (["validate", str(path)], ["info", str(path)], ["stats", str(path)],
-                         ["encode", "--check", str(path)], ["validate", "--machine", str(path), str(CLEAN)],
-                         ["validate", "--cutters", str(path), str(CLEAN)]):
-                res = _as_nobody(argv, timeout=30)  # a blocking open would hang until the timeout
-                assert res.returncode == 2 and res.stderr.count(b"\n") == 1, (argv, res.stderr)
-                assert f"is {kind}; only regular files are read".encode() in res.stderr, (argv, res.stderr)
+        kinds = ((fifo, "a FIFO"), (sock_path, "a socket"), (Path(os.devnull), "a character device"))
+        argvs = [argv for path, _ in kinds for argv in (
+            ["validate", str(path)], ["info", str(path)], ["stats", str(path)], ["hexdump", str(path)],
+            ["encode", "--check", str(path)], ["validate", "--machine", str(path), str(CLEAN)],
+            ["validate", "--cutters", str(path), str(CLEAN)])]
+        # one process as nobody; a blocking open would hang it until the timeout fails the test
+        results = iter(run_many([*argvs, ["validate", str(folder)]], ENV_STRICT, prefix=unprivileged_prefix(),
+                                timeout=120))
+        for path, kind in kinds:
+            for _ in range(len(argvs) // len(kinds)):
+                res, _ = next(results)
+                assert res.returncode == 2 and res.stderr.count("\n") == 1, (res.args, res.stderr)
+                assert f"is {kind}; only regular files are read" in res.stderr, (res.args, res.stderr)
             for argv in (["validate", str(path)], ["dump", str(path)],
                          ["validate", "--machine", str(path), str(CLEAN)]):
-                res = _as_nobody(argv, tool=str(cbf_c), timeout=30)
-                assert res.returncode == 2 and f"is {kind}".encode() in res.stderr, (argv, res.stderr)
-        res = _as_nobody(["validate", str(folder)], timeout=30)
-        assert res.returncode == 2 and b"x.cbf: is a FIFO" in res.stderr and b"ok.cbf: ok" in res.stdout
+                cres = _as_nobody(argv, tool=str(cbf_c), timeout=30)
+                assert cres.returncode == 2 and f"is {kind}".encode() in cres.stderr, (argv, cres.stderr)
+        res, _ = next(results)
+        assert res.returncode == 2 and "x.cbf: is a FIFO" in res.stderr and "ok.cbf: ok" in res.stdout
     finally:
         sock.close()
 
@@ -457,15 +638,16 @@ def test_an_unreadable_folder_or_file_is_an_error_not_a_pass(open_tmp: Path, cbf
     shutil.copy(BAD, unreadable)
     locked.chmod(0)
     unreadable.chmod(0)
-    res = _as_nobody(["validate", str(open_tmp)])
+    (res, _), *others = run_many([["validate", str(open_tmp)], *(["validate", "--format", fmt, str(open_tmp)]
+                                 for fmt in FORMATS[1:])], ENV_STRICT, prefix=unprivileged_prefix(), timeout=120)
     assert res.returncode == 2, res
-    assert f"{locked}: permission denied".encode() in res.stderr
-    assert f"{unreadable}: permission denied".encode() in res.stderr
-    assert b"3 file(s): 1 ok, 0 failed, 2 not validated" in res.stdout
-    for fmt in ("json", "sarif", "junit", "gitlab", "github"):
-        assert _as_nobody(["validate", "--format", fmt, str(open_tmp)]).returncode == 2
-    res = _as_nobody(["validate", str(unreadable)], tool=str(cbf_c))
-    assert res.returncode == 2 and f"{unreadable}: permission denied".encode() in res.stderr
+    assert f"{locked}: permission denied" in res.stderr
+    assert f"{unreadable}: permission denied" in res.stderr
+    assert "3 file(s): 1 ok, 0 failed, 2 not validated" in res.stdout
+    for other, _ in others:
+        assert other.returncode == 2, other.args
+    cres = _as_nobody(["validate", str(unreadable)], tool=str(cbf_c))
+    assert cres.returncode == 2 and f"{unreadable}: permission denied".encode() in cres.stderr
     locked.chmod(0o755)
     assert _as_nobody(["validate", str(open_tmp)]).returncode == 2  # the locked file still fails the run
 

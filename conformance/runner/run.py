@@ -280,7 +280,7 @@ def read_failures(path: Path, required: bool = False) -> dict[str, str]:
 def write_failures(path: Path, failures: dict[str, str], binding: str,
                    rewrite: str = "python -m conformance.runner --fix") -> None:
     """Rewrite the list; the comment block at its top (the reasons) is kept."""
-    head = (f"# Known conformance failures of the {binding} binding: `case message`, one a line.\n"
+    head = (f"# Known conformance failures of the {quote(binding)} binding: `case message`, one a line.\n"
             "# The run fails on an unlisted failure, a listed case that passes, or a changed message.\n"
             f"# Rewrite with: {rewrite}\n")
     if path.exists():
