@@ -2596,6 +2596,24 @@ static void cbf__qput(char *out, size_t cap, size_t *at, const char *text, size_
             out[*at] = text[i];
 }
 
+/* The escape of one character that is not printed as it is (len 0: a byte that starts no UTF-8 character). */
+static void cbf__qescape(char esc[16], unsigned char byte, size_t len, uint32_t c)
+{
+    if (!len) {
+        (void)snprintf(esc, 16, "\\x%02X", byte);
+    } else if (c == '"' || c == '\\') {
+        esc[0] = '\\';
+        esc[1] = (char)c;
+        esc[2] = '\0';
+    } else if (c == '\n' || c == '\r' || c == '\t') {
+        (void)snprintf(esc, 16, "\\%c", c == '\n' ? 'n' : c == '\r' ? 'r' : 't');
+    } else if (c < 0x80u) {
+        (void)snprintf(esc, 16, "\\x%02X", (unsigned)c);
+    } else {
+        (void)snprintf(esc, 16, "\\u{%lX}", (unsigned long)c);
+    }
+}
+
 size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode)
 {
     const unsigned char *u = (const unsigned char *)s;
@@ -2618,20 +2636,9 @@ size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode)
                 cbf__qput(out, cap, &at, s + i, len);
                 continue;
             }
-            if (!len) {
+            cbf__qescape(esc, u[i], len, c);
+            if (!len)
                 len = 1;
-                (void)snprintf(esc, sizeof esc, "\\x%02X", u[i]);
-            } else if (c == '"' || c == '\\') {
-                esc[0] = '\\';
-                esc[1] = (char)c;
-                esc[2] = '\0';
-            } else if (c == '\n' || c == '\r' || c == '\t') {
-                (void)snprintf(esc, sizeof esc, "\\%c", c == '\n' ? 'n' : c == '\r' ? 'r' : 't');
-            } else if (c < 0x80u) {
-                (void)snprintf(esc, sizeof esc, "\\x%02X", (unsigned)c);
-            } else {
-                (void)snprintf(esc, sizeof esc, "\\u{%lX}", (unsigned long)c);
-            }
             cbf__qput(out, cap, &at, esc, strlen(esc));
         }
         if (mode == CBF_QUOTE_NAME)
@@ -2654,7 +2661,7 @@ const char *cbf_quoted(const char *s, int mode)
     return buf;
 }
 /* ==== END runtime/quote.c ==== */
-#line 2658 "cbf.h"
+#line 2665 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2771,7 +2778,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2775 "cbf.h"
+#line 2782 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2996,7 +3003,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 3000 "cbf.h"
+#line 3007 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3253,7 +3260,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3257 "cbf.h"
+#line 3264 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3431,7 +3438,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3435 "cbf.h"
+#line 3442 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3725,7 +3732,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3729 "cbf.h"
+#line 3736 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4826,7 +4833,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4830 "cbf.h"
+#line 4837 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4992,7 +4999,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4996 "cbf.h"
+#line 5003 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5029,7 +5036,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5033 "cbf.h"
+#line 5040 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6011,7 +6018,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6015 "cbf.h"
+#line 6022 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -69,6 +69,24 @@ static void cbf__qput(char *out, size_t cap, size_t *at, const char *text, size_
             out[*at] = text[i];
 }
 
+/* The escape of one character that is not printed as it is (len 0: a byte that starts no UTF-8 character). */
+static void cbf__qescape(char esc[16], unsigned char byte, size_t len, uint32_t c)
+{
+    if (!len) {
+        (void)snprintf(esc, 16, "\\x%02X", byte);
+    } else if (c == '"' || c == '\\') {
+        esc[0] = '\\';
+        esc[1] = (char)c;
+        esc[2] = '\0';
+    } else if (c == '\n' || c == '\r' || c == '\t') {
+        (void)snprintf(esc, 16, "\\%c", c == '\n' ? 'n' : c == '\r' ? 'r' : 't');
+    } else if (c < 0x80u) {
+        (void)snprintf(esc, 16, "\\x%02X", (unsigned)c);
+    } else {
+        (void)snprintf(esc, 16, "\\u{%lX}", (unsigned long)c);
+    }
+}
+
 size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode)
 {
     const unsigned char *u = (const unsigned char *)s;
@@ -91,20 +109,9 @@ size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode)
                 cbf__qput(out, cap, &at, s + i, len);
                 continue;
             }
-            if (!len) {
+            cbf__qescape(esc, u[i], len, c);
+            if (!len)
                 len = 1;
-                (void)snprintf(esc, sizeof esc, "\\x%02X", u[i]);
-            } else if (c == '"' || c == '\\') {
-                esc[0] = '\\';
-                esc[1] = (char)c;
-                esc[2] = '\0';
-            } else if (c == '\n' || c == '\r' || c == '\t') {
-                (void)snprintf(esc, sizeof esc, "\\%c", c == '\n' ? 'n' : c == '\r' ? 'r' : 't');
-            } else if (c < 0x80u) {
-                (void)snprintf(esc, sizeof esc, "\\x%02X", (unsigned)c);
-            } else {
-                (void)snprintf(esc, sizeof esc, "\\u{%lX}", (unsigned long)c);
-            }
             cbf__qput(out, cap, &at, esc, strlen(esc));
         }
         if (mode == CBF_QUOTE_NAME)
