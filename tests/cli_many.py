@@ -55,14 +55,16 @@ json.dump(out, open(sys.argv[2], "w"))
 
 
 def run_many(argvs: Sequence[Sequence[str]], env: Mapping[str, str], prefix: Sequence[str] = (),
-             hide: Sequence[str] = ()) -> list[tuple[subprocess.CompletedProcess[str], int]]:
-    """Each command line's result and peak resident memory in kB, in order, from one process."""
+             hide: Sequence[str] = (),
+             timeout: float | None = None) -> list[tuple[subprocess.CompletedProcess[str], int]]:
+    """Each command line's result and peak resident memory in kB, in order, from one process (killed
+    after ``timeout`` seconds: a command that blocks fails the test instead of hanging it)."""
     argvs = [list(a) for a in argvs]
     with tempfile.TemporaryDirectory(prefix="cli_many") as tmp:
         todo, done = Path(tmp) / "job.json", Path(tmp) / "results.json"
         todo.write_text(json.dumps({"argvs": argvs, "hide": list(hide)}), encoding="utf-8")
         res = subprocess.run([*prefix, sys.executable, "-c", RUNNER_MANY, str(todo), str(done)], env=dict(env),
-                             capture_output=True, text=True, stdin=subprocess.DEVNULL)
+                             capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=timeout)
         assert res.returncode == 0 and res.stderr == "", res.stderr
         results = json.loads(done.read_text(encoding="utf-8"))
     assert [r["argv"] for r in results] == argvs

@@ -41,9 +41,9 @@ def _has_output(sub: argparse.ArgumentParser) -> bool:
 SUBCOMMANDS = _subcommands()
 # What each subcommand reads: ``encode`` text (CUT or JSON), every other one a CBF file.
 TEXT_INPUT = {"encode"}
-# ``validate`` and ``hexdump`` report a broken CBF file as findings (exit 1, on stdout); input that is not
-# a CBF file (empty, shorter than the header, both magic numbers wrong) is exit 2 for it too.
-NAMELESS_FINDINGS = {"hexdump"}
+# ``validate`` and ``hexdump`` report a broken CBF file as findings (exit 1, on stdout, each as
+# FILE:OFFSET: ...; hexdump marks the row holding the offset with it); input that is not a CBF file
+# (empty, shorter than the header, both magic numbers wrong) is exit 2 for it too.
 REPORTS_FINDINGS = {"validate", "hexdump"}  # hexdump marks the findings in the bytes, exit 1 on an error
 # These read CBF, or CUT / JSON text when the first bytes are text (issue 16).
 EITHER_INPUT = {"convert", "stats", "diff", "plot"}
@@ -254,12 +254,7 @@ def test_bad_input_through_every_subcommand(case: Case, tmp_path: Path, one_proc
     assert list(out_dir.iterdir()) == [], f"output written for bad input: {sorted(out_dir.iterdir())}"
     for cmd, (res, peak_kb) in zip(SUBCOMMANDS, results, strict=True):
         code, needles = _expect(case, cmd)
-        # hexdump dumps the one file it is given: its findings name no file (an exit 2 line does)
-        # nor validate's ":OFFSET:" location (hexdump marks the row holding the offset)
-        named = (str(path),) if cmd not in NAMELESS_FINDINGS or code == EXIT_USAGE else ()
-        if cmd in NAMELESS_FINDINGS and code != EXIT_USAGE:
-            needles = tuple(n for n in needles if not (n.startswith(":") and n.endswith(":")))
-        _assert_outcome(res, code, named + needles)
+        _assert_outcome(res, code, (str(path), *needles))
         if case.name == "random_100mb":
             # refused without reading it all: peak memory far below the file's 100 MB
             assert peak_kb < 60_000, f"{cmd}: peak RSS {peak_kb} kB for a 100 MB input"

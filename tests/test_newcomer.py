@@ -17,6 +17,7 @@ import yaml
 import cbf
 import cbfgen
 from cbf import hexdump as rt_hexdump
+from cbf.report import finding_line
 from cbf.validation import validate
 
 REPO = Path(__file__).resolve().parents[1]
@@ -49,9 +50,9 @@ def test_hexdump_is_the_golden_pages_view_with_findings_marked() -> None:
         assert marked.returncode == (1 if any(f.severity == "error" for f in found) else 0), path.name
         rows = marked.stdout.splitlines()
         assert sum(r.count(rt_hexdump.MARK) for r in rows) == len(found), path.name
-        for f in found:
-            text = f"{f.severity} {f.check}"
-            hit = [r for r in rows if f"{rt_hexdump.MARK} {text}" in r and f.message in r]
+        for f in found:  # each mark is the finding as validate prints it: the file and the offset name it
+            text = finding_line(str(path), f).rstrip("\n")
+            hit = [r for r in rows if f"{rt_hexdump.MARK} {text}" in r]
             assert hit, (path.name, f)
             if f.offset is not None and f.offset < len(data):
                 start = int(hit[0][:8], 16)

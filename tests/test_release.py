@@ -180,6 +180,10 @@ def test_pre_commit_example_against_the_tag_offline(released: dict[str, Any]) ->
     shutil.copy(GOLDEN / "valid.v3.small.cbf", user / "cuts" / "good.cbf")
     shutil.copy(_failing_case(), user / "cuts" / "bad.cbf")
     (user / "cuts" / "bad.cut").write_text("header X\nbogus 1\n", encoding="utf-8")
+    # hostile names (issue 35): a forged workflow command (plain after "cuts/"), a line break before one (quoted)
+    forged = "::error file=README.md,line=1::forged"
+    shutil.copy(_failing_case(), user / "cuts" / f"{forged}.cbf")
+    (user / "cuts" / "x\n::stop-commands::y.cut").write_text("header X\nbogus 1\n", encoding="utf-8")
     subprocess.run(["git", "add", "-A"], cwd=user, check=True, env=env)
     env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}"  # the pinned pre-commit
     res = subprocess.run([sys.executable, "-m", "pre_commit", "run", "--all-files"], cwd=user, env=env,
@@ -188,6 +192,8 @@ def test_pre_commit_example_against_the_tag_offline(released: dict[str, Any]) ->
     assert res.returncode == 1, out
     assert re.search(r"cbf validate\.+Failed", out) and re.search(r"cbf encode --check\.+Failed", out), out
     assert "cuts/bad.cbf: FAIL" in out and "cuts/good.cbf: ok" in out and "unknown keyword" in out
+    assert f"cuts/{forged}.cbf: FAIL" in out and '"cuts/x\\n::stop-commands::y.cut"' in out, out
+    assert not [ln for ln in out.splitlines() if ln.startswith("::")], out
     # the hooks' environment: the lean cbf and numpy, built from the tag, nothing of the development package
     envs = [p for p in Path(env["PRE_COMMIT_HOME"]).glob("repo*/py_env-*") if p.is_dir()]
     assert len(envs) == 1, envs

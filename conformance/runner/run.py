@@ -20,6 +20,8 @@ import yaml
 
 from .about import SPEC_REVISION, VERSION, version_line
 from .compare import findings_difference, first_difference
+from .quoting import line as one_line
+from .quoting import quote
 from .testee import CAPABILITIES, Binding, Testee, TesteeError, install_handlers
 
 # libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster.
@@ -278,7 +280,7 @@ def read_failures(path: Path, required: bool = False) -> dict[str, str]:
 def write_failures(path: Path, failures: dict[str, str], binding: str,
                    rewrite: str = "python -m conformance.runner --fix") -> None:
     """Rewrite the list; the comment block at its top (the reasons) is kept."""
-    head = (f"# Known conformance failures of the {binding} binding: `case message`, one a line.\n"
+    head = (f"# Known conformance failures of the {quote(binding)} binding: `case message`, one a line.\n"
             "# The run fails on an unlisted failure, a listed case that passes, or a changed message.\n"
             f"# Rewrite with: {rewrite}\n")
     if path.exists():
@@ -388,7 +390,7 @@ def main_run(args: argparse.Namespace) -> int:
         missing = b.missing()
         results: dict[str, dict[str, Any]] = {}
         if missing:
-            print(f"conformance: {b.name}: not built ({', '.join(missing)}); every case skipped", file=human)
+            print(f"conformance: {quote(b.name)}: not built ({', '.join(missing)}); every case skipped", file=human)
             results = {c.name: {"status": "skip", "message": "binding not built"} for c in cases}
             report["bindings"][b.name] = {"available": False, "results": results}
             continue
@@ -431,7 +433,7 @@ def main_run(args: argparse.Namespace) -> int:
         write_junit(args.junit, report, cases)
     # a case failing only because the testee skipped an operation it declared is said once, in the
     # binding's judging line (unjudged), not once a case
-    problems = [f"{n}: {c}: FAIL {r['message']}" for n, b in report["bindings"].items()
+    problems = [f"{quote(n)}: {quote(c)}: FAIL {one_line(r['message'])}" for n, b in report["bindings"].items()
                 for c, r in b["results"].items() if kind(r) == "fail" and not r.get("not_run")
                 and not r["message"].endswith(f": {SKIPPED}")]
     report["problems"] = problems + notes + unjudged
@@ -482,7 +484,7 @@ def judging_problem(name: str, b_report: dict[str, Any]) -> str:
     if unlisted:
         parts.append("skipped " + ", ".join(f"{c} in {n} of {judged[c]['cases']} case(s)" for c, n in unlisted.items())
                      + " that its failure list does not name")
-    return (f"{name}: FAIL {'; '.join(parts)}: a testee answers every operation of its capabilities "
+    return (f"{quote(name)}: FAIL {'; '.join(parts)}: a testee answers every operation of its capabilities "
             f"({','.join(caps)}); one that lacks one says so with --capabilities (e.g. --capabilities decode)")
 
 
@@ -511,10 +513,10 @@ def _run_binding(b: Binding, cases: list[Case], timeout: float, deadline: float,
                                   f"{outcome.message}", outcome.judged, outcome.skipped)
             results[c.name] = outcome.as_result()
             if t.consecutive_timeouts >= MAX_TIMEOUTS:
-                stopped = f"{b.name} stopped after {MAX_TIMEOUTS} timeouts in a row"
+                stopped = f"{quote(b.name)} stopped after {MAX_TIMEOUTS} timeouts in a row"
         if stopped is not None:
             skipped = sum(1 for r in results.values() if r.get("not_run"))
-            notes.append(f"{b.name}: {stopped}: {skipped} case(s) not run")
+            notes.append(f"{quote(b.name)}: {stopped}: {skipped} case(s) not run")
     finally:
         t.stop()
     return results
@@ -527,7 +529,7 @@ def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
     for name, b in report["bindings"].items():
         results = b["results"]
         n = counts(results)
-        suite = ET.SubElement(suites, "testsuite", name=name, tests=str(len(results)), failures=str(n["failed"]),
+        suite = ET.SubElement(suites, "testsuite", name=quote(name), tests=str(len(results)), failures=str(n["failed"]),
                               errors="0", skipped=str(n["skipped"] + n["expected_failures"]))
         props = ET.SubElement(suite, "properties")
         for key, value in (("kit.version", report["kit"]["version"]),
@@ -542,17 +544,17 @@ def write_junit(path: Path, report: dict[str, Any], cases: list[Case]) -> None:
             r = results.get(c.name)
             if r is None:
                 continue
-            tc = ET.SubElement(suite, "testcase", classname=f"{name}.{c.group}", name=c.name)
+            tc = ET.SubElement(suite, "testcase", classname=quote(f"{name}.{c.group}"), name=quote(c.name))
             k = kind(r)
             if k == "fail":
-                ET.SubElement(tc, "failure", message=r["message"]).text = r["message"]
+                ET.SubElement(tc, "failure", message=one_line(r["message"])).text = one_line(r["message"])
             elif k == "xfail":
-                ET.SubElement(tc, "skipped", message=f"expected failure (failure list): {r['message']}",
+                ET.SubElement(tc, "skipped", message=one_line(f"expected failure (failure list): {r['message']}"),
                               type="expected-failure")
                 tp = ET.SubElement(tc, "properties")
                 ET.SubElement(tp, "property", name="expected_failure", value="true")
             elif k == "skip":
-                ET.SubElement(tc, "skipped", message=r["message"])
+                ET.SubElement(tc, "skipped", message=one_line(r["message"]))
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_bytes(ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n")
     os.replace(tmp, path)
@@ -562,7 +564,7 @@ def _print_matrix(report: dict[str, Any], cases: list[Case], out: TextIO) -> Non
     groups = sorted({c.group for c in cases})
     names = list(report["bindings"])
     width = max([len(g) for g in groups] + [10])
-    print("group".ljust(width) + "".join(f"  {n:>16}" for n in names), file=out)
+    print("group".ljust(width) + "".join(f"  {quote(n):>16}" for n in names), file=out)
     for g in groups:
         row = g.ljust(width)
         for n in names:
@@ -581,7 +583,7 @@ def _print_judged(report: dict[str, Any], out: TextIO) -> None:
     if not names:
         return
     width = 10
-    print("judged".ljust(width) + "".join(f"  {n:>16}" for n in names), file=out)
+    print("judged".ljust(width) + "".join(f"  {quote(n):>16}" for n in names), file=out)
     for cap in CAPABILITIES:
         row = cap.ljust(width)
         for n in names:

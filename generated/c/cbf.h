@@ -976,6 +976,14 @@ typedef struct cbf_options {
 extern const char *const cbf_command_names[256];
 
 const char *cbf_strerror(int err);
+/** The one quoting rule for a name or value from input in an output line (runtime/quote.c; the
+ * same as the Python codec's cbf.quoting): CBF_QUOTE_NAME prints a plain name as it is and any
+ * other between double quotes with escapes; CBF_QUOTE_TEXT escapes what is not plain in text.
+ * cbf_quote writes at most cap bytes (NUL-terminated) and returns the length it needs;
+ * cbf_quoted returns one of 4 static buffers in turn (not thread-safe). */
+enum { CBF_QUOTE_NAME = 0, CBF_QUOTE_TEXT = 1 };
+size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode);
+const char *cbf_quoted(const char *s, int mode);
 /** Name of a command code, or NULL when the code is unknown. */
 const char *cbf_command_name(int code);
 /** 1 when the command has a layout in the version, else 0. */
@@ -1074,7 +1082,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1078 "cbf.h"
+#line 1086 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1239,7 +1247,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1243 "cbf.h"
+#line 1251 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1332,7 +1340,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1336 "cbf.h"
+#line 1344 "cbf.h"
 /* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
  * runtime/checksums.c implements each family once and switches on it with no default (a family
  * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
@@ -2514,7 +2522,146 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2518 "cbf.h"
+#line 2526 "cbf.h"
+/* ==== BEGIN runtime/quote.c: verbatim from generator/cbfgen/emit/c/runtime/quote.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/quote.c"
+/* ---- the one quoting rule for names and values from input (issue #35) ----
+ * What `cbf` applies (cbf.quoting), byte for byte, so both tools print the same line:
+ * CBF_QUOTE_NAME prints a name as it is when it is plain (not empty; every character printable
+ * ASCII other than '"' and '\\', or valid UTF-8 from U+00A0 up that neither breaks a line, turns
+ * text around nor hides: not U+2028/U+2029, U+200B..U+200F, U+202A..U+202E, U+2060..U+206F,
+ * U+FEFF, U+FFF9..U+FFFB, U+FFFE/U+FFFF; not starting with ':' or a space, not ending in a space),
+ * else between double quotes with '"' and '\\' escaped, \n \r \t, a byte that is not UTF-8 (or
+ * another ASCII control) as \xHH, any other character that is not plain as \u{H...}.
+ * CBF_QUOTE_TEXT is the net under a line of text: every character that is not plain and not a
+ * space, '"' or '\\' is escaped the same way; nothing is added around it.
+ * So a name never starts a line with "::" (a GitHub workflow command), never carries a line
+ * break or a terminal escape, and its exact bytes can be read back. */
+static int cbf__hidden(uint32_t c)
+{
+    return (c >= 0x2028u && c <= 0x2029u) || (c >= 0x200Bu && c <= 0x200Fu) || (c >= 0x202Au && c <= 0x202Eu)
+           || (c >= 0x2060u && c <= 0x206Fu) || c == 0xFEFFu || (c >= 0xFFF9u && c <= 0xFFFBu) || c == 0xFFFEu
+           || c == 0xFFFFu;
+}
+
+/* The UTF-8 character at s (n bytes left): its length and *cp, or 0 when the byte starts none. */
+static size_t cbf__utf8(const unsigned char *s, size_t n, uint32_t *cp)
+{
+    size_t len, i;
+    uint32_t c = s[0], min;
+    if (c < 0x80u) {
+        *cp = c;
+        return 1;
+    }
+    if (c >= 0xC2u && c <= 0xDFu) {
+        len = 2;
+        c &= 0x1Fu;
+        min = 0x80u;
+    } else if (c >= 0xE0u && c <= 0xEFu) {
+        len = 3;
+        c &= 0x0Fu;
+        min = 0x800u;
+    } else if (c >= 0xF0u && c <= 0xF4u) {
+        len = 4;
+        c &= 0x07u;
+        min = 0x10000u;
+    } else {
+        return 0;
+    }
+    if (n < len)
+        return 0;
+    for (i = 1; i < len; i++) {
+        if ((s[i] & 0xC0u) != 0x80u)
+            return 0;
+        c = (c << 6) | (s[i] & 0x3Fu);
+    }
+    if (c < min || c > 0x10FFFFu || (c >= 0xD800u && c <= 0xDFFFu))
+        return 0;
+    *cp = c;
+    return len;
+}
+
+static int cbf__plain(uint32_t c)
+{
+    if (c < 0x80u)
+        return c >= 0x20u && c < 0x7Fu && c != '"' && c != '\\';
+    return c >= 0xA0u && !cbf__hidden(c);
+}
+
+static void cbf__qput(char *out, size_t cap, size_t *at, const char *text, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++, (*at)++)
+        if (*at + 1u < cap)
+            out[*at] = text[i];
+}
+
+/* The escape of one character that is not printed as it is (len 0: a byte that starts no UTF-8 character). */
+static void cbf__qescape(char esc[16], unsigned char byte, size_t len, uint32_t c)
+{
+    if (!len) {
+        (void)snprintf(esc, 16, "\\x%02X", byte);
+    } else if (c == '"' || c == '\\') {
+        esc[0] = '\\';
+        esc[1] = (char)c;
+        esc[2] = '\0';
+    } else if (c == '\n' || c == '\r' || c == '\t') {
+        (void)snprintf(esc, 16, "\\%c", c == '\n' ? 'n' : c == '\r' ? 'r' : 't');
+    } else if (c < 0x80u) {
+        (void)snprintf(esc, 16, "\\x%02X", (unsigned)c);
+    } else {
+        (void)snprintf(esc, 16, "\\u{%lX}", (unsigned long)c);
+    }
+}
+
+size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode)
+{
+    const unsigned char *u = (const unsigned char *)s;
+    size_t at = 0, i, len;
+    uint32_t c = 0;
+    int plain = n > 0 && u[0] != ':' && u[0] != ' ' && u[n - 1u] != ' ';
+    for (i = 0; plain && i < n; i += len) {
+        len = cbf__utf8(u + i, n - i, &c);
+        plain = len > 0 && cbf__plain(c);
+    }
+    if (mode == CBF_QUOTE_NAME && plain) {
+        cbf__qput(out, cap, &at, s, n);
+    } else {
+        if (mode == CBF_QUOTE_NAME)
+            cbf__qput(out, cap, &at, "\"", 1);
+        for (i = 0; i < n; i += len) {
+            char esc[16];
+            len = cbf__utf8(u + i, n - i, &c);
+            if (len && (cbf__plain(c) || (mode == CBF_QUOTE_TEXT && (c == '"' || c == '\\')))) {
+                cbf__qput(out, cap, &at, s + i, len);
+                continue;
+            }
+            cbf__qescape(esc, u[i], len, c);
+            if (!len)
+                len = 1;
+            cbf__qput(out, cap, &at, esc, strlen(esc));
+        }
+        if (mode == CBF_QUOTE_NAME)
+            cbf__qput(out, cap, &at, "\"", 1);
+    }
+    if (cap)
+        out[at < cap ? at : cap - 1u] = '\0';
+    return at;
+}
+
+const char *cbf_quoted(const char *s, int mode)
+{
+    /* a ring of buffers: a message may quote several names at once */
+    static char ring[4][16384];
+    static unsigned next;
+    char *buf = ring[next++ % 4u];
+    size_t need = cbf_quote(buf, sizeof ring[0], s, strlen(s), mode);
+    if (need >= sizeof ring[0]) /* longer than a message holds: cut, and say so */
+        (void)memcpy(buf + sizeof ring[0] - 9u, "...(cut)", 8u);
+    return buf;
+}
+/* ==== END runtime/quote.c ==== */
+#line 2665 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2631,7 +2778,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2635 "cbf.h"
+#line 2782 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -2856,7 +3003,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 2860 "cbf.h"
+#line 3007 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3113,7 +3260,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3117 "cbf.h"
+#line 3264 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3291,7 +3438,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3295 "cbf.h"
+#line 3442 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3585,7 +3732,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3589 "cbf.h"
+#line 3736 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4701,7 +4848,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4705 "cbf.h"
+#line 4852 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -4867,7 +5014,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 4871 "cbf.h"
+#line 5018 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -4904,7 +5051,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 4908 "cbf.h"
+#line 5055 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5890,7 +6037,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 5894 "cbf.h"
+#line 6041 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -7,6 +7,7 @@
  * judges. No malloc: every buffer is static. Option files are read by the tools'
  * engine (cbf_tools.h), the same as cbf-c's.
  */
+#define _POSIX_C_SOURCE 200809L /* stat, open, fstat: the file layer reads regular files only (issue #35) */
 #define CBF_IMPLEMENTATION
 #define CBF_TOOLS_IMPLEMENTATION
 #include "cbf.h"
@@ -1411,4 +1412,4 @@ int main(void)
     return 0;
 }
 /* ==== END tools/testee.c ==== */
-#line 1415 "cbf_testee.c"
+#line 1416 "cbf_testee.c"

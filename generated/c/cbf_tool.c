@@ -18,6 +18,7 @@
  * Each such input gets one line on stderr naming the file and what is wrong.
  * validate with several files exits with the highest status of any of them.
  */
+#define _POSIX_C_SOURCE 200809L /* stat, open, fstat: the file layer reads regular files only (issue #35) */
 #define CBF_IMPLEMENTATION
 #define CBF_TOOLS_IMPLEMENTATION
 #include "cbf.h"
@@ -104,7 +105,7 @@ static int parse_option(const char *arg, const char *value, cbf_tool_options *o)
     if (strcmp(arg, "--profile") == 0) {
         o->validate.profile = cbf_profile_find(value);
         if (o->validate.profile < 0)
-            fprintf(stderr, "cbf-c: unknown profile %s\n", value);
+            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(value, CBF_QUOTE_NAME));
         return o->validate.profile >= 0;
     }
     if (strcmp(arg, "--part-number") == 0) {
@@ -114,13 +115,13 @@ static int parse_option(const char *arg, const char *value, cbf_tool_options *o)
     if (strcmp(arg, "--cutters") == 0 || strcmp(arg, "--machine") == 0) { /* machine limits: errors */
         int ok = arg[2] == 'c' ? cbf_tool_cutters_file(value, &o->validate) : cbf_tool_machine_file(value, &o->validate);
         if (!ok)
-            fprintf(stderr, "cbf-c: %s\n", cbf_tool_why()); /* names the file, the line and the limit (issue 28) */
+            fprintf(stderr, "cbf-c: %s\n", cbf_quoted(cbf_tool_why(), CBF_QUOTE_TEXT)); /* names the file, the line and the limit (issue 28) */
         return ok;
     }
     {
         long v = parse_count(value);
         if (v < 0)
-            fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", value);
+            fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", cbf_quoted(value, CBF_QUOTE_NAME));
         o->max_findings = (size_t)v;
         return v >= 0;
     }
@@ -187,4 +188,4 @@ int main(int argc, char **argv)
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 191 "cbf_tool.c"
+#line 192 "cbf_tool.c"

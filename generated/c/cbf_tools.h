@@ -49,7 +49,8 @@ typedef struct cbf_tool_options {
 #define CBF_TOOL_MAX_FILE_SIZE ((size_t)CBF_HEADER_SIZE + ((size_t)CBF_LIMIT_MAX_COMMANDS + 1u) \
                                 * ((size_t)CBF_RECORD_HEAD_SIZE + (size_t)CBF_LIMIT_MAX_ARG_SIZE))
 
-/** How a name (a file name from the command line or a request) is spelled in every line the tools print. */
+/** How a name (a file name from the command line or a request) is spelled in every line the tools print:
+ * the quoting rule (cbf_quote), in a buffer valid until the next call. */
 const char *cbf_tool_name(const char *name);
 
 /** 1 when buf[0..n) can be read as a CBF file; else 0 and one line on sink->err naming the file (name) and
@@ -77,7 +78,7 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
 /* ==== END tools/tools_api.h ==== */
-#line 81 "cbf_tools.h"
+#line 82 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -92,6 +93,17 @@ int cbf_tool_machine_file(const char *path, cbf_options *opt);
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+/* The file layer opens regular files only (stat, open without blocking, fstat) where POSIX is there: a
+ * program defines _POSIX_C_SOURCE 200809L before its first #include (cbf-c and the testee do). */
+#if !defined(CBF_TOOLS_POSIX) && defined(_POSIX_C_SOURCE) && _POSIX_C_SOURCE >= 200809L
+#define CBF_TOOLS_POSIX 1
+#endif
+#ifdef CBF_TOOLS_POSIX
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+#endif
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -147,10 +159,16 @@ static const char *const machine_limit_keys[] = { "unit", "min", "max", "doc", "
  * normal output holds so far. */
 
 /* How a name from the command line or a request (a file name) is spelled in every line the tools print:
- * the one place that decides it. */
+ * the one place that decides it. The quoting rule (cbf_quote, the same as cbf's cbf.quoting): a plain name
+ * as it is, any other between double quotes with escapes, so no name starts a line with "::" or carries a
+ * line break. The text is valid until the next call (a name too long for it is cut, and says so). */
+#define CBF_TOOL_NAME_BYTES 16384u /* the most a name takes as printed (longer is cut, and says so) */
 const char *cbf_tool_name(const char *name)
 {
-    return name;
+    static char shown[CBF_TOOL_NAME_BYTES];
+    if (cbf_quote(shown, sizeof shown, name, strlen(name), CBF_QUOTE_NAME) >= sizeof shown)
+        (void)memcpy(shown + sizeof shown - 9u, "...(cut)", 8u);
+    return shown;
 }
 
 typedef struct tool_out {
@@ -247,7 +265,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 251 "cbf_tools.h"
+#line 269 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -958,14 +976,16 @@ static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLU
     for (k = 0; k < CBF_CUTTER_VALUES; k++) {
         const char *text = cell[1 + k], *why = opt_number(text, &v[k]);
         if (why)
-            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, text, why);
+            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column,
+                            cbf_quoted(text, CBF_QUOTE_NAME), why);
         if (opt_cutter_values[k].positive && v[k] <= 0.0)
             return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
                             opt_cutter_values[k].column, text, opt_cutter_values[k].check);
     }
     for (k = 0; k < ncutters; k++)
         if (strcmp(cutter_names[k], name) == 0)
-            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line, name,
+            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line,
+                            cbf_quoted(name, CBF_QUOTE_NAME),
                             cutter_lines[k]);
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
@@ -1150,10 +1170,11 @@ static int cutters_rows(cj *j)
             for (k = 0; k < OPT_CUTTER_COLUMNS && strcmp(key, opt_cutter_columns[k]) != 0; k++)
                 ;
             if (k == OPT_CUTTER_COLUMNS)
-                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
+                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline,
+                                cbf_quoted(key, CBF_QUOTE_NAME),
                                 opt_columns_list);
             if (have[k])
-                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, key);
+                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, cbf_quoted(key, CBF_QUOTE_NAME));
             cj_ws(j);
             if (j->s[j->i] == ':')
                 j->i++;
@@ -1202,7 +1223,8 @@ static int cutters_yaml(const char *path)
         kline = cj_line(&j);
         cj_scalar(&j, key, sizeof key);
         if (strcmp(key, "cutters") != 0)
-            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline, key);
+            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline,
+                            cbf_quoted(key, CBF_QUOTE_NAME));
         if (seen++)
             return opt_fail("%s: line %lu: duplicate key 'cutters'", path, kline);
         cj_ws(&j);
@@ -1226,8 +1248,9 @@ static int opt_is_yaml(const char *path)
  * 0 with the one line in opt_why. */
 static int load_cutters(const char *name, const char *text, size_t size)
 {
-    const char *path = cbf_tool_name(name);
+    static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
     long n;
+    (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
     ncutters = 0;
     cutter_file = path;
     n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
@@ -1459,7 +1482,7 @@ static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
         j->i++;
         for (k = 0; k < nkeys; k++)
             if (strcmp(keys[k], key) == 0)
-                return mj_fail(j, path, "duplicate key '%s'", key);
+                return mj_fail(j, path, "duplicate key '%s'", cbf_quoted(key, CBF_QUOTE_NAME));
         if (nkeys < 16)
             (void)snprintf(keys[nkeys++], sizeof keys[0], "%s", key);
         if (!on_key(j, path, key, ctx))
@@ -1483,7 +1506,7 @@ static int mj_unknown(mjson *j, const char *path, const char *key, const char *c
     list[0] = 0;
     for (k = 0; known[k]; k++)
         at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
-    return mj_fail(j, path, "unknown key '%s' (known: %s)", key, list);
+    return mj_fail(j, path, "unknown key '%s' (known: %s)", cbf_quoted(key, CBF_QUOTE_NAME), list);
 }
 
 /* A string the reader keeps nowhere (name, doc, decision). */
@@ -1676,11 +1699,13 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
  * 0 with the one line in machine_why. */
 static int load_machine(const char *name, const char *text, size_t size)
 {
-    const char *path = cbf_tool_name(name);
-    long n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
+    long n;
     mjson j;
     unsigned has_limits = 0;
     int li, a;
+    (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
+    n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     if (n < 0) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;
@@ -1744,7 +1769,7 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1748 "cbf_tools.h"
+#line 1773 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
@@ -1790,6 +1815,65 @@ static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, co
     return 0;
 }
 
+/* Why a file could not be opened, as cbf says it. */
+static const char *cbf_tool_open_error(int err)
+{
+    return err == ENOENT ? "no such file" : err == EACCES ? "permission denied" : err == EISDIR ? "is a directory"
+         : "cannot open";
+}
+
+#ifdef CBF_TOOLS_POSIX
+/* What a file that is not a regular one is, as cbf says it (cbf.files.kind_of). */
+static const char *cbf_tool_not_regular(mode_t mode)
+{
+    return S_ISDIR(mode) ? "is a directory" : S_ISFIFO(mode) ? "is a FIFO; only regular files are read"
+         : S_ISCHR(mode) ? "is a character device; only regular files are read"
+         : S_ISBLK(mode) ? "is a block device; only regular files are read"
+         : S_ISSOCK(mode) ? "is a socket; only regular files are read"
+         : "is not a regular file; only regular files are read";
+}
+
+/* Only a regular file is opened (issue #35): its status is looked at first, it is opened without blocking
+ * (a FIFO named like a CBF file cannot hang the tool, a device is never read) and looked at again. */
+static FILE *cbf_tool_open(const char *path, const char **why)
+{
+    struct stat st;
+    int fd;
+    FILE *fp;
+    if (stat(path, &st) != 0) {
+        *why = cbf_tool_open_error(errno);
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        *why = cbf_tool_not_regular(st.st_mode);
+        return NULL;
+    }
+    fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
+        *why = cbf_tool_open_error(errno);
+        return NULL;
+    }
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) { /* the file opened is the file looked at */
+        *why = cbf_tool_not_regular(st.st_mode);
+        (void)close(fd);
+        return NULL;
+    }
+    fp = fdopen(fd, "rb");
+    if (!fp)
+        (void)close(fd);
+    return fp;
+}
+#else
+/* Without POSIX (a host that defines no _POSIX_C_SOURCE): fopen, which cannot tell a FIFO apart. */
+static FILE *cbf_tool_open(const char *path, const char **why)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        *why = cbf_tool_open_error(errno);
+    return fp;
+}
+#endif
+
 /* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
  * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
@@ -1797,13 +1881,10 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
     FILE *fp;
     size_t n = 0;
     errno = 0;
-    fp = fopen(path, "rb");
     *why = "cannot open";
-    if (!fp) {
-        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
-             : errno == EISDIR ? "is a directory" : "cannot open";
+    fp = cbf_tool_open(path, why);
+    if (!fp)
         return -1;
-    }
     /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
      * that way (a pipe), after cap bytes (issue 36). */
     if (cbf_tool_size_first(fp, buf, cap, &n, why) < 0)
@@ -1871,7 +1952,7 @@ int cbf_tool_machine_file(const char *path, cbf_options *opt)
     return cbf_tool_machine_buffer(path, opt_file_buf, n, opt);
 }
 /* ==== END tools/files.c ==== */
-#line 1875 "cbf_tools.h"
+#line 1956 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -1951,7 +2032,7 @@ static void print_finding(const char *file, const held_finding *f)
         out_printf("record %ld", f->record);
     else
         out_str("header");
-    out_printf("): %s\n", f->message);
+    out_printf("): %s\n", cbf_quoted(f->message, CBF_QUOTE_TEXT));
 }
 
 /* Whether the header's magic numbers are all wrong (cbf's test, from the same fields of the model);
@@ -2218,7 +2299,7 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
     return status;
 }
 /* ==== END tools/engine.c ==== */
-#line 2222 "cbf_tools.h"
+#line 2303 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

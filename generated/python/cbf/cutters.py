@@ -28,6 +28,7 @@ from .optfiles import (
     read_text,
     yaml_tree,
 )
+from .quoting import quote
 
 TABLE = RULES["cutter_table"]
 COLUMNS: tuple[str, ...] = tuple(TABLE["columns"])
@@ -62,12 +63,12 @@ class _Rows:
             text = cells[rule["column"]]
             v = number(text)
             if isinstance(v, str):
-                raise self.fail(line, f"{rule['column']} '{text}' is {v}")
+                raise self.fail(line, f"{rule['column']} '{quote(text)}' is {v}")
             if rule["positive"] and v <= 0.0:
                 raise self.fail(line, f"{rule['column']} {text} is not greater than 0 (check {rule['check']})")
             values.append(v)
         if name in self.lines:
-            raise self.fail(line, f"cutter '{name}' given twice (first on line {self.lines[name]})")
+            raise self.fail(line, f"cutter '{quote(name)}' given twice (first on line {self.lines[name]})")
         self.lines[name] = line
         self.table[name] = tuple(values)
 
@@ -113,7 +114,7 @@ def _yaml(text: str, rows: _Rows) -> None:
     if isinstance(root, Mapping):
         for k, (key, value) in enumerate(root.pairs):
             if key.text != "cutters":
-                raise rows.fail(key.line, f"unknown key '{key.text}' (known: cutters)")
+                raise rows.fail(key.line, f"unknown key '{quote(key.text)}' (known: cutters)")
             if k:
                 raise rows.fail(key.line, "duplicate key 'cutters'")
             _rows(value, rows)
@@ -132,9 +133,9 @@ def _rows(node: Scalar | Mapping | Sequence, rows: _Rows) -> None:
         got: dict[str, str] = {}
         for key, value in item.pairs:
             if key.text not in COLUMNS:
-                raise rows.fail(key.line, f"unknown key '{key.text}' (known: {', '.join(COLUMNS)})")
+                raise rows.fail(key.line, f"unknown key '{quote(key.text)}' (known: {', '.join(COLUMNS)})")
             if key.text in got:
-                raise rows.fail(key.line, f"duplicate key '{key.text}'")
+                raise rows.fail(key.line, f"duplicate key '{quote(key.text)}'")
             if not isinstance(value, Scalar):
                 raise rows.fail(value.line, f"{key.text} must be one value")
             got[key.text] = _text(value)
@@ -148,6 +149,6 @@ def load_cutter_table(path: str | Path) -> dict[str, tuple[float, ...]]:
     OptionFileError (a CbfError) naming the line and the limit."""
     p = Path(path)
     text = read_text(p, TABLE["what"], TABLE["max_bytes"])
-    rows = _Rows(str(p))
+    rows = _Rows(quote(str(p)))
     (_yaml if is_yaml(p) else _csv)(text, rows)
     return rows.result()

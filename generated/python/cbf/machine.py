@@ -25,6 +25,7 @@ from typing import Any
 from . import tables as T
 from .errors import CbfError
 from .optfiles import RULES, OptionFileError, Pairs, is_yaml, json_depth_error, plain_data, read_text, yaml_tree
+from .quoting import quote
 
 SCHEMA: dict[str, Any] = json.loads(Path(__file__).with_name("machine.schema.json").read_text(encoding="utf-8"))
 
@@ -88,11 +89,11 @@ def _object_errors(value: Any, schema: Mapping[str, Any], path: str) -> str | No
     seen: set[Any] = set()
     for key, v in value.pairs if isinstance(value, Pairs) else value.items():
         if key in seen:
-            return f"{path}: duplicate key '{key}'"
+            return f"{path}: duplicate key '{quote(key)}'"
         seen.add(key)
         if key not in props:
             if schema.get("additionalProperties") is False:
-                return f"{path}: unknown key '{key}' (known: {', '.join(props)})"
+                return f"{path}: unknown key '{quote(key)}' (known: {', '.join(props)})"
             continue
         err = _schema_errors(v, props[key], f"{path}.{key}")
         if err:
@@ -150,18 +151,18 @@ def _read(p: Path, text: str) -> Any:
     nesting is measured; objects keep every pair, so a duplicate key is the schema's to refuse."""
     rules = RULES["machine_file"]
     if is_yaml(p):
-        return plain_data(yaml_tree(text, str(p), rules["max_depth"]))
+        return plain_data(yaml_tree(text, quote(str(p)), rules["max_depth"]))
     deep = json_depth_error(text, rules["max_depth"])
     if deep is not None:
-        raise OptionFileError(f"{p}: {deep}")
+        raise OptionFileError(f"{quote(str(p))}: {deep}")
 
     def constant(name: str) -> Any:
-        raise OptionFileError(f"{p}: {name} is not a number")
+        raise OptionFileError(f"{quote(str(p))}: {name} is not a number")
 
     try:
         return json.loads(text, object_pairs_hook=Pairs, parse_constant=constant, parse_int=float)
     except json.JSONDecodeError as exc:
-        raise OptionFileError(f"{p}: line {exc.lineno}, column {exc.colno}: not JSON ({exc.msg})") from None
+        raise OptionFileError(f"{quote(str(p))}: line {exc.lineno}, column {exc.colno}: not JSON ({exc.msg})") from None
 
 
 def load_machine(path: str | Path) -> Machine:
@@ -181,7 +182,7 @@ def load_machine(path: str | Path) -> Machine:
                 err = f"$.limits.{name}: min exceeds max" + (f" on axis {axes[bad[0]]}" if axes else "")
                 break
     if err is not None:
-        raise MachineError(f"{p}: {err}")
+        raise MachineError(f"{quote(str(p))}: {err}")
     return Machine(_limits(doc), given=True)
 
 

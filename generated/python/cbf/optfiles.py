@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import CbfError
+from .quoting import quote
 
 RULES: dict[str, Any] = json.loads(Path(__file__).with_name("option_files.json").read_text(encoding="utf-8"))
 # A cutter table's columns (options.cutter_columns): the cutter role's key of the name, and the
@@ -50,25 +51,30 @@ def number(text: str) -> float | str:
 
 def read_text(path: Path, what: str, max_bytes: int) -> str:
     """The file's text: at most ``max_bytes`` bytes (never more read), UTF-8."""
+    from .files import NotRegular, open_regular
+
     try:
-        with path.open("rb") as fh:
+        with open_regular(path) as fh:
             data = fh.read(max_bytes + 1)
+    except NotRegular as exc:
+        raise OptionFileError(f"{quote(str(path))}: cannot read {what} ({exc.message})") from None
     except FileNotFoundError:
-        raise OptionFileError(f"{path}: cannot read {what} (no such file)") from None
+        raise OptionFileError(f"{quote(str(path))}: cannot read {what} (no such file)") from None
     except PermissionError:
-        raise OptionFileError(f"{path}: cannot read {what} (permission denied)") from None
+        raise OptionFileError(f"{quote(str(path))}: cannot read {what} (permission denied)") from None
     except IsADirectoryError:
-        raise OptionFileError(f"{path}: cannot read {what} (is a directory)") from None
+        raise OptionFileError(f"{quote(str(path))}: cannot read {what} (is a directory)") from None
     except OSError:
-        raise OptionFileError(f"{path}: cannot read {what} (read error)") from None
+        raise OptionFileError(f"{quote(str(path))}: cannot read {what} (read error)") from None
     if len(data) > max_bytes:
-        raise OptionFileError(f"{path}: larger than the {max_bytes} bytes a {what} may have (limit max_bytes)")
+        raise OptionFileError(f"{quote(str(path))}: larger than the {max_bytes} bytes a {what} may have "
+                              f"(limit max_bytes)")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise OptionFileError(f"{path}: offset {exc.start}: not UTF-8 text") from None
+        raise OptionFileError(f"{quote(str(path))}: offset {exc.start}: not UTF-8 text") from None
     if "\x00" in text:
-        raise OptionFileError(f"{path}: offset {data.index(0)}: not text (a NUL byte)")
+        raise OptionFileError(f"{quote(str(path))}: offset {data.index(0)}: not text (a NUL byte)")
     return text
 
 

@@ -104,7 +104,8 @@ def spec_data(spec: Spec) -> dict[str, Any]:
         "limits": spec.limits,
         "machine": machine_data(spec),
         "checks": [
-            {"id": c.id, "kind": c.kind, "severity": c.severity, "versions": list(c.versions),
+            {"id": c.id, "kind": c.kind, "severity": c.severity, "clause": c.clause, "text": c.text,
+             "fails": c.fails, "anchor": c.anchor, "versions": list(c.versions),
              "commands": list(c.commands),
              "targets": [{"command": t.command, "args": list(t.args), "limit": t.limit} for t in c.targets],
              "min": c.min, "max": c.max, "min_exclusive": c.min_exclusive, "max_exclusive": c.max_exclusive,

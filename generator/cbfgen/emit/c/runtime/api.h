@@ -4,6 +4,14 @@
 extern const char *const cbf_command_names[256];
 
 const char *cbf_strerror(int err);
+/** The one quoting rule for a name or value from input in an output line (runtime/quote.c; the
+ * same as the Python codec's cbf.quoting): CBF_QUOTE_NAME prints a plain name as it is and any
+ * other between double quotes with escapes; CBF_QUOTE_TEXT escapes what is not plain in text.
+ * cbf_quote writes at most cap bytes (NUL-terminated) and returns the length it needs;
+ * cbf_quoted returns one of 4 static buffers in turn (not thread-safe). */
+enum { CBF_QUOTE_NAME = 0, CBF_QUOTE_TEXT = 1 };
+size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode);
+const char *cbf_quoted(const char *s, int mode);
 /** Name of a command code, or NULL when the code is unknown. */
 const char *cbf_command_name(int code);
 /** 1 when the command has a layout in the version, else 0. */

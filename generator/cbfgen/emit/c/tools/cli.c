@@ -77,7 +77,7 @@ static int parse_option(const char *arg, const char *value, cbf_tool_options *o)
     if (strcmp(arg, "--profile") == 0) {
         o->validate.profile = cbf_profile_find(value);
         if (o->validate.profile < 0)
-            fprintf(stderr, "cbf-c: unknown profile %s\n", value);
+            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(value, CBF_QUOTE_NAME));
         return o->validate.profile >= 0;
     }
     if (strcmp(arg, "--part-number") == 0) {
@@ -87,13 +87,13 @@ static int parse_option(const char *arg, const char *value, cbf_tool_options *o)
     if (strcmp(arg, "--cutters") == 0 || strcmp(arg, "--machine") == 0) { /* machine limits: errors */
         int ok = arg[2] == 'c' ? cbf_tool_cutters_file(value, &o->validate) : cbf_tool_machine_file(value, &o->validate);
         if (!ok)
-            fprintf(stderr, "cbf-c: %s\n", cbf_tool_why()); /* names the file, the line and the limit (issue 28) */
+            fprintf(stderr, "cbf-c: %s\n", cbf_quoted(cbf_tool_why(), CBF_QUOTE_TEXT)); /* names the file, the line and the limit (issue 28) */
         return ok;
     }
     {
         long v = parse_count(value);
         if (v < 0)
-            fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", value);
+            fprintf(stderr, "cbf-c: --max-findings: not a count: %s\n", cbf_quoted(value, CBF_QUOTE_NAME));
         o->max_findings = (size_t)v;
         return v >= 0;
     }

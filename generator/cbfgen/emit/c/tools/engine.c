@@ -75,7 +75,7 @@ static void print_finding(const char *file, const held_finding *f)
         out_printf("record %ld", f->record);
     else
         out_str("header");
-    out_printf("): %s\n", f->message);
+    out_printf("): %s\n", cbf_quoted(f->message, CBF_QUOTE_TEXT));
 }
 
 /* Whether the header's magic numbers are all wrong (cbf's test, from the same fields of the model);

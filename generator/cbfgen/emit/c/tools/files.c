@@ -41,6 +41,65 @@ static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, co
     return 0;
 }
 
+/* Why a file could not be opened, as cbf says it. */
+static const char *cbf_tool_open_error(int err)
+{
+    return err == ENOENT ? "no such file" : err == EACCES ? "permission denied" : err == EISDIR ? "is a directory"
+         : "cannot open";
+}
+
+#ifdef CBF_TOOLS_POSIX
+/* What a file that is not a regular one is, as cbf says it (cbf.files.kind_of). */
+static const char *cbf_tool_not_regular(mode_t mode)
+{
+    return S_ISDIR(mode) ? "is a directory" : S_ISFIFO(mode) ? "is a FIFO; only regular files are read"
+         : S_ISCHR(mode) ? "is a character device; only regular files are read"
+         : S_ISBLK(mode) ? "is a block device; only regular files are read"
+         : S_ISSOCK(mode) ? "is a socket; only regular files are read"
+         : "is not a regular file; only regular files are read";
+}
+
+/* Only a regular file is opened (issue #35): its status is looked at first, it is opened without blocking
+ * (a FIFO named like a CBF file cannot hang the tool, a device is never read) and looked at again. */
+static FILE *cbf_tool_open(const char *path, const char **why)
+{
+    struct stat st;
+    int fd;
+    FILE *fp;
+    if (stat(path, &st) != 0) {
+        *why = cbf_tool_open_error(errno);
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        *why = cbf_tool_not_regular(st.st_mode);
+        return NULL;
+    }
+    fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
+        *why = cbf_tool_open_error(errno);
+        return NULL;
+    }
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) { /* the file opened is the file looked at */
+        *why = cbf_tool_not_regular(st.st_mode);
+        (void)close(fd);
+        return NULL;
+    }
+    fp = fdopen(fd, "rb");
+    if (!fp)
+        (void)close(fd);
+    return fp;
+}
+#else
+/* Without POSIX (a host that defines no _POSIX_C_SOURCE): fopen, which cannot tell a FIFO apart. */
+static FILE *cbf_tool_open(const char *path, const char **why)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        *why = cbf_tool_open_error(errno);
+    return fp;
+}
+#endif
+
 /* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
  * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
@@ -48,13 +107,10 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
     FILE *fp;
     size_t n = 0;
     errno = 0;
-    fp = fopen(path, "rb");
     *why = "cannot open";
-    if (!fp) {
-        *why = errno == ENOENT ? "no such file" : errno == EACCES ? "permission denied"
-             : errno == EISDIR ? "is a directory" : "cannot open";
+    fp = cbf_tool_open(path, why);
+    if (!fp)
         return -1;
-    }
     /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
      * that way (a pipe), after cap bytes (issue 36). */
     if (cbf_tool_size_first(fp, buf, cap, &n, why) < 0)

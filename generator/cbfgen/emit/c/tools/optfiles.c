@@ -706,14 +706,16 @@ static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLU
     for (k = 0; k < CBF_CUTTER_VALUES; k++) {
         const char *text = cell[1 + k], *why = opt_number(text, &v[k]);
         if (why)
-            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column, text, why);
+            return opt_fail("%s: line %lu: %s '%s' is %s", cutter_file, line, opt_cutter_values[k].column,
+                            cbf_quoted(text, CBF_QUOTE_NAME), why);
         if (opt_cutter_values[k].positive && v[k] <= 0.0)
             return opt_fail("%s: line %lu: %s %s is not greater than 0 (check %s)", cutter_file, line,
                             opt_cutter_values[k].column, text, opt_cutter_values[k].check);
     }
     for (k = 0; k < ncutters; k++)
         if (strcmp(cutter_names[k], name) == 0)
-            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line, name,
+            return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line,
+                            cbf_quoted(name, CBF_QUOTE_NAME),
                             cutter_lines[k]);
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
@@ -898,10 +900,11 @@ static int cutters_rows(cj *j)
             for (k = 0; k < OPT_CUTTER_COLUMNS && strcmp(key, opt_cutter_columns[k]) != 0; k++)
                 ;
             if (k == OPT_CUTTER_COLUMNS)
-                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline, key,
+                return opt_fail("%s: line %lu: unknown key '%s' (known: %s)", cutter_file, kline,
+                                cbf_quoted(key, CBF_QUOTE_NAME),
                                 opt_columns_list);
             if (have[k])
-                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, key);
+                return opt_fail("%s: line %lu: duplicate key '%s'", cutter_file, kline, cbf_quoted(key, CBF_QUOTE_NAME));
             cj_ws(j);
             if (j->s[j->i] == ':')
                 j->i++;
@@ -950,7 +953,8 @@ static int cutters_yaml(const char *path)
         kline = cj_line(&j);
         cj_scalar(&j, key, sizeof key);
         if (strcmp(key, "cutters") != 0)
-            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline, key);
+            return opt_fail("%s: line %lu: unknown key '%s' (known: cutters)", path, kline,
+                            cbf_quoted(key, CBF_QUOTE_NAME));
         if (seen++)
             return opt_fail("%s: line %lu: duplicate key 'cutters'", path, kline);
         cj_ws(&j);
@@ -974,8 +978,9 @@ static int opt_is_yaml(const char *path)
  * 0 with the one line in opt_why. */
 static int load_cutters(const char *name, const char *text, size_t size)
 {
-    const char *path = cbf_tool_name(name);
+    static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
     long n;
+    (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
     ncutters = 0;
     cutter_file = path;
     n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
@@ -1207,7 +1212,7 @@ static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
         j->i++;
         for (k = 0; k < nkeys; k++)
             if (strcmp(keys[k], key) == 0)
-                return mj_fail(j, path, "duplicate key '%s'", key);
+                return mj_fail(j, path, "duplicate key '%s'", cbf_quoted(key, CBF_QUOTE_NAME));
         if (nkeys < 16)
             (void)snprintf(keys[nkeys++], sizeof keys[0], "%s", key);
         if (!on_key(j, path, key, ctx))
@@ -1231,7 +1236,7 @@ static int mj_unknown(mjson *j, const char *path, const char *key, const char *c
     list[0] = 0;
     for (k = 0; known[k]; k++)
         at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
-    return mj_fail(j, path, "unknown key '%s' (known: %s)", key, list);
+    return mj_fail(j, path, "unknown key '%s' (known: %s)", cbf_quoted(key, CBF_QUOTE_NAME), list);
 }
 
 /* A string the reader keeps nowhere (name, doc, decision). */
@@ -1424,11 +1429,13 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
  * 0 with the one line in machine_why. */
 static int load_machine(const char *name, const char *text, size_t size)
 {
-    const char *path = cbf_tool_name(name);
-    long n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
+    long n;
     mjson j;
     unsigned has_limits = 0;
     int li, a;
+    (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
+    n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     if (n < 0) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;

@@ -4,10 +4,16 @@
  * normal output holds so far. */
 
 /* How a name from the command line or a request (a file name) is spelled in every line the tools print:
- * the one place that decides it. */
+ * the one place that decides it. The quoting rule (cbf_quote, the same as cbf's cbf.quoting): a plain name
+ * as it is, any other between double quotes with escapes, so no name starts a line with "::" or carries a
+ * line break. The text is valid until the next call (a name too long for it is cut, and says so). */
+#define CBF_TOOL_NAME_BYTES 16384u /* the most a name takes as printed (longer is cut, and says so) */
 const char *cbf_tool_name(const char *name)
 {
-    return name;
+    static char shown[CBF_TOOL_NAME_BYTES];
+    if (cbf_quote(shown, sizeof shown, name, strlen(name), CBF_QUOTE_NAME) >= sizeof shown)
+        (void)memcpy(shown + sizeof shown - 9u, "...(cut)", 8u);
+    return shown;
 }
 
 typedef struct tool_out {

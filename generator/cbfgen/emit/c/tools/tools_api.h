@@ -31,7 +31,8 @@ typedef struct cbf_tool_options {
 #define CBF_TOOL_MAX_FILE_SIZE ((size_t)CBF_HEADER_SIZE + ((size_t)CBF_LIMIT_MAX_COMMANDS + 1u) \
                                 * ((size_t)CBF_RECORD_HEAD_SIZE + (size_t)CBF_LIMIT_MAX_ARG_SIZE))
 
-/** How a name (a file name from the command line or a request) is spelled in every line the tools print. */
+/** How a name (a file name from the command line or a request) is spelled in every line the tools print:
+ * the quoting rule (cbf_quote), in a buffer valid until the next call. */
 const char *cbf_tool_name(const char *name);
 
 /** 1 when buf[0..n) can be read as a CBF file; else 0 and one line on sink->err naming the file (name) and

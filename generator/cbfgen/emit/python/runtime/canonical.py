@@ -23,6 +23,7 @@ from .errors import JsonShapeError
 from .floats import NotDecimal, OutOfRange, read_decimal
 from .floats import float_bits as _nearest_bits
 from .model import Cbf, Record
+from .quoting import quote
 
 _F = struct.Struct("<f")
 _I = struct.Struct("<I")
@@ -88,7 +89,7 @@ def _find_duplicate(doc: Any) -> tuple[str, str] | None:
         if isinstance(node, _Duplicates):
             return path, node.duplicate
         if isinstance(node, dict):
-            stack.extend((v, f"{path}.{k}") for k, v in reversed(node.items()))
+            stack.extend((v, f"{path}.{quote(k)}") for k, v in reversed(node.items()))
         elif isinstance(node, list):
             stack.extend((v, f"{path}[{i}]") for i, v in reversed(list(enumerate(node))))
     return None
@@ -103,7 +104,7 @@ def loads(text: str) -> Any:
                      object_pairs_hook=_pairs)
     found = _find_duplicate(doc)
     if found is not None:
-        raise JsonShapeError(f"{found[0]}: duplicate key {found[1]!r}: text must not say a thing twice")
+        raise JsonShapeError(f"{found[0]}: duplicate key '{quote(found[1])}': text must not say a thing twice")
     return doc
 
 
@@ -288,7 +289,7 @@ def _header_values(h: dict[str, Any], info: Any) -> dict[str, Any]:
             raise JsonShapeError(f"$.header: missing {f.name}")
     unknown = set(h) - {f.name for f in info.fields}
     if unknown:
-        raise JsonShapeError(f"$.header: unknown key {sorted(unknown)[0]!r} for header layout {info.id}")
+        raise JsonShapeError(f"$.header: unknown key '{quote(sorted(unknown)[0])}' for header layout {info.id}")
     return hv
 
 
@@ -329,7 +330,7 @@ def _record(rv: Any, i: int, vid: str) -> Record:
     r = _obj(rv, w)
     bad = set(r) - (set(_NAMES.values()) | {"offset", "command", "args", "raw_args"})
     if bad:
-        raise JsonShapeError(f"{w}: unknown key {sorted(bad)[0]!r}")
+        raise JsonShapeError(f"{w}: unknown key '{quote(sorted(bad)[0])}'")
     code = _record_code(r, w)
     cmd = T.BY_CODE.get(code)
     if r.get("command") is not None and (cmd is None or T.BY_ANY_NAME.get(r["command"]) is not cmd):
@@ -355,7 +356,7 @@ def from_canonical(doc: Any) -> Cbf:
     d = _obj(doc, "$")
     extra = set(d) - {"header", "records", "trailing"}
     if extra:
-        raise JsonShapeError(f"$: unknown key {sorted(extra)[0]!r}")
+        raise JsonShapeError(f"$: unknown key '{quote(sorted(extra)[0])}'")
     h = _obj(d.get("header"), "$.header")
     major = _uint(h.get(T.VMAJOR.name, 0), f"$.header.{T.VMAJOR.name}", 1)
     minor = _uint(h.get(T.VMINOR.name, 0), f"$.header.{T.VMINOR.name}", 1)

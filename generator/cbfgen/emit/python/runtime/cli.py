@@ -29,6 +29,8 @@ from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
+from .quoting import json_name, lines, quote
+
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
 
@@ -66,18 +68,22 @@ _CHUNK = 1 << 16
 def _unreadable(path: str, exc: OSError) -> _Fail:
     """The one line for input that cannot be read (README, exit codes: 2)."""
     if isinstance(exc, FileNotFoundError):
-        return _Fail(f"{path}: no such file")
+        return _Fail(f"{quote(path)}: no such file")
     if isinstance(exc, PermissionError):
-        return _Fail(f"{path}: permission denied")
+        return _Fail(f"{quote(path)}: permission denied")
     if isinstance(exc, IsADirectoryError):
-        return _Fail(f"{path}: is a directory")
-    return _Fail(f"{path}: cannot read ({exc.strerror})")
+        return _Fail(f"{quote(path)}: is a directory")
+    from .files import NotRegular
+
+    if isinstance(exc, NotRegular):
+        return _Fail(f"{quote(path)}: {exc.message}")
+    return _Fail(f"{quote(path)}: cannot read ({exc.strerror})")
 
 
 def _too_big(path: str, limit: int) -> _Fail:
     """The one line for input over its limit (cbf-c says the same for a CBF file, from its size, unread)."""
     what = "a CBF file" if limit == _max_file_size() else "the text of a CBF file"
-    return _Fail(f"{path}: larger than {limit} bytes, the most {what} can hold")
+    return _Fail(f"{quote(path)}: larger than {limit} bytes, the most {what} can hold")
 
 
 def _read(path: str, limit: int) -> bytes:
@@ -86,12 +92,10 @@ def _read(path: str, limit: int) -> bytes:
         if path == "-":
             data = sys.stdin.buffer.read(limit + 1)
         else:
-            p = Path(path)
-            if p.is_dir():
-                raise _Fail(f"{path}: is a directory")
-            with p.open("rb") as fh:
-                st = os.fstat(fh.fileno())
-                if stat.S_ISREG(st.st_mode) and st.st_size > limit:
+            from .files import open_regular
+
+            with open_regular(path) as fh:
+                if os.fstat(fh.fileno()).st_size > limit:
                     raise _too_big(path, limit)  # refused unread
                 data = fh.read(limit + 1)
     except OSError as exc:
@@ -106,12 +110,10 @@ def _read_text(path: str, limit: int) -> str:
     try:
         if path == "-":
             return _decode_chunks(path, sys.stdin.buffer, limit)
-        p = Path(path)
-        if p.is_dir():
-            raise _Fail(f"{path}: is a directory")
-        with p.open("rb") as fh:
-            st = os.fstat(fh.fileno())
-            if stat.S_ISREG(st.st_mode) and st.st_size > limit:
+        from .files import open_regular
+
+        with open_regular(path) as fh:
+            if os.fstat(fh.fileno()).st_size > limit:
                 raise _too_big(path, limit)
             return _decode_chunks(path, fh, limit)
     except OSError as exc:
@@ -136,7 +138,7 @@ def _decode_chunks(path: str, fh: Any, limit: int) -> str:
                 text, carry = buf[:exc.start].decode("utf-8"), buf[exc.start:]  # a character split by the chunk
             else:
                 line = lines + buf[:exc.start].count(b"\n")
-                raise _Fail(f"{path}: line {line} (offset {done + exc.start}): byte 0x{buf[exc.start]:02X} "
+                raise _Fail(f"{quote(path)}: line {line} (offset {done + exc.start}): byte 0x{buf[exc.start]:02X} "
                             f"is not UTF-8 text") from None
         if not parts and not done and text.startswith("\ufeff"):
             text = text[1:]  # a byte order mark (editors on Windows write one)
@@ -156,7 +158,7 @@ def _output_target(path: str) -> tuple[Path, os.stat_result | None]:
     except FileNotFoundError:
         return target, None
     except OSError as exc:
-        raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
+        raise _Fail(f"{quote(path)}: cannot write ({exc.strerror})") from None
 
 
 def _check_output(path: str) -> None:
@@ -166,14 +168,14 @@ def _check_output(path: str) -> None:
     target, st = _output_target(path)
     if st is None:
         if not target.parent.is_dir():
-            raise _Fail(f"{path}: folder {str(target.parent)!r} does not exist")
+            raise _Fail(f"{quote(path)}: folder {quote(str(target.parent))} does not exist")
         return
     if stat.S_ISDIR(st.st_mode):
-        raise _Fail(f"{path}: is a directory")
+        raise _Fail(f"{quote(path)}: is a directory")
     if not (stat.S_ISREG(st.st_mode) or stat.S_ISCHR(st.st_mode) or stat.S_ISFIFO(st.st_mode)):
         kind = "a block device" if stat.S_ISBLK(st.st_mode) else "a socket" if stat.S_ISSOCK(st.st_mode) else \
             "not a regular file"
-        raise _Fail(f"{path}: is {kind}; cbf writes regular files, character devices and FIFOs only")
+        raise _Fail(f"{quote(path)}: is {kind}; cbf writes regular files, character devices and FIFOs only")
 
 
 def _write_all(fd: int, data: bytes, sync: bool = True) -> None:
@@ -328,8 +330,15 @@ def _flush_out() -> None:
     _write_fd1(fd, data)
 
 
+def _err(text: str) -> None:
+    """Print to stderr, each line through the quoting rule's net (quoting.lines)."""
+    sys.stderr.write(lines(text))
+
+
 def _out(text: str) -> None:
-    """Print to stdout; a stdout that cannot be written is one line on stderr and exit 2."""
+    """Print to stdout, each line through the quoting rule's net (quoting.lines); a stdout that
+    cannot be written is one line on stderr and exit 2."""
+    text = lines(text)
     fd = _stdout_fd()
     if fd is None:
         try:
@@ -380,7 +389,7 @@ def _write(path: str, data: bytes) -> None:
         if not _write_unnamed(target, data, mode):
             _write_named(target, data, mode)
     except OSError as exc:
-        raise _Fail(f"{path}: cannot write ({exc.strerror})") from None
+        raise _Fail(f"{quote(path)}: cannot write ({exc.strerror})") from None
 
 
 def _not_cbf(data: bytes) -> str | None:
@@ -404,11 +413,11 @@ def _decode(path: str) -> Any:
     data = _read(path, _max_file_size())
     reason = _not_cbf(data)
     if reason:
-        raise _Fail(f"{path}: {reason}")
+        raise _Fail(f"{quote(path)}: {reason}")
     try:
         return decode(data)
     except CbfError as exc:
-        raise _Fail(f"{path}: {exc}") from None
+        raise _Fail(f"{quote(path)}: {exc}") from None
 
 
 def _looks_like_text(data: bytes) -> bool:
@@ -431,7 +440,7 @@ def cmd_decode(a: argparse.Namespace) -> int:
         try:
             out = to_cut(model, profile=a.profile).encode()
         except ValueError as exc:
-            raise _Fail(f"{a.file}: {exc}") from None
+            raise _Fail(f"{quote(a.file)}: {exc}") from None
     else:
         from .canonical import to_canonical
 
@@ -465,10 +474,10 @@ def _warn_deprecated(label: str, data: bytes, most: int = 10) -> None:
         return
     found = [f for f in iter_findings(data) if f.check in ids]
     for f in found[:most]:
-        sys.stderr.write(f"cbf: warning: {label}: record {f.record} at offset {f.offset}: {f.message} "
+        _err(f"cbf: warning: {quote(label)}: record {f.record} at offset {f.offset}: {f.message} "
                          f"(check {f.check}, {f.severity})\n")
     if len(found) > most:
-        sys.stderr.write(f"cbf: warning: {label}: {len(found) - most} more deprecated record(s)\n")
+        _err(f"cbf: warning: {quote(label)}: {len(found) - most} more deprecated record(s)\n")
 
 
 def _cut_line_of(text: str, message: str) -> int | None:
@@ -505,7 +514,7 @@ def _encode_check(a: argparse.Namespace) -> int:
         try:
             _encode_one(a)
         except _Fail as exc:
-            sys.stderr.write(f"cbf: {exc.message}\n")
+            _err(f"cbf: {exc.message}\n")
             status = EXIT_USAGE
     return status
 
@@ -518,11 +527,11 @@ def _encode_one(a: argparse.Namespace) -> bytes:
         _check_output(a.output)
     text = _read_text(a.file, 64 * _max_file_size())
     if not text.strip():
-        raise _Fail(f"{a.file}: empty input: nothing to encode")
+        raise _Fail(f"{quote(a.file)}: empty input: nothing to encode")
     kind = a.input_format or ("json" if a.file.endswith(".json") or text.lstrip().startswith("{") else "cut")
     if a.keep_stored and kind != "json":
         # CUT carries no sequence numbers, count or checksums: there is nothing stored to keep
-        raise _Fail(f"{a.file}: --keep-stored applies to JSON input only: CUT text carries no stored "
+        raise _Fail(f"{quote(a.file)}: --keep-stored applies to JSON input only: CUT text carries no stored "
                     f"sequence numbers, count or checksums to keep")
     try:
         if kind == "json":
@@ -531,11 +540,11 @@ def _encode_one(a: argparse.Namespace) -> bytes:
             try:
                 doc = loads(text)  # exact numbers; duplicate keys refused with their path
             except json.JSONDecodeError as exc:
-                raise _Fail(f"{a.file}: line {exc.lineno}: not JSON ({exc.msg})") from None
+                raise _Fail(f"{quote(a.file)}: line {exc.lineno}: not JSON ({exc.msg})") from None
             except RecursionError:
-                raise _Fail(f"{a.file}: JSON nested too deep to read") from None
+                raise _Fail(f"{quote(a.file)}: JSON nested too deep to read") from None
             except ValueError as exc:  # e.g. an integer of more digits than Python converts
-                raise _Fail(f"{a.file}: not JSON the codec reads ({exc})") from None
+                raise _Fail(f"{quote(a.file)}: not JSON the codec reads ({exc})") from None
             model = from_canonical(doc)
             if a.version:
                 raise _Fail("--version applies to CUT input; JSON carries its version in the header")
@@ -548,8 +557,8 @@ def _encode_one(a: argparse.Namespace) -> bytes:
         if kind == "cut" and exc.line is None:
             line = _cut_line_of(text, str(exc))
             if line is not None:  # CUT input: the line people edit, not an offset in bytes they never saw
-                raise _Fail(f"{a.file}: line {line}: {exc.message}") from None
-        raise _Fail(f"{a.file}: {exc}") from None
+                raise _Fail(f"{quote(a.file)}: line {line}: {exc.message}") from None
+        raise _Fail(f"{quote(a.file)}: {exc}") from None
 
 
 def _refuse_not_cbf(path: str, data: bytes) -> None:
@@ -558,18 +567,19 @@ def _refuse_not_cbf(path: str, data: bytes) -> None:
     from . import tables as T
 
     if len(data) < T.HEADER_SIZE:
-        raise _Fail(f"{path}: offset 0: file is {len(data)} bytes, the header needs {T.HEADER_SIZE}: not a CBF file")
+        raise _Fail(f"{quote(path)}: offset 0: file is {len(data)} bytes, the header needs {T.HEADER_SIZE}: "
+                    f"not a CBF file")
     reason = _not_cbf(data)
     if reason:
-        raise _Fail(f"{path}: {reason}")
+        raise _Fail(f"{quote(path)}: {reason}")
 
 
 def _json_finding(d: dict[str, Any]) -> str:
     """One finding (a flat object) as json.dumps(..., indent=1) writes it inside the document,
     without its slow pure-Python indenting encoder (millions of findings are possible)."""
-    from json.encoder import encode_basestring_ascii as quote  # what json.dumps uses for str
+    from json.encoder import encode_basestring_ascii as jstr  # what json.dumps uses for str
 
-    body = ",\n".join(f"   {quote(k)}: " + ("null" if v is None else quote(v) if isinstance(v, str)
+    body = ",\n".join(f"   {jstr(k)}: " + ("null" if v is None else jstr(v) if isinstance(v, str)
                                              else str(v) if type(v) is int else json.dumps(v))
                       for k, v in d.items())
     return "  {\n" + body + "\n  }"
@@ -600,17 +610,21 @@ def _validate_options(a: argparse.Namespace) -> dict[str, Any]:
 def _expand(paths: Sequence[str]) -> list[tuple[str, str | None]]:
     """Each input as (path, why it is refused or None), in the order given: a folder is its
     ``*.cbf`` files, recursively, sorted by path; a folder with none is refused."""
+    from .files import Unreadable, walk
+
     out: list[tuple[str, str | None]] = []
     for path in paths:
         if path != "-" and Path(path).is_dir():
-            try:
-                found = sorted(str(p) for p in Path(path).rglob("*.cbf") if not p.is_dir())
-            except OSError as exc:
-                out.append((path, _unreadable(path, exc).message))
-                continue
+            found: list[tuple[str, str | None]] = []
+            for item in walk(path, ".cbf"):  # iterative: a tree of any depth
+                if isinstance(item, Unreadable):  # never skipped: the batch fails (exit 2) naming it
+                    found.append((item.path, f"{_unreadable(item.path, item.error).message} "
+                                             f"(a folder: its files were not validated)"))
+                else:
+                    found.append((item, None))
             if not found:
-                out.append((path, f"{path}: is a directory holding no *.cbf file"))
-            out.extend((p, None) for p in found)
+                out.append((path, f"{quote(path)}: is a directory holding no *.cbf file"))
+            out.extend(sorted(found))
         else:
             out.append((path, None))
     return out
@@ -678,28 +692,36 @@ def cmd_validate(a: argparse.Namespace) -> int:
     _BATCH_OPTIONS.update(_validate_options(a))
     from . import validation  # noqa: F401  (the engine and numpy, imported once, before any fork)
 
+    most = _max_findings(a, fmt)
     results: list[Any] = []
     for r in _results(items, a.jobs):
         results.append(r)
         if r.refused is not None and fmt in ("text", "github"):
-            sys.stderr.write(f"cbf: {r.refused}\n")
+            _err(f"cbf: {r.refused}\n")
         if fmt == "text" and r.refused is None:
-            _out(report.text(r, a.profile, a.max_findings))
+            _out(report.text(r, a.profile, most))
         elif fmt == "github":
-            _out(report.github(r))
+            _out(report.github(r, most))
     if fmt == "text":
         _out(report.summary_line(results))
     elif fmt == "github":
-        sys.stderr.write(report.summary_line(results))
+        _err(report.summary_line(results))
     elif fmt == "json":
-        _out(report.as_json(results, a.profile))
+        _out(report.as_json(results, a.profile, most))
     elif fmt == "junit":
-        _out(report.junit(results, a.profile))
+        _out(report.junit(results, a.profile, most))
     elif fmt == "sarif":
-        _out(report.sarif(results, a.profile))
+        _out(report.sarif(results, a.profile, most, base=a.base, docs_url=a.docs_url))
     else:
-        _out(report.gitlab(results))
+        _out(report.gitlab(results, most, base=a.base))
     return report.batch_status(results)
+
+
+def _max_findings(a: argparse.Namespace, fmt: str) -> int:
+    """--max-findings, or its default for the format: 50 where a person reads the lines, all elsewhere."""
+    if a.max_findings is not None:
+        return int(a.max_findings)
+    return 50 if fmt in ("text", "github") else 0
 
 
 def _validate_stream(a: argparse.Namespace, path: str, fmt: str) -> int:
@@ -714,22 +736,25 @@ def _validate_stream(a: argparse.Namespace, path: str, fmt: str) -> int:
 
     findings = iter_findings(data, **options)
     errors = total = 0
+    most = _max_findings(a, fmt)
     if fmt == "json":
-        head = json.dumps({"file": path, "profile": a.profile}, indent=1)
+        head = json.dumps({"file": json_name(path), "profile": a.profile}, indent=1)
         _out(head[:-2] + ',\n "findings": [')  # the same text as json.dumps of the whole document
         for f in findings:
             errors += f.severity == "error"
-            _out(("\n" if not total else ",\n") + _json_finding(f.as_dict()))
             total += 1
-        _out("\n ]\n}\n" if total else "]\n}\n")
+            if most == 0 or total <= most:
+                _out(("\n" if total == 1 else ",\n") + _json_finding(f.as_dict()))
+        _out("\n ]" if total else "]")
+        _out(f',\n "not_shown": {total - most}\n}}\n' if most and total > most else "\n}\n")
     else:
         for f in findings:
             errors += f.severity == "error"
             total += 1
-            if a.max_findings == 0 or total <= a.max_findings:
+            if most == 0 or total <= most:
                 _out(finding_line(path, f))
-        if a.max_findings and total > a.max_findings:
-            _out(more_line(path, total - a.max_findings))
+        if most and total > most:
+            _out(more_line(path, total - most))
         _out(verdict_line(path, errors, total - errors, a.profile))
     return EXIT_FINDINGS if errors else EXIT_OK
 
@@ -745,12 +770,13 @@ def cmd_info(a: argparse.Namespace) -> int:
     by_count = sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))
     if a.json:
         header = {f.name: getattr(h, f.name).hex() if f.kind == "bytes" else getattr(h, f.name) for f in info.fields}
-        doc = {"schema": 1, "file": a.file, "version": f"{model.version[0]}.{model.version[1]}", "version_id": vid,
+        doc = {"schema": 1, "file": json_name(a.file), "version": f"{model.version[0]}.{model.version[1]}",
+               "version_id": vid,
                "read_as": model.version_id, "header": header, "records": len(model.records),
                "commands": dict(by_count), "trailing_bytes": len(model.trailing)}
         _out(json.dumps(doc, indent=1) + "\n")
         return EXIT_OK
-    out = [f"file: {a.file}",
+    out = [f"file: {quote(a.file)}",
            f"version: {model.version[0]}.{model.version[1]} ({vid or 'unknown; read as ' + T.FALLBACK_VERSION})"]
     for f in info.fields:
         v = getattr(h, f.name)
@@ -758,7 +784,7 @@ def cmd_info(a: argparse.Namespace) -> int:
             v = v.hex()
         elif f.kind == "uint" and (f.magic is not None or f.checksum):
             v = f"0x{v:0{2 * f.size}X}"
-        out.append(f"{f.name}: {v}")
+        out.append(f"{f.name}: {quote(v) if f.kind == 'string' else v}")
     out.append(f"records: {len(model.records)}")
     for name, n in by_count:
         out.append(f"  {name}: {n}")
@@ -771,10 +797,10 @@ def cmd_info(a: argparse.Namespace) -> int:
 # -- toolpath tools (issue 16): convert, stats, diff, plot ------------------------
 def _peek(path: str) -> bytes:
     """The first bytes of a file (not of stdin), with the errors _read gives."""
+    from .files import open_regular
+
     try:
-        if Path(path).is_dir():
-            raise _Fail(f"{path}: is a directory")
-        with Path(path).open("rb") as fh:
+        with open_regular(path) as fh:
             return fh.read(256)
     except OSError as exc:
         raise _unreadable(path, exc) from None
@@ -794,14 +820,14 @@ def _load_any(path: str, fill_profile: str | None = None) -> Any:
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
-            raise _Fail(f"{path}: offset {exc.start}: byte 0x{data[exc.start]:02X} is not UTF-8 text") from None
+            raise _Fail(f"{quote(path)}: offset {exc.start}: byte 0x{data[exc.start]:02X} is not UTF-8 text") from None
     else:
         head = _peek(path)
         if head and not _looks_like_text(head):
             return _decode(path)  # CBF: read with the CBF size limit
         text = _read_text(path, 64 * _max_file_size()) if head else ""
     if not text.strip():
-        raise _Fail(f"{path}: offset 0: empty input (0 bytes of CBF, no CUT or JSON text)")
+        raise _Fail(f"{quote(path)}: offset 0: empty input (0 bytes of CBF, no CUT or JSON text)")
     try:
         if text.lstrip().startswith("{"):
             from .canonical import from_canonical, loads
@@ -809,9 +835,9 @@ def _load_any(path: str, fill_profile: str | None = None) -> Any:
             try:  # as encode reads it: exact numbers, a key given twice refused with its path
                 return from_canonical(loads(text))
             except json.JSONDecodeError as exc:
-                raise _Fail(f"{path}: line {exc.lineno}: not JSON ({exc.msg})") from None
+                raise _Fail(f"{quote(path)}: line {exc.lineno}: not JSON ({exc.msg})") from None
             except (RecursionError, ValueError) as exc:
-                raise _Fail(f"{path}: not JSON the codec reads ({type(exc).__name__})") from None
+                raise _Fail(f"{quote(path)}: not JSON the codec reads ({type(exc).__name__})") from None
         from .cut import from_cut
 
         model = from_cut(text)
@@ -821,13 +847,13 @@ def _load_any(path: str, fill_profile: str | None = None) -> Any:
         from .codec import decode, pack_file
 
         if not T.VERSION_BY_ID[model.version_id].writable:
-            raise _Fail(f"{path}: CUT text of version {model.version_id}, which this toolkit reads but does not "
+            raise _Fail(f"{quote(path)}: CUT text of version {model.version_id}, which this toolkit reads but does not "
                         f"write: the stored fields cannot be filled to be judged; convert its CBF file")
         return decode(pack_file(model, profile=fill_profile))
     except CbfError as exc:
-        raise _Fail(f"{path}: {exc}") from None
+        raise _Fail(f"{quote(path)}: {exc}") from None
     except (ValueError, OverflowError) as exc:  # packing: a value no field holds
-        raise _Fail(f"{path}: {exc}") from None
+        raise _Fail(f"{quote(path)}: {exc}") from None
 
 
 def _decode_bytes(path: str, data: bytes) -> Any:
@@ -839,7 +865,7 @@ def _decode_bytes(path: str, data: bytes) -> Any:
     try:
         return decode(data)
     except CbfError as exc:
-        raise _Fail(f"{path}: {exc}") from None
+        raise _Fail(f"{quote(path)}: {exc}") from None
 
 
 def _clean(path: str, model: Any, profile: str) -> None:
@@ -851,8 +877,9 @@ def _clean(path: str, model: Any, profile: str) -> None:
     if errors:
         e = errors[0]
         where = f"record {e.record}" if e.record is not None else "header"
-        again = f"cbf validate {path}" if profile == "default" else f"cbf validate --profile {profile} {path}"
-        raise _Fail(f"{path}: offset {e.offset}: {where} fails check {e.check} ({e.message}); run {again}")
+        again = f"cbf validate {quote(path)}" if profile == "default" else \
+            f"cbf validate --profile {profile} {quote(path)}"
+        raise _Fail(f"{quote(path)}: offset {e.offset}: {where} fails check {e.check} ({e.message}); run {again}")
 
 
 def _mm(text: str) -> float:
@@ -875,9 +902,9 @@ def cmd_convert(a: argparse.Namespace) -> int:
     for item in a.fill:
         name, eq, value = item.partition("=")
         if not eq or not name or not value:
-            raise _Fail(f"--fill {item!r}: expected ARG=VALUE, e.g. --fill completion=0")
+            raise _Fail(f"--fill '{quote(item)}': expected ARG=VALUE, e.g. --fill completion=0")
         if name in fill:
-            raise _Fail(f"--fill {name}: given twice")
+            raise _Fail(f"--fill {quote(name)}: given twice")
         fill[name] = value
     model = _load_any(a.file, fill_profile=a.profile)  # CUT input: its checksums are the encoder's to fill
     _clean(a.file, model, a.profile)
@@ -885,15 +912,15 @@ def cmd_convert(a: argparse.Namespace) -> int:
         conv = convert(model, a.to_version, chord_tol=a.chord_tol, fill=fill, profile=a.profile)
         out = encode(conv.model, profile=a.profile)
     except CbfError as exc:
-        raise _Fail(f"{a.file}: {exc}") from None
+        raise _Fail(f"{quote(a.file)}: {exc}") from None
     _write(a.output, out)
     _warn_deprecated(a.output, out)
-    line = (f"{a.file} -> {a.output}: version {conv.source_version} -> {conv.target_version}, "
+    line = (f"{quote(a.file)} -> {quote(a.output)}: version {conv.source_version} -> {conv.target_version}, "
             f"{len(model.records)} -> {len(conv.model.records)} records, {conv.curves} curve(s) as "
             f"{conv.segments} line segment(s), largest deviation {conv.max_deviation:.6f} mm "
             f"(tolerance {conv.chord_tol} mm)\n")
     if a.output == "-":
-        sys.stderr.write(line)
+        _err(line)
     else:
         _out(line)
     return EXIT_OK
@@ -905,9 +932,9 @@ def cmd_stats(a: argparse.Namespace) -> int:
     model = _load_any(a.file)
     s = stats(model)
     if a.json:
-        _out(json.dumps({"file": a.file, **s.as_dict()}, indent=1) + "\n")
+        _out(json.dumps({"file": json_name(a.file), **s.as_dict()}, indent=1) + "\n")
     else:
-        _out(render(s, a.file))
+        _out(render(s, quote(a.file)))
     return EXIT_OK
 
 
@@ -921,19 +948,19 @@ def cmd_diff(a: argparse.Namespace) -> int:
 
     def progress(message: str) -> None:  # a long run says what it is doing; a short one stays quiet
         if time.monotonic() - start > 1.0:
-            sys.stderr.write(f"cbf diff: {message} ({time.monotonic() - start:.1f} s)\n")
+            _err(f"cbf diff: {message} ({time.monotonic() - start:.1f} s)\n")
             sys.stderr.flush()
 
     ma = _load_any(a.a)
-    progress(f"read {a.a}: {len(ma.records)} records")
+    progress(f"read {quote(a.a)}: {len(ma.records)} records")
     mb = _load_any(a.b)
-    progress(f"read {a.b}: {len(mb.records)} records")
+    progress(f"read {quote(a.b)}: {len(mb.records)} records")
     tol = T.TOL["position_mm"] if a.tol is None else a.tol
     d = semdiff.diff(ma, mb, tol, progress)
     if a.json:
-        _out(json.dumps(semdiff.as_dict(d, a.a, a.b), indent=1) + "\n")
+        _out(json.dumps(semdiff.as_dict(d, json_name(a.a), json_name(a.b)), indent=1) + "\n")
     else:
-        _out(semdiff.render(d, ma, mb, a.a, a.b))
+        _out(semdiff.render(d, ma, mb, quote(a.a), quote(a.b)))
     return EXIT_OK if d.equal else EXIT_FINDINGS
 
 
@@ -944,10 +971,10 @@ def cmd_plot(a: argparse.Namespace) -> int:
     model = _load_any(a.file)
     fmt = a.format or Path(a.output).suffix.lstrip(".").lower()
     if fmt not in plot.FORMATS:
-        raise _Fail(f"{a.output}: cannot tell the format from the name; end it in "
+        raise _Fail(f"{quote(a.output)}: cannot tell the format from the name; end it in "
                     f"{', '.join('.' + f for f in plot.FORMATS)} or give --format")
     try:
-        out = plot.render(model, fmt, a.color, a.title if a.title is not None else a.file)
+        out = plot.render(model, fmt, a.color, a.title if a.title is not None else quote(a.file))
     except plot.PlotUnavailable as exc:
         raise _Fail(str(exc)) from None
     _write(a.output, out)
@@ -964,7 +991,7 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message: str) -> NoReturn:
         # one line, like every other error (the usage is one --help away)
-        sys.stderr.write(f"{self.prog}: {' '.join(message.split())} (see {self.prog} --help)\n")
+        _err(f"{self.prog}: {' '.join(message.split())} (see {self.prog} --help)\n")
         raise SystemExit(EXIT_USAGE)
 
 
@@ -1047,9 +1074,16 @@ def parser() -> argparse.ArgumentParser:
                    help=f"text (default); json (schema: {_schema_path('validate')}); junit (JUnit XML); sarif "
                         f"(SARIF 2.1.0); github (workflow annotation commands); gitlab (code quality report)")
     v.add_argument("--json", action="store_true", help="the same as --format json")
-    v.add_argument("--max-findings", type=_count, default=50, metavar="N",
-                   help="text: print at most N findings a file, then how many more there are; 0 prints all "
-                        "(default 50)")
+    v.add_argument("--max-findings", type=_count, default=None, metavar="N",
+                   help="at most N findings a file in every format, then how many more there are; 0 gives all "
+                        "(default 50 for text and github, 0 for the others; sarif holds at most GitHub's "
+                        "25,000 results a run and says what it left out)")
+    v.add_argument("--base", metavar="DIR", default=".",
+                   help="sarif and gitlab: paths relative to this folder (the repository's root; default: the "
+                        "working directory), SARIF's uriBaseId SRCROOT")
+    v.add_argument("--docs-url", metavar="URL", default=os.environ.get("CBF_DOCS_URL"),
+                   help="sarif: the published reference page (its index.html) the rules' help links to, at each "
+                        "check's anchor (default: $CBF_DOCS_URL; without it the help names the clause and anchor)")
     v.add_argument("-j", "--jobs", type=_jobs, default=_jobs("0"), metavar="N",
                    help="processes for many files (default 0: every core this process may use)")
     v.set_defaults(func=cmd_validate)
@@ -1133,7 +1167,8 @@ def _hexdump_parser(sub: Any, profiles: list[str]) -> None:
                                        "with its value, findings marked (the golden pages' view)",
                        description="Print FILE as hex, 16 bytes a row, each run of bytes named by the field it "
                                    "is and its value; a row holding a finding's offset ends with \u25c0 and the "
-                                   "finding. The same view the format reference draws for its golden files.")
+                                   "finding as validate prints it (FILE:OFFSET: severity check (record N): "
+                                   "message). The same view the format reference draws for its golden files.")
     h.add_argument("file", help="CBF file, or - for stdin")
     h.add_argument("--record", type=_count, metavar="N", help="only record N (0-based)")
     h.add_argument("--header", action="store_true", help="only the header")
@@ -1149,16 +1184,19 @@ def cmd_hexdump(a: argparse.Namespace) -> int:
 
     data = _read(a.file, _max_file_size())
     _refuse_not_cbf(a.file, data)  # as validate: exit 2, one line, for input that is not a CBF file
+    from .report import finding_line
+
     marks: list[hexdump.Mark] = []
+    errors = 0
     if not a.no_findings:
         for f in validate(data, profile=a.profile):
-            text = f"{f.severity} {f.check}" + (f" (record {f.record})" if f.record is not None else "") + \
-                f": {f.message}"
+            # each mark is the finding as validate prints it: the file (quoted) and the offset name it
+            errors += f.severity == "error"
             marks.append(hexdump.Mark(f.offset if f.offset is not None else len(data),
-                                      "".join(c if c.isprintable() else f"\\x{ord(c):02x}" for c in text)))
+                                      finding_line(a.file, f).rstrip("\n")))
     _out(hexdump.dump(hexdump.for_runtime(), data, max_lines=a.max_lines or None, only_record=a.record,
                       header_only=a.header, marks=marks) + "\n")
-    return EXIT_FINDINGS if any(m.text.startswith("error ") for m in marks) else EXIT_OK
+    return EXIT_FINDINGS if errors else EXIT_OK
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -1177,20 +1215,20 @@ def main(argv: Sequence[str] | None = None) -> int:
             _flush_out()  # what was printed before the failure (a batch's earlier files)
         except _StdoutFailed:
             _drop_stdout()
-        sys.stderr.write(f"cbf: {exc.message}\n" if isinstance(exc, _Fail) else f"{exc.message}\n")
+        _err(f"cbf: {exc.message}\n" if isinstance(exc, _Fail) else f"{exc.message}\n")
         return EXIT_USAGE
     except _StdoutFailed as exc:
         _drop_stdout()
-        sys.stderr.write(f"cbf: {exc.message}\n")
+        _err(f"cbf: {exc.message}\n")
         return EXIT_USAGE
     except KeyboardInterrupt:
-        sys.stderr.write("cbf: interrupted\n")
+        _err("cbf: interrupted\n")
         return 130
     except BrokenPipeError:
         _drop_stdout()
         return EXIT_OK
     except MemoryError:
-        sys.stderr.write("cbf: out of memory\n")
+        _err("cbf: out of memory\n")
         return EXIT_USAGE
 
 
