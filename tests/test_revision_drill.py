@@ -135,6 +135,17 @@ def test_cbfgen_diff_classifies_the_fixture(path: Path, tmp_path: Path) -> None:
     assert load(revised).revision != load(SPEC).revision, "a revision names itself in meta.revision"
 
 
+def test_the_quick_drill_leaves_each_fixtures_diff_alone_to_this_file() -> None:
+    """The quick drill (`make test`) does not check each fixture's `cbfgen diff` alone: the test it names does,
+    for every fixture, with the same drill.check_diff on the same specs."""
+    path, name = drill.DIFF_ALONE_TEST.split("::")
+    assert (REPO / path).resolve() == Path(__file__).resolve()
+    test = globals()[name]
+    marks = [m for m in getattr(test, "pytestmark", []) if m.name == "parametrize"]
+    assert [m.args[1] for m in marks] == [FIXTURES]
+    assert "drill.check_diff(fx, SPEC, revised)" in Path(__file__).read_text(encoding="utf-8")
+
+
 @pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
 def test_a_fixture_adds_golden_cases_and_expectations_only(path: Path, tmp_path: Path) -> None:
     fx = drill.load_fixture(path)
