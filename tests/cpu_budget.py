@@ -31,12 +31,22 @@ from typing import Any
 
 import pytest
 
-# The whole pytest run, summed over the workers (CPU s). Measured in tests/README-speed.md.
-SUITE_BUDGET = 900.0
+# The whole pytest run, summed over the workers (CPU s). Measured in tests/README-speed.md: the bounds
+# hold today's suite with room for a loaded machine (CPU s grow by up to half at load 15 on the 2-core
+# machine), and stop a new minute. Lower them when a file gets cheaper (tests/README-speed.md, "Budget").
+SUITE_BUDGET = 1600.0
 # Any one test file (CPU s): the longest file runs on one worker (--dist loadfile), so its cost bounds
-# the wall time of pytest from below on any number of cores. Files named here have their own bound.
-FILE_BUDGET = 60.0
-FILE_BUDGETS: dict[str, float] = {}
+# the wall time of pytest from below on any number of cores. Files named here have their own bound, each
+# the file's cost on the last fresh-clone CI run (durations.txt: wall s of its tests) plus the same room.
+FILE_BUDGET = 90.0
+FILE_BUDGETS: dict[str, float] = {
+    "tests/test_spec_fuzz.py": 170.0,  # 111 s: the derandomised sample generates and builds each spec
+    "tests/test_registry.py": 145.0,  # 95 s: a generation, a ksc run and a Python process per type
+    "tests/test_revision_drill.py": 120.0,  # 294 s, now 86 CPU s at load 15 (each spec text loaded once)
+    "tests/test_outputs_checked.py": 115.0,  # 75 s: every command on the 65,535-record file, to a full disk
+    "tests/test_near_miss.py": 110.0,  # 71 s: 12 near-miss specs generated, compiled (C, ksc) and run
+    "tests/test_escaping.py": 100.0,  # 66 s: ksc on 13 hostile specs, Java and Go compiled once
+}
 
 
 ENV = "CBF_CPU_REPORT"
