@@ -102,10 +102,21 @@ $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp
 # fixtures (built wheels, venvs) are made once. The two plugins the suite uses are named, not
 # autoloaded: an autoloaded plugin's package is marked for pytest's assertion rewriting, which
 # PYTHONDONTWRITEBYTECODE never lets it cache (hypothesis' modules: about 0.6 CPU s a process).
+# Each test's CPU seconds (children included) go to build/test-results/cpu/, one report a worker, and
+# tests/cpu_budget.py holds the suite and each file to a CPU budget (CPU time, not wall time: the same
+# on a loaded machine, within about a fifth). `make test-profile` prints the costliest files and tests
+# of the last run. What costs what: tests/README-speed.md.
+CPU_REPORT := build/test-results/cpu
 PYTEST_PLUGINS_NAMED := -p xdist.plugin -p _hypothesis_pytestplugin
 test-py: venv
-	PYTEST_DISABLE_PLUGIN_AUTOLOAD=1 $(PY) -m pytest -p no:cacheprovider $(PYTEST_PLUGINS_NAMED) -n auto --dist loadfile \
-	  --junitxml=build/test-results/pytest.xml
+	@rm -rf $(CPU_REPORT)
+	CBF_CPU_REPORT=$(CURDIR)/$(CPU_REPORT) PYTEST_DISABLE_PLUGIN_AUTOLOAD=1 $(PY) -m pytest -p no:cacheprovider \
+	  $(PYTEST_PLUGINS_NAMED) -n auto --dist loadfile --junitxml=build/test-results/pytest.xml
+	$(PY) tests/cpu_budget.py check $(CPU_REPORT)
+
+.PHONY: test-profile
+test-profile:  ## the CPU seconds of each test file and the costliest tests of the last `make test-py`
+	@$(PY) tests/cpu_budget.py show $(CPU_REPORT)
 
 # `make test`: the toolchains first (setup, alone: apt-get takes one lock); then ONE make of
 # TEST_JOBS jobs (one per core) runs everything else as one graph (test-run), so that no core

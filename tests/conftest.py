@@ -75,6 +75,13 @@ def run_clean(*cmd: str | Path, cwd: Path, check: bool = True,
                           env=CLEAN_ENV if env is None else env)
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    """The suite's CPU budget (tests/cpu_budget.py): each test's CPU seconds, when CBF_CPU_REPORT names a folder."""
+    import cpu_budget
+
+    cpu_budget.register(config)
+
+
 @pytest.fixture(scope="session")
 def html_site(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The HTML site of spec/cbf.yaml as `make docs` builds it, built once a session: tests only read it."""

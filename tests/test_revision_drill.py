@@ -10,23 +10,52 @@ revision.
 from __future__ import annotations
 
 import copy
+import hashlib
 import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
 from conftest import YAML_LOADER, load_yaml
 from revisions import drill
 
+from cbfgen import loader
 from cbfgen.diff import diff
-from cbfgen.loader import load
+from cbfgen.model import Spec
 
 REPO = Path(__file__).resolve().parents[1]
 SPEC = REPO / "spec" / "cbf.yaml"
 FIXTURES = drill.fixtures()
+
+# The pairwise tests load the same spec text many times (the base of every pair, the revised spec both
+# for the loader's checks and for cbfgen diff): the loader's result is a function of the path it names
+# and the text, so each (path, text) is loaded once a process (about 0.16 CPU s a load; this file loaded
+# 400 specs, 2 of 3 of them again). A spec the loader refuses is not kept: it raises every time.
+_LOADED: dict[tuple[str, bytes], Spec] = {}
+
+
+def load(path: Path) -> Spec:
+    """cbfgen.loader.load(path), once per path and text."""
+    key = (str(path), hashlib.sha256(Path(path).read_bytes()).digest())
+    if key not in _LOADED:
+        _LOADED[key] = loader.load(path)
+    return _LOADED[key]
+
+
+_PARSED: dict[bytes, Any] = {}
+
+
+def _read_spec(path: Path) -> Any:
+    """drill.read_spec(path), parsed once per text (a copy of its own each call: the caller may edit it)."""
+    text = Path(path).read_bytes()
+    key = hashlib.sha256(text).digest()
+    if key not in _PARSED:
+        _PARSED[key] = drill.read_spec(path)
+    return copy.deepcopy(_PARSED[key])
 
 
 def test_the_kinds_of_revision_are_drilled_and_classed_as_a_format_owner_would() -> None:
@@ -104,6 +133,17 @@ def test_cbfgen_diff_classifies_the_fixture(path: Path, tmp_path: Path) -> None:
     revised = drill.revised_spec(fx, SPEC, tmp_path)
     assert drill.check_diff(fx, SPEC, revised) == []
     assert load(revised).revision != load(SPEC).revision, "a revision names itself in meta.revision"
+
+
+def test_the_quick_drill_leaves_each_fixtures_diff_alone_to_this_file() -> None:
+    """The quick drill (`make test`) does not check each fixture's `cbfgen diff` alone: the test it names does,
+    for every fixture, with the same drill.check_diff on the same specs."""
+    path, name = drill.DIFF_ALONE_TEST.split("::")
+    assert (REPO / path).resolve() == Path(__file__).resolve()
+    test = globals()[name]
+    marks = [m for m in getattr(test, "pytestmark", []) if m.name == "parametrize"]
+    assert [m.args[1] for m in marks] == [FIXTURES]
+    assert "drill.check_diff(fx, SPEC, revised)" in Path(__file__).read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("path", FIXTURES, ids=[p.stem for p in FIXTURES])
@@ -216,13 +256,13 @@ def test_the_readme_lists_no_versions_by_hand() -> None:
 
 def _revised(fx: drill.Fixture, base: Path, out: Path) -> tuple[Path, drill.Fixture]:
     """base revised by fx into out, and fx as it reads for base (its ids chosen there)."""
-    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, drill.read_spec(base))
+    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, _read_spec(base))
 
 
 def _judged(fx: drill.Fixture, base: Path, revised: Path) -> list[str]:
     """drill.check_diff in this process: what cbfgen diff of base against revised says, judged for fx."""
     d = diff(load(base), load(revised))
-    return drill.judge(drill.load_fixture(fx.path, drill.read_spec(base)), d.exit_code, d.as_json())
+    return drill.judge(drill.load_fixture(fx.path, _read_spec(base)), d.exit_code, d.as_json())
 
 
 @pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
