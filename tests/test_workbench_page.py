@@ -11,6 +11,7 @@ One page build and one browser for the whole file: the wasm module is make's (mk
 from __future__ import annotations
 
 import functools
+import gzip
 import json
 import shutil
 import subprocess
@@ -62,6 +63,7 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     assert res.returncode == 0, res.stderr[-3000:]
     out: dict[str, object] = json.loads(res.stdout)
     out["expected"] = len(feed)
+    out["page"] = str(page)
     return out
 
 
@@ -127,3 +129,12 @@ def test_a_segment_of_the_toolpath_selected_by_click_or_keyboard_selects_its_rec
         assert p["row"] == p["want"], p
         assert p["hex"].startswith(f"record {p['want']} "), p
         assert p["segments"] == [p["want"], p["want"]], p
+
+
+GZIP_BOUND = 150 * 1024  # issue 34, point 6: the page's code, gzipped (the engine, the page's script and data)
+
+
+def test_the_page_gzipped_stays_under_its_bound(run: dict[str, object]) -> None:
+    page = Path(str(run["page"])).read_bytes()
+    size = len(gzip.compress(page, 9))
+    assert 0 < size < GZIP_BOUND, f"the workbench page is {size:,} bytes gzipped (bound {GZIP_BOUND:,})"
