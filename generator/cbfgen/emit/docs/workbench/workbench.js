@@ -255,10 +255,16 @@ function drawView(svg, segs, axes) {
     svg.append(t);
     return [];
   }
-  let [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
-  const span = Math.max(x1 - x0, y1 - y0, 1e-6);
-  const pad = span * 0.06;
-  svg.setAttribute('viewBox', `${x0 - pad} ${y0 - pad} ${span + 2 * pad} ${span + 2 * pad}`);
+  // bounds by a loop: a spread of 100,000 arguments can overflow the stack
+  let [x0, x1, y0, y1] = [xs[0], xs[0], ys[0], ys[0]];
+  for (let i = 1; i < xs.length; i += 1) {
+    x0 = Math.min(x0, xs[i]); x1 = Math.max(x1, xs[i]); y0 = Math.min(y0, ys[i]); y1 = Math.max(y1, ys[i]);
+  }
+  // the view as wide as the path, at least a quarter as high (a flat side view stays a strip)
+  const w = Math.max(x1 - x0, y1 - y0, 1e-6);
+  const h = Math.max(y1 - y0, w / 4);
+  const pad = w * 0.06;
+  svg.setAttribute('viewBox', `${x0 - pad} ${(y0 + y1) / 2 - h / 2 - pad} ${Math.max(x1 - x0, w) + 2 * pad} ${h + 2 * pad}`);
   const drawn = [];
   for (const s of segs) {
     const d = s.pts.map((p, i) => `${i === 0 ? 'M' : 'L'}${p[axes[0]]} ${-p[axes[1]]}`).join(' ');
