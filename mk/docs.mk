@@ -36,11 +36,11 @@ docs-chromium:
 	@CBF_WANT_CHROMIUM=1 .ci/setup-debian.sh
 
 docs-pdf: generate-py docs-chromium  ## the reference as one PDF ($(DOCS_PDF)), checked against its contents
-	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF)
+	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF) $(DOCS_PDF_FLAGS)
 
 docs-check: docs docs-chromium  ## links stay in the site; Chromium: no overflow, images load, no console; the PDF
 	$(PY) -m cbfgen.emit.docs.browser --site $(DOCS_HTML) --out build/docs-check
-	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF)
+	$(PY) -m cbfgen.emit.docs.pdf --spec spec/cbf.yaml --out $(DOCS_PDF) $(DOCS_PDF_FLAGS)
 
 # Installing chromium (about 15 s on Debian 12 with a warm apt mirror), the browser
 # check (164 pages, about 17 s) and the PDF (about 200 pages, two prints, about 13 s) fit in

@@ -1,5 +1,7 @@
 # The site links the page (site.py --workbench).
 DOCS_SITE_FLAGS += --workbench
+# The PDF links it from its front matter, relative to the PDF's folder (cbfgen.emit.docs.pdf --workbench).
+DOCS_PDF_FLAGS += --workbench $(DOCS_HTML)/workbench.html
 
 # The workbench page (issue 34, point 3): $(DOCS_HTML)/workbench.html, the C engine (build/wasm/cbf-c.wasm,
 # mk/wasm.mk) inlined in one page with the spec's layouts (cbfgen.emit.docs.workbench). It is written into

@@ -11,6 +11,7 @@ One page build and one browser for the whole file: the wasm module is make's (mk
 from __future__ import annotations
 
 import functools
+import gzip
 import json
 import shutil
 import subprocess
@@ -45,26 +46,41 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     # a failing file whose first finding names a record: its row and its bytes light up with it
     firsts = {f: _native(f, profiles[0]) for f in files}
     failing = [f for f, (text, status) in firsts.items() if status == 1 and "(record " in text.split("\n", 1)[0]]
-    assert files and failing
+    # ... one whose record is a motion (the spec's role) in a toolpath of more than one: its segment too
+    motions = {c.name: {a for k, a in c.motion.items() if k != "kind"} for c in spec.commands if c.motion}
+    drawn = [f for f in failing if _motion_record(f, firsts[f][0], motions)]
+    assert files and failing and drawn
     jobs = tmp / "jobs.json"
     # every file under the first profile; each other profile on the files it judges differently (the
     # page passes the profile on; the engine's profiles are the conformance suite's to test), at most 8
     feed = [(f, profiles[0]) for f in files]
     for p in profiles[1:]:
         feed += [(f, p) for f in files if _native(f, p) != firsts[f]][:8]
-    jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(failing[0])}))
+    jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(drawn[0])}))
     SHOTS.mkdir(parents=True, exist_ok=True)
     res = subprocess.run(["node", str(DRIVER), str(page), str(SHOTS), str(jobs)], cwd=REPO, capture_output=True,
                          text=True, timeout=600)
     assert res.returncode == 0, res.stderr[-3000:]
     out: dict[str, object] = json.loads(res.stdout)
     out["expected"] = len(feed)
+    out["page"] = str(page)
     return out
 
 
 @functools.cache
 def _cbf_c() -> Path:
     return built("cbf-c")
+
+
+def _motion_record(path: Path, text: str, motions: dict[str, set[str]]) -> bool:
+    """The first finding's record is a motion record of the file whose arguments cbf-c dump decodes, and the
+    file has another."""
+    record = text.split("(record ", 1)[1].split(")", 1)[0]
+    dump = subprocess.run([str(_cbf_c()), "dump", path.name], cwd=path.parent, capture_output=True, text=True)
+    rows = [line.split(" ", 3) for line in dump.stdout.splitlines()[1:]]
+    moving = [r[0] for r in rows if len(r) > 3 and r[2] in motions
+              and any(f"{a}=" in r[3].partition(" | ")[2] for a in motions[r[2]])]
+    return record in moving and len(moving) > 1
 
 
 @functools.cache
@@ -97,9 +113,28 @@ def test_nothing_leaves_the_page(run: dict[str, object]) -> None:
 
 
 def test_a_finding_selected_by_keyboard_marks_its_record_and_byte_at_390_and_1280_px(run: dict[str, object]) -> None:
-    assert run["selected"] == {"finding": 1, "row": 1, "hit": 1}
+    # its segment in both views (top and side)
+    assert run["selected"] == {"finding": 1, "row": 1, "hit": 1, "segments": 2}
     widths = run["widths"]
     assert isinstance(widths, dict)
     for w in ("390", "1280"):
         assert widths[w] <= int(w), f"the page overflows at {w} px: {widths[w]} px wide"
         assert (SHOTS / f"workbench-{w}.png").stat().st_size > 0
+
+
+def test_a_segment_of_the_toolpath_selected_by_click_or_keyboard_selects_its_record(run: dict[str, object]) -> None:
+    picked = run["picked"]
+    assert isinstance(picked, list) and [p["how"] for p in picked] == ["click", "keyboard"]
+    for p in picked:
+        assert p["row"] == p["want"], p
+        assert p["hex"].startswith(f"record {p['want']} "), p
+        assert p["segments"] == [p["want"], p["want"]], p
+
+
+GZIP_BOUND = 150 * 1024  # issue 34, point 6: the page's code, gzipped (the engine, the page's script and data)
+
+
+def test_the_page_gzipped_stays_under_its_bound(run: dict[str, object]) -> None:
+    page = Path(str(run["page"])).read_bytes()
+    size = len(gzip.compress(page, 9))
+    assert 0 < size < GZIP_BOUND, f"the workbench page is {size:,} bytes gzipped (bound {GZIP_BOUND:,})"

@@ -71,11 +71,35 @@ const selected = await page.evaluate(() => ({
   finding: document.querySelectorAll('#findings .wb-selected').length,
   row: document.querySelectorAll('#records tr.wb-selected').length,
   hit: document.querySelectorAll('#hex .wb-hit').length,
+  segments: document.querySelectorAll('.wb-path path.wb-selected').length,
 }));
 for (const w of [390, 1280]) {
   await page.setViewportSize({ width: w, height: 900 });
   widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
   await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
 }
+// A segment of the toolpath, of a record other than the selected one, chosen by click and by keyboard:
+// its record's row and bytes are selected.
+const picked = [];
+const rowNow = async () => page.evaluate(() => {
+  const row = document.querySelector('#records tr.wb-selected');
+  return { row: row === null ? null : row.dataset.record, hex: document.getElementById('hex-title').textContent,
+    segments: [...document.querySelectorAll('.wb-path path.wb-selected')].map((p) => p.dataset.record) };
+});
+const others = await page.evaluate(() => {
+  const sel = document.querySelector('#records tr.wb-selected');
+  const mine = sel === null ? null : sel.dataset.record;
+  const recs = [...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record);
+  return [...new Set(recs)].filter((r) => r !== mine).slice(0, 2);
+});
+if (others.length > 0) {
+  await page.locator(`#path-top path[data-record="${others[0]}"]`).dispatchEvent('click');
+  picked.push({ want: others[0], how: 'click', ...(await rowNow()) });
+}
+if (others.length > 1) {
+  await page.focus(`#path-top path[data-record="${others[1]}"]`);
+  await page.keyboard.press('Enter');
+  picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
+}
 await context.close();
-process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected })}\n`);
+process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked })}\n`);

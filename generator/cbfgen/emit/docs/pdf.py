@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import argparse
 import html
+import os
 import posixpath
 import re
 import shutil
@@ -281,8 +282,52 @@ def frame(spec: Spec, version: str) -> tuple[str, str]:
     return header, footer
 
 
-def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, list[str]]:
-    """Print the document to out; (page count, problems found by the check)."""
+WORKBENCH_CLASS = "workbench-link"
+
+
+def workbench_note(href: str) -> str:
+    """The front matter's link to the site's workbench page (issue 34): the one link that leaves the PDF."""
+    return (f'<p class="{WORKBENCH_CLASS}">Check a cut file in the browser, with nothing installed: the site\'s '
+            f'workbench page (<a href="{html.escape(href)}">{html.escape(posixpath.basename(href))}</a>).</p>')
+
+
+def relative_links(pdf: Path, links: dict[str, str]) -> int:
+    """Rewrite the PDF's link targets named in links (absolute URI -> relative one): Chromium prints every
+    link absolute, a reader's copy of the build folder keeps the PDF and the site side by side. The count."""
+    from pypdf import PdfWriter
+    from pypdf.generic import NameObject, TextStringObject
+
+    writer = PdfWriter(clone_from=str(pdf))
+    n = 0
+    for page in writer.pages:
+        for ref in page.get("/Annots") or []:
+            action = ref.get_object().get("/A")
+            if action is not None and str(action.get_object().get("/URI", "")) in links:
+                act = action.get_object()
+                act[NameObject("/URI")] = TextStringObject(links[str(act["/URI"])])
+                n += 1
+    tmp = pdf.with_suffix(".pdf.tmp")
+    with tmp.open("wb") as fh:
+        writer.write(fh)
+    tmp.replace(pdf)
+    return n
+
+
+def link_targets(pdf: Path) -> list[str]:
+    """Every URI a link of the PDF opens (a link inside it is a destination, not a URI)."""
+    out = []
+    for page in PdfReader(str(pdf)).pages:
+        for ref in page.get("/Annots") or []:
+            action = ref.get_object().get("/A")
+            if action is not None and "/URI" in action.get_object():
+                out.append(str(action.get_object()["/URI"]))
+    return out
+
+
+def build(spec: Spec, browser_path: str, out: Path, version: str,
+          workbench: Path | None = None) -> tuple[int, list[str]]:
+    """Print the document to out; (page count, problems found by the check). workbench: the site's
+    workbench page, linked from the front matter by its path relative to out's folder."""
     work = out.parent / "work"
     shutil.rmtree(work, ignore_errors=True)
     (work / "svg").mkdir(parents=True)
@@ -290,12 +335,14 @@ def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, 
         (work / rel).write_text(text, encoding="utf-8")
     chs = chapters(spec)
     header, footer = frame(spec, version)
+    href = "" if workbench is None else Path(os.path.relpath(workbench.resolve(), out.resolve().parent)).as_posix()
 
     def document(starts: list[str]) -> str:
         first, rest = chs[0], chs[1:]
         # the front matter and the first chapters (revision history, how to read) precede the contents
         lead = [first, *[c for c in rest if not c.part][:2]] if rest else [first]
-        body = "".join(c.body for c in lead) + _toc(spec, chs, starts) + "".join(
+        note = "" if workbench is None else workbench_note(href)
+        body = note + "".join(c.body for c in lead) + _toc(spec, chs, starts) + "".join(
             f'<section class="{"part" if c.part else "flow"}">{c.body}</section>' for c in chs if c not in lead)
         return _doc(f"{spec.meta['part_number']} rev {spec.meta['revision']}", body)
 
@@ -314,10 +361,15 @@ def build(spec: Spec, browser_path: str, out: Path, version: str) -> tuple[int, 
         final_doc = document(starts)
         final = print_("document", final_doc)
     shutil.copyfile(final, out)
+    problems: list[str] = []
+    if workbench is not None:  # Chromium printed it absolute, against the work folder
+        absolute = (work / href).resolve().as_uri()
+        if relative_links(out, {absolute: href}) != 1 or href not in link_targets(out):
+            problems.append(f"{out.name}: no link to the workbench page {href}")
     reader = PdfReader(str(out))
     outline = outline_pages(reader)
-    problems = verify(out.name, [c.title for c in chs], starts, outline, PageTexts(reader))
-    problems += [f"{out.name}: {p}" for p in dangling(final_doc)]
+    problems += verify(out.name, [c.title for c in chs], starts, outline, PageTexts(reader))
+    problems += [f"{out.name}: {p}" for p in dangling(final_doc, href)]
     # the pages a part starts on (the contents, and each chapter that starts a new page)
     toc = chapter_pages([_toc_title(spec)], outline)
     part_starts = {p for c, p in zip([None, *chs], [*toc, *chapter_pages([c.title for c in chs], outline)],
@@ -372,12 +424,13 @@ _HREF = re.compile(r'<a [^>]*href="([^"]*)"')
 _ID = re.compile(r'\sid="([^"]+)"')
 
 
-def dangling(doc: str) -> list[str]:
+def dangling(doc: str, workbench: str = "") -> list[str]:
     """Every link of the printed document that leaves it or names no id of it: the PDF refers only to
-    what it holds."""
+    what it holds, and to the site's workbench page (workbench: its href)."""
     ids = set(_ID.findall(doc))
     return [f"link to {href!r}, which the PDF does not hold" for href in _HREF.findall(doc)
-            if not href.startswith("#") or html.unescape(href[1:]) not in ids]
+            if (not href.startswith("#") or html.unescape(href[1:]) not in ids)
+            and not (workbench and html.unescape(href) == workbench)]
 
 
 TEXT_CHECKED = 12  # chapters whose title is also looked for in their page's text (extraction is slow)
@@ -419,6 +472,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="cbf-docs-pdf", description="Print the published document to one PDF.")
     ap.add_argument("--spec", default="spec/cbf.yaml")
     ap.add_argument("--out", default="build/docs-pdf/cbf-reference.pdf")
+    ap.add_argument("--workbench", type=Path, help="the site's workbench page, linked from the front matter")
     args = ap.parse_args(argv)
     browser = chromium()
     if browser is None:
@@ -427,7 +481,7 @@ def main(argv: list[str] | None = None) -> int:
     out = Path(args.out)
     out.parent.mkdir(parents=True, exist_ok=True)
     try:
-        pages, problems = build(load(args.spec), browser, out, __version__)
+        pages, problems = build(load(args.spec), browser, out, __version__, args.workbench)
     except CdpError as exc:
         print(f"docs-pdf: chromium: {exc}", file=sys.stderr)
         return 1

@@ -205,9 +205,108 @@ function recordFields(rec, version) {
   return head.concat(args);
 }
 
+// -- the toolpath ---------------------------------------------------------------------------------------
+// Each motion record as cbf-c dump prints its positions, joined in the order its spec role names them
+// (start, through, end; a point from the position before it; a circle or helix: its start and centre).
+// Cutting or moving: the state the spec's `sets: {cutting: ...}` commands leave before the record.
+const SVG = 'http://www.w3.org/2000/svg';
+const ROLE_ORDER = ['start', 'through', 'center', 'end'];
+
+function argVector(args, name) {
+  const m = new RegExp(`(?:^|\\s)${name}=([^\\s]+)`).exec(args);
+  if (m === null) return null;
+  const v = m[1].split(',').map((x) => parseFloat(x));
+  return v.length === 3 && v.every(Number.isFinite) ? v : null;
+}
+
+function segments(records) {
+  const out = [];
+  let cutting = false;
+  let last = null;
+  for (const r of records) {
+    if (Object.prototype.hasOwnProperty.call(DATA.cutting, r.name)) cutting = DATA.cutting[r.name];
+    const role = DATA.motion[r.name];
+    if (role === undefined) continue;
+    const pts = [];
+    if (role.kind === 'point' && last !== null) pts.push(last);
+    for (const k of ROLE_ORDER) {
+      if (role[k] === undefined) continue;
+      const v = argVector(r.args, role[k]);
+      if (v !== null) pts.push(v);
+    }
+    if (pts.length === 0) continue;
+    out.push({ record: r.index, cutting, pts });
+    last = role.kind === 'circle' || role.kind === 'helix' ? null : pts[pts.length - 1];
+  }
+  return out;
+}
+
+function drawView(svg, segs, axes) {
+  svg.replaceChildren();
+  const xs = [];
+  const ys = [];
+  for (const s of segs) for (const p of s.pts) { xs.push(p[axes[0]]); ys.push(-p[axes[1]]); }
+  if (xs.length === 0) {
+    svg.setAttribute('viewBox', '0 0 100 100');
+    const t = document.createElementNS(SVG, 'text');
+    t.setAttribute('x', '6');
+    t.setAttribute('y', '50');
+    t.textContent = 'no motion record';
+    svg.append(t);
+    return [];
+  }
+  // bounds by a loop: a spread of 100,000 arguments can overflow the stack
+  let [x0, x1, y0, y1] = [xs[0], xs[0], ys[0], ys[0]];
+  for (let i = 1; i < xs.length; i += 1) {
+    x0 = Math.min(x0, xs[i]); x1 = Math.max(x1, xs[i]); y0 = Math.min(y0, ys[i]); y1 = Math.max(y1, ys[i]);
+  }
+  // the view as wide as the path, at least a quarter as high (a flat side view stays a strip)
+  const w = Math.max(x1 - x0, y1 - y0, 1e-6);
+  const h = Math.max(y1 - y0, w / 4);
+  const pad = w * 0.06;
+  svg.setAttribute('viewBox', `${x0 - pad} ${(y0 + y1) / 2 - h / 2 - pad} ${Math.max(x1 - x0, w) + 2 * pad} ${h + 2 * pad}`);
+  const drawn = [];
+  for (const s of segs) {
+    const d = s.pts.map((p, i) => `${i === 0 ? 'M' : 'L'}${p[axes[0]]} ${-p[axes[1]]}`).join(' ');
+    const path = document.createElementNS(SVG, 'path');
+    path.setAttribute('d', s.pts.length === 1 ? `${d} l0 0` : d);
+    path.setAttribute('class', s.cutting ? 'wb-cut' : 'wb-move');
+    path.dataset.record = String(s.record);
+    if (state.byRecord.has(s.record)) path.classList.add('wb-has-finding');
+    if (axes[1] === 1) {
+      path.setAttribute('tabindex', '0');
+      path.setAttribute('role', 'button');
+      path.setAttribute('aria-label', `record ${s.record}, ${s.cutting ? 'cutting' : 'moving'}`);
+    }
+    svg.append(path);
+    drawn.push(path);
+  }
+  return drawn;
+}
+
+function showPath() {
+  const segs = segments(state.dump.records);
+  state.segs = new Map();
+  for (const [id, axes] of [['path-top', [0, 1]], ['path-side', [0, 2]]]) {
+    for (const p of drawView($(id), segs, axes)) {
+      const n = Number(p.dataset.record);
+      if (!state.segs.has(n)) state.segs.set(n, []);
+      state.segs.get(n).push(p);
+    }
+  }
+}
+
+function markSegment(record) {
+  for (const p of document.querySelectorAll('.wb-path path.wb-selected')) p.classList.remove('wb-selected');
+  for (const p of state.segs.get(record) || []) {
+    p.classList.add('wb-selected');
+    p.parentNode.append(p); // drawn on top of its neighbours
+  }
+}
+
 // -- the page ------------------------------------------------------------------------------------------
 const $ = (id) => document.getElementById(id);
-const state = { name: null, data: null, findings: [], dump: null, page: 0, selected: null, byRecord: new Map() };
+const state = { name: null, data: null, findings: [], dump: null, page: 0, selected: null, byRecord: new Map(), segs: new Map() };
 
 function el(tag, attrs, ...children) {
   const e = document.createElement(tag);
@@ -270,6 +369,7 @@ async function check(readFile) {
   showFindings();
   showRecords();
   showHex(null);
+  showPath();
   Object.assign(document.body.dataset, { done: String(mine), file: state.name, profile });
 }
 
@@ -378,6 +478,7 @@ function select(sel) {
   if (rec !== null) state.page = Math.floor(state.dump.records.indexOf(rec) / PAGE_SIZE);
   showRecords();
   showHex(rec, hit);
+  markSegment(record);
 }
 
 function setup() {
@@ -396,6 +497,14 @@ function setup() {
     if (f !== undefined) await check(async () => ({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) }));
   });
   drop.addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); $('file').click(); } });
+  for (const id of ['path-top', 'path-side']) {
+    const pick = (e) => {
+      const p = e.target.closest && e.target.closest('path[data-record]');
+      if (p) select({ record: Number(p.dataset.record) });
+    };
+    $(id).addEventListener('click', pick);
+    $(id).addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); pick(e); } });
+  }
   $('prev').addEventListener('click', () => { state.page = Math.max(0, state.page - 1); showRecords(); });
   $('next').addEventListener('click', () => { state.page = Math.min(pageCount() - 1, state.page + 1); showRecords(); });
   $('goto').addEventListener('change', () => {
