@@ -262,21 +262,35 @@ def _check_cites_no_clause(doc: Any) -> str:
     return f"checks[id={check['id']}].clause: 9.9.9 (not in meta.clauses)"
 
 
-# name -> (apply, the loader gate it needs, or None when no gate is needed: it must pass today)
-LOADER_GATE = "loader gate: issue #36 point 1"
+def _code_negative_zero(doc: Any) -> str:
+    cmd = doc["commands"][0]
+    cmd["code"] = -0.0
+    return f"commands[name={cmd['name']}].code: -0.0"
+
+
+def _tolerance_nan(doc: Any) -> str:
+    key = next(iter(doc["tolerances"]))
+    doc["tolerances"][key] = float("nan")
+    return f"tolerances.{key}: nan"
+
+
+# name -> (apply, the loader rule that refuses it (issue 36, point 1), or None when a build that
+# behaves alike is as good as a refusal)
 CLASSES: dict[str, tuple[Callable[[Any], str], str | None]] = {
-    "repeat_max_1e9": (_repeat_max_huge, LOADER_GATE),
-    "max_commands_2_40": (_set_path(("limits", "max_commands"), 1 << 40), LOADER_GATE),
-    "max_commands_float": (_set_path(("limits", "max_commands"), 3.5e38), LOADER_GATE),
-    "float_pattern_bracket": (_set_path(("cut", "float_pattern"), "["), LOADER_GATE),
-    "float_pattern_list": (_set_path(("cut", "float_pattern"), ["-?\\d+"]), LOADER_GATE),
-    "header_keyword_is_a_command": (_header_keyword_is_a_command, LOADER_GATE),
-    "vector_separator_is_arg_separator": (_separators_collide, LOADER_GATE),
-    "clause_note_names_nothing": (_note_names_nothing, LOADER_GATE),
-    "check_cites_no_clause": (_check_cites_no_clause, LOADER_GATE),
-    "name_4096": (_long_name, LOADER_GATE),
-    "string_padding_32": (_set_path(("meta", "string_padding"), 32), LOADER_GATE),
-    "range_min_negative_zero": (_range_min_negative_zero, None),  # cbf and cbf-c now print it alike
+    "repeat_max_1e9": (_repeat_max_huge, "repeat-groups"),
+    "max_commands_2_40": (_set_path(("limits", "max_commands"), 1 << 40), "limits"),
+    "max_commands_float": (_set_path(("limits", "max_commands"), 3.5e38), "schema"),
+    "code_negative_zero": (_code_negative_zero, "schema"),
+    "float_pattern_bracket": (_set_path(("cut", "float_pattern"), "["), "cut"),
+    "float_pattern_list": (_set_path(("cut", "float_pattern"), ["-?\\d+"]), "schema"),
+    "header_keyword_is_a_command": (_header_keyword_is_a_command, "cut"),
+    "vector_separator_is_arg_separator": (_separators_collide, "schema"),
+    "clause_note_names_nothing": (_note_names_nothing, "notes"),
+    "check_cites_no_clause": (_check_cites_no_clause, "clauses"),
+    "name_4096": (_long_name, "names"),
+    "string_padding_32": (_set_path(("meta", "string_padding"), 32), "padding"),
+    "range_min_negative_zero": (_range_min_negative_zero, "numbers"),
+    "tolerance_nan": (_tolerance_nan, "numbers"),
 }
 
 

@@ -165,6 +165,9 @@ BINDINGS = ("python", "kaitai", "c")
 # The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
 # fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
 REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai", "c")
+# The most sizes one repeated group may take (max - min + 1): the generated tables hold a layout
+# (Python, Kaitai) or a size case per n, and C's struct holds max items; the loader refuses more.
+REPEAT_MAX_SIZES = 4096
 
 
 def repeat_unsupported() -> tuple[str, ...]:
