@@ -3,15 +3,23 @@
 
 from __future__ import annotations
 
+from ...registry import MAX_FILE_BYTES
 from ..pipeline import State, define
 from ..problems import Problems
 
 
-@define("limits", "check", reads=("raw", "headers"))
+@define("limits", "check", reads=("raw", "headers", "record"))
 def LIMITS(ctx: Problems, st: State) -> None:
-    """limits.max_commands fits the command_count field of every header layout (the bindings size
-    their record tables by it: 2^40 made cbf-c a 289 TB static buffer)."""
+    """limits.max_commands fits the command_count field of every header layout, and the largest file
+    the limits allow fits the buffer a binding holds it in (registry.MAX_FILE_BYTES: 2^40 commands
+    made cbf-c a 289 TB static buffer)."""
     limits = st.raw["limits"]
+    head = max((h.size for h in st.headers.values()), default=0)
+    largest = head + (limits["max_commands"] + 1) * (st.record.head_size + limits["max_arg_size"])
+    if largest > MAX_FILE_BYTES:
+        ctx.fail(limits, f"limits: the largest file is {largest} bytes ({head} + ({limits['max_commands']} + 1) x "
+                         f"({st.record.head_size} + {limits['max_arg_size']})); the bindings hold a file of at most "
+                         f"{MAX_FILE_BYTES} (registry.MAX_FILE_BYTES)", "max_commands")
     for h in st.headers.values():
         f = h.by_role("command_count")
         if f is None or f.kind != "uint":
