@@ -92,15 +92,15 @@ def COMMAND_TABLE(ctx: Problems, st: State) -> None:
         for lay in c["layouts"]:
             _layout_refs(ctx, st, name, lay)
         for v in st.vids:
-            spans = [_span(lay) for lay in cmd.layouts if v in lay.versions]
-            if any(_meet(a, b) for i, a in enumerate(spans) for b in spans[i + 1:]):
+            spans = [size_span(lay) for lay in cmd.layouts if v in lay.versions]
+            if any(sizes_meet(a, b) for i, a in enumerate(spans) for b in spans[i + 1:]):
                 ctx.fail(c, f"{name}: two layouts of version {v} have the same size", "layouts")
 
 
 Span = tuple[int, int, int, int]  # the sizes start + step * n, lo <= n <= hi
 
 
-def _span(lay: Layout) -> Span:
+def size_span(lay: Layout) -> Span:
     """The sizes a layout takes, as a progression (never built: a repeat's max may be 1e9)."""
     rep = lay.repeated
     if rep is None or rep.repeat is None or rep.size <= 0:
@@ -112,7 +112,7 @@ def _ceil(a: int, b: int) -> int:
     return -(-a // b)
 
 
-def _meet(a: Span, b: Span) -> bool:
+def sizes_meet(a: Span, b: Span) -> bool:
     """Whether two progressions of sizes share a size: s1 + k1 n1 = s2 + k2 n2 with each n in its
     bounds, solved for n1 = r + (k2 / g) t, n2 = n0 + (k1 / g) t over the integers t."""
     (s1, k1, lo1, hi1), (s2, k2, lo2, hi2) = a, b
