@@ -18,7 +18,7 @@ a golden file), `broken:differ` (the two tools disagree), `broken:docs` (a docum
 anchor it lacks), `broken:cut-roundtrip` (the generated CUT
 writer's text of a golden file is refused, or read as other records, by the generated reader).
 
-    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR]
+    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR] [--loader-only]
     python tests/spec_fuzz.py case NAME        one fixed class (CLASSES), its outcome
 
 `run` prints one line per mutant (seed, index, what changed, outcome) and a closing line with
@@ -262,21 +262,35 @@ def _check_cites_no_clause(doc: Any) -> str:
     return f"checks[id={check['id']}].clause: 9.9.9 (not in meta.clauses)"
 
 
-# name -> (apply, the loader gate it needs, or None when no gate is needed: it must pass today)
-LOADER_GATE = "loader gate: issue #36 point 1"
+def _code_negative_zero(doc: Any) -> str:
+    cmd = doc["commands"][0]
+    cmd["code"] = -0.0
+    return f"commands[name={cmd['name']}].code: -0.0"
+
+
+def _tolerance_nan(doc: Any) -> str:
+    key = next(iter(doc["tolerances"]))
+    doc["tolerances"][key] = float("nan")
+    return f"tolerances.{key}: nan"
+
+
+# name -> (apply, the loader rule that refuses it (issue 36, point 1), or None when a build that
+# behaves alike is as good as a refusal)
 CLASSES: dict[str, tuple[Callable[[Any], str], str | None]] = {
-    "repeat_max_1e9": (_repeat_max_huge, LOADER_GATE),
-    "max_commands_2_40": (_set_path(("limits", "max_commands"), 1 << 40), LOADER_GATE),
-    "max_commands_float": (_set_path(("limits", "max_commands"), 3.5e38), LOADER_GATE),
-    "float_pattern_bracket": (_set_path(("cut", "float_pattern"), "["), LOADER_GATE),
-    "float_pattern_list": (_set_path(("cut", "float_pattern"), ["-?\\d+"]), LOADER_GATE),
-    "header_keyword_is_a_command": (_header_keyword_is_a_command, LOADER_GATE),
-    "vector_separator_is_arg_separator": (_separators_collide, LOADER_GATE),
-    "clause_note_names_nothing": (_note_names_nothing, LOADER_GATE),
-    "check_cites_no_clause": (_check_cites_no_clause, LOADER_GATE),
-    "name_4096": (_long_name, LOADER_GATE),
-    "string_padding_32": (_set_path(("meta", "string_padding"), 32), LOADER_GATE),
-    "range_min_negative_zero": (_range_min_negative_zero, None),  # cbf and cbf-c now print it alike
+    "repeat_max_1e9": (_repeat_max_huge, "repeat-groups"),
+    "max_commands_2_40": (_set_path(("limits", "max_commands"), 1 << 40), "limits"),
+    "max_commands_float": (_set_path(("limits", "max_commands"), 3.5e38), "schema"),
+    "code_negative_zero": (_code_negative_zero, "schema"),
+    "float_pattern_bracket": (_set_path(("cut", "float_pattern"), "["), "cut"),
+    "float_pattern_list": (_set_path(("cut", "float_pattern"), ["-?\\d+"]), "schema"),
+    "header_keyword_is_a_command": (_header_keyword_is_a_command, "cut"),
+    "vector_separator_is_arg_separator": (_separators_collide, "schema"),
+    "clause_note_names_nothing": (_note_names_nothing, "notes"),
+    "check_cites_no_clause": (_check_cites_no_clause, "clauses"),
+    "name_4096": (_long_name, "names"),
+    "string_padding_32": (_set_path(("meta", "string_padding"), 32), "padding"),
+    "range_min_negative_zero": (_range_min_negative_zero, "numbers"),
+    "tolerance_nan": (_tolerance_nan, "numbers"),
 }
 
 
@@ -448,23 +462,58 @@ def judge(mutant: Mutant, work: Path) -> Outcome:
 
 
 # -- the campaign ---------------------------------------------------------------------------------------
-def run(seed: int, count: int, jobs: int, keep: Path | None) -> int:
+def judge_loader(mutant: Mutant, work: Path) -> Outcome:
+    """The loader alone, in this process (``run --loader-only``: the gate of every mutant in seconds, not
+    the build): refused with its lines, accepted, or a crash (any exception but SpecError, or over
+    TIMEOUT["check"] seconds: a spec that makes the loader enumerate)."""
+    import signal
+
+    from cbfgen.loader import SpecError, load
+
+    work.mkdir(parents=True, exist_ok=True)
+    spec = work / "cbf.yaml"
+    spec.write_text(dump(mutant.doc), encoding="utf-8")
+
+    def late(_sig: int, _frame: Any) -> None:
+        raise TimeoutError(f"over {TIMEOUT['check']} s")
+
+    old = signal.signal(signal.SIGALRM, late)
+    signal.alarm(TIMEOUT["check"])
+    try:
+        load(spec)
+    except SpecError as exc:
+        return Outcome("refused", _first(str(exc)))
+    except BaseException as exc:  # noqa: BLE001 - any other end of the loader is the finding
+        return Outcome("crash:check-spec", f"{type(exc).__name__}: {exc}"[:200])
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+    return Outcome("accepted", "by the loader (not built: --loader-only)")
+
+
+def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False) -> int:
     base = Path(tempfile.mkdtemp(prefix="spec-fuzz-"))
     counts: Counter[str] = Counter()
     start = time.monotonic()
+    how = judge_loader if loader_only else judge
+    if loader_only:
+        sys.path.insert(0, str(REPO / "generator"))
+        jobs = 1  # in this process: the alarm is the main thread's
+        resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
 
     def one(item: tuple[int, Mutant]) -> tuple[int, Mutant, Outcome]:
         i, m = item
         work = base / f"m{i:05d}"
         try:
-            return i, m, judge(m, work)
+            return i, m, how(m, work)
         finally:
             shutil.rmtree(work, ignore_errors=True)
 
     bad = 0
     try:
         with ThreadPoolExecutor(max(1, jobs)) as pool:
-            for i, m, o in pool.map(one, mutants(seed, count)):
+            results = map(one, mutants(seed, count)) if loader_only else pool.map(one, mutants(seed, count))
+            for i, m, o in results:
                 counts[o.kind] += 1
                 bad += o.bad
                 print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
@@ -488,6 +537,8 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--count", type=int, default=1000)
     r.add_argument("--jobs", type=int, default=1)
     r.add_argument("--keep", type=Path, help="write each crashing or broken mutant's spec here")
+    r.add_argument("--loader-only", action="store_true",
+                   help="judge each mutant by the loader alone, in this process (refused, accepted, or a crash)")
     c = sub.add_parser("case", help="one fixed class of issue 36")
     c.add_argument("name", choices=sorted(CLASSES))
     a = p.parse_args(argv)
@@ -498,7 +549,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{m.what}: {o.kind}: {o.detail}")
             return 1 if o.bad else 0
     seed = a.seed if a.seed is not None else int(time.time())
-    return run(seed, a.count, a.jobs, a.keep)
+    return run(seed, a.count, a.jobs, a.keep, a.loader_only)
 
 
 if __name__ == "__main__":

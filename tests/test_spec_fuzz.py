@@ -3,9 +3,8 @@ found (tests/spec_fuzz.py CLASSES) and a fixed, derandomised sample of the gramm
 each either refused by `cbfgen --check-spec` with a line, or generated, compiled under the strict
 C flags, imported, and run over the golden files by cbf and cbf-c with identical output.
 
-The classes that need a loader gate issue 36 point 1 builds are strict xfails: they fail today
-(accepted and broken, or a crash of --check-spec) and pass, failing the xfail, when the gate
-lands. `make fuzz-spec` is the long random campaign."""
+Each class a loader gate of issue 36 point 1 refuses (CLASSES: the rule) must be refused with a
+line; the others must build alike. `make fuzz-spec` is the long random campaign."""
 
 from __future__ import annotations
 
@@ -14,7 +13,7 @@ from pathlib import Path
 
 import pytest
 import spec_fuzz
-from spec_fuzz import CLASSES, LOADER_GATE, class_mutant, judge, load_spec, mutants
+from spec_fuzz import CLASSES, class_mutant, judge, load_spec, mutants
 
 SAMPLE_SEED = 36
 SAMPLE_COUNT = 6
@@ -22,33 +21,19 @@ SAMPLE_COUNT = 6
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc not installed")
 
 
-# A class whose breakage the judge does not see: the generated documents of a check citing a clause
-# meta.clauses lacks hold no dead link of the form _dead_clause_links finds; the docs tests find it.
-UNSEEN = {"check_cites_no_clause"}
-
-
-def _case(name: str) -> object:
-    gate = CLASSES[name][1]
-    marks = [pytest.mark.xfail(strict=name not in UNSEEN, reason=gate)] if gate else []
-    return pytest.param(name, marks=marks, id=name)
-
-
-@pytest.mark.parametrize("name", [_case(n) for n in sorted(CLASSES)])
+@pytest.mark.parametrize("name", sorted(CLASSES))
 def test_a_class_of_issue_36_is_refused_or_built_alike(name: str, tmp_path: Path) -> None:
     m = class_mutant(name)
     outcome = judge(m, tmp_path)
+    rule = CLASSES[name][1]
     assert outcome.kind in ("refused", "accepted"), f"{m.what}: {outcome.kind}: {outcome.detail}"
+    if rule is not None:
+        assert outcome.kind == "refused", f"{m.what}: the loader's {rule} rule accepted it: {outcome.detail}"
     if outcome.kind == "refused":
         assert outcome.detail, "a refusal names what and where"
 
 
-# The sample's mutants that a loader gate of point 1 will refuse (index: the class of fault).
-SAMPLE_GATED: dict[int, str] = {1: "string_padding_32"}
-
-
-@pytest.mark.parametrize("index", [pytest.param(i, marks=[pytest.mark.xfail(strict=True, reason=LOADER_GATE)]
-                                                if i in SAMPLE_GATED else [], id=f"seed{SAMPLE_SEED}-{i}")
-                                   for i in range(SAMPLE_COUNT)])
+@pytest.mark.parametrize("index", [pytest.param(i, id=f"seed{SAMPLE_SEED}-{i}") for i in range(SAMPLE_COUNT)])
 def test_the_fixed_sample_is_refused_or_built_alike(index: int, tmp_path: Path) -> None:
     i, m = next((i, m) for i, m in mutants(SAMPLE_SEED, SAMPLE_COUNT) if i == index)
     outcome = judge(m, tmp_path)

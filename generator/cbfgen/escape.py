@@ -35,6 +35,7 @@ import unicodedata
 import yaml
 
 __all__ = [
+    "NAME_MAX",
     "RESERVED",
     "RESERVED_MEMBERS",
     "c_comment",
@@ -341,6 +342,12 @@ def _forms(name: str, what: str | None) -> set[str]:
     command = {name, name.lower(), name.upper(), camel}
     field = {name, name.lower(), camel, lower_camel}
     return command if what == "command" else field if what == "field" else command | field
+
+
+# The longest spec name (command, argument, field, check id) every binding takes: C99 (5.2.4.1)
+# guarantees 63 significant initial characters of an identifier, and the C binding's tables hold the
+# names in string literals, which its strict build bounds (-Woverlength-strings: 4,095).
+NAME_MAX = 63
 
 
 def keyword_clash(name: str, *, what: str | None = None) -> str | None:

@@ -165,6 +165,13 @@ BINDINGS = ("python", "kaitai", "c")
 # The bindings that read, write and validate a repeated argument group (issue 25, point 3: nb =
 # fixed + k*n); the loader refuses a `repeat:` while any binding is missing here.
 REPEAT_BINDINGS: tuple[str, ...] = ("python", "kaitai", "c")
+# The most sizes one repeated group may take (max - min + 1): the generated tables hold a layout
+# (Python, Kaitai) or a size case per n, and C's struct holds max items; the loader refuses more.
+REPEAT_MAX_SIZES = 4096
+# The largest CBF file the limits may allow (header + (max_commands + 1) x (record head + max_arg_size)):
+# cbf-c holds a file in one static buffer of that size (2^40 commands made it 289 TB, and every call
+# segfaulted), and cbf holds it in memory; the loader refuses limits past it.
+MAX_FILE_BYTES = 1 << 28
 
 
 def repeat_unsupported() -> tuple[str, ...]:

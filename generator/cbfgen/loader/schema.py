@@ -34,9 +34,21 @@ def schema() -> dict[str, Any]:
     return out
 
 
+def _integer(_checker: Any, value: Any) -> bool:
+    """An integer is an int: JSON Schema also takes 3.5e38, 1.0 and -0.0 (and a YAML bool is no int),
+    but a binding reads a code, a size or a limit as an integer, and an integer-valued float
+    breaks it (a class code of -0.0 crashed generation; 3.5e38 left cbf_tool.c uncompilable)."""
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+_VALIDATOR = jsonschema.validators.extend(
+    jsonschema.Draft202012Validator,
+    type_checker=jsonschema.Draft202012Validator.TYPE_CHECKER.redefine("integer", _integer))
+
+
 def shape_problems(raw: Map) -> list[Problem]:
-    """Every shape problem of the spec, by line."""
-    validator = jsonschema.Draft202012Validator(schema())
+    """Every shape problem of the spec, by line (an integer is an int, never a float: ``_integer``)."""
+    validator = _VALIDATOR(schema())
     errors = sorted(validator.iter_errors(raw), key=lambda e: (line_of_path(raw, e.absolute_path), str(e.message)))
     out = []
     for e in errors:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ...escape import keyword_clash
+from ...escape import NAME_MAX, keyword_clash
 from ...model import Command, Field
 from ...registry import GENERATED_NAMES, TYPES, unsupported, unsupported_in_head
 from ..pipeline import State, define
@@ -33,17 +33,23 @@ def CAPABILITIES(ctx: Problems, st: State) -> None:
     # Kaitai reads them by position when the layouts diverge before them (emit/kaitai).
 
 
-@define("names", "check", reads=("headers", "record", "commands"))
+@define("names", "check", reads=("headers", "record", "commands", "checks"))
 def NAMES(ctx: Problems, st: State) -> None:
     """Names every binding can use as identifiers, as the spec spells them: a command, argument or
     field name reserved in a binding's language (escape.keyword_clash) is refused, never renamed;
-    a header or record field may not take a name the generated code gives a member of its own."""
+    a header or record field may not take a name the generated code gives a member of its own; no
+    name is longer than every binding takes (escape.NAME_MAX)."""
     named: list[tuple[str, int, str, str]] = [(c.name, c.line, "command name", "command") for c in st.commands]
     named += [(a.name, a.line, f"{c.name} argument", "field")
               for c in st.commands for lay in c.layouts for a in lay.args]
     named += [(f.name, f.line, f"header {h.id} field", "field") for h in st.headers.values() for f in h.fields]
     named += [(f.name, f.line, "record field", "field") for f in st.record.fields]
     seen: set[tuple[str, int]] = set()
+    for name, line, what in [(n, ln, w) for n, ln, w, _ in named] + [(ch.id, ch.line, "check id") for ch in st.checks]:
+        if len(name) > NAME_MAX and (name, line) not in seen:
+            seen.add((name, line))
+            ctx.at(line, f"{what}: a name of {len(name)} characters; every binding takes at most {NAME_MAX} "
+                         f"(escape.NAME_MAX)")
     for name, line, what, kind in named:
         why = keyword_clash(name, what=kind)
         if why and (name, line) not in seen:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from ...model import Command, Layout
@@ -91,6 +92,36 @@ def COMMAND_TABLE(ctx: Problems, st: State) -> None:
         for lay in c["layouts"]:
             _layout_refs(ctx, st, name, lay)
         for v in st.vids:
-            sizes = [nb for lay in cmd.layouts if v in lay.versions for nb in lay.sizes]
-            if len(sizes) != len(set(sizes)):
+            spans = [size_span(lay) for lay in cmd.layouts if v in lay.versions]
+            if any(sizes_meet(a, b) for i, a in enumerate(spans) for b in spans[i + 1:]):
                 ctx.fail(c, f"{name}: two layouts of version {v} have the same size", "layouts")
+
+
+Span = tuple[int, int, int, int]  # the sizes start + step * n, lo <= n <= hi
+
+
+def size_span(lay: Layout) -> Span:
+    """The sizes a layout takes, as a progression (never built: a repeat's max may be 1e9)."""
+    rep = lay.repeated
+    if rep is None or rep.repeat is None or rep.size <= 0:
+        return lay.size, 1, 0, 0
+    return lay.size, rep.size, rep.repeat[0], rep.repeat[1]
+
+
+def _ceil(a: int, b: int) -> int:
+    return -(-a // b)
+
+
+def sizes_meet(a: Span, b: Span) -> bool:
+    """Whether two progressions of sizes share a size: s1 + k1 n1 = s2 + k2 n2 with each n in its
+    bounds, solved for n1 = r + (k2 / g) t, n2 = n0 + (k1 / g) t over the integers t."""
+    (s1, k1, lo1, hi1), (s2, k2, lo2, hi2) = a, b
+    g, d = math.gcd(k1, k2), s2 - s1
+    if d % g:
+        return False
+    m1, m2 = k1 // g, k2 // g
+    r = (d // g) * pow(m1, -1, m2) % m2 if m2 > 1 else 0
+    n0 = (k1 * r - d) // k2
+    t_lo = max(_ceil(lo1 - r, m2), _ceil(lo2 - n0, m1))
+    t_hi = min((hi1 - r) // m2, (hi2 - n0) // m1)
+    return t_lo <= t_hi

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ...model import Command, Field
-from ...registry import CHECK_KINDS, NUMERIC_KINDS, repeat_unsupported
+from ...registry import CHECK_KINDS, NUMERIC_KINDS, REPEAT_MAX_SIZES, repeat_unsupported
 from ..pipeline import State, define
 from ..problems import Problems
 from ..yaml_reader import Map
@@ -23,6 +23,10 @@ def _group(ctx: Problems, lay: Map, name: str, fixed: int, rep: Field, max_nb: i
                           f"ambiguous with a command that takes no arguments", "repeat")
     if rep.kind not in NUMERIC_KINDS:
         ctx.fail(raw_rep, f"{name} argument {rep.name}: only numbers repeat (type {rep.type})", "repeat")
+    if hi - lo >= REPEAT_MAX_SIZES:
+        ctx.fail(raw_rep, f"{name} argument {rep.name}: repeat min {lo} to max {hi} is {hi - lo + 1} sizes; the "
+                          f"bindings generate a layout per size, at most {REPEAT_MAX_SIZES} "
+                          f"(registry.REPEAT_MAX_SIZES)", "repeat")
     if fixed + rep.size * hi > max_nb:
         ctx.fail(raw_rep, f"{name} argument {rep.name}: {fixed} + {rep.size} x {hi} = {fixed + rep.size * hi} "
                           f"bytes exceeds limits.max_arg_size {max_nb}", "repeat")
