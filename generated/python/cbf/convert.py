@@ -415,95 +415,121 @@ def _stamp(cmd: T.CommandInfo, lay: T.LayoutInfo, raw: bytes, text: str) -> byte
     return pack_args(lay, lay.cls(**values))
 
 
-def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill: Mapping[str, str] | None = None,
-            profile: str = "default") -> Conversion:
-    """``model`` in version ``to_version``; raises ConvertError naming the record that cannot go."""
+def _target_version(to_version: str, chord_tol: float | None) -> float:
+    """The chord tolerance, once the target version is known writable and the tolerance usable."""
     if to_version not in T.VERSION_BY_ID or not T.VERSION_BY_ID[to_version].writable:
         writable = ", ".join(v.id for v in T.VERSIONS if v.writable)
         raise ConvertError(f"version {to_version} cannot be written (writable: {writable})")
     tol = T.TOL["position_mm"] if chord_tol is None else chord_tol
     if not (math.isfinite(tol) and tol > 0.0):
         raise ConvertError(f"--chord-tol must be a positive number of mm, not {chord_tol}")
-    fill = dict(fill or {})
-    src_v = model.version_id
-    if model.trailing:
-        raise ConvertError(f"{len(model.trailing)} trailing byte(s) after the last record; nothing to carry them")
-    tv = T.VERSION_BY_ID[to_version]
-    stamp_text = f"{tv.major}.{tv.minor if tv.minor is not None else 0}"
-    header = _header(model, to_version)
+    return tol
 
-    out: list[Record] = []
-    shape_open: tuple[int, T.LayoutInfo] | None = None  # the open shape's start: output index, layout
-    extra = 0  # segments added inside the open shape
-    worst, curves, segments = 0.0, 0, 0
-    filled: set[str] = set()
-    pos: G.Vec | None = None
-    for i, r in enumerate(model.records):
+
+class _Converter:
+    """The records of one conversion, one at a time: what is carried, what is linearised, the open
+    shape whose count grows with the segments added inside it, and the statistics."""
+
+    def __init__(self, src_v: str, to_version: str, tol: float, fill: dict[str, str], profile: str) -> None:
+        tv = T.VERSION_BY_ID[to_version]
+        self.src_v, self.to_version, self.tol, self.fill, self.profile = src_v, to_version, tol, fill, profile
+        self.stamp_text = f"{tv.major}.{tv.minor if tv.minor is not None else 0}"
+        self.out: list[Record] = []
+        self.shape_open: tuple[int, T.LayoutInfo] | None = None  # the open shape's start: output index, layout
+        self.extra = 0  # segments added inside the open shape
+        self.worst, self.curves, self.segments = 0.0, 0, 0
+        self.filled: set[str] = set()
+        self.pos: G.Vec | None = None
+
+    def record(self, i: int, r: Record) -> None:
         where = f"record {i}"
         cmd = r.command
         if cmd is None:
             raise ConvertError(f"{where}: unknown command code 0x{r.code:02X}", offset=r.offset)
-        src_lay = cmd.layout_for_size(src_v, len(r.raw_args))
+        src_lay = cmd.layout_for_size(self.src_v, len(r.raw_args))
         if src_lay is None:
             raise ConvertError(f"{where}: {cmd.name} of {len(r.raw_args)} argument bytes has no layout",
                                offset=r.offset)
         args = unpack_args(src_lay, r.raw_args)
-        curve = G.curve_of(cmd.motion, args, pos) if cmd.motion else None
+        curve = G.curve_of(cmd.motion, args, self.pos) if cmd.motion else None
         if cmd.motion and curve is None:
             raise ConvertError(f"{where}: {cmd.name} has non-finite values or a zero axis", offset=r.offset)
-        dst_lay = _layout_in(cmd, src_lay, to_version, profile)
+        dst_lay = _layout_in(cmd, src_lay, self.to_version, self.profile)
         if dst_lay is not None:
-            if _same_shape(src_lay, dst_lay):
-                raw = r.raw_args
-            else:
-                raw = pack_args(dst_lay, _carry(args, src_lay, dst_lay, fill, pos, f"{where} ({cmd.name})", filled))
-            raw = _stamp(cmd, dst_lay, raw, stamp_text) or raw
-            rec = Record(code=cmd.code, raw_args=raw, reserved=r.reserved)
-            if cmd.shape and cmd.shape["kind"] == "start":
-                shape_open, extra = (len(out), dst_lay), 0
-            elif cmd.shape and shape_open is not None:
-                if extra:
-                    at, start_lay = shape_open
-                    out[at] = _grown(out[at], start_lay, extra, where)
-                    rec = _grown(rec, dst_lay, extra, where)
-                shape_open = None
-            out.append(rec)
+            self._carry(where, r, cmd, src_lay, dst_lay, args)
+            if curve is not None:
+                self.pos = curve.end
         elif curve is not None:
-            target = _line_target(cmd, to_version)
-            if target is None:
-                raise ConvertError(f"{where}: {cmd.name} is not in version {to_version}, and no line command "
-                                   f"of it can carry its motion", offset=r.offset)
-            motion = cmd.motion or {}
-            try:
-                pts, dev = linearise(curve, tol, "end" in motion)  # an arc ends exactly where it says
-            except ConvertError as exc:  # name the record, as every other refusal does
-                raise ConvertError(f"{where}: {cmd.name} {exc}; raise --chord-tol", offset=r.offset) from None
-            if "through" in motion and not curve.curved:  # straight in binary32: its middle is still off
-                dev = max(dev, G.line_distance(G.vec(getattr(args, motion["through"])), curve.start, curve.end))
-            worst = max(worst, dev)
-            curves += 1
-            segments += len(pts) - 1
-            if shape_open is not None:
-                extra += len(pts) - 2
-            try:
-                out.extend(_segments(target, cmd, args, pts, r.reserved))
-            except ConvertError as exc:  # the record and the reason
-                raise ConvertError(f"{where}: {exc}", offset=r.offset) from None
-            if len(out) > T.LIMITS["max_commands"]:
-                raise ConvertError(f"{where}: the result passes {T.LIMITS['max_commands']} records, the most the "
-                                   f"count holds; raise --chord-tol", offset=r.offset)
-            pos = pts[-1]
+            self._linearise(where, r, cmd, args, curve)
         else:
-            raise ConvertError(f"{where}: {cmd.name} is not in version {to_version} and has no motion to carry "
-                               f"over", offset=r.offset)
-        if curve is not None and dst_lay is not None:
-            pos = curve.end
-    if len(out) > T.LIMITS["max_commands"]:
-        raise ConvertError(f"the result has {len(out)} records, at most {T.LIMITS['max_commands']} fit the count")
-    unused = sorted(set(fill) - filled)
+            raise ConvertError(f"{where}: {cmd.name} is not in version {self.to_version} and has no motion to "
+                               f"carry over", offset=r.offset)
+
+    def _carry(self, where: str, r: Record, cmd: T.CommandInfo, src_lay: T.LayoutInfo, dst_lay: T.LayoutInfo,
+               args: Any) -> None:
+        """A record the target version has: its arguments carried into the target's layout."""
+        if _same_shape(src_lay, dst_lay):
+            raw = r.raw_args
+        else:
+            raw = pack_args(dst_lay, _carry(args, src_lay, dst_lay, self.fill, self.pos, f"{where} ({cmd.name})",
+                                            self.filled))
+        raw = _stamp(cmd, dst_lay, raw, self.stamp_text) or raw
+        rec = Record(code=cmd.code, raw_args=raw, reserved=r.reserved)
+        if cmd.shape and cmd.shape["kind"] == "start":
+            self.shape_open, self.extra = (len(self.out), dst_lay), 0
+        elif cmd.shape and self.shape_open is not None:
+            if self.extra:
+                at, start_lay = self.shape_open
+                self.out[at] = _grown(self.out[at], start_lay, self.extra, where)
+                rec = _grown(rec, dst_lay, self.extra, where)
+            self.shape_open = None
+        self.out.append(rec)
+
+    def _linearise(self, where: str, r: Record, cmd: T.CommandInfo, args: Any, curve: Any) -> None:
+        """A motion the target version lacks: line segments of a line command it has."""
+        target = _line_target(cmd, self.to_version)
+        if target is None:
+            raise ConvertError(f"{where}: {cmd.name} is not in version {self.to_version}, and no line command "
+                               f"of it can carry its motion", offset=r.offset)
+        motion = cmd.motion or {}
+        try:
+            pts, dev = linearise(curve, self.tol, "end" in motion)  # an arc ends exactly where it says
+        except ConvertError as exc:  # name the record, as every other refusal does
+            raise ConvertError(f"{where}: {cmd.name} {exc}; raise --chord-tol", offset=r.offset) from None
+        if "through" in motion and not curve.curved:  # straight in binary32: its middle is still off
+            dev = max(dev, G.line_distance(G.vec(getattr(args, motion["through"])), curve.start, curve.end))
+        self.worst = max(self.worst, dev)
+        self.curves += 1
+        self.segments += len(pts) - 1
+        if self.shape_open is not None:
+            self.extra += len(pts) - 2
+        try:
+            self.out.extend(_segments(target, cmd, args, pts, r.reserved))
+        except ConvertError as exc:  # the record and the reason
+            raise ConvertError(f"{where}: {exc}", offset=r.offset) from None
+        if len(self.out) > T.LIMITS["max_commands"]:
+            raise ConvertError(f"{where}: the result passes {T.LIMITS['max_commands']} records, the most the "
+                               f"count holds; raise --chord-tol", offset=r.offset)
+        self.pos = pts[-1]
+
+
+def convert(model: Cbf, to_version: str, *, chord_tol: float | None = None, fill: Mapping[str, str] | None = None,
+            profile: str = "default") -> Conversion:
+    """``model`` in version ``to_version``; raises ConvertError naming the record that cannot go."""
+    tol = _target_version(to_version, chord_tol)
+    src_v = model.version_id
+    if model.trailing:
+        raise ConvertError(f"{len(model.trailing)} trailing byte(s) after the last record; nothing to carry them")
+    header = _header(model, to_version)
+    c = _Converter(src_v, to_version, tol, dict(fill or {}), profile)
+    for i, r in enumerate(model.records):
+        c.record(i, r)
+    if len(c.out) > T.LIMITS["max_commands"]:
+        raise ConvertError(f"the result has {len(c.out)} records, at most {T.LIMITS['max_commands']} fit the count")
+    unused = sorted(set(c.fill) - c.filled)
     if unused:
         raise ConvertError(f"--fill {unused[0]}: no record of this file needs it")
-    return Conversion(Cbf(header, out), src_v, to_version, tol, worst, curves, segments, len(filled))
+    return Conversion(Cbf(header, c.out), src_v, to_version, tol, c.worst, c.curves, c.segments, len(c.filled))
 
 
 def _grown(rec: Record, lay: T.LayoutInfo, extra: int, where: str) -> Record:
