@@ -289,27 +289,22 @@ class _Draw:
                 for n, v in zip(names, sorted(a[n] for n in names), strict=True):
                     a[n] = v
         if self.cutters is not None and cmd.cutter is not None:
-            role = cmd.cutter
-            name = _pick(self.draw, self._cutter_names(cmd, lay))
-            a[role[CUTTER_NAME]] = name.encode("ascii")
-            for key, ref in zip(CUTTER_VALUES, self.cutters[name], strict=True):  # the table's columns
-                if role.get(key) in a:
-                    a[role[key]] = _f32(ref)
+            self._cutter(cmd, lay, a, self.cutters)
         self._geometry(cmd, lay, a)
         for f in lay.args:
             if f.kind == "float":
                 for key in (self.rules.limits.get((cmd.name, f.name)) or _Limits()).monotone:
                     self.state.prev[key] = a[f.name]
-        vals: list[Any] = []
-        for f in lay.args:
-            v = a[f.name]
-            if f.kind == "string":
-                v = v + T.PAD * (f.size - len(v))
-            if f.per > 1:
-                vals.extend(x for item in v for x in item)
-            else:
-                vals.extend(v if f.kind == "float" and f.count > 1 else [v])
-        return lay.struct.pack(*vals)
+        return _pack(lay, a)
+
+    def _cutter(self, cmd: T.CommandInfo, lay: T.LayoutInfo, a: dict[str, Any], cutters: Any) -> None:
+        """A cutter of the table, by name, with the table's values for the arguments it sets."""
+        role = cmd.cutter or {}
+        name = _pick(self.draw, self._cutter_names(cmd, lay))
+        a[role[CUTTER_NAME]] = name.encode("ascii")
+        for key, ref in zip(CUTTER_VALUES, cutters[name], strict=True):  # the table's columns
+            if role.get(key) in a:
+                a[role[key]] = _f32(ref)
 
     def _cutter_names(self, cmd: T.CommandInfo, lay: T.LayoutInfo) -> list[str]:
         role = cmd.cutter or {}
@@ -660,3 +655,16 @@ def mutations(files: st.SearchStrategy[bytes] | None = None, *, max_steps: int =
 
     return build()
 
+
+def _pack(lay: T.LayoutInfo, a: Mapping[str, Any]) -> bytes:
+    """The argument bytes of the values ``a`` (strings padded, vectors and groups flattened)."""
+    vals: list[Any] = []
+    for f in lay.args:
+        v = a[f.name]
+        if f.kind == "string":
+            v = v + T.PAD * (f.size - len(v))
+        if f.per > 1:
+            vals.extend(x for item in v for x in item)
+        else:
+            vals.extend(v if f.kind == "float" and f.count > 1 else [v])
+    return lay.struct.pack(*vals)
