@@ -114,86 +114,105 @@ class Sequence:
 Node = Scalar | Mapping | Sequence
 
 
+class _Tree:
+    """The tree of one YAML document, built event by event under the shared rules (the limits and
+    refusals of yaml_tree, in the order the events come)."""
+
+    def __init__(self, text: str, where: str, max_depth: int) -> None:
+        self.text, self.where, self.max_depth = text, where, max_depth
+        self.max_keys = RULES["yaml"]["max_keys"]
+        self.stack: list[Mapping | Sequence] = []
+        self.pending_key: list[Scalar | None] = []  # per open mapping: the key awaiting its value
+        self.flows: list[bool] = []  # per open collection: whether it is a flow one
+        self.flow_line: int | None = None  # the line of the outermost open flow collection
+        self.root: Node | None = None
+        self.documents = 0
+
+    def fail(self, line: int, what: str) -> OptionFileError:
+        return OptionFileError(f"{self.where}: line {line}: {what}")
+
+    def put(self, node: Node) -> None:
+        if not self.stack:
+            self.root = node
+            return
+        top = self.stack[-1]
+        if isinstance(top, Sequence):
+            top.items.append(node)
+            return
+        key = self.pending_key[-1]
+        if key is None:
+            if not isinstance(node, Scalar):
+                raise self.fail(node.line, "a key must be a plain value (complex key)")
+            if len(top.pairs) >= self.max_keys:
+                raise self.fail(node.line, f"more than {self.max_keys} keys in one mapping (limit max_keys)")
+            self.pending_key[-1] = node
+            return
+        top.pairs.append((key, node))
+        self.pending_key[-1] = None
+
+    def event(self, ev: Any, yaml: Any) -> None:
+        line = ev.start_mark.line + 1
+        if isinstance(ev, (yaml.StreamStartEvent, yaml.StreamEndEvent, yaml.DocumentEndEvent)):
+            return
+        if isinstance(ev, yaml.DocumentStartEvent):
+            self.documents += 1
+            if self.documents > 1:
+                raise self.fail(line, "more than one document")
+            return
+        self._allowed(ev, line, yaml)
+        if isinstance(ev, yaml.ScalarEvent):
+            if ev.end_mark.line != ev.start_mark.line or ev.style in ("|", ">"):
+                raise self.fail(line, "a value over more than one line (one-line values only)")
+            self.put(Scalar(ev.value, not ev.style, line))
+        elif isinstance(ev, yaml.CollectionStartEvent):
+            self._open(ev, line, yaml)
+        elif isinstance(ev, yaml.CollectionEndEvent):
+            self.stack.pop()
+            self.pending_key.pop()
+            self.flows.pop()
+            if not any(self.flows):
+                self.flow_line = None
+
+    def _allowed(self, ev: Any, line: int, yaml: Any) -> None:
+        """What no event may be: past its flow collection's line, an anchor or alias, tagged, an explicit key."""
+        if self.flow_line is not None and line != self.flow_line:
+            raise self.fail(self.flow_line, "a value over more than one line (one-line values only)")
+        if isinstance(ev, yaml.AliasEvent) or getattr(ev, "anchor", None) is not None:
+            raise self.fail(line, "anchors and aliases are not allowed (limit: none)")
+        if getattr(ev, "tag", None) is not None and not isinstance(ev, yaml.CollectionEndEvent):
+            raise self.fail(line, "tags are not allowed")
+        if isinstance(ev, (yaml.ScalarEvent, yaml.CollectionStartEvent)) and \
+                _explicit_key(self.text, ev.start_mark.index):
+            raise self.fail(line, "a key must be a plain value (complex key)")
+
+    def _open(self, ev: Any, line: int, yaml: Any) -> None:
+        if self.stack and isinstance(self.stack[-1], Mapping) and self.pending_key[-1] is None:
+            raise self.fail(line, "a key must be a plain value (complex key)")
+        if len(self.stack) >= self.max_depth:
+            raise self.fail(line, f"nested deeper than {self.max_depth} levels (limit max_depth)")
+        node: Mapping | Sequence = Mapping(line) if isinstance(ev, yaml.MappingStartEvent) else Sequence(line)
+        self.put(node)
+        self.stack.append(node)
+        self.pending_key.append(None)
+        self.flows.append(bool(ev.flow_style))
+        if ev.flow_style and self.flow_line is None:
+            self.flow_line = line
+
+
 def yaml_tree(text: str, where: str, max_depth: int) -> Node | None:
     """The one document of ``text`` as a tree (None when it is empty), by the shared rules."""
     import yaml
 
     loader: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    max_keys = RULES["yaml"]["max_keys"]
-    stack: list[Mapping | Sequence] = []
-    pending_key: list[Scalar | None] = []  # per open mapping: the key awaiting its value
-    flows: list[bool] = []  # per open collection: whether it is a flow one
-    flow_line: int | None = None  # the line of the outermost open flow collection
-    root: Node | None = None
-    documents = 0
-
-    def fail(line: int, what: str) -> OptionFileError:
-        return OptionFileError(f"{where}: line {line}: {what}")
-
-    def put(node: Node) -> None:
-        nonlocal root
-        if not stack:
-            root = node
-        elif isinstance(stack[-1], Sequence):
-            stack[-1].items.append(node)
-        else:
-            key = pending_key[-1]
-            if key is None:
-                if not isinstance(node, Scalar):
-                    raise fail(node.line, "a key must be a plain value (complex key)")
-                if len(stack[-1].pairs) >= max_keys:
-                    raise fail(node.line, f"more than {max_keys} keys in one mapping (limit max_keys)")
-                pending_key[-1] = node
-                return
-            stack[-1].pairs.append((key, node))
-            pending_key[-1] = None
-
+    tree = _Tree(text, where, max_depth)
     try:
         for ev in yaml.parse(text, Loader=loader):
-            line = ev.start_mark.line + 1
-            if isinstance(ev, (yaml.StreamStartEvent, yaml.StreamEndEvent, yaml.DocumentEndEvent)):
-                continue
-            if isinstance(ev, yaml.DocumentStartEvent):
-                documents += 1
-                if documents > 1:
-                    raise fail(line, "more than one document")
-                continue
-            if flow_line is not None and line != flow_line:
-                raise fail(flow_line, "a value over more than one line (one-line values only)")
-            if isinstance(ev, yaml.AliasEvent) or getattr(ev, "anchor", None) is not None:
-                raise fail(line, "anchors and aliases are not allowed (limit: none)")
-            if getattr(ev, "tag", None) is not None and not isinstance(ev, yaml.CollectionEndEvent):
-                raise fail(line, "tags are not allowed")
-            if isinstance(ev, (yaml.ScalarEvent, yaml.CollectionStartEvent)) and \
-                    _explicit_key(text, ev.start_mark.index):
-                raise fail(line, "a key must be a plain value (complex key)")
-            if isinstance(ev, yaml.ScalarEvent):
-                if ev.end_mark.line != ev.start_mark.line or ev.style in ("|", ">"):
-                    raise fail(line, "a value over more than one line (one-line values only)")
-                put(Scalar(ev.value, not ev.style, line))
-            elif isinstance(ev, yaml.CollectionStartEvent):
-                if stack and isinstance(stack[-1], Mapping) and pending_key[-1] is None:
-                    raise fail(line, "a key must be a plain value (complex key)")
-                if len(stack) >= max_depth:
-                    raise fail(line, f"nested deeper than {max_depth} levels (limit max_depth)")
-                node: Mapping | Sequence = Mapping(line) if isinstance(ev, yaml.MappingStartEvent) else Sequence(line)
-                put(node)
-                stack.append(node)
-                pending_key.append(None)
-                flows.append(bool(ev.flow_style))
-                if ev.flow_style and flow_line is None:
-                    flow_line = line
-            elif isinstance(ev, yaml.CollectionEndEvent):
-                stack.pop()
-                pending_key.pop()
-                flows.pop()
-                if not any(flows):
-                    flow_line = None
+            tree.event(ev, yaml)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         at = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
         raise OptionFileError(f"{where}: {at}not YAML ({getattr(exc, 'problem', None) or exc})") from None
-    return root
+    return tree.root
 
 
 def _explicit_key(text: str, at: int) -> bool:
