@@ -377,7 +377,7 @@ def test_a_kind_the_c_engine_lacks_fails_the_build(what: str, tmp_path: Path,
         rule = dataclasses.replace(CHECK_KINDS["trailing"], name="zz_new_pass", doc="a new file rule")
         assert not rule.targeted
         monkeypatch.setattr(registry, "CHECK_KINDS", dict(CHECK_KINDS, zz_new_pass=rule))
-        name = "CBF__JUDGED_ZZ_NEW_PASS"
+        name = "CBF__JUDGED_CBF__KIND_ZZ_NEW_PASS"
     else:
         monkeypatch.setattr(registry, "FIELD_KINDS", (*FIELD_KINDS, "zz_new_type"))
         name = "CBF_KIND_ZZ_NEW_TYPE"

@@ -4216,15 +4216,19 @@ typedef struct cbf__vctx {
 /* The check kinds the engine judges in its own passes (validate.c, this file, machine.c, group_checks.c), not
  * through a kernel table (validator_layouts.c.j2 holds the targeted kinds' kernels, cbf__<kind>_at). cbf.h
  * checks this list against the registry when it compiles: a kind the registry gains that neither a kernel
- * table nor this list holds fails the build, naming it (CBF__JUDGED_<KIND> undeclared); a kind listed here
+ * table nor this list holds fails the build, naming it (CBF__JUDGED_CBF__KIND_<KIND> undeclared); a kind listed here
  * that the registry no longer has fails too (CBF__KIND_<KIND> undeclared). Adding a kind here is adding
- * its pass: test_bindings holds each kind's constant to a use beyond its enum. */
-#define CBF__PASS_KINDS(X)                                                                                         \
-    X(TRUNCATED_HEADER) X(TRUNCATED_RECORD) X(PART_NUMBER) X(DESCRIPTOR_WORD) X(CUTTER_TABLE) X(FILE_CHECKSUM)    \
-    X(COMMAND_COUNT) X(HEADER_CHECKSUM) X(MAGIC) X(SEQUENCE) X(CODE_COPY) X(ARG_SIZE) X(ARG_CHECKSUM)             \
-    X(CONTINUITY) X(AVAILABILITY) X(VERSION) X(UNKNOWN_CODE) X(TRAILING) X(RESERVED_BYTE) X(STRING_TAIL)          \
-    X(STRING_ASCII) X(FINITE) X(ORIENTATION) X(SHAPE) X(MACHINE_LIMITS) X(DEPRECATED)
-#define CBF__JUDGED(k) CBF__JUDGED_##k = CBF__KIND_##k,
+ * its pass: test_bindings holds each kind's constant to a use beyond its enum. The list spells the
+ * constants whole (CBF__KIND_<KIND>): a kind's bare name may be a command's (version), which no C source names. */
+#define CBF__PASS_KINDS(X)                                                                                        \
+    X(CBF__KIND_TRUNCATED_HEADER) X(CBF__KIND_TRUNCATED_RECORD) X(CBF__KIND_PART_NUMBER)                          \
+    X(CBF__KIND_DESCRIPTOR_WORD) X(CBF__KIND_CUTTER_TABLE) X(CBF__KIND_FILE_CHECKSUM) X(CBF__KIND_COMMAND_COUNT)  \
+    X(CBF__KIND_HEADER_CHECKSUM) X(CBF__KIND_MAGIC) X(CBF__KIND_SEQUENCE) X(CBF__KIND_CODE_COPY)                  \
+    X(CBF__KIND_ARG_SIZE) X(CBF__KIND_ARG_CHECKSUM) X(CBF__KIND_CONTINUITY) X(CBF__KIND_AVAILABILITY)             \
+    X(CBF__KIND_VERSION) X(CBF__KIND_UNKNOWN_CODE) X(CBF__KIND_TRAILING) X(CBF__KIND_RESERVED_BYTE)               \
+    X(CBF__KIND_STRING_TAIL) X(CBF__KIND_STRING_ASCII) X(CBF__KIND_FINITE) X(CBF__KIND_ORIENTATION)               \
+    X(CBF__KIND_SHAPE) X(CBF__KIND_MACHINE_LIMITS) X(CBF__KIND_DEPRECATED)
+#define CBF__JUDGED(k) CBF__JUDGED_##k = k,
 #define CBF__ONE_MORE(k) +1
 enum { CBF__PASS_KINDS(CBF__JUDGED) CBF__JUDGED__COUNT = 0 CBF__PASS_KINDS(CBF__ONE_MORE) };
 
@@ -4848,7 +4852,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4852 "cbf.h"
+#line 4856 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5014,7 +5018,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5018 "cbf.h"
+#line 5022 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5051,7 +5055,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5055 "cbf.h"
+#line 5059 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -5072,7 +5076,7 @@ static const cbf__target_kernel cbf__target_kernels[31 + 1] = { NULL, NULL, NULL
 /* Every check kind no kernel table holds is judged by one of the engine's passes (CBF__PASS_KINDS,
  * runtime/validator.c), once: a kind the registry gains and the engine does not judge fails the build here,
  * naming it. */
-typedef char cbf__every_kind_judged_once[(CBF__JUDGED__COUNT == 26 && CBF__JUDGED_TRUNCATED_HEADER > 0 && CBF__JUDGED_TRUNCATED_RECORD > 0 && CBF__JUDGED_PART_NUMBER > 0 && CBF__JUDGED_DESCRIPTOR_WORD > 0 && CBF__JUDGED_CUTTER_TABLE > 0 && CBF__JUDGED_FILE_CHECKSUM > 0 && CBF__JUDGED_COMMAND_COUNT > 0 && CBF__JUDGED_HEADER_CHECKSUM > 0 && CBF__JUDGED_MAGIC > 0 && CBF__JUDGED_SEQUENCE > 0 && CBF__JUDGED_CODE_COPY > 0 && CBF__JUDGED_ARG_SIZE > 0 && CBF__JUDGED_ARG_CHECKSUM > 0 && CBF__JUDGED_CONTINUITY > 0 && CBF__JUDGED_AVAILABILITY > 0 && CBF__JUDGED_VERSION > 0 && CBF__JUDGED_UNKNOWN_CODE > 0 && CBF__JUDGED_TRAILING > 0 && CBF__JUDGED_RESERVED_BYTE > 0 && CBF__JUDGED_STRING_TAIL > 0 && CBF__JUDGED_STRING_ASCII > 0 && CBF__JUDGED_FINITE > 0 && CBF__JUDGED_ORIENTATION > 0 && CBF__JUDGED_SHAPE > 0 && CBF__JUDGED_MACHINE_LIMITS > 0 && CBF__JUDGED_DEPRECATED > 0) ? 1 : -1];
+typedef char cbf__every_kind_judged_once[(CBF__JUDGED__COUNT == 26 && CBF__JUDGED_CBF__KIND_TRUNCATED_HEADER > 0 && CBF__JUDGED_CBF__KIND_TRUNCATED_RECORD > 0 && CBF__JUDGED_CBF__KIND_PART_NUMBER > 0 && CBF__JUDGED_CBF__KIND_DESCRIPTOR_WORD > 0 && CBF__JUDGED_CBF__KIND_CUTTER_TABLE > 0 && CBF__JUDGED_CBF__KIND_FILE_CHECKSUM > 0 && CBF__JUDGED_CBF__KIND_COMMAND_COUNT > 0 && CBF__JUDGED_CBF__KIND_HEADER_CHECKSUM > 0 && CBF__JUDGED_CBF__KIND_MAGIC > 0 && CBF__JUDGED_CBF__KIND_SEQUENCE > 0 && CBF__JUDGED_CBF__KIND_CODE_COPY > 0 && CBF__JUDGED_CBF__KIND_ARG_SIZE > 0 && CBF__JUDGED_CBF__KIND_ARG_CHECKSUM > 0 && CBF__JUDGED_CBF__KIND_CONTINUITY > 0 && CBF__JUDGED_CBF__KIND_AVAILABILITY > 0 && CBF__JUDGED_CBF__KIND_VERSION > 0 && CBF__JUDGED_CBF__KIND_UNKNOWN_CODE > 0 && CBF__JUDGED_CBF__KIND_TRAILING > 0 && CBF__JUDGED_CBF__KIND_RESERVED_BYTE > 0 && CBF__JUDGED_CBF__KIND_STRING_TAIL > 0 && CBF__JUDGED_CBF__KIND_STRING_ASCII > 0 && CBF__JUDGED_CBF__KIND_FINITE > 0 && CBF__JUDGED_CBF__KIND_ORIENTATION > 0 && CBF__JUDGED_CBF__KIND_SHAPE > 0 && CBF__JUDGED_CBF__KIND_MACHINE_LIMITS > 0 && CBF__JUDGED_CBF__KIND_DEPRECATED > 0) ? 1 : -1];
 /* CHECKPOINT: 32 argument bytes */
 CBF__HOT static void cbf__layout_checks_checkpoint(cbf__vctx *v, const uint8_t *a, long rec, size_t off)
 {
@@ -6037,7 +6041,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6041 "cbf.h"
+#line 6045 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

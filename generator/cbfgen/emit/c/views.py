@@ -742,7 +742,9 @@ def _candidates(spec: Spec, c: Command, first: int) -> list[list[int]]:
 
 
 def _role_macro(prefix: str, role: dict[str, str] | None) -> str:
-    return f"{prefix}_" + (macro(role["kind"]) if role else "NONE")
+    """The enum constant of a role's kind (``prefix`` ends in "_": the orientation role's prefix is
+    not the word of the command of that name, which no emitter may spell)."""
+    return prefix + (macro(role["kind"]) if role else "NONE")
 
 
 def _command_row(spec: Spec, ci: int, layouts: list[LayoutRow], first: int, cands: list[list[int]],
@@ -753,8 +755,8 @@ def _command_row(spec: Spec, ci: int, layouts: list[LayoutRow], first: int, cand
         index=ci, name=c.name, macro=macro(c.name), code=c.code, doc=c.doc, clause=c.clause,
         first=first, nlayouts=len(c.layouts),
         cands=tuple(tuple(row + [-1] * (max_layouts - len(row))) for row in cands),
-        motion=_role_macro("MOTION", c.motion), orient=_role_macro("ORIENT", c.orientation),
-        shape=_role_macro("SHAPE", c.shape), cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
+        motion=_role_macro("MOTION_", c.motion), orient=_role_macro("ORIENT_", c.orientation),
+        shape=_role_macro("SHAPE_", c.shape), cutter=int(bool(c.cutter)), vmask=_vmask(c.versions), layouts=mine,
         per_version=tuple(VersionLayouts(macro=macro(v.id), layouts=tuple(x for x in mine if v.id in x.versions))
                           for v in spec.versions),
         first_ct=first_ct[ci], n_ct=first_ct[ci + 1] - first_ct[ci],

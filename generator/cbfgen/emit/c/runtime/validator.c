@@ -28,15 +28,19 @@ typedef struct cbf__vctx {
 /* The check kinds the engine judges in its own passes (validate.c, this file, machine.c, group_checks.c), not
  * through a kernel table (validator_layouts.c.j2 holds the targeted kinds' kernels, cbf__<kind>_at). cbf.h
  * checks this list against the registry when it compiles: a kind the registry gains that neither a kernel
- * table nor this list holds fails the build, naming it (CBF__JUDGED_<KIND> undeclared); a kind listed here
+ * table nor this list holds fails the build, naming it (CBF__JUDGED_CBF__KIND_<KIND> undeclared); a kind listed here
  * that the registry no longer has fails too (CBF__KIND_<KIND> undeclared). Adding a kind here is adding
- * its pass: test_bindings holds each kind's constant to a use beyond its enum. */
-#define CBF__PASS_KINDS(X)                                                                                         \
-    X(TRUNCATED_HEADER) X(TRUNCATED_RECORD) X(PART_NUMBER) X(DESCRIPTOR_WORD) X(CUTTER_TABLE) X(FILE_CHECKSUM)    \
-    X(COMMAND_COUNT) X(HEADER_CHECKSUM) X(MAGIC) X(SEQUENCE) X(CODE_COPY) X(ARG_SIZE) X(ARG_CHECKSUM)             \
-    X(CONTINUITY) X(AVAILABILITY) X(VERSION) X(UNKNOWN_CODE) X(TRAILING) X(RESERVED_BYTE) X(STRING_TAIL)          \
-    X(STRING_ASCII) X(FINITE) X(ORIENTATION) X(SHAPE) X(MACHINE_LIMITS) X(DEPRECATED)
-#define CBF__JUDGED(k) CBF__JUDGED_##k = CBF__KIND_##k,
+ * its pass: test_bindings holds each kind's constant to a use beyond its enum. The list spells the
+ * constants whole (CBF__KIND_<KIND>): a kind's bare name may be a command's (version), which no C source names. */
+#define CBF__PASS_KINDS(X)                                                                                        \
+    X(CBF__KIND_TRUNCATED_HEADER) X(CBF__KIND_TRUNCATED_RECORD) X(CBF__KIND_PART_NUMBER)                          \
+    X(CBF__KIND_DESCRIPTOR_WORD) X(CBF__KIND_CUTTER_TABLE) X(CBF__KIND_FILE_CHECKSUM) X(CBF__KIND_COMMAND_COUNT)  \
+    X(CBF__KIND_HEADER_CHECKSUM) X(CBF__KIND_MAGIC) X(CBF__KIND_SEQUENCE) X(CBF__KIND_CODE_COPY)                  \
+    X(CBF__KIND_ARG_SIZE) X(CBF__KIND_ARG_CHECKSUM) X(CBF__KIND_CONTINUITY) X(CBF__KIND_AVAILABILITY)             \
+    X(CBF__KIND_VERSION) X(CBF__KIND_UNKNOWN_CODE) X(CBF__KIND_TRAILING) X(CBF__KIND_RESERVED_BYTE)               \
+    X(CBF__KIND_STRING_TAIL) X(CBF__KIND_STRING_ASCII) X(CBF__KIND_FINITE) X(CBF__KIND_ORIENTATION)               \
+    X(CBF__KIND_SHAPE) X(CBF__KIND_MACHINE_LIMITS) X(CBF__KIND_DEPRECATED)
+#define CBF__JUDGED(k) CBF__JUDGED_##k = k,
 #define CBF__ONE_MORE(k) +1
 enum { CBF__PASS_KINDS(CBF__JUDGED) CBF__JUDGED__COUNT = 0 CBF__PASS_KINDS(CBF__ONE_MORE) };
 

@@ -44,6 +44,13 @@ function runCommand(args, files) {
     for (let i = 0; i < n; i += 1) list.push([v.getUint32(ptr + 8 * i, true), v.getUint32(ptr + 8 * i + 4, true)]);
     return list;
   };
+  const filestat = (ptr, type, size) => { // WASI filestat: dev, ino, filetype, nlink, size, 3 times
+    const v = view();
+    for (let k = 0; k < 64; k += 8) v.setBigUint64(ptr + k, 0n, true);
+    v.setUint8(ptr + 16, type);
+    v.setBigUint64(ptr + 24, 1n, true);
+    v.setBigUint64(ptr + 32, BigInt(size), true);
+  };
   const imports = {
     args_sizes_get(countPtr, sizePtr) {
       view().setUint32(countPtr, argv.length, true);
@@ -81,6 +88,20 @@ function runCommand(args, files) {
       return ERRNO.SUCCESS;
     },
     fd_fdstat_set_flags() { return ERRNO.SUCCESS; },
+    // The engine opens regular files only (tools/files.c: stat, then fstat): a chosen file is one.
+    fd_filestat_get(fd, ptr) {
+      const type = fd <= 2 ? 2 : fd === 3 ? 3 : open.has(fd) ? 4 : -1;
+      if (type < 0) return ERRNO.BADF;
+      filestat(ptr, type, type === 4 ? open.get(fd).data.length : 0);
+      return ERRNO.SUCCESS;
+    },
+    path_filestat_get(dirFd, flags, pathPtr, pathLen, ptr) {
+      if (dirFd !== 3) return ERRNO.BADF;
+      const name = new TextDecoder().decode(bytes().slice(pathPtr, pathPtr + pathLen));
+      if (!files.has(name)) return ERRNO.NOENT;
+      filestat(ptr, 4, files.get(name).length);
+      return ERRNO.SUCCESS;
+    },
     path_open(dirFd, dirFlags, pathPtr, pathLen, oflags, rightsBase, rightsInherit, fdFlags, fdPtr) {
       if (dirFd !== 3) return ERRNO.BADF;
       const name = new TextDecoder().decode(bytes().slice(pathPtr, pathPtr + pathLen));
