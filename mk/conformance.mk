@@ -34,6 +34,18 @@ $(STAMPS)/conformance: $(CONFORMANCE_INPUTS)
 	@$(MAKE) generate-py >/dev/null
 	@mkdir -p $(@D) && touch $@
 
+# After a revision: every binding runs, each failure list is rewritten to its failing cases by
+# reason (a class, or a listed `~ REGEX` that still matches; conformance/runner/reasons.py) and its
+# diff is printed to review before committing. A list naming a case that now passes, or one
+# no golden case has, loses it; a new failure gains its class.
+.PHONY: failures
+failures: $(CONFORMANCE_DEPS)  ## rewrite conformance/failures/*.txt to this run's failures by reason; prints the diff to review
+	@$(if $(strip $(CONFORMANCE_BUILD)),$(MAKE) $(CONFORMANCE_BUILD),true)
+	$(PY) -m conformance.runner --fix
+	@$(MAKE) generate-py >/dev/null
+	@mkdir -p $(STAMPS) && touch $(STAMPS)/conformance
+	@git diff --stat -- conformance/failures 2>/dev/null || true
+
 # The committed report and docs are the published evidence: CI fails when the
 # run it just made differs from them (run `make conformance` and commit both).
 .PHONY: check-report

@@ -14,7 +14,9 @@ import yaml
 from conftest import load_yaml
 
 from conformance.runner.compare import f32_bits, findings_difference, first_difference
-from conformance.runner.run import load_cases, read_failures, run_case, write_failures
+from conformance.runner.reasons import failure_class, fixed_entries, matches
+from conformance.runner.run import (FailureListError, judge, kind, load_cases, read_failures, run_case,
+                                    write_failures)
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -160,3 +162,75 @@ def test_encode_sends_back_what_the_decode_step_got() -> None:
     assert ops.count("decode") == 1 and "encode" in ops
     decoded = testee.handle({"op": "decode", "file": str(with_decode.cbf)})["result"]
     assert all(r["json"] == decoded for r in rec.asked if r["op"] == "encode")
+
+
+# -- known failures by case and reason (issue 37, point 3) ---------------------------------
+def _kaitai_refusal(path: str) -> str:
+    return ("decode: failed to decode: {'kind': 'validation', 'offset': 0, 'message': "
+            f"'{path}: at pos 128: validation failed: not equal, expected 1, but got 2'}}")
+
+
+def test_an_entry_by_reason_survives_a_moved_message() -> None:
+    """A revision that moves a Kaitai message (seq/3 -> seq/6) keeps the entry's class: still an
+    expected failure; the exact message of before would not have matched."""
+    before, after = _kaitai_refusal("/types/header_v2/seq/3"), _kaitai_refusal("/types/header_v2/seq/6")
+    entry = fixed_entries({"check.x": before}, {})["check.x"]
+    assert entry == failure_class(before) == failure_class(after) and "seq" not in entry
+    results = {"check.x": {"status": "fail", "message": after}}
+    judge(results, {"check.x": entry}, "k.txt")
+    assert results["check.x"]["expected_failure"] is True
+    exact = {"check.x": {"status": "fail", "message": after}}
+    judge(exact, {"check.x": before}, "k.txt")  # an exact-message entry (old lists) pins the bytes
+    assert exact["check.x"]["expected_failure"] is False
+
+
+def test_a_new_failure_is_still_a_failure() -> None:
+    """An unlisted case failing, or a listed one failing for another reason, fails the run."""
+    refused = _kaitai_refusal("/types/record/seq/1")
+    results = {"a": {"status": "fail", "message": refused},
+               "b": {"status": "fail", "message": "decode: $.records[0].code: expected 1, got 2"}}
+    judge(results, {"b": failure_class(refused)}, "k.txt")
+    assert [kind(r) for r in results.values()] == ["fail", "fail"]
+    assert "now fails with" in results["b"]["message"] and "differs at $.records[0].code" in results["b"]["message"]
+    # findings: which checks at which severity, not where
+    missing = "validate: [default] missing 6.4.4/error/record 2 @offset 214; unexpected shape/error/header @offset 0"
+    moved = "validate: [default] missing 6.4.4/error/record 3 @offset 230; unexpected shape/error/header @offset 0"
+    other = "validate: [default] missing 6.4.5/error/record 2 @offset 214"
+    assert failure_class(missing) == failure_class(moved) == \
+        "validate: [default] findings differ: missing 6.4.4/error; unexpected shape/error"
+    assert not matches(failure_class(missing), other)
+
+
+def test_a_pattern_entry_is_kept_by_fix_and_a_bad_one_refused(tmp_path: Path) -> None:
+    msg = _kaitai_refusal("/types/header_v2/seq/6")
+    assert matches("~ header_v\\d+/seq/", msg) and not matches("~ record/seq", msg)
+    listed = {"a": "~ header_v\\d+/seq/", "b": "~ record/seq"}
+    assert fixed_entries({"a": msg, "b": msg}, listed) == {"a": listed["a"], "b": failure_class(msg)}
+    bad = tmp_path / "bad.txt"
+    bad.write_text("check.x ~ seq/(\n", encoding="utf-8")
+    with pytest.raises(FailureListError, match="line 1: case check.x: not a regular expression"):
+        read_failures(bad)
+
+
+def test_fix_rewrites_by_reason_and_reports_stale_entries(tmp_path: Path) -> None:
+    """--fix rewrites a list to the run's failures (here: none), prints the diff, and a list naming
+    a case that passes, or no golden case at all, fails the run before it."""
+    failures = tmp_path / "failures"
+    failures.mkdir()
+    listed = {"check.6.4.4.arg_checksum": "decode: refused validation", "no.such.case": "decode: refused validation"}
+    write_failures(failures / "python.txt", listed, "python")
+    golden = tmp_path / "golden"
+    golden.mkdir()
+    for f in (REPO / "conformance" / "golden").glob("check.6.4.4.arg_checksum.*"):
+        shutil.copy(f, golden / f.name)
+    cmd = [sys.executable, "-m", "conformance.runner", "--binding", "python", "--failures", str(failures),
+           "--golden", str(golden), "--report", str(tmp_path / "r.json")]
+    res = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True)
+    assert res.returncode == 1
+    assert "listed as failing but passes" in res.stdout
+    assert "python.txt: names 1 case(s) no golden case has: no.such.case (stale" in res.stdout
+    fixed = subprocess.run([*cmd, "--fix"], cwd=REPO, capture_output=True, text=True)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    assert "-check.6.4.4.arg_checksum decode: refused validation" in fixed.stdout
+    assert "-no.such.case decode: refused validation" in fixed.stdout
+    assert read_failures(failures / "python.txt") == {}

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import base64
+import difflib
 import json
 import os
 import shlex
@@ -22,6 +23,7 @@ from .about import SPEC_REVISION, VERSION, version_line
 from .compare import findings_difference, first_difference
 from .quoting import line as one_line
 from .quoting import quote
+from .reasons import bad_pattern, failure_class, fixed_entries, matches
 from .testee import CAPABILITIES, Binding, Testee, TesteeError, install_handlers
 
 # libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster.
@@ -270,45 +272,64 @@ def read_failures(path: Path, required: bool = False) -> dict[str, str]:
         line = line.strip()
         if not line or line.startswith("#"):
             continue
-        name, _, message = line.partition(" ")
+        name, _, reason = line.partition(" ")
         if name in out:
             raise FailureListError(f"{path}: line {n}: case {name} is listed twice")
-        out[name] = message.strip()
+        bad = bad_pattern(reason.strip())
+        if bad:
+            raise FailureListError(f"{path}: line {n}: case {name}: {bad}")
+        out[name] = reason.strip()
     return out
 
 
 def write_failures(path: Path, failures: dict[str, str], binding: str,
-                   rewrite: str = "python -m conformance.runner --fix") -> None:
-    """Rewrite the list; the comment block at its top (the reasons) is kept."""
-    head = (f"# Known conformance failures of the {quote(binding)} binding: `case message`, one a line.\n"
-            "# The run fails on an unlisted failure, a listed case that passes, or a changed message.\n"
+                   rewrite: str = "python -m conformance.runner --fix") -> str:
+    """Rewrite the list (``failures``: case -> reason); the comment block at its top (the reasons)
+    is kept. Returns the unified diff from the old list to the new one ("" when unchanged)."""
+    head = (f"# Known conformance failures of the {quote(binding)} binding: `case reason`, one a line (a failure\n"
+            "#   class, `~ REGEX` or the exact message: conformance/runner/reasons.py).\n"
+            "# The run fails on an unlisted failure, a listed case that passes, or one failing for another reason.\n"
             f"# Rewrite with: {rewrite}\n")
-    if path.exists():
-        kept = [ln for ln in path.read_text(encoding="utf-8").splitlines(keepends=True) if ln.startswith("#")]
-        if kept:
-            head = "".join(kept)
-    body = "".join(f"{k} {v}\n" for k, v in sorted(failures.items()))
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(head + body, encoding="utf-8")
-    os.replace(tmp, path)
+    old = path.read_text(encoding="utf-8") if path.exists() else ""
+    kept = [ln for ln in old.splitlines(keepends=True) if ln.startswith("#")]
+    if kept:
+        head = "".join(kept)
+    new = head + "".join(f"{k} {v}\n" for k, v in sorted(failures.items()))
+    if new != old:
+        tmp = path.with_name(path.name + ".tmp")
+        tmp.write_text(new, encoding="utf-8")
+        os.replace(tmp, path)
+    return "".join(difflib.unified_diff(old.splitlines(keepends=True), new.splitlines(keepends=True),
+                                        f"a/{path.name}", f"b/{path.name}"))
 
 
 # -- judging a run ---------------------------------------------------------------------
 def judge(results: dict[str, dict[str, Any]], listed: dict[str, str], list_name: str) -> None:
-    """Mark each result against the failure list, in place. A listed case failing with its listed
-    message is an expected failure: status stays "fail" and ``expected_failure`` is true (reports
-    count it apart). A listed case that passes, or fails otherwise, is a failure."""
+    """Mark each result against the failure list, in place. A listed case failing for its listed
+    reason (reasons.matches) is an expected failure: status stays "fail" and ``expected_failure``
+    is true (reports count it apart). A listed case that passes, or fails otherwise, is a failure."""
     for name, r in results.items():
         r["expected_failure"] = False
         if name not in listed:
             continue
-        if r["status"] == "fail" and r["message"] == listed[name]:
+        if r["status"] == "fail" and matches(listed[name], r["message"]):
             r["expected_failure"] = True
         elif r["status"] == "fail":
-            r["message"] = f"listed as failing with '{listed[name]}', now fails with '{r['message']}'"
+            r["message"] = (f"listed as failing with '{listed[name]}', now fails with '{r['message']}' "
+                            f"(reason '{failure_class(r['message'])}')")
         elif r["status"] == "pass":
             r["status"] = "fail"
             r["message"] = f"listed as failing but passes: remove it from {list_name}"
+
+
+def stale_entries(listed: dict[str, str], cases: list[Case], list_name: str) -> str | None:
+    """One line when the failure list names cases no golden case has (a case a revision removed or
+    renamed): the list is stale (a run of every case only; --case runs some)."""
+    gone = sorted(set(listed) - {c.name for c in cases})
+    if not gone:
+        return None
+    return (f"{list_name}: names {len(gone)} case(s) no golden case has: {', '.join(gone)} "
+            "(stale: rewrite the list with --fix, or `make failures` here)")
 
 
 def kind(r: dict[str, Any]) -> str:
@@ -386,6 +407,7 @@ def main_run(args: argparse.Namespace) -> int:
                                         for c in cases},
                               "bindings": {}}
     notes: list[str] = []
+    stale: list[str] = []
     for b in bindings:
         missing = b.missing()
         results: dict[str, dict[str, Any]] = {}
@@ -397,17 +419,16 @@ def main_run(args: argparse.Namespace) -> int:
         results = _run_binding(b, cases, args.timeout, deadline, notes)
         report["bindings"][b.name] = {"available": True, "capabilities": list(b.capabilities), "results": results}
         fpath = args.failure_list if args.failure_list else args.failures / f"{b.name}.txt"
-        if args.fix:
-            rewrite = (f"cbf-conformance --testee {shlex.quote(args.testee)} --failure-list {fpath.name} --fix"
-                       if args.testee is not None else "python -m conformance.runner --fix")
-            write_failures(fpath, {n: r["message"] for n, r in results.items() if r["status"] == "fail"}, b.name,
-                           rewrite)
         try:
             listed = read_failures(fpath)
+            if args.fix:
+                listed = _fix(args, fpath, b.name, results, listed, cases, human)
         except FailureListError as exc:
             print(f"cbf-conformance: {exc}", file=sys.stderr)
             return 2
         judge(results, listed, fpath.name)
+        if not args.case:
+            stale.extend(line for line in [stale_entries(listed, cases, fpath.name)] if line)
     for b_report in report["bindings"].values():
         b_report["summary"] = counts(b_report["results"])
         if b_report["available"]:
@@ -436,15 +457,30 @@ def main_run(args: argparse.Namespace) -> int:
     problems = [f"{quote(n)}: {quote(c)}: FAIL {one_line(r['message'])}" for n, b in report["bindings"].items()
                 for c, r in b["results"].items() if kind(r) == "fail" and not r.get("not_run")
                 and not r["message"].endswith(f": {SKIPPED}")]
-    report["problems"] = problems + notes + unjudged
+    report["problems"] = problems + notes + unjudged + stale
     if args.json:
         json.dump(report, sys.stdout, indent=1, sort_keys=True)
         sys.stdout.write("\n")
-    for p in problems + notes + unjudged:
+    for p in problems + notes + unjudged + stale:
         print(p, file=human)
     print(f"conformance: {total['passed']} passed, {total['failed']} failed, {total['expected_failures']} expected "
           f"failure(s), {total['skipped']} skipped", file=human)
-    return 1 if total["failed"] or unjudged else 0
+    return 1 if total["failed"] or unjudged or stale else 0
+
+
+def _fix(args: argparse.Namespace, fpath: Path, name: str, results: dict[str, dict[str, Any]],
+         listed: dict[str, str], cases: list[Case], human: TextIO) -> dict[str, str]:
+    """--fix: rewrite the failure list to this run's failures, by reason (reasons.fixed_entries),
+    and print the diff to review. A --case run keeps the entries of the cases it did not run."""
+    rewrite = (f"cbf-conformance --testee {shlex.quote(args.testee)} --failure-list {fpath.name} --fix"
+               if args.testee is not None else "python -m conformance.runner --fix")
+    ran = {c.name for c in cases}
+    failing = {n: r["message"] for n, r in results.items() if r["status"] == "fail"}
+    kept = {n: v for n, v in listed.items() if args.case and n not in ran}
+    entries = {**kept, **fixed_entries(failing, listed)}
+    diff = write_failures(fpath, entries, name, rewrite)
+    print(diff or f"conformance: {fpath.name}: unchanged", file=human, end="" if diff else "\n")
+    return entries
 
 
 def judged_per_capability(results: dict[str, dict[str, Any]], cases: list[Case],
