@@ -72,7 +72,10 @@ def write_atomic(path: Path, data: bytes) -> bool:
 
 
 def diff_main(argv: list[str]) -> int:
-    return diff_cli(argv)  # its exit codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): cbfgen.diff
+    from .witness import run as witness  # --witness: generates and runs both codecs
+
+    # its exit codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input, 4 no witness): cbfgen.diff
+    return diff_cli(argv, witness)
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -32,17 +32,19 @@ import argparse
 import dataclasses
 import json
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from .loader import SpecError, load
 from .model import CHECK_ATTRS, Check, Command, Coverage, Field, HeaderLayout, Layout, Spec
 
 # `cbfgen diff`'s exit codes: the class of its worst change, or bad input.
-EXIT_NONE, EXIT_WIRE, EXIT_BAD_INPUT, EXIT_TEXT = 0, 1, 2, 3
+EXIT_NONE, EXIT_WIRE, EXIT_BAD_INPUT, EXIT_TEXT, EXIT_UNVERIFIED = 0, 1, 2, 3, 4
 EXIT_CODES = ((EXIT_NONE, "no change breaks anything"), (EXIT_WIRE, "wire-breaking (with or without text-breaking)"),
-              (EXIT_BAD_INPUT, "usage, or a spec that does not load"), (EXIT_TEXT, "text-breaking only"))
+              (EXIT_BAD_INPUT, "usage, or a spec that does not load"), (EXIT_TEXT, "text-breaking only"),
+              (EXIT_UNVERIFIED, "--witness: a wire-breaking change no file was found to show"))
 
 # Attributes of a check that define what it judges (not its prose or line).
 _CHECK_IGNORED = frozenset({"id", "severity", "text", "fails", "line", "clause", "decision"})
@@ -610,8 +612,9 @@ def render(d: Diff, as_json: bool) -> str:
     return json.dumps(d.as_json(), indent=2) + "\n" if as_json else d.text()
 
 
-def main(argv: list[str]) -> int:
-    """`cbfgen diff OLD NEW [--json] [--old-name NAME]`: the diff on stdout, the exit code of its worst class."""
+def main(argv: list[str], witness: Callable[[tuple[Change, ...], Path, Path, Path], int] | None = None) -> int:
+    """`cbfgen diff OLD NEW [--json] [--old-name NAME] [--witness DIR]`: the diff on stdout, the exit code
+    of its worst class (``witness``: cbfgen.witness.run, which writes and verifies the files)."""
     codes = "; ".join(f"{code} {what}" for code, what in sorted(EXIT_CODES))
     ap = argparse.ArgumentParser(prog="cbfgen diff", description=(
         "List every change from OLD to NEW by version and command, and mark each change BREAKING when it changes "
@@ -623,6 +626,13 @@ def main(argv: list[str]) -> int:
     ap.add_argument("--json", action="store_true",
                     help="one JSON document for tools (`impact` and `exit` say the class)")
     ap.add_argument("--old-name", help="name OLD by this in the output (default: its path)")
+    if witness is not None:
+        ap.add_argument("--witness", type=Path, metavar="DIR",
+                        help="for each wire-breaking change, write to DIR the smallest file found that OLD's and "
+                             "NEW's generated codecs read or judge differently (annotated hex, .cbf, a golden "
+                             "expectation, a note of what each side says), verified by running both; for each "
+                             "text-breaking one, the JSON NEW writes and OLD refuses. A change no file shows: "
+                             f"exit {EXIT_UNVERIFIED}, nothing written for it")
     try:
         args = ap.parse_args(argv)
     except SystemExit as exc:  # argparse: a usage error is bad input; --help is not
@@ -634,4 +644,7 @@ def main(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     result = diff(old, new, args.old_name or args.old, args.new)
     sys.stdout.write(render(result, args.json))
+    if witness is not None and args.witness is not None:
+        if witness(result.changes, Path(args.old), Path(args.new), args.witness) == EXIT_UNVERIFIED:
+            return EXIT_UNVERIFIED
     return result.exit_code
