@@ -35,7 +35,7 @@
 BASE ?= HEAD
 # Fixtures drilled at once by `make revision-drill`, a tree each (one per core of the 2-core CI machine).
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
-.PHONY: breaking revision-drill revision-drill-quick
+.PHONY: breaking revision-drill revision-drill-quick witness-drill
 
 # make's own exit status is 0 or 2 (any failed recipe), so `make breaking` cannot pass on cbfgen diff's
 # codes (0 none, 1 wire-breaking, 3 text-breaking only, 2 bad input): it exits 0 when nothing breaks and
@@ -62,3 +62,8 @@ revision-drill-quick: venv kaitai-setup
 	$(PY) tests/revisions/drill.py run --quick
 
 TEST_DEPS += revision-drill-quick
+
+# `cbfgen diff --witness` on every breaking fixture, through the command line (tests/test_witness.py
+# checks the same in-process in `make test`): the files land in build/witness/<fixture>/.
+witness-drill: venv  ## cbfgen diff --witness for every breaking tests/revisions/ fixture: a verified file per change
+	$(PY) tests/revisions/witness_drill.py build/witness

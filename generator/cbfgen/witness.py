@@ -223,6 +223,18 @@ def _json_differences(a: Any, b: Any, path: str = "$") -> Iterator[str]:
         yield f"{path}: OLD reads {json.dumps(a)}, NEW {json.dumps(b)}"
 
 
+def _new_values(a: Any, b: Any, pointer: str = "") -> Iterator[tuple[str, Any]]:
+    """(JSON pointer, NEW's value) where NEW's decode differs from OLD's: what a golden case pins."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in b:
+            yield from ([(f"{pointer}/{k}", b[k])] if k not in a else _new_values(a[k], b[k], f"{pointer}/{k}"))
+    elif isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for i, (x, y) in enumerate(zip(a, b, strict=True)):
+            yield from _new_values(x, y, f"{pointer}/{i}")
+    elif a != b:
+        yield pointer, b
+
+
 def _decode_text(d: Any) -> str:
     if isinstance(d, dict) and set(d) == {"error"}:
         return f"refuses it ({d['error']['kind']} at offset {d['error']['offset']})"
@@ -285,10 +297,15 @@ def find(change: Change, cx: Codecs, name: str) -> Witness | None:
 def expectation(w: Witness) -> dict[str, Any]:
     """The golden expectation of the witness: what NEW's codecs say (conformance/golden/README.md)."""
     d = w.new.decode
-    decode: Any = {"error": d["error"]} if isinstance(d, dict) and set(d) == {"error"} else "ok"
-    return {"description": f"Witness of {w.change.kind}: {w.change.detail}", "clauses": [],
-            "decode": decode,
-            "validate": {p: [list(f) for f in fs] for p, fs in w.new.findings.items()}}
+    refused = isinstance(d, dict) and set(d) == {"error"}
+    doc: dict[str, Any] = {"description": f"Witness of {w.change.kind}: {w.change.detail}", "clauses": [],
+                           "decode": {"error": d["error"]} if refused else "ok"}
+    if not refused and not (isinstance(w.old.decode, dict) and set(w.old.decode) == {"error"}):
+        subset = dict(list(_new_values(w.old.decode, d))[:4])  # where NEW reads otherwise: OLD fails these
+        if subset:
+            doc["decode_subset"] = subset
+    doc["validate"] = {p: [list(f) for f in fs] for p, fs in w.new.findings.items()}
+    return doc
 
 
 def note(w: Witness) -> dict[str, Any]:
