@@ -15,8 +15,7 @@ from conftest import load_yaml
 
 from conformance.runner.compare import f32_bits, findings_difference, first_difference
 from conformance.runner.reasons import failure_class, fixed_entries, matches
-from conformance.runner.run import (FailureListError, judge, kind, load_cases, read_failures, run_case,
-                                    write_failures)
+from conformance.runner.run import FailureListError, judge, kind, load_cases, read_failures, run_case, write_failures
 
 REPO = Path(__file__).resolve().parents[1]
 
