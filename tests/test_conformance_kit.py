@@ -188,6 +188,9 @@ def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytes
     assert "Traceback" not in fixed.stderr
     listed = [ln for ln in (folder / "known.txt").read_text().splitlines() if ln and not ln.startswith("#")]
     assert sorted(ln.split(" ")[0] for ln in listed) == failing
+    # by reason (issue 37, point 3): each entry is its failure's class, no offset in it, and --fix showed the diff
+    assert all(" validate: [" in ln and f"findings differ: missing {drop}/" in ln and "@" not in ln for ln in listed)
+    assert all(f"+{ln}" in fixed.stdout for ln in listed), fixed.stdout[-2000:]
     assert "Rewrite with: cbf-conformance --testee" in (folder / "known.txt").read_text()
     (folder / "known.txt").write_text("# my reader's known failures\n" + "\n".join(listed[1:]) + "\n")
     text = _run(*base, "--failure-list", "known.txt", "--junit", "j.xml", cwd=folder, check=False)
