@@ -10,6 +10,7 @@ imported side by side and run in-process (no subprocess, no other binding). The 
 from __future__ import annotations
 
 import base64
+import json
 from pathlib import Path
 from typing import Any
 
@@ -87,9 +88,13 @@ def test_a_text_breaking_fixture_gets_json_old_refuses(path: Path, tmp_path: Pat
     texts = [t for c in diff(cx.old, cx.new).changes if c.text_breaking for t in [witness.text_witness(c, cx)] if t]
     assert texts
     for t in texts:
-        cx.new_codec.from_canonical(t["json"])
+        assert "json" in t and "cut" in t, t  # a rename shows in both forms
+        cx.new_codec.from_canonical(json.loads(t["json"]["text"]))
+        cx.new_codec.from_cut(t["cut"]["text"])
         with pytest.raises(cx.old_codec.CbfError):
-            cx.old_codec.from_canonical(t["json"])
+            cx.old_codec.from_canonical(json.loads(t["json"]["text"]))
+        with pytest.raises(cx.old_codec.CbfError):
+            cx.old_codec.from_cut(t["cut"]["text"])
 
 
 def test_an_unverified_witness_is_refused(tmp_path: Path, old_codec: Any) -> None:

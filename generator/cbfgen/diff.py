@@ -631,8 +631,8 @@ def main(argv: list[str], witness: Callable[[tuple[Change, ...], Path, Path, Pat
                         help="for each wire-breaking change, write to DIR the smallest file found that OLD's and "
                              "NEW's generated codecs read or judge differently (annotated hex, .cbf, a golden "
                              "expectation, a note of what each side says), verified by running both; for each "
-                             "text-breaking one, the JSON NEW writes and OLD refuses. A change no file shows: "
-                             f"exit {EXIT_UNVERIFIED}, nothing written for it")
+                             "text-breaking one, the JSON and CUT text NEW writes and OLD refuses. A change no file "
+                             f"shows: exit {EXIT_UNVERIFIED}, nothing written for it")
     try:
         args = ap.parse_args(argv)
     except SystemExit as exc:  # argparse: a usage error is bad input; --help is not

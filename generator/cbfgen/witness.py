@@ -5,7 +5,7 @@ the Python codecs generated from OLD and from NEW read or judge differently: its
 golden language of conformance/golden/README.md, assembled by the golden assembler, which imports
 no binding), the .cbf it assembles to, a golden expectation (what NEW's codecs must say: the
 witness is a golden case of the revised spec) and a note naming the change and what each side says.
-For each text-breaking change, the canonical JSON text NEW writes that OLD's reader refuses.
+For each text-breaking change, the canonical JSON and the CUT text NEW writes that OLD's reader refuses.
 
 Candidates, smallest first, for the change's version (or each version of OLD, newest first, for a
 change tied to none): the header alone; then one record of the change's command (or of each command
@@ -316,25 +316,42 @@ def note(w: Witness) -> dict[str, Any]:
                                                                        for p, fs in w.new.findings.items()}}}
 
 
+def _refusal(cbf: Any, form: str, text: str) -> str | None:
+    """Why a codec's reader of a form (json, cut) refuses a text (its error, one line), or None when it reads it."""
+    try:
+        if form == "json":
+            cbf.from_canonical(json.loads(text))
+        else:
+            cbf.from_cut(text)
+    except (cbf.CbfError, KeyError, ValueError) as exc:
+        return f"{type(exc).__name__}: {' '.join(str(exc).split())}"
+    return None
+
+
 def text_witness(change: Change, cx: Codecs) -> dict[str, Any] | None:
-    """For a text-breaking change: the canonical JSON NEW writes of a file showing it, which NEW reads
-    back and OLD refuses (a name OLD does not know); None when no candidate shows one."""
+    """For a text-breaking change: the canonical JSON and the CUT text NEW writes of a file showing it,
+    each kept when NEW reads it back and OLD refuses it (a name OLD does not know); None when no
+    candidate shows one in either form."""
+    from conformance.assembler import assemble_text
+
+    new, old = cx.new_codec, cx.old_codec
     for c in candidates(change, cx.old, cx.new):
         if c.writer != "new" or "holding" not in c.label:
             continue
-        from conformance.assembler import assemble_text
-
         data = assemble_text("\n".join(ln.text for ln in c.lines) + "\n", "text", spec=cx.new_path)
         try:
-            doc = cx.new_codec.to_canonical(cx.new_codec.decode(data))
-            cx.new_codec.from_canonical(json.loads(json.dumps(doc)))
-        except cx.new_codec.CbfError:
+            model = new.decode(data)
+            forms = {"json": json.dumps(new.to_canonical(model), indent=1) + "\n", "cut": new.to_cut(model)}
+        except new.CbfError:
             continue
-        try:
-            cx.old_codec.from_canonical(json.loads(json.dumps(doc)))
-        except (cx.old_codec.CbfError, KeyError, ValueError) as exc:
-            return {"change": change.as_json(), "json": doc, "old": f"refuses it ({type(exc).__name__}: {exc})",
-                    "new": "reads it"}
+        shown: dict[str, Any] = {"change": change.as_json(), "file": c.label}
+        for form, text in forms.items():
+            if _refusal(new, form, text) is None:
+                why = _refusal(old, form, text)
+                if why:
+                    shown[form] = {"text": text, "old": f"refuses it ({why})", "new": "reads it"}
+        if "json" in shown or "cut" in shown:
+            return shown
     return None
 
 
@@ -353,9 +370,11 @@ def write(ws: list[Witness], texts: list[dict[str, Any]], out: Path) -> None:
         ch = t["change"]
         name = ".".join(["text", str(i), ch["kind"]] + [f"v{ch['version']}"] * bool(ch["version"])
                         + [ch["command"] or ""] * bool(ch["command"]))
-        (out / f"{name}.json").write_text(json.dumps(t["json"], indent=1) + "\n", encoding="utf-8")
-        (out / f"{name}.witness.yaml").write_text(yaml.safe_dump({k: v for k, v in t.items() if k != "json"},
-                                                                 sort_keys=False, width=1000), encoding="utf-8")
+        for form in ("json", "cut"):
+            if form in t:
+                (out / f"{name}.{form}").write_text(t[form]["text"], encoding="utf-8")
+        said = {k: ({"old": v["old"], "new": v["new"]} if k in ("json", "cut") else v) for k, v in t.items()}
+        (out / f"{name}.witness.yaml").write_text(_yaml(said), encoding="utf-8")
 
 
 def codecs(old_path: Path, new_path: Path, where: Path) -> Codecs:
@@ -388,7 +407,10 @@ def run(changes: tuple[Change, ...], old_path: Path, new_path: Path, out: Path) 
     for w in found:
         print(f"witness: {out / (w.name + '.hex')}: {len(w.data)} bytes; {'; '.join(w.says)}")
     for t in texts:
-        print(f"witness: {t['change']['kind']} {t['change']['command'] or ''}: JSON NEW writes, OLD {t['old']}")
+        for form in ("json", "cut"):
+            if form in t:
+                print(f"witness: {t['change']['kind']} {t['change']['command'] or ''}: the {form.upper()} NEW writes, "
+                      f"OLD {t[form]['old']}")
     for ch in missing:
         print(f"cbfgen diff: no file shows {ch.kind} ({ch.detail}): no witness written", file=sys.stderr)
     return EXIT_UNVERIFIED if missing else 0

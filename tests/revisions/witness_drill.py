@@ -42,7 +42,7 @@ def main(argv: list[str]) -> int:
         ok = res.returncode == want and (hexes if fx.breaking else texts)
         bad += not ok
         print(f"{'ok  ' if ok else 'FAIL'} {path.stem}: exit {res.returncode} (want {want}), {len(hexes)} witness(es), "
-              f"{len(texts)} JSON text(s), {time.monotonic() - t0:.1f} s")
+              f"{len(texts)} text witness(es) (JSON, CUT), {time.monotonic() - t0:.1f} s")
         if not ok:
             print(res.stderr.strip()[-2000:], file=sys.stderr)
     print(f"witness-drill: {bad} fixture(s) failed; witnesses in {out}")
