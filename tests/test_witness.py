@@ -18,7 +18,7 @@ import pytest
 from revisions import drill
 
 from cbfgen import witness
-from cbfgen.diff import EXIT_UNVERIFIED, diff
+from cbfgen.diff import EXIT_BAD_INPUT, EXIT_UNVERIFIED, diff
 from cbfgen.loader import load
 from conformance.assembler import assemble_text
 from conformance.runner.run import load_cases, run_case
@@ -105,3 +105,10 @@ def test_an_unverified_witness_is_refused(tmp_path: Path, old_codec: Any) -> Non
     found, missing = witness.witnesses(diff(cx.old, cx.new).changes, same)
     assert not found and missing
     assert EXIT_UNVERIFIED not in (0, 1, 2, 3)
+
+
+def test_a_witness_folder_that_is_a_file_is_bad_input(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "f").write_text("", encoding="utf-8")
+    assert witness.run((), SPEC, SPEC, tmp_path / "f") == EXIT_BAD_INPUT
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "not a folder" in err

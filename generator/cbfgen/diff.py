@@ -645,6 +645,7 @@ def main(argv: list[str], witness: Callable[[tuple[Change, ...], Path, Path, Pat
     result = diff(old, new, args.old_name or args.old, args.new)
     sys.stdout.write(render(result, args.json))
     if witness is not None and args.witness is not None:
-        if witness(result.changes, Path(args.old), Path(args.new), args.witness) == EXIT_UNVERIFIED:
-            return EXIT_UNVERIFIED
+        code = witness(result.changes, Path(args.old), Path(args.new), args.witness)
+        if code in (EXIT_UNVERIFIED, EXIT_BAD_INPUT):
+            return code
     return result.exit_code

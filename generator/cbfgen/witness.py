@@ -28,7 +28,7 @@ from typing import Any
 
 import yaml
 
-from .diff import EXIT_UNVERIFIED, Change
+from .diff import EXIT_BAD_INPUT, EXIT_UNVERIFIED, Change
 from .loader import load
 from .model import Command, Field, Layout, Spec
 
@@ -398,7 +398,16 @@ def witnesses(changes: tuple[Change, ...], cx: Codecs) -> tuple[list[Witness], l
 
 
 def run(changes: tuple[Change, ...], old_path: Path, new_path: Path, out: Path) -> int:
-    """Write the witnesses of changes to out; 0, or EXIT_UNVERIFIED when a change has none (said on stderr)."""
+    """Write the witnesses of changes to out; 0, or EXIT_UNVERIFIED when a change has none (said on stderr);
+    EXIT_BAD_INPUT, one line, when out is not a folder or the golden assembler is missing (a cbfgen wheel
+    without the toolkit's checkout: the witnesses are assembled by conformance/assembler)."""
+    if out.exists() and not out.is_dir():
+        print(f"cbfgen diff: --witness {out}: not a folder", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    if importlib.util.find_spec("conformance.assembler") is None:
+        print("cbfgen diff: --witness needs the golden assembler (conformance/assembler of the CBF toolkit's "
+              "checkout on PYTHONPATH)", file=sys.stderr)
+        return EXIT_BAD_INPUT
     with tempfile.TemporaryDirectory(prefix="cbf-witness-") as tmp:
         cx = codecs(old_path, new_path, Path(tmp))
         found, missing = witnesses(changes, cx)
