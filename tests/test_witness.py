@@ -74,6 +74,8 @@ def test_every_wire_breaking_fixture_gets_a_verified_witness(path: Path, tmp_pat
     assert set(cases) == {w.name for w in found}
     for w in found:
         assert w.says and w.change.kind in w.hex.splitlines()[0]
+        # a check's change is shown by that check's findings (record_crc: NEW's 9.x on a wrong CRC)
+        assert witness._shows_check(witness._check_of(w.change), w.old, w.new), w.says
         # the hex is golden-style: the golden assembler makes the .cbf of it under the revised spec
         assert assemble_text((out / f"{w.name}.hex").read_text(encoding="utf-8"), w.name, spec=cx.new_path) == w.data
         # a golden case of the revised spec: NEW's codec passes it, OLD's does not

@@ -16,6 +16,7 @@ A witness is written only when both codecs were run on it and differ: an unverif
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import json
 import sys
@@ -50,6 +51,7 @@ class Candidate:
     version: str
     lines: tuple[Line, ...]
     writer: str  # "new" | "old": whose checksums the file holds
+    broken: bool = False  # an argument field's own checksum (a tag but args, header, file) stored wrong
 
 
 @dataclass(frozen=True)
@@ -161,6 +163,29 @@ def candidates(change: Change, old: Spec, new: Spec) -> Iterator[Candidate]:
             lines = _header(owner, vid, 1) + _record(spec, cmd, lay, sum(ln.size for ln in _header(owner, vid, 1)))
             for writer in ("new", "old"):
                 yield Candidate(f"a {vid} file holding one {cmd.name}", vid, tuple(lines), writer)
+            own = [ln.text.split()[1] for ln in lines if ln.checksum and ln.text.split()[1] not in _FILLED_TAGS]
+            for writer in ("new", "old") if own else ():
+                yield Candidate(f"a {vid} file holding one {cmd.name}, its {', '.join(own)} wrong", vid,
+                                tuple(lines), writer, broken=True)
+
+
+_FILLED_TAGS = ("args", "header", "file")  # the checksums every file has: never broken on purpose
+
+
+def materialize(c: Candidate, spec: Path, name: str) -> tuple[Candidate, bytes]:
+    """The candidate's bytes under spec (its writer's); a broken one's own checksums as literal wrong
+    bytes (each byte of the right value inverted), the checksums covering them computed after."""
+    from conformance.assembler import assemble_text  # the golden assembler: it imports no binding
+
+    data = assemble_text("\n".join(ln.text for ln in c.lines) + "\n", name, spec=spec)
+    if not c.broken:
+        return c, data
+    lines = tuple(dataclasses.replace(
+        ln, text=" ".join(f"{b ^ 0xFF:02x}" for b in data[ln.offset:ln.offset + ln.size]),
+        comment=f"{ln.comment} ({ln.text.split()[1]}, wrong on purpose)", checksum=False)
+        if ln.checksum and ln.text.split()[1] not in _FILLED_TAGS else ln for ln in c.lines)
+    c = dataclasses.replace(c, lines=lines)
+    return c, assemble_text("\n".join(ln.text for ln in c.lines) + "\n", name, spec=spec)
 
 
 def hex_text(c: Candidate, data: bytes, head: list[str]) -> str:
@@ -274,13 +299,29 @@ class Codecs:
     new_codec: Any
 
 
-def find(change: Change, cx: Codecs, name: str) -> Witness | None:
-    """The first candidate both codecs were run on and that they read or judge differently, or None."""
-    from conformance.assembler import assemble_text  # the golden assembler: it imports no binding
+def _check_of(change: Change) -> str | None:
+    """The check a check change is about (its detail starts with the id), else None."""
+    return change.detail.split()[0].rstrip(":") if change.kind.startswith("check_") else None
 
+
+def _shows_check(check: str | None, old: Side, new: Side) -> bool:
+    if check is None:
+        return True
+    return any(f[0] == check for p in set(old.findings) | set(new.findings)
+               for f in set(old.findings.get(p, [])) ^ set(new.findings.get(p, [])))
+
+
+def find(change: Change, cx: Codecs, name: str) -> Witness | None:
+    """The first candidate both codecs were run on and that they read or judge differently, or None. For
+    a check's change, the first whose findings differ in that check (else the first that differs)."""
+    from conformance.assembler import AsmError, assemble_text  # the golden assembler: it imports no binding
+
+    check, fallback = _check_of(change), None
     for c in candidates(change, cx.old, cx.new):
-        placeholders = "\n".join(ln.text for ln in c.lines) + "\n"
-        data = assemble_text(placeholders, name, spec=cx.new_path if c.writer == "new" else cx.old_path)
+        try:
+            c, data = materialize(c, cx.new_path if c.writer == "new" else cx.old_path, name)
+        except AsmError:  # a file its writer could not write (a checksum tag its spec lacks): not a candidate
+            continue
         old = judge(cx.old_codec, tuple(p.id for p in cx.old.profiles), data)
         new = judge(cx.new_codec, tuple(p.id for p in cx.new.profiles), data)
         says = differences(old, new)
@@ -289,9 +330,13 @@ def find(change: Change, cx: Codecs, name: str) -> Witness | None:
         head = [f"Witness of {change.kind} ({change.detail}): {c.label}, as {c.writer.upper()}'s writer writes it.",
                 "OLD's and NEW's generated codecs differ on it (cbfgen diff --witness ran both):", *says]
         text = hex_text(c, data, head)
-        if assemble_text(text, name, spec=cx.new_path) == data:  # the hex written is the file verified
-            return Witness(change, name, text, data, old, new, says)
-    return None
+        if assemble_text(text, name, spec=cx.new_path) != data:  # the hex written must be the file verified
+            continue
+        found = Witness(change, name, text, data, old, new, says)
+        if _shows_check(check, old, new):
+            return found
+        fallback = fallback or found
+    return fallback
 
 
 def expectation(w: Witness) -> dict[str, Any]:
