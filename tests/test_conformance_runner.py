@@ -198,6 +198,9 @@ def test_a_new_failure_is_still_a_failure() -> None:
     assert failure_class(missing) == failure_class(moved) == \
         "validate: [default] findings differ: missing 6.4.4/error; unexpected shape/error"
     assert not matches(failure_class(missing), other)
+    # a testee's words are one line in a list (a case a line): controls and line breaks escaped
+    hostile = failure_class("decode: failed to decode: {'kind': 'x\n\x1b[2Jcase.y decode: ok', 'offset': 0}")
+    assert "\n" not in hostile and "\x1b" not in hostile and hostile.startswith("decode: refused x")
 
 
 def test_a_pattern_entry_is_kept_by_fix_and_a_bad_one_refused(tmp_path: Path) -> None:

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import re
 
+from .quoting import line as one_line
+
 PATTERN_MARK = "~ "
 
 # Each rule: a message's shape -> its class ("{step}" is the operation the message starts with).
@@ -49,7 +51,12 @@ def _findings(diff: str) -> str:
 
 
 def failure_class(message: str) -> str:
-    """The stable reason of a failure message: its operation and what went wrong (see the module)."""
+    """The stable reason of a failure message: its operation and what went wrong (see the module), one
+    line (a testee's control characters and line breaks escaped: a list holds a case a line)."""
+    return one_line(_failure_class(message))
+
+
+def _failure_class(message: str) -> str:
     step, sep, rest = message.partition(": ")
     if not sep:
         return re.sub(r"\d+", "N", message)

@@ -22,6 +22,7 @@ import yaml
 from .about import SPEC_REVISION, VERSION, version_line
 from .compare import findings_difference, first_difference
 from .quoting import line as one_line
+from .quoting import lines as one_lines
 from .quoting import quote
 from .reasons import bad_pattern, failure_class, fixed_entries, matches
 from .testee import CAPABILITIES, Binding, Testee, TesteeError, install_handlers
@@ -479,7 +480,8 @@ def _fix(args: argparse.Namespace, fpath: Path, name: str, results: dict[str, di
     kept = {n: v for n, v in listed.items() if args.case and n not in ran}
     entries = {**kept, **fixed_entries(failing, listed)}
     diff = write_failures(fpath, entries, name, rewrite)
-    print(diff or f"conformance: {fpath.name}: unchanged", file=human, end="" if diff else "\n")
+    print(one_lines(diff) if diff else f"conformance: {quote(fpath.name)}: unchanged", file=human,
+          end="" if diff else "\n")
     return entries
 
 
