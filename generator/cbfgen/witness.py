@@ -10,7 +10,9 @@ For each text-breaking change, the canonical JSON and the CUT text NEW writes th
 Candidates, smallest first, for the change's version (or each version of OLD, newest first, for a
 change tied to none): the header alone; then one record of the change's command (or of each command
 of the version, shortest first), its arguments 1 (floats 1.0, text "W"). Each is tried as NEW's
-writer writes it (its checksums under NEW) and as OLD's did (under OLD, written as literal bytes).
+writer writes it (its checksums under NEW) and as OLD's did (under OLD, written as literal bytes);
+a record whose arguments hold their own checksum (a tag but args, header, file) is tried with it
+wrong too, and a check's change takes the first candidate that check's findings tell apart.
 A witness is written only when both codecs were run on it and differ: an unverified one is refused.
 """
 
