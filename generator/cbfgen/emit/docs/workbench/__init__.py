@@ -48,9 +48,8 @@ def page_data(spec: Spec) -> dict[str, Any]:
         "spec": f"{spec.meta['part_number']} rev {spec.meta['revision']}",
         "layouts": layouts_data(spec),
         "profiles": [{"id": p.id, "doc": p.doc} for p in spec.profiles],
-        # the toolpath: each motion command's role (which arguments are its start, through, end ...) and
-        # the commands that turn cutting on or off (spec/cbf.yaml's `motion` and `sets`)
-        "motion": {c.name: c.motion for c in spec.commands if c.motion},
+        # the toolpath is the engine's (cbf-c dump --path); the commands that turn cutting on or off
+        # (spec/cbf.yaml's `sets`) tell cutting from moving
         "cutting": {c.name: c.sets["cutting"] for c in spec.commands if c.sets and "cutting" in c.sets},
         "checks": {k.id: {"href": f"index.html#check-{_anchor(k.id)}", "severity": k.severity,
                           "clause": k.clause, "text": k.text} for k in spec.checks},
