@@ -13,6 +13,8 @@ from __future__ import annotations
 import functools
 import gzip
 import json
+import math
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -20,6 +22,9 @@ from pathlib import Path
 import pytest
 from c_programs import built
 
+from cbf import codec
+from cbf import geometry as G
+from cbf.errors import CbfError
 from cbfgen.emit.docs import workbench
 from cbfgen.loader import load
 
@@ -56,7 +61,12 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     feed = [(f, profiles[0]) for f in files]
     for p in profiles[1:]:
         feed += [(f, p) for f in files if _native(f, p) != firsts[f]][:8]
-    jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(drawn[0])}))
+    # the file of the most drawn motion records (its Tab stops are paged), and an arc in the x-y plane
+    paths = {f: _drawn(f) for f in files if _native(f, profiles[0])[1] != 2}
+    paged = max(paths, key=lambda f: len(paths[f]))
+    curve = _flat_arc(files)
+    jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(drawn[0]), "paged": str(paged),
+                                "curve": [str(curve[0]), curve[1]]}))
     SHOTS.mkdir(parents=True, exist_ok=True)
     res = subprocess.run(["node", str(DRIVER), str(page), str(SHOTS), str(jobs)], cwd=REPO, capture_output=True,
                          text=True, timeout=600)
@@ -64,7 +74,30 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     out: dict[str, object] = json.loads(res.stdout)
     out["expected"] = len(feed)
     out["page"] = str(page)
+    out["circle"] = [*curve[2], curve[3]]
     return out
+
+
+def _drawn(path: Path) -> list[str]:
+    """The records `cbf-c dump --path` draws (the engine's toolpath, which the page draws)."""
+    res = subprocess.run([str(_cbf_c()), "dump", "--path", path.name], cwd=path.parent, capture_output=True, text=True)
+    return [line.split(" ", 1)[0] for line in res.stdout.splitlines()]
+
+
+def _flat_arc(files: list[Path]) -> tuple[Path, int, tuple[float, float], float]:
+    """A golden file's arc through a middle point (the spec's motion role) turning in the x-y plane: the
+    file, the record, the circle's centre (x, y) and radius, as the Python codec's geometry has them."""
+    for f in files:
+        try:
+            steps = list(G.walk(codec.decode(f.read_bytes())))
+        except CbfError:
+            continue
+        for s in steps:
+            c = s.curve
+            if (c is not None and c.curved and s.cmd.motion is not None and "through" in s.cmd.motion
+                    and c.e1[2] == 0.0 and c.e2[2] == 0.0):
+                return f, s.index, (c.center[0], c.center[1]), c.radius
+    raise AssertionError("no golden file has an arc in the x-y plane")
 
 
 @functools.cache
@@ -129,6 +162,44 @@ def test_a_segment_of_the_toolpath_selected_by_click_or_keyboard_selects_its_rec
         assert p["row"] == p["want"], p
         assert p["hex"].startswith(f"record {p['want']} "), p
         assert p["segments"] == [p["want"], p["want"]], p
+
+
+def test_an_arc_is_drawn_on_its_circle_not_as_its_chord(run: dict[str, object]) -> None:
+    # the top view's path of the record: "Mx -y Lx -y ..." (the page draws y downwards)
+    drawn = run["curve"]
+    assert isinstance(drawn, list) and len(drawn) == 1, drawn
+    points = [tuple(float(v) for v in p.strip().split(" ")) for p in re.split("[ML]", drawn[0]) if p.strip()]
+    circle = run["circle"]
+    assert isinstance(circle, list)
+    cx, cy, r = (float(v) for v in circle)
+    assert len(points) > 2, f"the arc is drawn as {len(points) - 1} straight segment(s)"
+    for x, y in points:
+        assert math.isclose(math.hypot(x - cx, -y - cy), r, rel_tol=1e-6, abs_tol=1e-6), (x, y)
+
+
+def test_the_toolpaths_tab_stops_are_paged_with_the_records(run: dict[str, object]) -> None:
+    paged = run["paged"]
+    assert isinstance(paged, list)
+    first, second = paged
+    for stops in (first, second):
+        assert stops["tabbable"] and set(stops["tabbable"]) <= set(stops["rows"]), stops["tabbable"][:5]
+    assert not set(first["tabbable"]) & set(second["tabbable"])
+    assert int(first["segments"]) > len(first["tabbable"]) + len(second["tabbable"])
+
+
+def test_the_3d_view_turns_zooms_and_shares_the_selection(run: dict[str, object]) -> None:
+    three = run["three"]
+    assert isinstance(three, dict)
+    home = three["shared"]
+    assert home["selected"] != "" and home["selected"] == home["row"], home  # the other views' selection
+    keys = three["keyboard"]
+    assert keys["yaw"] != home["yaw"] and keys["pitch"] != home["pitch"] and float(keys["zoom"]) > float(home["zoom"])
+    after = three["next"]  # ] : the motion record after the selected one, selected everywhere
+    assert after["selected"] == after["row"] and int(after["selected"]) > int(home["selected"]), after
+    mouse = three["mouse"]  # dragged and wheeled from the view's start
+    assert mouse["yaw"] != home["yaw"] and float(mouse["zoom"]) > float(home["zoom"]), mouse
+    clicked = three["clicked"]  # a segment no other is drawn nearer to, clicked with the mouse
+    assert clicked["selected"] == clicked["row"] == clicked["want"], clicked
 
 
 GZIP_BOUND = 150 * 1024  # issue 34, point 6: the page's code, gzipped (the engine, the page's script and data)

@@ -1054,6 +1054,17 @@ long cbf_layout_nb(int layout, size_t n);
 /** How many items of its group a record of the layout with nb argument bytes holds (0 without a
  *  group), or -1 when the layout does not take nb bytes. */
 long cbf_layout_items(int layout, size_t nb);
+
+/** The drawn path of a motion record (its layout and argument bytes): points along its motion in the
+ * engine's geometry, the last its end as the continuity check has it; a circle, helix or arc through a
+ * middle point every 5 degrees of turn, at most CBF_PATH_MAX_POINTS (runtime/path.c). from: the position
+ * before it, where a point motion starts (NULL: none; it starts at its end). The count written to out
+ * (room for CBF_PATH_MAX_POINTS); 0 when the layout has no motion or its values are not finite. */
+#define CBF_PATH_MAX_POINTS 145u
+/** 1 when the layout's command is a motion (its spec role), else 0. */
+int cbf_layout_moves(int layout);
+size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const double *from, double (*out)[3]);
+
 /** Checksum of argument bytes, as the spec computes the record's argument checksum. */
 uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
 
@@ -1082,7 +1093,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1086 "cbf.h"
+#line 1097 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1128,7 +1139,7 @@ int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args);
 enum { CBF__CK_NONE = 0, CBF__CK_ARGS, CBF__CK_HEADER, CBF__CK_FILE };
 enum { CBF__REGION_NONE = 0, CBF__REGION_FILE, CBF__REGION_HEADER, CBF__REGION_RECORDS, CBF__REGION_ARGS, CBF__REGION_FIELDS };
 enum { CBF__MOTION_NONE = 0, CBF__MOTION_POINT, CBF__MOTION_LINE, CBF__MOTION_CIRCLE, CBF__MOTION_HELIX };
-enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M__COUNT };
+enum { CBF__M_START = 0, CBF__M_END = 1, CBF__M_CENTER = 2, CBF__M_NORMAL = 3, CBF__M_DEGREES = 4, CBF__M_LENGTH = 5, CBF__M_THROUGH = 6, CBF__M__COUNT };
 enum { CBF__ORIENT_NONE = 0, CBF__ORIENT_SET, CBF__ORIENT_PATH };
 enum { CBF__O_START = 0, CBF__O_END = 1, CBF__O__COUNT };
 enum { CBF__SHAPE_NONE = 0, CBF__SHAPE_START, CBF__SHAPE_END };
@@ -1247,7 +1258,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1251 "cbf.h"
+#line 1262 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1340,7 +1351,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1344 "cbf.h"
+#line 1355 "cbf.h"
 /* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
  * runtime/checksums.c implements each family once and switches on it with no default (a family
  * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
@@ -1635,65 +1646,65 @@ static const cbf_field_info cbf__args[74] = {
 
 static const cbf__layout cbf__layouts[30] = {
     { 0, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 0, 3, offsetof(cbf_args, checkpoint),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, 2, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT */
     { 0, "v1", CBF__VBIT(CBF_V1_X), 0, 16, 3, 1, offsetof(cbf_args, checkpoint_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT_V1 */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CHECKPOINT_V1 */
     { 1, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 4, 5, offsetof(cbf_args, cutter),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER */
     { 1, "v1", CBF__VBIT(CBF_V1_X), 0, 32, 9, 4, offsetof(cbf_args, cutter_v1),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_V1 */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { 0, 1, 2 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_V1 */
     { 2, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 13, 2, offsetof(cbf_args, orient),
-      { -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, 0 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT */
     { 3, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 15, 2, offsetof(cbf_args, orient5b),
-      { -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT5B */
+      { -1, -1, -1, -1, -1, -1, -1 }, { 0, 1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ORIENT5B */
     { 4, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 17, 1, offsetof(cbf_args, phase),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* PHASE */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* PHASE */
     { 5, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 18, 1, offsetof(cbf_args, enable_skip),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENABLE_SKIP */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENABLE_SKIP */
     { 6, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 19, 2, offsetof(cbf_args, startshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* STARTSHAPE */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* STARTSHAPE */
     { 7, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 6, 21, 2, offsetof(cbf_args, endshape),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENDSHAPE */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { 0, 1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ENDSHAPE */
     { 8, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_OFF */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_OFF */
     { 9, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 23, 0, offsetof(cbf_args, decel_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_ON */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* DECEL_ON */
     { 10, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 12, 23, 1, offsetof(cbf_args, point),
-      { -1, 0, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* POINT */
+      { -1, 0, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* POINT */
     { 11, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 24, 24, 2, offsetof(cbf_args, line),
-      { 0, 1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE */
+      { 0, 1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE */
     { 12, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 48, 26, 4, offsetof(cbf_args, line5b),
-      { 0, 1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE5B */
+      { 0, 1, -1, -1, -1, -1, -1 }, { 2, 3 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* LINE5B */
     { 13, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 36, 30, 3, offsetof(cbf_args, arc),
-      { 0, 2, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC */
+      { 0, 2, -1, -1, -1, -1, 1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC */
     { 14, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 60, 33, 5, offsetof(cbf_args, arc5b),
-      { 0, 2, -1, -1, -1, -1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC5B */
+      { 0, 2, -1, -1, -1, -1, 1 }, { 3, 4 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ARC5B */
     { 15, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 40, 38, 4, offsetof(cbf_args, circle),
-      { 0, -1, 1, 2, 3, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE */
+      { 0, -1, 1, 2, 3, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE */
     { 16, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 64, 42, 6, offsetof(cbf_args, circle5b),
-      { 0, -1, 1, 2, 3, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE5B */
+      { 0, -1, 1, 2, 3, -1, -1 }, { 4, 5 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CIRCLE5B */
     { 17, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 44, 48, 5, offsetof(cbf_args, helix),
-      { 0, -1, 1, 2, 3, 4 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX */
+      { 0, -1, 1, 2, 3, 4, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX */
     { 18, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0), 0, 68, 53, 7, offsetof(cbf_args, helix5b),
-      { 0, -1, 1, 2, 3, 4 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX5B */
+      { 0, -1, 1, 2, 3, 4, -1 }, { 5, 6 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* HELIX5B */
     { 19, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 4, 60, 1, offsetof(cbf_args, speed),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* SPEED */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* SPEED */
     { 20, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 8, 61, 2, offsetof(cbf_args, accel),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ACCEL */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* ACCEL */
     { 21, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_on),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_ON */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_ON */
     { 22, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 0, 63, 0, offsetof(cbf_args, cutter_off),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_OFF */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* CUTTER_OFF */
     { 23, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 63, 1, offsetof(cbf_args, guide),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* GUIDE */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* GUIDE */
     { 24, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 16, 64, 4, offsetof(cbf_args, fcparms),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* FCPARMS */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* FCPARMS */
     { 25, "", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 32, 68, 3, offsetof(cbf_args, version),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION */
     { 25, "implib", CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), CBF__PBIT(1), 16, 71, 2, offsetof(cbf_args, version_implib),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION_IMPLIB */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* VERSION_IMPLIB */
     { 26, "", CBF__VBIT(CBF_V1_X) | CBF__VBIT(CBF_V2_X) | CBF__VBIT(CBF_V3_0) | CBF__VBIT(CBF_V4_0), 0, 40, 73, 1, offsetof(cbf_args, comment),
-      { -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* COMMENT */
+      { -1, -1, -1, -1, -1, -1, -1 }, { -1, -1 }, { -1, -1 }, { -1, -1, -1 }, -1, -1, 0u, 0u, 0u, 0u }, /* COMMENT */
 };
 
 static const cbf__command cbf__commands[CBF__NCOMMANDS] = {
@@ -2522,7 +2533,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2526 "cbf.h"
+#line 2537 "cbf.h"
 /* ==== BEGIN runtime/quote.c: verbatim from generator/cbfgen/emit/c/runtime/quote.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/quote.c"
 /* ---- the one quoting rule for names and values from input (issue #35) ----
@@ -2661,7 +2672,7 @@ const char *cbf_quoted(const char *s, int mode)
     return buf;
 }
 /* ==== END runtime/quote.c ==== */
-#line 2665 "cbf.h"
+#line 2676 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2778,7 +2789,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2782 "cbf.h"
+#line 2793 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -3003,7 +3014,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 3007 "cbf.h"
+#line 3018 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3260,7 +3271,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3264 "cbf.h"
+#line 3275 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3438,7 +3449,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3442 "cbf.h"
+#line 3453 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3732,7 +3743,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3736 "cbf.h"
+#line 3747 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4490,26 +4501,15 @@ CBF__INLINE int cbf__scalar_at(const uint8_t *args, long off, unsigned n, double
     return finite;
 }
 
-/* Where a circle or helix ends (none when a value is not finite or the normal
- * is zero). Double precision, operations in the reference order. */
-static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
-                        unsigned n_deg, long o_len, unsigned n_len, double end[3])
+/* A point of a circle or helix: start turned by th (rad, right-hand rule) about the unit axis k through
+ * center, then advanced rise along k. Double precision, operations in the reference order. */
+static void cbf__turned(const double start[3], const double center[3], const double k[3], double th, double rise,
+                        double out[3])
 {
-    double start[3], center[3], normal[3], k[3], p[3], kxv[3], rot[3], deg = 0.0, length = 0.0, c, s, th, kdv, nn;
+    double p[3], kxv[3], rot[3], c, s, kdv;
     int i;
-    if (!cbf__vec_at(args, o_start, start) || !cbf__vec_at(args, o_center, center)
-        || !cbf__vec_at(args, o_normal, normal) || !cbf__scalar_at(args, o_deg, n_deg, &deg))
-        return 0;
-    if (kind == CBF__MOTION_HELIX && !cbf__scalar_at(args, o_len, n_len, &length))
-        return 0;
-    nn = cbf__norm(normal);
-    if (nn == 0.0)
-        return 0;
-    for (i = 0; i < 3; i++) {
-        k[i] = normal[i] / nn;
+    for (i = 0; i < 3; i++)
         p[i] = start[i] - center[i];
-    }
-    th = deg * (CBF__PI / 180.0);
     c = cos(th);
     s = sin(th);
     kxv[0] = k[1] * p[2] - k[2] * p[1];
@@ -4519,7 +4519,42 @@ static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_cent
     for (i = 0; i < 3; i++)
         rot[i] = p[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c);
     for (i = 0; i < 3; i++)
-        end[i] = center[i] + rot[i] + length * k[i];
+        out[i] = center[i] + rot[i] + rise * k[i];
+}
+
+/* A circle or helix of a record's arguments: its start, centre, unit axis, turn (rad) and axial
+ * advance; 0 when a value is not finite or the normal is zero. */
+static int cbf__arc_of(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
+                       unsigned n_deg, long o_len, unsigned n_len, double start[3], double center[3], double k[3],
+                       double *th, double *length)
+{
+    double normal[3], deg = 0.0, nn;
+    int i;
+    *length = 0.0;
+    if (!cbf__vec_at(args, o_start, start) || !cbf__vec_at(args, o_center, center)
+        || !cbf__vec_at(args, o_normal, normal) || !cbf__scalar_at(args, o_deg, n_deg, &deg))
+        return 0;
+    if (kind == CBF__MOTION_HELIX && !cbf__scalar_at(args, o_len, n_len, length))
+        return 0;
+    nn = cbf__norm(normal);
+    if (nn == 0.0)
+        return 0;
+    for (i = 0; i < 3; i++)
+        k[i] = normal[i] / nn;
+    *th = deg * (CBF__PI / 180.0);
+    return 1;
+}
+
+/* Where a circle or helix ends (none when a value is not finite or the normal
+ * is zero). */
+static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
+                        unsigned n_deg, long o_len, unsigned n_len, double end[3])
+{
+    double start[3], center[3], k[3], th, length;
+    if (!cbf__arc_of(kind, args, o_start, o_center, o_normal, o_deg, n_deg, o_len, n_len, start, center, k, &th,
+                     &length))
+        return 0;
+    cbf__turned(start, center, k, th, length, end);
     return 1;
 }
 
@@ -4852,7 +4887,195 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4856 "cbf.h"
+#line 4891 "cbf.h"
+/* ==== BEGIN runtime/path.c: verbatim from generator/cbfgen/emit/c/runtime/path.c, edit it there ==== */
+#line 1 "generator/cbfgen/emit/c/runtime/path.c"
+/* ---- the drawn path of a motion record (issue 34: the workbench draws curves with the engine's geometry) ----
+ * Points along a record's motion as its spec role reads it (start, through, end, centre, normal, turn,
+ * advance): a circle or helix is turned about its axis by cbf__turned, the rotation the continuity check
+ * ends it with (so the last point is the end the checks compare); an arc through a middle point is the
+ * circle through the three. The points are spaced as the Python codec's drawing (cbf.geometry,
+ * Curve.points): every CBF__PATH_STEP_DEG degrees of turn, at most CBF_PATH_MAX_POINTS; a flat circle of
+ * more than one turn is drawn as one turn, then on to its end. */
+
+#define CBF__PATH_STEP_DEG 5.0
+#define CBF__TWO_PI (2.0 * CBF__PI)
+
+/* The offset of the argument a layout's motion role names by key (-1: none); *n its element count. */
+static long cbf__motion_arg(int layout, int key, unsigned *n)
+{
+    int i = cbf__layouts[layout].motion[key];
+    const cbf_field_info *f;
+    if (i < 0)
+        return -1;
+    f = &cbf__args[cbf__layouts[layout].first_arg + (size_t)i];
+    if (n)
+        *n = f->count;
+    return (long)f->offset;
+}
+
+/* ceil(x) steps, at least 1, at most max (x is a turn over the step: in degrees or in radians, as
+ * cbf.geometry reckons each case, so the counts are its counts). */
+static size_t cbf__path_steps(double x, size_t max)
+{
+    double n = ceil(x);
+    if (!(n >= 1.0))
+        return 1;
+    return n > (double)max ? max : (size_t)n;
+}
+
+static void cbf__put(double (*out)[3], const double p[3])
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        (*out)[i] = p[i];
+}
+
+/* Points of a turn th (rad, signed: about k by the right-hand rule) and an advance rise from start about
+ * centre. A zero radius or turn is straight: start, then start advanced. */
+static size_t cbf__path_turn(const double start[3], const double center[3], const double k[3], double th,
+                             double rise, double (*out)[3])
+{
+    double v[3], perp[3], kdv, r, a = fabs(th), p[3];
+    size_t n, j, at = 0;
+    int i;
+    for (i = 0; i < 3; i++)
+        v[i] = start[i] - center[i];
+    kdv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
+    for (i = 0; i < 3; i++)
+        perp[i] = v[i] - k[i] * kdv;
+    r = cbf__norm(perp);
+    if (r == 0.0 || th == 0.0) {
+        cbf__put(&out[0], start);
+        for (i = 0; i < 3; i++)
+            p[i] = start[i] + rise * k[i];
+        cbf__put(&out[1], p);
+        return 2;
+    }
+    if (rise == 0.0 && a > CBF__TWO_PI) {
+        const double sign = th < 0.0 ? -1.0 : 1.0, rest = fmod(a, CBF__TWO_PI);
+        const double step = CBF__PATH_STEP_DEG * (CBF__PI / 180.0);
+        const size_t turn = cbf__path_steps(CBF__TWO_PI / step, CBF_PATH_MAX_POINTS / 2u);
+        const size_t tail = cbf__path_steps(rest / step, CBF_PATH_MAX_POINTS / 2u);
+        for (j = 0; j < turn; j++)
+            cbf__turned(start, center, k, sign * (CBF__TWO_PI * (double)j / (double)turn), 0.0, out[at++]);
+        for (j = 0; j < tail && at + 1 < CBF_PATH_MAX_POINTS; j++)
+            cbf__turned(start, center, k, sign * (rest * (double)j / (double)tail), 0.0, out[at++]);
+        cbf__turned(start, center, k, th, 0.0, out[at++]);
+        return at;
+    }
+    n = cbf__path_steps((a * (180.0 / CBF__PI)) / CBF__PATH_STEP_DEG, CBF_PATH_MAX_POINTS - 1u);
+    for (j = 0; j < n; j++)
+        cbf__turned(start, center, k, th * ((double)j / (double)n), rise * ((double)j / (double)n), out[at++]);
+    cbf__turned(start, center, k, th, rise, out[at++]); /* the end, as the continuity check has it */
+    return at;
+}
+
+/* An arc from start through mid to end: the circle through the three, run start -> mid -> end; straight
+ * when they are collinear, or so nearly that binary32 values cannot tell (cbf.geometry's rule). */
+static size_t cbf__path_through(const double s[3], const double m[3], const double e[3], double (*out)[3])
+{
+    double u[3], w[3], n[3], a[3], rel[3], center[3], k[3], e1[3], e2[3], b[3], n2, r, th, big = 0.0, uu, ww;
+    double ab[3], ap[3], den, t, d[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        u[i] = m[i] - s[i];
+        w[i] = e[i] - s[i];
+        big = fmax(big, fmax(fabs(s[i]), fmax(fabs(m[i]), fabs(e[i]))));
+    }
+    n[0] = u[1] * w[2] - u[2] * w[1];
+    n[1] = u[2] * w[0] - u[0] * w[2];
+    n[2] = u[0] * w[1] - u[1] * w[0];
+    n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    /* the distance of mid from the line through start and end */
+    for (i = 0; i < 3; i++) {
+        ab[i] = e[i] - s[i];
+        ap[i] = m[i] - s[i];
+    }
+    den = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+    t = den == 0.0 ? 0.0 : (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / den;
+    for (i = 0; i < 3; i++)
+        d[i] = ap[i] - ab[i] * t;
+    if (n2 == 0.0 || cbf__norm(d) <= ldexp(1.0, -24) * big) {
+        cbf__put(&out[0], s);
+        cbf__put(&out[1], e);
+        return 2;
+    }
+    uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    for (i = 0; i < 3; i++)
+        a[i] = w[i] * uu - u[i] * ww;
+    rel[0] = (a[1] * n[2] - a[2] * n[1]) / (2.0 * n2);
+    rel[1] = (a[2] * n[0] - a[0] * n[2]) / (2.0 * n2);
+    rel[2] = (a[0] * n[1] - a[1] * n[0]) / (2.0 * n2);
+    for (i = 0; i < 3; i++) {
+        center[i] = s[i] + rel[i];
+        k[i] = n[i] / sqrt(n2); /* start -> mid -> end runs anticlockwise about k */
+        a[i] = s[i] - center[i];
+    }
+    r = cbf__norm(a);
+    for (i = 0; i < 3; i++) {
+        e1[i] = a[i] / r;
+        b[i] = e[i] - center[i];
+    }
+    e2[0] = k[1] * e1[2] - k[2] * e1[1];
+    e2[1] = k[2] * e1[0] - k[0] * e1[2];
+    e2[2] = k[0] * e1[1] - k[1] * e1[0];
+    th = atan2(b[0] * e2[0] + b[1] * e2[1] + b[2] * e2[2], b[0] * e1[0] + b[1] * e1[1] + b[2] * e1[2]);
+    if (th <= 0.0)
+        th += CBF__TWO_PI;
+    return cbf__path_turn(s, center, k, th, 0.0, out);
+}
+
+int cbf_layout_moves(int layout)
+{
+    return cbf__layout_ok(layout) && cbf__commands[cbf__layouts[layout].command].motion != CBF__MOTION_NONE;
+}
+
+size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const double *from,
+                       double (*out)[3])
+{
+    double start[3], end[3], mid[3], center[3], k[3], th, length;
+    unsigned nd = 0, nl = 0;
+    int kind;
+    long o_deg, o_len;
+    if (!cbf__layout_ok(layout) || !args || !out || nargs < cbf__layouts[layout].size)
+        return 0;
+    kind = cbf__commands[cbf__layouts[layout].command].motion;
+    switch (kind) {
+    case CBF__MOTION_POINT:
+        if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+            return 0;
+        cbf__put(&out[0], from ? from : end);
+        cbf__put(&out[1], end);
+        return 2;
+    case CBF__MOTION_LINE:
+        if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_START, NULL), start)
+            || !cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+            return 0;
+        if (cbf__layouts[layout].motion[CBF__M_THROUGH] >= 0) {
+            if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_THROUGH, NULL), mid))
+                return 0;
+            return cbf__path_through(start, mid, end, out);
+        }
+        cbf__put(&out[0], start);
+        cbf__put(&out[1], end);
+        return 2;
+    case CBF__MOTION_CIRCLE:
+    case CBF__MOTION_HELIX:
+        o_deg = cbf__motion_arg(layout, CBF__M_DEGREES, &nd);
+        o_len = cbf__motion_arg(layout, CBF__M_LENGTH, &nl);
+        if (!cbf__arc_of(kind, args, cbf__motion_arg(layout, CBF__M_START, NULL),
+                         cbf__motion_arg(layout, CBF__M_CENTER, NULL), cbf__motion_arg(layout, CBF__M_NORMAL, NULL),
+                         o_deg, nd, o_len, nl, start, center, k, &th, &length))
+            return 0;
+        return cbf__path_turn(start, center, k, th, length, out);
+    default:
+        return 0;
+    }
+}
+/* ==== END runtime/path.c ==== */
+#line 5079 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5018,7 +5241,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5022 "cbf.h"
+#line 5245 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5055,7 +5278,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5059 "cbf.h"
+#line 5282 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6041,7 +6264,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6045 "cbf.h"
+#line 6268 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -8,7 +8,7 @@
  *
  * validate prints what `cbf validate` prints, in its order (header first, then by record,
  * check order, offset), at most --max-findings findings a file (default 50, 0 for all).
- *   cbf-c dump FILE
+ *   cbf-c dump [--path] FILE   (--path: each motion record's drawn path, cbf_motion_path)
  *   cbf-c --version
  *
  * Exit status, as `cbf` (README, "Exit codes"): 0 ok; 1 validate found an
@@ -51,7 +51,7 @@ static void usage(void)
     int p;
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
           "FILE...\n"
-          "       cbf-c dump FILE\n"
+          "       cbf-c dump [--path] FILE\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
     for (p = 0; p < CBF_PROFILE__COUNT; p++)
@@ -166,11 +166,13 @@ static int cmd_validate(int argc, char **argv)
     return status;
 }
 
-static int cmd_dump(const char *path)
+static int cmd_dump(const char *path, int drawn)
 {
     long n = read_cbf(path);
     if (n < 0)
         return CBF_TOOL_EXIT_USAGE;
+    if (drawn)
+        return cbf_tool_path_buffer(path, file_buf, (size_t)n, &std_sink);
     return cbf_tool_dump_buffer(path, file_buf, (size_t)n, &std_sink);
 }
 
@@ -183,9 +185,11 @@ int main(int argc, char **argv)
     if (argc >= 3 && strcmp(argv[1], "validate") == 0)
         return cmd_validate(argc - 2, argv + 2);
     if (argc == 3 && strcmp(argv[1], "dump") == 0)
-        return cmd_dump(argv[2]);
+        return cmd_dump(argv[2], 0);
+    if (argc == 4 && strcmp(argv[1], "dump") == 0 && strcmp(argv[2], "--path") == 0)
+        return cmd_dump(argv[3], 1);
     usage();
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 192 "cbf_tool.c"
+#line 196 "cbf_tool.c"

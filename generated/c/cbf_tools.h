@@ -61,6 +61,9 @@ int cbf_tool_validate_buffer(const char *name, const uint8_t *buf, size_t n, con
                              const cbf_tool_sink *sink);
 /** cbf-c dump of one file: the header and each record, one line each, on sink->out; the status. */
 int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
+/** cbf-c dump --path of one file: each motion record's drawn path (cbf_motion_path), one line a record,
+ * INDEX x,y,z x,y,z ... (a point motion from where the motion before it ended); the status. */
+int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
 
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
@@ -78,7 +81,7 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
 /* ==== END tools/tools_api.h ==== */
-#line 82 "cbf_tools.h"
+#line 85 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -265,7 +268,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 269 "cbf_tools.h"
+#line 272 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -1769,7 +1772,7 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1773 "cbf_tools.h"
+#line 1776 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
@@ -1952,7 +1955,7 @@ int cbf_tool_machine_file(const char *path, cbf_options *opt)
     return cbf_tool_machine_buffer(path, opt_file_buf, n, opt);
 }
 /* ==== END tools/files.c ==== */
-#line 1956 "cbf_tools.h"
+#line 1959 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2264,24 +2267,34 @@ static void dump_record(const cbf_record *rec, const uint8_t *buf)
     out_char('\n');
 }
 
+/* 1 when every record of the file frames (r then reads it from its first record); else 0 and one line
+ * on stderr. The records are framed first, as cbf decodes before it prints: a cut record is one line. */
+static int records_framed(const char *file, const uint8_t *buf, size_t n, cbf_reader *r)
+{
+    cbf_record rec;
+    int rc;
+    if (!frame(file, buf, n))
+        return 0;
+    if (cbf_reader_init(r, buf, n) != CBF_OK)
+        return 0; /* frame refused a short file already */
+    while ((rc = cbf_next_record(r, &rec)) == 1) {}
+    if (rc < 0) {
+        err_printf("cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) (%s)\n",
+                   file, (unsigned long)r->pos, (unsigned long)r->index, (unsigned long)(n - r->pos),
+                   (unsigned long)r->header.count, cbf_strerror(rc));
+        return 0;
+    }
+    (void)cbf_reader_init(r, buf, n);
+    return 1;
+}
+
 static int dump(const char *file, const uint8_t *buf, size_t n)
 {
     cbf_reader r;
     cbf_record rec;
     int rc;
-    if (!frame(file, buf, n))
+    if (!records_framed(file, buf, n, &r))
         return CBF_TOOL_EXIT_USAGE;
-    /* the records are framed first, as cbf decodes before it prints: a cut record is one line */
-    if (cbf_reader_init(&r, buf, n) != CBF_OK)
-        return CBF_TOOL_EXIT_USAGE; /* frame refused a short file already */
-    while ((rc = cbf_next_record(&r, &rec)) == 1) {}
-    if (rc < 0) {
-        err_printf("cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) (%s)\n",
-                   file, (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
-                   (unsigned long)r.header.count, cbf_strerror(rc));
-        return CBF_TOOL_EXIT_USAGE;
-    }
-    (void)cbf_reader_init(&r, buf, n);
     dump_header(&r, buf);
     while ((rc = cbf_next_record(&r, &rec)) == 1)
         dump_record(&rec, buf);
@@ -2298,8 +2311,46 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
     out_flush();
     return status;
 }
+
+/* cbf-c dump --path: each motion record's drawn path (cbf_motion_path), one line a record,
+ * INDEX x,y,z x,y,z ...; a point motion starts where the motion before it ended (as cbf.geometry's
+ * walk: none after a motion of no path). */
+static int dump_path(const char *file, const uint8_t *buf, size_t n)
+{
+    static double pts[CBF_PATH_MAX_POINTS][3];
+    double last[3];
+    int have = 0;
+    cbf_reader r;
+    cbf_record rec;
+    if (!records_framed(file, buf, n, &r))
+        return CBF_TOOL_EXIT_USAGE;
+    while (cbf_next_record(&r, &rec) == 1) {
+        size_t k, np = cbf_motion_path(rec.layout, rec.args, rec.nargs, have ? last : NULL, pts);
+        if (np == 0) {
+            have = have && !cbf_layout_moves(rec.layout); /* a motion of no path: no position after it */
+            continue;
+        }
+        out_printf("%lu", (unsigned long)rec.index);
+        for (k = 0; k < np; k++)
+            out_printf(" %.9g,%.9g,%.9g", pts[k][0], pts[k][1], pts[k][2]);
+        out_char('\n');
+        for (k = 0; k < 3u; k++)
+            last[k] = pts[np - 1u][k];
+        have = 1;
+    }
+    return CBF_TOOL_EXIT_OK;
+}
+
+int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
+{
+    int status;
+    out_begin(sink);
+    status = dump_path(cbf_tool_name(name), buf, n);
+    out_flush();
+    return status;
+}
 /* ==== END tools/engine.c ==== */
-#line 2303 "cbf_tools.h"
+#line 2354 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

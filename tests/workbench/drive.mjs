@@ -1,6 +1,7 @@
 // Drives the workbench page in headless Chromium (playwright-core, Debian's /usr/bin/chromium) for
 // tests/test_workbench_page.py: node drive.mjs PAGE.html SHOTS_DIR JOBS.json
-// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph}. Prints JSON:
+// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph, "paged": PATH of
+// a file of more than a page of motion records, "curve": [PATH, RECORD] of a curved motion}. Prints JSON:
 // each file's printed text and exit status as the page shows them, the requests the page made, the
 // console errors, what fetch() gave from inside the page, and the screenshots' paths and page widths.
 import { readFileSync } from 'node:fs';
@@ -47,12 +48,30 @@ async function feed(path, profile) {
   }
 }
 const results = [];
+// The toolpath's Tab stops, a page of records at a time: the top view's focusable segments and the
+// records of the records' page, on this page and on the next.
+const tabStops = () => page.evaluate(() => ({
+  tabbable: [...new Set([...document.querySelectorAll('#path-top path[tabindex="0"]')].map((p) => p.dataset.record))],
+  rows: [...document.querySelectorAll('#records tbody tr')].map((r) => r.dataset.record),
+  segments: document.querySelectorAll('#path-top path').length,
+}));
+let paged = null;
+let curve = null;
 for (const [path, profile] of jobs.files) {
   const t0 = performance.now();
   await feed(path, profile);
   const ms = performance.now() - t0; // choosing the file to its findings shown (polled every 20 ms)
   results.push({ path, profile, ms, text: await page.textContent('#raw'),
     status: Number(await page.getAttribute('#verdict', 'data-status')) });
+  if (path === jobs.paged && paged === null) {
+    const first = await tabStops();
+    await page.click('#next');
+    paged = [first, await tabStops()];
+  }
+  if (path === jobs.curve[0] && curve === null) { // the points the top view draws for the curve's record
+    curve = await page.evaluate((r) => [...document.querySelectorAll(`#path-top path[data-record="${r}"]`)]
+      .map((p) => p.getAttribute('d')), String(jobs.curve[1]));
+  }
 }
 // Nothing leaves the page: a fetch() from inside it is refused by the Content-Security-Policy.
 const fetched = await page.evaluate(async () => {
@@ -101,5 +120,41 @@ if (others.length > 1) {
   await page.keyboard.press('Enter');
   picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
 }
+// The 3D view shares the selection: it shows the selected record; turned and zoomed by keyboard and
+// mouse; ] selects the next motion record, a click on a drawn segment its record.
+const view = () => page.evaluate(() => {
+  const c = document.getElementById('path-3d');
+  const row = document.querySelector('#records tr.wb-selected');
+  return { ...c.dataset, row: row === null ? null : row.dataset.record };
+});
+const three = { shared: await view() };
+await page.focus('#path-3d');
+for (const key of ['ArrowRight', 'ArrowUp', '+']) await page.keyboard.press(key);
+three.keyboard = await view();
+await page.keyboard.press(']');
+three.next = await view();
+await page.keyboard.press('0');
+const box = await page.locator('#path-3d').boundingBox();
+await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+await page.mouse.down();
+await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 20, { steps: 4 });
+await page.mouse.up();
+await page.mouse.wheel(0, -200);
+three.mouse = await view();
+await page.keyboard.press('0');
+// a record other than the selected one whose segment's middle no other segment is drawn nearer to
+const aim = await page.evaluate(() => {
+  const sel = document.getElementById('path-3d').dataset.selected;
+  const recs = [...new Set([...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record))];
+  for (const r of recs.filter((x) => x !== sel)) {
+    const at = window.cbfWorkbench.where3d(Number(r));
+    if (at !== null && String(window.cbfWorkbench.pick3d(at[0], at[1])) === r) return { want: r, at };
+  }
+  return null;
+});
+if (aim !== null) {
+  await page.mouse.click(box.x + aim.at[0], box.y + aim.at[1]);
+  three.clicked = { want: aim.want, ...(await view()) };
+}
 await context.close();
-process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked })}\n`);
+process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked, paged, curve, three })}\n`);

@@ -22,7 +22,7 @@ from .machine import MachineView, machine_view
 # The model's vocabulary the engine understands (loader.py, spec comments); the role kinds, field
 # types and check kinds come from the registry (cbfgen/registry.py), never from a list here.
 MOTION_KINDS = registry.ROLE_KINDS["motion"]
-MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length")
+MOTION_KEYS = ("start", "end", "center", "normal", "degrees", "length", "through")
 ORIENT_KINDS = registry.ROLE_KINDS["orientation"]
 ORIENT_KEYS = ("start", "end")
 SHAPE_KINDS = registry.ROLE_KINDS["shape"]

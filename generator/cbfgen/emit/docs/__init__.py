@@ -210,17 +210,17 @@ def _motion_names(spec: Spec, kind: str) -> dict[str, str] | None:
     return None
 
 
-def figures(spec: Spec, per_row: int = 16) -> dict[str, str]:
+def figures(spec: Spec, per_row: int = 16, narrow: bool = False) -> dict[str, str]:
     """Every SVG figure, by path relative to the docs folder; per_row: the bytes a row of a byte-field
     diagram shows (the HTML site also draws them 8 a row, for narrow screens)."""
     out: dict[str, str] = {}
     for h in spec.headers.values():
         versions = ", ".join(v.id for v in spec.versions if v.header == h.id)
         out[header_svg(h.id)] = svg.byte_field(f"Header layout {h.id} (versions {versions}), {h.size} bytes",
-                                               h.fields, h.size, per_row)
+                                               h.fields, h.size, per_row, narrow)
     rec = spec.record
     out[RECORD_SVG] = svg.byte_field(f"Record head, {rec.head_size} bytes (then the arguments)",
-                                     rec.fields, rec.head_size, min(per_row, rec.head_size))
+                                     rec.fields, rec.head_size, min(per_row, rec.head_size), narrow)
     for c in spec.commands:
         for lay in c.layouts:
             if lay.args:
@@ -229,7 +229,7 @@ def figures(spec: Spec, per_row: int = 16) -> dict[str, str]:
                 shown = lay.sized(lay.sizes[0]) if lay.repeated is not None else lay
                 rep = f" + {lay.repeated.size}·n" if lay.repeated is not None else ""
                 out[layout_svg(lay)] = svg.byte_field(f"{name} arguments, {lay.size}{rep} bytes",
-                                                      (shown or lay).args, (shown or lay).size, per_row)
+                                                      (shown or lay).args, (shown or lay).size, per_row, narrow)
     circle = _motion_names(spec, "circle")
     if circle:
         out[MOTION_SVG] = svg.motion(circle, _motion_names(spec, "helix"), "Circle and helix end points")

@@ -48,7 +48,8 @@ LAYOUT_PROBE = """JSON.stringify((function () {
   return {
     figures: Array.from(document.images).map(i => i.currentSrc || i.src).map((src, k) => [src, k])
       .filter(([src]) => /\\/svg\\//.test(src))
-      .map(([src, k]) => [src, document.images[k].getBoundingClientRect().width, document.images[k].naturalWidth]),
+      .map(([src, k]) => { const img = document.images[k], box = img.closest(".figure");
+        return [src, img.getBoundingClientRect().width, img.naturalWidth, box ? box.clientWidth : 0]; }),
     beside: !!(n && m && n.right <= m.left + 1),
     nav: n ? n.height : 0, page: document.documentElement.scrollHeight
   };
@@ -100,7 +101,7 @@ def svg_min_font(path: Path) -> float:
 def layout_problems(rel: str, width: int, probe: Mapping[str, Any]) -> list[str]:
     """The figures' text size and the sidebar's height of one page at one width (LAYOUT_PROBE's answer)."""
     problems = []
-    for src, shown, natural in probe["figures"]:
+    for src, shown, natural, _box in probe["figures"]:
         if not natural:
             continue  # not loaded: check_page names it
         px = svg_min_font(Path(unquote(urlparse(src).path))) * shown / natural

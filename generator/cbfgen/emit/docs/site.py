@@ -284,7 +284,7 @@ def pages(spec: Spec, gallery: Path | None = None, api: Path | None = None,
     ctx["workbench_page"] = "workbench.html" if workbench else None
     files = emit(spec, ctx)
     wide = figures(spec)
-    narrow = {rel: text for rel, text in figures(spec, NARROW_ROW).items() if text != wide[rel]}
+    narrow = {rel: text for rel, text in figures(spec, NARROW_ROW, narrow=True).items() if text != wide[rel]}
     if gallery is not None:
         files.update(gallery_files(gallery))
     if api is not None:

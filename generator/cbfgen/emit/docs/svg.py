@@ -10,6 +10,7 @@ coordinates, no timestamps, no ids from memory addresses.
 from __future__ import annotations
 
 import math
+import textwrap
 from collections.abc import Sequence
 from html import escape
 
@@ -75,14 +76,17 @@ def _type_text(f: Field) -> str:
     return f.type
 
 
-def _open(width: float, height: float, title: str) -> list[str]:
+def _open(width: float, height: float, title: str | list[str]) -> list[str]:
+    heads = [title] if isinstance(title, str) else title
+    whole = " ".join(heads)
     return [
         '<?xml version="1.0" encoding="UTF-8"?>',
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{_x(width)}" height="{_x(height)}" '
         f'viewBox="0 0 {_x(width)} {_x(height)}" role="img" font-family="monospace" font-size="{FONT}">',
-        f"<title>{escape(title)}</title>",
+        f"<title>{escape(whole)}</title>",
         f'<rect x="0" y="0" width="{_x(width)}" height="{_x(height)}" fill="#ffffff"/>',
-        f'<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{escape(title)}</text>',
+        *(f'<text x="{LEFT}" y="{18 + i * LEGEND_LINE}" font-size="14" font-weight="bold">'
+          f"{escape(head)}</text>" for i, head in enumerate(heads)),
     ]
 
 
@@ -97,12 +101,12 @@ def box_label(k: int, name: str, width: float, cont: bool) -> list[str]:
     return (rest if cont else first)[-1]
 
 
-def _field_shapes(k: int, f: Field, per_row: int) -> list[str]:
+def _field_shapes(k: int, f: Field, per_row: int, cell: float = CELL) -> list[str]:
     segs = _segments(f, per_row)
     fill = FILL.get(category(f), "#ffffff")
     out = [f"<g><title>{escape(f'{f.name}: offset {f.offset}, {f.size} bytes, {_type_text(f)}')}</title>"]
     for n_seg, (row, col, n) in enumerate(segs):
-        x, y, w = LEFT + col * CELL, TOP + row * ROW, n * CELL
+        x, y, w = LEFT + col * cell, TOP + row * ROW, n * cell
         out.append(f'<rect x="{_x(x)}" y="{_x(y)}" width="{_x(w)}" height="{ROW}" fill="{fill}" stroke="#333333"/>')
         lines = box_label(k, f.name, w, n_seg > 0)
         cx = _x(x + w / 2)
@@ -116,28 +120,49 @@ def _field_shapes(k: int, f: Field, per_row: int) -> list[str]:
     return out
 
 
-def byte_field(title: str, fields: Sequence[Field], size: int, per_row: int = 16) -> str:
-    """A byte-field diagram: per_row bytes a row, one box per field, a numbered legend."""
+TITLE_CHAR = 8.6  # width of one character of a title (14 px bold monospace)
+NARROW_CELL = 36  # width of one byte in a diagram drawn for a narrow screen (byte_field's narrow)
+
+
+def byte_field(title: str, fields: Sequence[Field], size: int, per_row: int = 16, narrow: bool = False) -> str:
+    """A byte-field diagram: per_row bytes a row, one box per field, a numbered legend. narrow: drawn for a
+    phone's screen (the site's 390 px rule: at 8 bytes a row it was 432 px wide, 74 px more than the page's
+    column there): narrower bytes, the title wrapped and each legend entry on two lines."""
     per_row = max(1, min(per_row, size))
+    cell = NARROW_CELL if narrow else CELL
     rows = max(1, math.ceil(size / per_row))
-    width = LEFT + per_row * CELL + 12
-    legend_top = TOP + rows * ROW + 24
-    height = legend_top + len(fields) * LEGEND_LINE + 8
-    svg = _open(width, height, title)
+    width = LEFT + per_row * cell + 12
+    # the title (14 px bold) wrapped at spaces to the drawing's width
+    heads = textwrap.wrap(title, max(12, int((width - LEFT) / TITLE_CHAR))) if narrow else [title]
+    top = TOP + (len(heads) - 1) * LEGEND_LINE
+    legend_top = top + rows * ROW + 24
+    lines = []
+    for k, f in enumerate(fields, 1):
+        if narrow:
+            lines.append([f"{k:>2}  {f.name}", f"    @{f.offset} +{f.size} {_type_text(f)}"])
+        else:
+            lines.append([f"{k:>2}  {f.name:<26} @{f.offset:<4} +{f.size:<3} {_type_text(f)}"])
+    height = legend_top + sum(len(x) for x in lines) * LEGEND_LINE + 8
+    svg = _open(width, height, heads)
     for col in range(per_row):
-        svg.append(f'<text x="{_x(LEFT + col * CELL + CELL / 2)}" y="{TOP - 8}" text-anchor="middle" '
+        svg.append(f'<text x="{_x(LEFT + col * cell + cell / 2)}" y="{top - 8}" text-anchor="middle" '
                    f'fill="#666666">+{col}</text>')
+    shapes = []
     for row in range(rows):
-        svg.append(f'<text x="{LEFT - 6}" y="{_x(TOP + row * ROW + ROW / 2 + 4)}" text-anchor="end" '
+        svg.append(f'<text x="{LEFT - 6}" y="{_x(top + row * ROW + ROW / 2 + 4)}" text-anchor="end" '
                    f'fill="#666666">{row * per_row}</text>')
     for k, f in enumerate(fields, 1):
-        svg += _field_shapes(k, f, per_row)
-    for k, f in enumerate(fields, 1):
-        y = legend_top + (k - 1) * LEGEND_LINE
+        shapes += _field_shapes(k, f, per_row, cell)
+    if top != TOP:
+        shapes = [f'<g transform="translate(0 {top - TOP})">', *shapes, "</g>"]
+    svg += shapes
+    y = legend_top
+    for f, entry in zip(fields, lines, strict=True):
         fill = FILL.get(category(f), "#ffffff")
         svg.append(f'<rect x="{LEFT}" y="{y - 10}" width="12" height="12" fill="{fill}" stroke="#333333"/>')
-        line = f"{k:>2}  {f.name:<26} @{f.offset:<4} +{f.size:<3} {_type_text(f)}"
-        svg.append(f'<text x="{LEFT + 20}" y="{y}" xml:space="preserve">{escape(line)}</text>')
+        for line in entry:
+            svg.append(f'<text x="{LEFT + 20}" y="{y}" xml:space="preserve">{escape(line)}</text>')
+            y += LEGEND_LINE
     svg.append("</svg>")
     return "\n".join(svg) + "\n"
 

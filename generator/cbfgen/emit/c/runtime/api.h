@@ -82,6 +82,17 @@ long cbf_layout_nb(int layout, size_t n);
 /** How many items of its group a record of the layout with nb argument bytes holds (0 without a
  *  group), or -1 when the layout does not take nb bytes. */
 long cbf_layout_items(int layout, size_t nb);
+
+/** The drawn path of a motion record (its layout and argument bytes): points along its motion in the
+ * engine's geometry, the last its end as the continuity check has it; a circle, helix or arc through a
+ * middle point every 5 degrees of turn, at most CBF_PATH_MAX_POINTS (runtime/path.c). from: the position
+ * before it, where a point motion starts (NULL: none; it starts at its end). The count written to out
+ * (room for CBF_PATH_MAX_POINTS); 0 when the layout has no motion or its values are not finite. */
+#define CBF_PATH_MAX_POINTS 145u
+/** 1 when the layout's command is a motion (its spec role), else 0. */
+int cbf_layout_moves(int layout);
+size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const double *from, double (*out)[3]);
+
 /** Checksum of argument bytes, as the spec computes the record's argument checksum. */
 uint32_t cbf_args_checksum(const uint8_t *args, size_t n);
 

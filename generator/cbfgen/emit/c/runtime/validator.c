@@ -302,26 +302,15 @@ CBF__INLINE int cbf__scalar_at(const uint8_t *args, long off, unsigned n, double
     return finite;
 }
 
-/* Where a circle or helix ends (none when a value is not finite or the normal
- * is zero). Double precision, operations in the reference order. */
-static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
-                        unsigned n_deg, long o_len, unsigned n_len, double end[3])
+/* A point of a circle or helix: start turned by th (rad, right-hand rule) about the unit axis k through
+ * center, then advanced rise along k. Double precision, operations in the reference order. */
+static void cbf__turned(const double start[3], const double center[3], const double k[3], double th, double rise,
+                        double out[3])
 {
-    double start[3], center[3], normal[3], k[3], p[3], kxv[3], rot[3], deg = 0.0, length = 0.0, c, s, th, kdv, nn;
+    double p[3], kxv[3], rot[3], c, s, kdv;
     int i;
-    if (!cbf__vec_at(args, o_start, start) || !cbf__vec_at(args, o_center, center)
-        || !cbf__vec_at(args, o_normal, normal) || !cbf__scalar_at(args, o_deg, n_deg, &deg))
-        return 0;
-    if (kind == CBF__MOTION_HELIX && !cbf__scalar_at(args, o_len, n_len, &length))
-        return 0;
-    nn = cbf__norm(normal);
-    if (nn == 0.0)
-        return 0;
-    for (i = 0; i < 3; i++) {
-        k[i] = normal[i] / nn;
+    for (i = 0; i < 3; i++)
         p[i] = start[i] - center[i];
-    }
-    th = deg * (CBF__PI / 180.0);
     c = cos(th);
     s = sin(th);
     kxv[0] = k[1] * p[2] - k[2] * p[1];
@@ -331,7 +320,42 @@ static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_cent
     for (i = 0; i < 3; i++)
         rot[i] = p[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c);
     for (i = 0; i < 3; i++)
-        end[i] = center[i] + rot[i] + length * k[i];
+        out[i] = center[i] + rot[i] + rise * k[i];
+}
+
+/* A circle or helix of a record's arguments: its start, centre, unit axis, turn (rad) and axial
+ * advance; 0 when a value is not finite or the normal is zero. */
+static int cbf__arc_of(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
+                       unsigned n_deg, long o_len, unsigned n_len, double start[3], double center[3], double k[3],
+                       double *th, double *length)
+{
+    double normal[3], deg = 0.0, nn;
+    int i;
+    *length = 0.0;
+    if (!cbf__vec_at(args, o_start, start) || !cbf__vec_at(args, o_center, center)
+        || !cbf__vec_at(args, o_normal, normal) || !cbf__scalar_at(args, o_deg, n_deg, &deg))
+        return 0;
+    if (kind == CBF__MOTION_HELIX && !cbf__scalar_at(args, o_len, n_len, length))
+        return 0;
+    nn = cbf__norm(normal);
+    if (nn == 0.0)
+        return 0;
+    for (i = 0; i < 3; i++)
+        k[i] = normal[i] / nn;
+    *th = deg * (CBF__PI / 180.0);
+    return 1;
+}
+
+/* Where a circle or helix ends (none when a value is not finite or the normal
+ * is zero). */
+static int cbf__arc_end(int kind, const uint8_t *args, long o_start, long o_center, long o_normal, long o_deg,
+                        unsigned n_deg, long o_len, unsigned n_len, double end[3])
+{
+    double start[3], center[3], k[3], th, length;
+    if (!cbf__arc_of(kind, args, o_start, o_center, o_normal, o_deg, n_deg, o_len, n_len, start, center, k, &th,
+                     &length))
+        return 0;
+    cbf__turned(start, center, k, th, length, end);
     return 1;
 }
 

@@ -23,7 +23,7 @@ static void usage(void)
     int p;
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
           "FILE...\n"
-          "       cbf-c dump FILE\n"
+          "       cbf-c dump [--path] FILE\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
     for (p = 0; p < CBF_PROFILE__COUNT; p++)
@@ -138,11 +138,13 @@ static int cmd_validate(int argc, char **argv)
     return status;
 }
 
-static int cmd_dump(const char *path)
+static int cmd_dump(const char *path, int drawn)
 {
     long n = read_cbf(path);
     if (n < 0)
         return CBF_TOOL_EXIT_USAGE;
+    if (drawn)
+        return cbf_tool_path_buffer(path, file_buf, (size_t)n, &std_sink);
     return cbf_tool_dump_buffer(path, file_buf, (size_t)n, &std_sink);
 }
 
@@ -155,7 +157,9 @@ int main(int argc, char **argv)
     if (argc >= 3 && strcmp(argv[1], "validate") == 0)
         return cmd_validate(argc - 2, argv + 2);
     if (argc == 3 && strcmp(argv[1], "dump") == 0)
-        return cmd_dump(argv[2]);
+        return cmd_dump(argv[2], 0);
+    if (argc == 4 && strcmp(argv[1], "dump") == 0 && strcmp(argv[2], "--path") == 0)
+        return cmd_dump(argv[3], 1);
     usage();
     return CBF_TOOL_EXIT_USAGE;
 }

@@ -307,24 +307,34 @@ static void dump_record(const cbf_record *rec, const uint8_t *buf)
     out_char('\n');
 }
 
+/* 1 when every record of the file frames (r then reads it from its first record); else 0 and one line
+ * on stderr. The records are framed first, as cbf decodes before it prints: a cut record is one line. */
+static int records_framed(const char *file, const uint8_t *buf, size_t n, cbf_reader *r)
+{
+    cbf_record rec;
+    int rc;
+    if (!frame(file, buf, n))
+        return 0;
+    if (cbf_reader_init(r, buf, n) != CBF_OK)
+        return 0; /* frame refused a short file already */
+    while ((rc = cbf_next_record(r, &rec)) == 1) {}
+    if (rc < 0) {
+        err_printf("cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) (%s)\n",
+                   file, (unsigned long)r->pos, (unsigned long)r->index, (unsigned long)(n - r->pos),
+                   (unsigned long)r->header.count, cbf_strerror(rc));
+        return 0;
+    }
+    (void)cbf_reader_init(r, buf, n);
+    return 1;
+}
+
 static int dump(const char *file, const uint8_t *buf, size_t n)
 {
     cbf_reader r;
     cbf_record rec;
     int rc;
-    if (!frame(file, buf, n))
+    if (!records_framed(file, buf, n, &r))
         return CBF_TOOL_EXIT_USAGE;
-    /* the records are framed first, as cbf decodes before it prints: a cut record is one line */
-    if (cbf_reader_init(&r, buf, n) != CBF_OK)
-        return CBF_TOOL_EXIT_USAGE; /* frame refused a short file already */
-    while ((rc = cbf_next_record(&r, &rec)) == 1) {}
-    if (rc < 0) {
-        err_printf("cbf-c: %s: offset %lu: record %lu is cut: %lu byte(s) left, the header counts %lu record(s) (%s)\n",
-                   file, (unsigned long)r.pos, (unsigned long)r.index, (unsigned long)(n - r.pos),
-                   (unsigned long)r.header.count, cbf_strerror(rc));
-        return CBF_TOOL_EXIT_USAGE;
-    }
-    (void)cbf_reader_init(&r, buf, n);
     dump_header(&r, buf);
     while ((rc = cbf_next_record(&r, &rec)) == 1)
         dump_record(&rec, buf);
@@ -338,6 +348,44 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
     int status;
     out_begin(sink);
     status = dump(cbf_tool_name(name), buf, n);
+    out_flush();
+    return status;
+}
+
+/* cbf-c dump --path: each motion record's drawn path (cbf_motion_path), one line a record,
+ * INDEX x,y,z x,y,z ...; a point motion starts where the motion before it ended (as cbf.geometry's
+ * walk: none after a motion of no path). */
+static int dump_path(const char *file, const uint8_t *buf, size_t n)
+{
+    static double pts[CBF_PATH_MAX_POINTS][3];
+    double last[3];
+    int have = 0;
+    cbf_reader r;
+    cbf_record rec;
+    if (!records_framed(file, buf, n, &r))
+        return CBF_TOOL_EXIT_USAGE;
+    while (cbf_next_record(&r, &rec) == 1) {
+        size_t k, np = cbf_motion_path(rec.layout, rec.args, rec.nargs, have ? last : NULL, pts);
+        if (np == 0) {
+            have = have && !cbf_layout_moves(rec.layout); /* a motion of no path: no position after it */
+            continue;
+        }
+        out_printf("%lu", (unsigned long)rec.index);
+        for (k = 0; k < np; k++)
+            out_printf(" %.9g,%.9g,%.9g", pts[k][0], pts[k][1], pts[k][2]);
+        out_char('\n');
+        for (k = 0; k < 3u; k++)
+            last[k] = pts[np - 1u][k];
+        have = 1;
+    }
+    return CBF_TOOL_EXIT_OK;
+}
+
+int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
+{
+    int status;
+    out_begin(sink);
+    status = dump_path(cbf_tool_name(name), buf, n);
     out_flush();
     return status;
 }

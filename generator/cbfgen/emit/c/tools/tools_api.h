@@ -43,6 +43,9 @@ int cbf_tool_validate_buffer(const char *name, const uint8_t *buf, size_t n, con
                              const cbf_tool_sink *sink);
 /** cbf-c dump of one file: the header and each record, one line each, on sink->out; the status. */
 int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
+/** cbf-c dump --path of one file: each motion record's drawn path (cbf_motion_path), one line a record,
+ * INDEX x,y,z x,y,z ... (a point motion from where the motion before it ended); the status. */
+int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
 
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to

@@ -3,7 +3,8 @@ the C engine says of it, in the browser, with nothing installed and nothing sent
 
 The page runs build/wasm/cbf-c.wasm (the c-wasm binding: the C engine's own files, mk/wasm.mk) as a WASI
 command, through a small in-page WASI layer (workbench.js) over an in-memory file system: the verdict
-and findings are exactly what `cbf-c validate` prints, the records table is `cbf-c dump`. What the page
+and findings are exactly what `cbf-c validate` prints, the records table is `cbf-c dump`, the toolpath
+(top, side and 3D views) is `cbf-c dump --path` (each motion as the engine's geometry turns it). What the page
 knows of the format beyond that comes from the spec, as data: the byte layouts (the same
 layouts.json the conformance kit ships), the profiles, and each check's anchor in the document.
 
@@ -48,9 +49,8 @@ def page_data(spec: Spec) -> dict[str, Any]:
         "spec": f"{spec.meta['part_number']} rev {spec.meta['revision']}",
         "layouts": layouts_data(spec),
         "profiles": [{"id": p.id, "doc": p.doc} for p in spec.profiles],
-        # the toolpath: each motion command's role (which arguments are its start, through, end ...) and
-        # the commands that turn cutting on or off (spec/cbf.yaml's `motion` and `sets`)
-        "motion": {c.name: c.motion for c in spec.commands if c.motion},
+        # the toolpath is the engine's (cbf-c dump --path); the commands that turn cutting on or off
+        # (spec/cbf.yaml's `sets`) tell cutting from moving
         "cutting": {c.name: c.sets["cutting"] for c in spec.commands if c.sets and "cutting" in c.sets},
         "checks": {k.id: {"href": f"index.html#check-{_anchor(k.id)}", "severity": k.severity,
                           "clause": k.clause, "text": k.text} for k in spec.checks},

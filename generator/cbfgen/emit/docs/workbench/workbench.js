@@ -227,37 +227,29 @@ function recordFields(rec, version) {
 }
 
 // -- the toolpath ---------------------------------------------------------------------------------------
-// Each motion record as cbf-c dump prints its positions, joined in the order its spec role names them
-// (start, through, end; a point from the position before it; a circle or helix: its start and centre).
+// Each motion record's path as the engine draws it (`cbf-c dump --path`: cbf_motion_path, the engine's
+// own geometry: a circle, helix or arc turned as its checks turn it), one line a record: INDEX x,y,z ...
 // Cutting or moving: the state the spec's `sets: {cutting: ...}` commands leave before the record.
 const SVG = 'http://www.w3.org/2000/svg';
-const ROLE_ORDER = ['start', 'through', 'center', 'end'];
 
-function argVector(args, name) {
-  const m = new RegExp(`(?:^|\\s)${name}=([^\\s]+)`).exec(args);
-  if (m === null) return null;
-  const v = m[1].split(',').map((x) => parseFloat(x));
-  return v.length === 3 && v.every(Number.isFinite) ? v : null;
+function parsePath(text) {
+  const out = new Map();
+  for (const line of text.split('\n')) {
+    const parts = line.split(' ');
+    if (parts.length < 2 || !/^\d+$/.test(parts[0])) continue;
+    const pts = parts.slice(1).map((p) => p.split(',').map(Number));
+    if (pts.every((p) => p.length === 3 && p.every(Number.isFinite))) out.set(Number(parts[0]), pts);
+  }
+  return out;
 }
 
-function segments(records) {
+function segments(records, paths) {
   const out = [];
   let cutting = false;
-  let last = null;
   for (const r of records) {
     if (Object.prototype.hasOwnProperty.call(DATA.cutting, r.name)) cutting = DATA.cutting[r.name];
-    const role = DATA.motion[r.name];
-    if (role === undefined) continue;
-    const pts = [];
-    if (role.kind === 'point' && last !== null) pts.push(last);
-    for (const k of ROLE_ORDER) {
-      if (role[k] === undefined) continue;
-      const v = argVector(r.args, role[k]);
-      if (v !== null) pts.push(v);
-    }
-    if (pts.length === 0) continue;
-    out.push({ record: r.index, cutting, pts });
-    last = role.kind === 'circle' || role.kind === 'helix' ? null : pts[pts.length - 1];
+    const pts = paths.get(r.index);
+    if (pts !== undefined) out.push({ record: r.index, cutting, pts });
   }
   return out;
 }
@@ -294,8 +286,7 @@ function drawView(svg, segs, axes) {
     path.setAttribute('class', s.cutting ? 'wb-cut' : 'wb-move');
     path.dataset.record = String(s.record);
     if (state.byRecord.has(s.record)) path.classList.add('wb-has-finding');
-    if (axes[1] === 1) {
-      path.setAttribute('tabindex', '0');
+    if (axes[1] === 1) { // the top view's segments are the toolpath's buttons (Tab stops: tabStops)
       path.setAttribute('role', 'button');
       path.setAttribute('aria-label', `record ${s.record}, ${s.cutting ? 'cutting' : 'moving'}`);
     }
@@ -305,14 +296,30 @@ function drawView(svg, segs, axes) {
   return drawn;
 }
 
-function showPath() {
-  const segs = segments(state.dump.records);
+function showPath(paths) {
+  const segs = segments(state.dump.records, paths);
   state.segs = new Map();
+  state.tabbable = [];
   for (const [id, axes] of [['path-top', [0, 1]], ['path-side', [0, 2]]]) {
     for (const p of drawView($(id), segs, axes)) {
       const n = Number(p.dataset.record);
       if (!state.segs.has(n)) state.segs.set(n, []);
       state.segs.get(n).push(p);
+    }
+  }
+  view3d.load(segs);
+}
+
+// The top view's segments are Tab stops a page at a time, as the records are: those of the records on
+// the records' current page (65,535 segments in the tab order made the rest of the page unreachable).
+function tabStops() {
+  for (const p of state.tabbable) p.removeAttribute('tabindex');
+  state.tabbable = [];
+  for (const r of state.dump.records.slice(state.page * PAGE_SIZE, (state.page + 1) * PAGE_SIZE)) {
+    for (const p of state.segs.get(r.index) || []) {
+      if (p.ownerSVGElement.id !== 'path-top') continue;
+      p.setAttribute('tabindex', '0');
+      state.tabbable.push(p);
     }
   }
 }
@@ -323,11 +330,207 @@ function markSegment(record) {
     p.classList.add('wb-selected');
     p.parentNode.append(p); // drawn on top of its neighbours
   }
+  view3d.select(record);
 }
+
+// -- the 3D view: the same segments on a canvas, an orthographic view turned about the path's centre ----
+// Drag or the arrow keys turn it, the wheel or + and - zoom, 0 resets; a click, or [ and ] (the motion
+// record before or after), selects a segment's record, as in the other views.
+const view3d = (() => {
+  const HOME = { yaw: -0.6, pitch: 0.55, zoom: 1 };
+  const STEP = Math.PI / 12;
+  let segs = [];
+  let centre = [0, 0, 0];
+  let radius = 1;
+  let selected;
+  let v = { ...HOME };
+  const canvas = () => $('path-3d');
+
+  function project(p, w, h) {
+    const x = p[0] - centre[0];
+    const y = p[1] - centre[1];
+    const z = p[2] - centre[2];
+    const cy = Math.cos(v.yaw);
+    const sy = Math.sin(v.yaw);
+    const xr = x * cy - y * sy;
+    const yr = x * sy + y * cy;
+    const s = (v.zoom * 0.45 * Math.min(w, h)) / radius;
+    return [w / 2 + s * xr, h / 2 - s * (yr * Math.sin(v.pitch) + z * Math.cos(v.pitch))];
+  }
+
+  // a segment's points into the current path (one stroke a style: 65,535 strokes took half a second)
+  function trace(ctx, s, w, h) {
+    s.pts.forEach((p, i) => {
+      const [px, py] = project(p, w, h);
+      if (i === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
+    });
+  }
+
+  const STYLES = { finding: ['#cf222e', 2, []], cut: ['#0969da', 2, []], move: ['#8c959f', 1.5, [4, 3]],
+    selected: ['#bf8700', 5, []] };
+
+  function strokeAll(ctx, list, name, w, h) {
+    if (list.length === 0) return;
+    const [colour, width, dash] = STYLES[name];
+    ctx.strokeStyle = colour;
+    ctx.lineWidth = width;
+    ctx.setLineDash(dash);
+    ctx.beginPath();
+    for (const s of list) trace(ctx, s, w, h);
+    ctx.stroke();
+  }
+
+  function draw() {
+    const c = canvas();
+    const w = c.clientWidth;
+    const h = c.clientHeight;
+    const dpr = window.devicePixelRatio || 1;
+    c.width = Math.round(w * dpr);
+    c.height = Math.round(h * dpr);
+    const ctx = c.getContext('2d');
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, w, h);
+    ctx.lineCap = 'round';
+    ctx.lineJoin = 'round';
+    // the axes, from the path's centre: x red, y green, z blue
+    const o = project(centre, w, h);
+    [['x', '#cf222e'], ['y', '#1a7f37'], ['z', '#0550ae']].forEach(([name, colour], k) => {
+      const tip = centre.slice();
+      tip[k] += radius * 0.3;
+      const t = project(tip, w, h);
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = 1;
+      ctx.setLineDash([]);
+      ctx.beginPath(); ctx.moveTo(o[0], o[1]); ctx.lineTo(t[0], t[1]); ctx.stroke();
+      ctx.fillStyle = colour;
+      ctx.font = '11px system-ui, sans-serif';
+      ctx.fillText(name, t[0] + 3, t[1] - 3);
+    });
+    const groups = { move: [], cut: [], finding: [], selected: [] };
+    for (const s of segs) groups[state.byRecord.has(s.record) ? 'finding' : s.cutting ? 'cut' : 'move'].push(s);
+    groups.selected = segs.filter((s) => s.record === selected);
+    for (const name of ['move', 'cut', 'finding', 'selected']) strokeAll(ctx, groups[name], name, w, h);
+    if (segs.length === 0) {
+      ctx.fillStyle = '#57606a';
+      ctx.font = '13px system-ui, sans-serif';
+      ctx.fillText('no motion record', 10, h / 2);
+    }
+    Object.assign(c.dataset, { yaw: v.yaw.toFixed(4), pitch: v.pitch.toFixed(4), zoom: v.zoom.toFixed(4),
+      selected: selected === undefined ? '' : String(selected), segments: String(segs.length) });
+  }
+
+  function load(list) {
+    segs = list;
+    const lo = [Infinity, Infinity, Infinity];
+    const hi = [-Infinity, -Infinity, -Infinity];
+    for (const s of segs) {
+      for (const p of s.pts) for (let k = 0; k < 3; k += 1) { lo[k] = Math.min(lo[k], p[k]); hi[k] = Math.max(hi[k], p[k]); }
+    }
+    centre = segs.length === 0 ? [0, 0, 0] : lo.map((x, k) => (x + hi[k]) / 2);
+    radius = segs.length === 0 ? 1 : Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 2, 1e-6);
+    selected = undefined;
+    v = { ...HOME };
+    draw();
+  }
+
+  function select(record) { selected = record; draw(); }
+
+  // the segment drawn nearest a point of the canvas (CSS pixels), within 10 px
+  function pick(x, y) {
+    const c = canvas();
+    let best = null;
+    let dist = 10;
+    for (const s of segs) {
+      let a = project(s.pts[0], c.clientWidth, c.clientHeight);
+      for (let i = s.pts.length === 1 ? 0 : 1; i < s.pts.length; i += 1) {
+        const b = project(s.pts[i], c.clientWidth, c.clientHeight);
+        const dx = b[0] - a[0];
+        const dy = b[1] - a[1];
+        const len2 = dx * dx + dy * dy;
+        const t = len2 === 0 ? 0 : Math.max(0, Math.min(1, ((x - a[0]) * dx + (y - a[1]) * dy) / len2));
+        const d = Math.hypot(x - a[0] - t * dx, y - a[1] - t * dy);
+        if (d < dist) { dist = d; best = s.record; }
+        a = b;
+      }
+    }
+    return best;
+  }
+
+  // where a record's segment is drawn (its middle point, CSS pixels from the canvas' corner)
+  function where(record) {
+    const s = segs.find((x) => x.record === record);
+    if (s === undefined) return null;
+    const c = canvas();
+    const n = s.pts.length;
+    const a = project(s.pts[Math.floor((n - 1) / 2)], c.clientWidth, c.clientHeight);
+    const b = project(s.pts[Math.floor(n / 2)], c.clientWidth, c.clientHeight);
+    return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+  }
+
+  function step(by) {
+    if (segs.length === 0) return;
+    const at = segs.findIndex((s) => s.record === selected);
+    const next = at < 0 ? (by > 0 ? 0 : segs.length - 1) : Math.max(0, Math.min(segs.length - 1, at + by));
+    select3d(segs[next].record);
+  }
+
+  let select3d = () => {};
+  const KEYS = {
+    ArrowLeft: () => { v.yaw -= STEP; }, ArrowRight: () => { v.yaw += STEP; },
+    ArrowUp: () => { v.pitch = Math.min(Math.PI / 2, v.pitch + STEP); },
+    ArrowDown: () => { v.pitch = Math.max(-Math.PI / 2, v.pitch - STEP); },
+    '+': () => { v.zoom = Math.min(50, v.zoom * 1.25); }, '=': () => { v.zoom = Math.min(50, v.zoom * 1.25); },
+    '-': () => { v.zoom = Math.max(0.2, v.zoom / 1.25); }, 0: () => { v = { ...HOME }; },
+    '[': () => step(-1), ']': () => step(1),
+  };
+
+  function setup(onSelect) {
+    select3d = onSelect;
+    const c = canvas();
+    c.addEventListener('keydown', (e) => {
+      const act = KEYS[e.key];
+      if (act === undefined) return;
+      e.preventDefault();
+      act();
+      draw();
+    });
+    let drag = null;
+    c.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, moved: false }; c.setPointerCapture(e.pointerId); });
+    c.addEventListener('pointermove', (e) => {
+      if (drag === null) return;
+      const dx = e.clientX - drag.x;
+      const dy = e.clientY - drag.y;
+      if (!drag.moved && Math.hypot(dx, dy) < 3) return;
+      drag.moved = true;
+      v.yaw += dx * 0.01;
+      v.pitch = Math.max(-Math.PI / 2, Math.min(Math.PI / 2, v.pitch + dy * 0.01));
+      drag.x = e.clientX;
+      drag.y = e.clientY;
+      draw();
+    });
+    c.addEventListener('pointerup', (e) => {
+      const click = drag !== null && !drag.moved;
+      drag = null;
+      if (!click) return;
+      const r = c.getBoundingClientRect();
+      const rec = pick(e.clientX - r.left, e.clientY - r.top);
+      if (rec !== null) select3d(rec);
+    });
+    c.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      v.zoom = Math.max(0.2, Math.min(50, v.zoom * (e.deltaY < 0 ? 1.15 : 1 / 1.15)));
+      draw();
+    }, { passive: false });
+    window.addEventListener('resize', draw);
+  }
+
+  return { load, select, setup, where, pick, draw };
+})();
 
 // -- the page ------------------------------------------------------------------------------------------
 const $ = (id) => document.getElementById(id);
-const state = { name: null, data: null, findings: [], dump: null, page: 0, selected: null, byRecord: new Map(), segs: new Map() };
+const state = { name: null, data: null, findings: [], dump: null, page: 0, selected: null, byRecord: new Map(),
+  segs: new Map(), tabbable: [] };
 
 function el(tag, attrs, ...children) {
   const e = document.createElement(tag);
@@ -382,15 +585,17 @@ async function check(readFile) {
   state.findings = parseFindings(v.stdout);
   const d = runCommand(['cbf-c', 'dump', state.name], files);
   state.dump = d.status === 0 ? parseDump(d.stdout) : { version: null, headerLine: '', records: [] };
+  const drawn = d.status === 0 ? runCommand(['cbf-c', 'dump', '--path', state.name], files) : null;
+  const paths = drawn !== null && drawn.status === 0 ? parsePath(drawn.stdout) : new Map();
   state.byRecord = new Map();
   state.findings.forEach((f, i) => { if (f.record != null) state.byRecord.set(f.record, i); });
   state.selected = null;
   state.page = 0;
   showVerdict(v);
   showFindings();
-  showRecords();
   showHex(null);
-  showPath();
+  showPath(paths);
+  showRecords();
   Object.assign(document.body.dataset, { done: String(mine), file: state.name, profile });
 }
 
@@ -436,6 +641,7 @@ function showRecords() {
   $('page-info').textContent = `page ${state.page + 1} of ${pageCount()} (${state.dump.records.length} records)`;
   $('prev').disabled = state.page === 0;
   $('next').disabled = state.page + 1 >= pageCount();
+  tabStops();
 }
 
 function hexByte(b) {
@@ -444,7 +650,16 @@ function hexByte(b) {
 
 // The bytes of the header (no record selected) or of one record, each field in its own colour and
 // named in the legend; the byte a finding names is marked.
+// Sixteen bytes a row, or eight where sixteen would not fit the box (the site's 390 px rule: the
+// byte rows scrolled 140 px sideways at 390 px).
 function showHex(rec, hit) {
+  state.hexShown = [rec, hit];
+  drawHex(rec, hit, 16);
+  const box = $('hex').parentNode;
+  if (box.scrollWidth > box.clientWidth) drawHex(rec, hit, 8);
+}
+
+function drawHex(rec, hit, perRow) {
   const fields = rec === null ? headerFields(state.dump.version) : recordFields(rec, state.dump.version);
   const start = fields.length > 0 ? Math.min(...fields.map((f) => f.offset)) : 0;
   const end = Math.min(state.data.length, fields.length > 0 ? Math.max(...fields.map((f) => f.offset + f.size)) : 0);
@@ -452,9 +667,9 @@ function showHex(rec, hit) {
   fields.forEach((f, i) => { for (let o = f.offset; o < f.offset + f.size; o += 1) owner.set(o, i); });
   const hex = $('hex');
   hex.replaceChildren();
-  for (let row = start - (start % 16); row < end; row += 16) {
+  for (let row = start - (start % perRow); row < end; row += perRow) {
     const line = el('span', { class: 'wb-row' }, el('span', { class: 'wb-off' }, `${row.toString(16).padStart(8, '0')}  `));
-    for (let o = row; o < row + 16; o += 1) {
+    for (let o = row; o < row + perRow; o += 1) {
       if (o < start || o >= end) { line.append('   '); continue; }
       const i = owner.get(o);
       const cls = i === undefined ? 'wb-b' : `wb-b wb-f${i % 6}`;
@@ -526,6 +741,8 @@ function setup() {
     $(id).addEventListener('click', pick);
     $(id).addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); pick(e); } });
   }
+  view3d.setup((record) => select({ record }));
+  window.addEventListener('resize', () => { if (state.hexShown !== undefined) showHex(...state.hexShown); });
   $('prev').addEventListener('click', () => { state.page = Math.max(0, state.page - 1); showRecords(); });
   $('next').addEventListener('click', () => { state.page = Math.min(pageCount() - 1, state.page + 1); showRecords(); });
   $('goto').addEventListener('change', () => {
@@ -535,3 +752,6 @@ function setup() {
 }
 
 setup();
+// For the browser test (tests/workbench/drive.mjs): where the 3D view draws a record's segment, and
+// which record a point of it picks.
+window.cbfWorkbench = { where3d: (record) => view3d.where(record), pick3d: (x, y) => view3d.pick(x, y) };
