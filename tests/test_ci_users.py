@@ -48,6 +48,7 @@ import cbf
 from cbf import tables as T
 from cbf.cli import parser as cli_parser
 from cbf.quoting import quote, unquote
+from conformance.kit import stage
 
 GOLDEN = REPO / "conformance" / "golden"
 FORMATS = ("text", "json", "junit", "sarif", "github", "gitlab")
@@ -142,10 +143,13 @@ def _names(root: Path) -> list[bytes]:
     return sorted(os.fsencode(p.name) for p in root.iterdir() if p.name.endswith(".cbf"))
 
 
-def test_the_kit_carries_the_same_rule() -> None:
-    """The conformance kit installs without the codec: it ships its own copy of the one rule."""
+def test_the_kit_carries_the_same_rule(tmp_path: Path) -> None:
+    """The conformance kit installs without the codec: the runner's rule is the runtime's module
+    (a link in the repository), and staging the kit copies that file in as a file."""
     rule = REPO / "generator" / "cbfgen" / "emit" / "python" / "runtime" / "quoting.py"
-    assert (REPO / "conformance" / "runner" / "quoting.py").read_bytes() == rule.read_bytes()
+    assert (REPO / "conformance" / "runner" / "quoting.py").resolve() == rule.resolve()
+    staged = stage(tmp_path / "kit") / "cbf_conformance" / "quoting.py"
+    assert not staged.is_symlink() and staged.read_bytes() == rule.read_bytes()
 
 
 def test_the_rule_reads_back_and_never_starts_a_command() -> None:
