@@ -461,6 +461,7 @@ def _one_bad_byte_a_record(src: Path, tmp: Path) -> tuple[Path, int]:
     model = cbf.decode(bytes(data))
     for r in model.records:
         if r.raw_args:
+            assert r.offset is not None  # a decoded record knows where it stands
             data[r.offset + T.HEAD_SIZE + len(r.raw_args) - 1] ^= 0x01
     path = tmp / "bad.cbf"
     path.write_bytes(bytes(data))
@@ -540,7 +541,8 @@ def test_max_findings_caps_every_format(tmp_path: Path) -> None:
             entry = doc["files"][0]  # type: ignore[index]
             assert len(entry["findings"]) == cap and entry["not_shown"] == n - cap
         elif fmt == "junit":
-            assert f"{n - cap} more finding(s)" in ET.tostring(doc, encoding="unicode")  # type: ignore[arg-type]
+            assert isinstance(doc, ET.Element)
+            assert f"{n - cap} more finding(s)" in ET.tostring(doc, encoding="unicode")
         elif fmt == "sarif":
             run = doc["runs"][0]  # type: ignore[index]
             assert len(run["results"]) == cap and run["properties"]["findingsLeftOut"] == n - cap

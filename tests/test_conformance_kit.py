@@ -11,7 +11,9 @@ import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from conftest import clean_venv, load_yaml
@@ -182,7 +184,8 @@ def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytes
     failing = sorted(per_check[drop])
     assert len(failing) >= 2
     testee = f"{bin_ / 'python'} reader.py {drop}"
-    base = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader", "--capabilities", "validate"]
+    base: list[str | Path] = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader",
+                              "--capabilities", "validate"]
     # --fix writes the list; then one listed case is dropped from it: that one fails, the rest are expected
     fixed = _run(*base, "--failure-list", "known.txt", "--fix", cwd=folder, check=False)
     assert "Traceback" not in fixed.stderr
@@ -257,8 +260,9 @@ for line in sys.stdin:
 
 def _stated(op: str) -> int:
     """How many golden cases state an expectation for an operation (read from the cases)."""
-    wants = {"decode": lambda e: e.get("decode") is not None, "validate": lambda e: bool(e.get("validate")),
-             "encode": lambda e: bool(e.get("encode"))}
+    wants: dict[str, Callable[[dict[str, Any]], bool]] = {
+        "decode": lambda e: e.get("decode") is not None, "validate": lambda e: bool(e.get("validate")),
+        "encode": lambda e: bool(e.get("encode"))}
     return sum(1 for exp in GOLDEN.glob("*.expect.yaml") if wants[op](load_yaml(exp)))
 
 
@@ -306,7 +310,7 @@ def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempP
     assert again.returncode == 1 and re.search(r"lazy: FAIL judged no decode and no validate and no encode case",
                                                again.stdout)
 
-    decode_only = [kit_bin, "--testee", f"{bin_ / 'python'} dec.py", "--name", "dec"]
+    decode_only: list[str | Path] = [kit_bin, "--testee", f"{bin_ / 'python'} dec.py", "--name", "dec"]
     as_full = _run(*decode_only, "--json", cwd=folder, check=False)
     assert as_full.returncode == 1
     one = [ln for ln in as_full.stderr.splitlines() if ln.startswith("dec: ")]
