@@ -68,6 +68,16 @@ ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
 
 
+def readme_ci_blocks() -> list[Any]:
+    """The YAML blocks of README.md's section "In CI and before a commit", in order (the pre-commit
+    config, then the GitHub and GitLab jobs): test_ci_examples runs them from this tree,
+    test_release from the released wheel."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    start = text.index("### In CI and before a commit")
+    section = text[start:text.index("\n## ", start)]
+    return [yaml.safe_load(b) for b in re.findall(r"```yaml\n(.*?)```", section, re.S)]
+
+
 def run_clean(*cmd: str | Path, cwd: Path, check: bool = True,
               env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
     """A command (its text captured) in a consumer's environment (``env``: another one)."""
