@@ -6,7 +6,9 @@ The package `cbf_conformance` is the runner's modules, the golden cases (.cbf, t
 expectations and the files they name) as package data, PROTOCOL.md with the JSON schemas
 and the byte layouts (layouts.json) it names, a stamp of the kit version and the spec
 revision (reports name both), and the page "Run the CBF conformance suite against your
-reader" as its README. Its one dependency
+reader" as its README. The output quoting rule is the Python runtime's own module
+(generator/cbfgen/emit/python/runtime/quoting.py; runner/quoting.py is a link to it), staged
+here as a file: one source, and the kit needs no `cbf`. Its one dependency
 is PyYAML (the expectations are YAML). `make dist` builds it next to `cbf` and `cbfgen`.
 """
 
@@ -21,6 +23,8 @@ from conformance.runner.about import from_repo
 ROOT = Path(__file__).resolve().parent
 REPO = ROOT.parent
 PAGE = "RUN-AGAINST-YOUR-READER.md"
+# the one quoting rule (issue #35): the runtime's module, which runner/quoting.py links to
+RULE = REPO / "generator" / "cbfgen" / "emit" / "python" / "runtime" / "quoting.py"
 # generated into the cbf package, named by PROTOCOL.md, shipped beside it
 SCHEMAS = ("machine.schema.json", "canonical.schema.json", "layouts.json")
 
@@ -51,7 +55,7 @@ def stage(dest: Path) -> Path:
     pkg = dest / "cbf_conformance"
     (pkg / "golden").mkdir(parents=True)
     for src in sorted((ROOT / "runner").glob("*.py")):
-        shutil.copy2(src, pkg / src.name)
+        shutil.copy2(RULE if src.name == RULE.name else src, pkg / src.name)
     for src in golden_files(ROOT / "golden"):
         shutil.copy2(src, pkg / "golden" / src.name)
     shutil.copy2(ROOT / "PROTOCOL.md", pkg / "PROTOCOL.md")

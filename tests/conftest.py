@@ -12,11 +12,14 @@ import subprocess
 import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import pytest
 import yaml
 from hypothesis import HealthCheck, settings
+
+if TYPE_CHECKING:
+    from cbf.model import Cbf
 
 # libyaml's parser (PyYAML's C binding) when present: the same values, about ten times faster than
 # yaml.safe_load (0.013 against 0.12 CPU s for spec/cbf.yaml, which many tests read).
@@ -66,6 +69,31 @@ SPEC = REPO / "spec" / "cbf.yaml"
 ENV = dict(os.environ, PYTHONPATH=str(REPO / "generated" / "python"))
 # a consumer's environment: none of this checkout's paths (the packages used from outside, issue 14)
 CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NODE_PATH")}
+
+
+def readme_ci_blocks() -> list[Any]:
+    """The YAML blocks of README.md's section "In CI and before a commit", in order (the pre-commit
+    config, then the GitHub and GitLab jobs): test_ci_examples runs them from this tree,
+    test_release from the released wheel."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    start = text.index("### In CI and before a commit")
+    section = text[start:text.index("\n## ", start)]
+    return [yaml.safe_load(b) for b in re.findall(r"```yaml\n(.*?)```", section, re.S)]
+
+
+def convert_fills(model: Cbf, target: str) -> dict[str, str]:
+    """`--fill NAME=0` for each argument a record's target layout has and its own layout lacks
+    (none in rev 03; a revision may add one, as the layout_change drill fixture does): what
+    test_convert and test_convert_versions pass to convert."""
+    out: dict[str, str] = {}
+    for r in model.records:
+        cmd = r.command
+        src = cmd.layout_for_size(model.version_id, len(r.raw_args)) if cmd else None
+        if cmd is None or src is None or not cmd.layouts_for(target):
+            continue
+        have = {a.name for a in src.args}
+        out.update({a.name: "0" for a in cmd.layouts_for(target)[0].args if not a.reserved and a.name not in have})
+    return out
 
 
 def run_clean(*cmd: str | Path, cwd: Path, check: bool = True,

@@ -15,7 +15,7 @@ REPO = Path(__file__).resolve().parents[1]
 
 def test_table_and_targets_from_a_result() -> None:
     st = {"median": 0.01, "min": 0.009, "max": 0.02, "n": 3}
-    result = {
+    result: dict[str, Any] = {
         "files": {"65535 records": {"bytes": 100, "records": 2}, "small (30)": {"bytes": 10, "records": 1}},
         "rows": {"Kaitai Python parse (1x)": {"65535 records": {**st, "median": 1.0}},
                  "Python decode + full validate": {"65535 records": st},

@@ -13,6 +13,7 @@ import subprocess
 import sys
 import zlib
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
@@ -28,7 +29,7 @@ STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-
 EVERYTHING = ["-std=c99", "-Weverything", "-Werror", "-Wno-padded", "-Wno-unknown-warning-option",
               "-Wno-declaration-after-statement"]  # mk/c.mk's C_EVERYTHING
 
-DWELL = {
+DWELL: dict[str, Any] = {  # a command as spec/cbf.yaml writes one
     "name": "DWELL", "code": 0x44, "clause": "5.1", "doc": "Dwell.",
     # 1.x lacks it: the test names it in the availability check that covers 1.x
     # (the loader wants every version without the command covered by one check).
@@ -510,9 +511,9 @@ def test_runtime_files_are_in_the_header_verbatim() -> None:
         begin = f"/* ==== BEGIN runtime/{p.name}: verbatim from generator/cbfgen/emit/c/runtime/{p.name}"
         assert header.count(begin) == 1, p.name
         start = header.index(begin)
-        line = header.index("\n", start) + 1
-        assert header[line:].startswith(f'#line 1 "generator/cbfgen/emit/c/runtime/{p.name}"\n'), p.name
-        body = header[header.index("\n", line) + 1:header.index(f"/* ==== END runtime/{p.name} ==== */")]
+        after = header.index("\n", start) + 1
+        assert header[after:].startswith(f'#line 1 "generator/cbfgen/emit/c/runtime/{p.name}"\n'), p.name
+        body = header[header.index("\n", after) + 1:header.index(f"/* ==== END runtime/{p.name} ==== */")]
         assert body == text + "\n", f"{p.name} is not in cbf.h verbatim"
     # no template defines what a runtime file defines (one home for each function)
     templates = "\n".join(t.read_text(encoding="utf-8") for t in (RUNTIME.parent / "templates").rglob("*.j2"))

@@ -172,10 +172,10 @@ def _spec_with(tmp_path: Path, edit: object) -> tuple[Path, list[str]]:
     return path, text.splitlines()
 
 
-def _narrowest(doc: dict[str, object]) -> tuple[str, int]:
+def _narrowest(doc: dict[str, Any]) -> tuple[str, int]:
     """The checksum tag whose field is narrowest, and its width in bits (read from the YAML)."""
-    sizes = {n: t.get("size") for n, t in doc["types"].items()}  # type: ignore[attr-defined]
-    fields = [f for h in doc["headers"].values() for f in h["fields"]] + doc["record"]["fields"]  # type: ignore[attr-defined]
+    sizes = {n: t.get("size") for n, t in doc["types"].items()}
+    fields = [f for h in doc["headers"].values() for f in h["fields"]] + doc["record"]["fields"]
     tagged = [(f["checksum"], 8 * sizes[f["type"]]) for f in fields if "checksum" in f]
     return min(tagged, key=lambda t: t[1])
 

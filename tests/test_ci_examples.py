@@ -17,6 +17,7 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import readme_ci_blocks
 
 import cbf
 
@@ -24,16 +25,6 @@ REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
 SMALL = GOLDEN / "valid.v3.small.cbf"
 BIN = Path(sys.executable).parent  # the dev venv: its cbf is the one under test
-
-
-def _section() -> str:
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    start = text.index("### In CI and before a commit")
-    return text[start:text.index("\n## ", start)]
-
-
-def _blocks() -> list[Any]:
-    return [yaml.safe_load(b) for b in re.findall(r"```yaml\n(.*?)```", _section(), re.S)]
 
 
 def _failing_case() -> Path:
@@ -66,7 +57,7 @@ def _project(where: Path, cbf_files: dict[str, Path], cut_texts: dict[str, str])
 
 def test_the_hooks_file_names_what_the_readme_says() -> None:
     hooks = {h["id"]: h for h in yaml.safe_load((REPO / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))}
-    config = _blocks()[0]
+    config = readme_ci_blocks()[0]
     assert [h["id"] for h in config["repos"][0]["hooks"]] == list(hooks)
     assert hooks["cbf-validate"]["entry"] == "cbf validate" and re.search(hooks["cbf-validate"]["files"], "a.cbf")
     assert hooks["cbf-cut-check"]["entry"] == "cbf encode --check" and re.search(hooks["cbf-cut-check"]["files"],
@@ -91,7 +82,7 @@ def _run_job(commands: list[str], cwd: Path, env: dict[str, str]) -> list[tuple[
 
 @pytest.mark.parametrize("which", ["github", "gitlab"])
 def test_the_ci_jobs_commands(tmp_path: Path, which: str) -> None:
-    github, gitlab = _blocks()[1:3]
+    github, gitlab = readme_ci_blocks()[1:3]
     job = next(iter(github["jobs"].values())) if which == "github" else gitlab["validate-cut-files"]
     commands = _commands(job)
     env = _env(tmp_path)

@@ -48,6 +48,7 @@ import cbf
 from cbf import tables as T
 from cbf.cli import parser as cli_parser
 from cbf.quoting import quote, unquote
+from conformance.kit import stage
 
 GOLDEN = REPO / "conformance" / "golden"
 FORMATS = ("text", "json", "junit", "sarif", "github", "gitlab")
@@ -142,10 +143,13 @@ def _names(root: Path) -> list[bytes]:
     return sorted(os.fsencode(p.name) for p in root.iterdir() if p.name.endswith(".cbf"))
 
 
-def test_the_kit_carries_the_same_rule() -> None:
-    """The conformance kit installs without the codec: it ships its own copy of the one rule."""
+def test_the_kit_carries_the_same_rule(tmp_path: Path) -> None:
+    """The conformance kit installs without the codec: the runner's rule is the runtime's module
+    (a link in the repository), and staging the kit copies that file in as a file."""
     rule = REPO / "generator" / "cbfgen" / "emit" / "python" / "runtime" / "quoting.py"
-    assert (REPO / "conformance" / "runner" / "quoting.py").read_bytes() == rule.read_bytes()
+    assert (REPO / "conformance" / "runner" / "quoting.py").resolve() == rule.resolve()
+    staged = stage(tmp_path / "kit") / "cbf_conformance" / "quoting.py"
+    assert not staged.is_symlink() and staged.read_bytes() == rule.read_bytes()
 
 
 def test_the_rule_reads_back_and_never_starts_a_command() -> None:
@@ -457,6 +461,7 @@ def _one_bad_byte_a_record(src: Path, tmp: Path) -> tuple[Path, int]:
     model = cbf.decode(bytes(data))
     for r in model.records:
         if r.raw_args:
+            assert r.offset is not None  # a decoded record knows where it stands
             data[r.offset + T.HEAD_SIZE + len(r.raw_args) - 1] ^= 0x01
     path = tmp / "bad.cbf"
     path.write_bytes(bytes(data))
@@ -536,7 +541,8 @@ def test_max_findings_caps_every_format(tmp_path: Path) -> None:
             entry = doc["files"][0]  # type: ignore[index]
             assert len(entry["findings"]) == cap and entry["not_shown"] == n - cap
         elif fmt == "junit":
-            assert f"{n - cap} more finding(s)" in ET.tostring(doc, encoding="unicode")  # type: ignore[arg-type]
+            assert isinstance(doc, ET.Element)
+            assert f"{n - cap} more finding(s)" in ET.tostring(doc, encoding="unicode")
         elif fmt == "sarif":
             run = doc["runs"][0]  # type: ignore[index]
             assert len(run["results"]) == cap and run["properties"]["findingsLeftOut"] == n - cap

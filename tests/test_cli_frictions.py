@@ -84,6 +84,7 @@ def test_messages(tmp_path: Path) -> None:
     recs = list(model.records)
     k = next(i for i, r in enumerate(recs) if r.code == speed.code)
     args = recs[k].decode_args(model.version_id)
+    assert args is not None
     field = fields(args)[0].name
     recs[k] = cbf.Record.of(replace(args, **{field: getattr(args, field) * 2}))
     b = tmp_path / "b.cbf"

@@ -11,7 +11,9 @@ import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from conftest import clean_venv, load_yaml
@@ -158,18 +160,23 @@ for line in sys.stdin:
 """
 
 
-def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytest.TempPathFactory) -> None:
-    """Only the wheels in a temporary folder: the kit judges a third-party testee with a failure
-    list, and text, JSON and JUnit give the same pass / fail / expected-failure counts."""
+@pytest.fixture(scope="module")
+def consumer_bin(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The bin folder of a clean venv that installed only the wheels of the kit and of cbf, built in a
+    temporary folder (what a third-party reader's author has)."""
     work = tmp_path_factory.mktemp("consumer")
     _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
-    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
-         cwd=work)
     shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
-    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "cbf-src",
-         cwd=work)
-    bin_ = clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
-    folder = work / "user"
+    for src in (work / "stage", work / "cbf-src"):
+        _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", src, cwd=work)
+    return clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
+
+
+def test_consumer_third_party_testee_with_a_failure_list(consumer_bin: Path, tmp_path: Path) -> None:
+    """Only the wheels in a temporary folder: the kit judges a third-party testee with a failure
+    list, and text, JSON and JUnit give the same pass / fail / expected-failure counts."""
+    bin_ = consumer_bin
+    folder = tmp_path / "user"
     folder.mkdir()
     (folder / "reader.py").write_text(THIRD_PARTY, encoding="utf-8")
     # the check to drop: the one whose findings the most cases expect (several cases then fail)
@@ -182,7 +189,8 @@ def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytes
     failing = sorted(per_check[drop])
     assert len(failing) >= 2
     testee = f"{bin_ / 'python'} reader.py {drop}"
-    base = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader", "--capabilities", "validate"]
+    base: list[str | Path] = [bin_ / "cbf-conformance", "--testee", testee, "--name", "reader",
+                              "--capabilities", "validate"]
     # --fix writes the list; then one listed case is dropped from it: that one fails, the rest are expected
     fixed = _run(*base, "--failure-list", "known.txt", "--fix", cwd=folder, check=False)
     assert "Traceback" not in fixed.stderr
@@ -257,8 +265,9 @@ for line in sys.stdin:
 
 def _stated(op: str) -> int:
     """How many golden cases state an expectation for an operation (read from the cases)."""
-    wants = {"decode": lambda e: e.get("decode") is not None, "validate": lambda e: bool(e.get("validate")),
-             "encode": lambda e: bool(e.get("encode"))}
+    wants: dict[str, Callable[[dict[str, Any]], bool]] = {
+        "decode": lambda e: e.get("decode") is not None, "validate": lambda e: bool(e.get("validate")),
+        "encode": lambda e: bool(e.get("encode"))}
     return sum(1 for exp in GOLDEN.glob("*.expect.yaml") if wants[op](load_yaml(exp)))
 
 
@@ -268,20 +277,13 @@ def _judged_table(stdout: str) -> dict[str, str]:
     return {ln.split()[0]: " ".join(ln.split()[1:]) for ln in lines[start + 1:start + 4]}
 
 
-def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempPathFactory) -> None:
+def test_consumer_a_kit_that_judges_nothing_fails(consumer_bin: Path, tmp_path: Path) -> None:
     """From the wheels in a temporary folder: a testee that skips everything, and a decode-only
     reader run as if it validated, both fail with one line naming what was not judged; the report
     counts per capability; the decode-only reader passes once it says so (--capabilities decode),
     and every report names that."""
-    work = tmp_path_factory.mktemp("judging")
-    _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
-    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
-         cwd=work)
-    shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
-    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "cbf-src",
-         cwd=work)
-    bin_ = clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
-    folder = work / "user"
+    bin_ = consumer_bin
+    folder = tmp_path / "user"
     folder.mkdir()
     (folder / "skip.py").write_text(SKIP_ALL, encoding="utf-8")
     (folder / "dec.py").write_text(DECODE_ONLY, encoding="utf-8")
@@ -306,7 +308,7 @@ def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempP
     assert again.returncode == 1 and re.search(r"lazy: FAIL judged no decode and no validate and no encode case",
                                                again.stdout)
 
-    decode_only = [kit_bin, "--testee", f"{bin_ / 'python'} dec.py", "--name", "dec"]
+    decode_only: list[str | Path] = [kit_bin, "--testee", f"{bin_ / 'python'} dec.py", "--name", "dec"]
     as_full = _run(*decode_only, "--json", cwd=folder, check=False)
     assert as_full.returncode == 1
     one = [ln for ln in as_full.stderr.splitlines() if ln.startswith("dec: ")]

@@ -155,7 +155,7 @@ def test_encode_sends_back_what_the_decode_step_got() -> None:
     cases = [c for c in load_cases(golden) if c.expect.get("encode") and c.cbf.stat().st_size < 4096]
     with_decode = next(c for c in cases if c.expect.get("decode") is not None)
     rec = Recorder()
-    outcome = run_case(rec, with_decode)  # type: ignore[arg-type]
+    outcome = run_case(rec, with_decode)
     assert (outcome.status, outcome.message, outcome.judged) == ("pass", "", ("decode", "validate", "encode"))
     ops = [r["op"] for r in rec.asked]
     assert ops.count("decode") == 1 and "encode" in ops
@@ -175,10 +175,10 @@ def test_an_entry_by_reason_survives_a_moved_message() -> None:
     before, after = _kaitai_refusal("/types/header_v2/seq/3"), _kaitai_refusal("/types/header_v2/seq/6")
     entry = fixed_entries({"check.x": before}, {})["check.x"]
     assert entry == failure_class(before) == failure_class(after) and "seq" not in entry
-    results = {"check.x": {"status": "fail", "message": after}}
+    results: dict[str, dict[str, Any]] = {"check.x": {"status": "fail", "message": after}}
     judge(results, {"check.x": entry}, "k.txt")
     assert results["check.x"]["expected_failure"] is True
-    exact = {"check.x": {"status": "fail", "message": after}}
+    exact: dict[str, dict[str, Any]] = {"check.x": {"status": "fail", "message": after}}
     judge(exact, {"check.x": before}, "k.txt")  # an exact-message entry (old lists) pins the bytes
     assert exact["check.x"]["expected_failure"] is False
 

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import pytest
 from cli_many import run_many
+from conftest import convert_fills
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -188,20 +189,6 @@ def _point(at: tuple[float, float, float]) -> tuple[T.CommandInfo, Any]:
     return cmd, _args(cmd, {cmd.motion["end"]: at})
 
 
-def _fills(model: Cbf, target: str) -> dict[str, str]:
-    """`--fill NAME=0` for each argument a record's target layout has and its own layout lacks
-    (none in rev 03; a revision may add one, as the layout_change drill fixture does)."""
-    out: dict[str, str] = {}
-    for r in model.records:
-        cmd = T.BY_CODE.get(r.code)
-        src = cmd.layout_for_size(model.version_id, len(r.raw_args)) if cmd else None
-        if cmd is None or src is None or not cmd.layouts_for(target):
-            continue
-        have = {a.name for a in src.args}
-        out.update({a.name: "0" for a in cmd.layouts_for(target)[0].args if not a.reserved and a.name not in have})
-    return out
-
-
 def _same_layouts(model: Cbf, target: str) -> bool:
     """Every record's command has the same argument names in the target version (a relabel)."""
     for r in model.records:
@@ -228,7 +215,7 @@ def test_golden_files_convert_and_validate_clean(tol: float) -> None:
     for path in _goldens(HAS):
         model = cbf.decode(path.read_bytes())
         try:
-            conv = convert(model, LACKS, chord_tol=tol, fill=_fills(model, LACKS))
+            conv = convert(model, LACKS, chord_tol=tol, fill=convert_fills(model, LACKS))
         except ConvertError as exc:
             assert "raise --chord-tol" in str(exc)  # a shape count that cannot hold the segments
             continue
@@ -346,7 +333,7 @@ def test_cli_convert_reports_and_refuses(tmp_path: Path) -> None:
     output, as if alone; the validate reads what the first convert wrote)."""
     src = _goldens(HAS)[0]
     out = tmp_path / "out.cbf"
-    fills = [f"--fill={k}={v}" for k, v in _fills(cbf.decode(src.read_bytes()), LACKS).items()]
+    fills = [f"--fill={k}={v}" for k, v in convert_fills(cbf.decode(src.read_bytes()), LACKS).items()]
     (r, _), (valid, _), (chord, _), (missing, _), (fill, _) = run_many([
         ["convert", str(src), "-o", str(out), "--to-version", LACKS, "--chord-tol", "0.5", *fills],
         ["validate", str(out)],

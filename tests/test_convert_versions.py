@@ -14,7 +14,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import load_yaml
+from conftest import convert_fills, load_yaml
 
 import cbf
 from cbf import tables as T
@@ -33,19 +33,6 @@ def _valid(version: str) -> list[Path]:
     return out
 
 
-def _fills(model: cbf.Cbf, target: str) -> dict[str, str]:
-    """--fill NAME=0 for each argument a record's target layout has and its own layout lacks."""
-    out: dict[str, str] = {}
-    for r in model.records:
-        cmd = r.command
-        src = cmd.layout_for_size(model.version_id, len(r.raw_args)) if cmd else None
-        if cmd is None or src is None or not cmd.layouts_for(target):
-            continue
-        have = {a.name for a in src.args}
-        out.update({a.name: "0" for a in cmd.layouts_for(target)[0].args if not a.reserved and a.name not in have})
-    return out
-
-
 @pytest.mark.parametrize(("src", "dst"), PAIRS)
 def test_convert_between_two_versions_carries_or_refuses_by_the_model(src: str, dst: str) -> None:
     files = _valid(src)
@@ -54,7 +41,7 @@ def test_convert_between_two_versions_carries_or_refuses_by_the_model(src: str, 
     for path in files:
         model = cbf.decode(path.read_bytes())
         try:
-            conv = convert(model, dst, chord_tol=0.5, fill=_fills(model, dst))
+            conv = convert(model, dst, chord_tol=0.5, fill=convert_fills(model, dst))
         except ConvertError as exc:
             msg = str(exc)
             m = re.search(r"\brecord (\d+)\b", msg)
@@ -81,7 +68,7 @@ def test_some_pair_converts_whole() -> None:
         for path in _valid(src):
             model = cbf.decode(path.read_bytes())
             try:
-                convert(model, dst, chord_tol=0.5, fill=_fills(model, dst))
+                convert(model, dst, chord_tol=0.5, fill=convert_fills(model, dst))
             except ConvertError:
                 continue
             done += 1

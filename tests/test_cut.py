@@ -64,7 +64,8 @@ check_sum {}
     assert model.header.configuration_descriptor == "CFG-A"
     names = [r.name for r in model.records]
     assert names == ["POINT", "SPEED", "LINE", "CUTTER_ON", "COMMENT"]
-    assert model.records[4].decode_args().text == "rest of the line is the text"
+    comment = model.records[4].decode_args()
+    assert comment is not None and comment.text == "rest of the line is the text"
     assert cbf.validate(cbf.encode(model)) == []
 
 

@@ -254,7 +254,8 @@ def _patterns() -> np.ndarray:
     bits = np.concatenate(steps)
     bits = bits[(bits >= 0) & (bits < 1 << 31)].astype(np.uint32)
     bits = np.concatenate([bits, bits | np.uint32(0x80000000)])
-    return bits[(bits & 0x7F800000) != 0x7F800000]
+    finite: np.ndarray = bits[(bits & 0x7F800000) != 0x7F800000]
+    return finite
 
 
 def _digits(text: str) -> int:

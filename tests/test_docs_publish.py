@@ -431,7 +431,7 @@ def test_pdf_places_every_page_of_the_site(monkeypatch: pytest.MonkeyPatch) -> N
 
     placed = {path for path, _ in pdf.site_pages(SPEC)}
     assert placed == {rel[len("docs/"):-3] + ".html" for rel in docs.emit(SPEC) if rel.endswith(".md")}
-    real = pdf.emit
+    real = docs.emit  # what pdf.py imported from the docs emitter
     monkeypatch.setattr(pdf, "emit", lambda spec, ctx=None: {**real(spec, ctx), "docs/extra.md": b"# Extra\n"})
     with pytest.raises(pdf.Unplaced, match="extra.md"):
         pdf.site_pages(SPEC)

@@ -13,6 +13,7 @@ import ast
 from pathlib import Path
 
 import pytest
+from graph_cycles import cycles
 
 from cbf import tables as T
 
@@ -67,29 +68,6 @@ def graph(pkg: Path) -> tuple[dict[str, set[str]], list[str]]:
         edges[name] = deps & known
         private += priv
     return edges, private
-
-
-def cycles(edges: dict[str, set[str]]) -> list[list[str]]:
-    """One cycle through each module that is on one (depth-first, in name order)."""
-    found: list[list[str]] = []
-    state: dict[str, int] = {}
-    stack: list[str] = []
-
-    def visit(m: str) -> None:
-        state[m] = 1
-        stack.append(m)
-        for d in sorted(edges.get(m, ())):
-            if state.get(d) == 1:
-                found.append(stack[stack.index(d):] + [d])
-            elif d not in state:
-                visit(d)
-        stack.pop()
-        state[m] = 2
-
-    for m in sorted(edges):
-        if m not in state:
-            visit(m)
-    return found
 
 
 def reach(edges: dict[str, set[str]], start: str) -> set[str]:

@@ -57,14 +57,14 @@ KSC_TARGETS = ("python", "javascript", "java", "go")
 
 
 def hostile_text() -> st.SearchStrategy[str]:
-    piece = st.sampled_from(HOSTILE) | st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)),
+    piece = st.sampled_from(HOSTILE) | st.text(st.characters(codec="utf-8", exclude_categories=["Cs"]),
                                                max_size=4)
     return st.lists(piece, min_size=1, max_size=10).map("".join).filter(lambda t: bool(t.strip()))
 
 
 # -- escape.py against each target's own reader ---------------------------------------------------
 
-TEXT = st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)), max_size=40) | hostile_text()
+TEXT = st.text(st.characters(codec="utf-8", exclude_categories=["Cs"]), max_size=40) | hostile_text()
 
 
 @given(TEXT)
@@ -390,7 +390,7 @@ def check_python_codec(spec: Any, text: str, where: dict[str, str], folder: Path
     strings = _string_constants(tree)
     assert value in strings, "CommandCode member docstring"
     assert any(s.startswith(value + " Offset ") for s in strings), "argument/field docstring"
-    cls = next(c for c in vars(module).values() if isinstance(c, type) and getattr(c, "NAME", None)
+    cls: Any = next(c for c in vars(module).values() if isinstance(c, type) and getattr(c, "NAME", None)
                == where["command"])
     node = next(n for n in ast.walk(tree) if isinstance(n, ast.ClassDef) and n.name == cls.__name__)
     raw = ast.get_docstring(node, clean=False)
@@ -497,10 +497,10 @@ def test_hostile_docs_compile_in_java_and_go(ksc: Ksc, tmp_path: Path) -> None:
         (tmp_path / "py" / rel).write_bytes(data)
     probe = ("import sys, cbf, cbf.layouts as L; "
              "sys.stdout.write(L.__doc__ + '\\0' + '\\0'.join(c.__doc__ for c in L.ARGS_CLASSES.values()))")
-    res = subprocess.run([sys.executable, "-c", probe], capture_output=True, cwd=tmp_path,  # bytes: \r stays
+    raw = subprocess.run([sys.executable, "-c", probe], capture_output=True, cwd=tmp_path,  # bytes: \r stays
                          env={**os.environ, "PYTHONPATH": str(tmp_path / "py" / "python"), "PYTHONIOENCODING": "utf-8"})
-    assert res.returncode == 0, res.stderr[-2000:]
-    module_doc, *class_docs = res.stdout.decode("utf-8").split("\0")
+    assert raw.returncode == 0, raw.stderr[-2000:]
+    module_doc, *class_docs = raw.stdout.decode("utf-8").split("\0")
     assert module_doc.startswith(f"Typed layouts of {WORST} (") and any(WORST.strip() in d for d in class_docs)
     if not ran:
         pytest.skip("neither the Kaitai Java runtime nor the Go build folder is here (make conformance builds them)")

@@ -412,7 +412,7 @@ def _plan(row: Row, tool: str, tmp: Path) -> list[Run]:
     src = tmp / "in"
     src.mkdir()
     good = file_maker("good.cbf", VALID.read_bytes())(tmp)
-    runs = []
+    runs: list[Run] = []
     for inp in INPUTS[row.input](src):
         for command in row.commands:
             out_dir = tmp / f"out{len(runs)}"

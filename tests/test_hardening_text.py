@@ -57,9 +57,16 @@ FLOAT_CMD, FLOAT_LAY = _command("float")   # one float argument
 TEXT_CMD, TEXT_LAY = _command("text")      # one text argument (the rest of the line)
 BARE_CMD, _ = _command("none")             # no argument
 FLOAT_KW, TEXT_KW, BARE_KW = keyword(FLOAT_CMD), keyword(TEXT_CMD), keyword(BARE_CMD)
-IMPLANT = T.HEADERS[T.VERSION_BY_ID[DEFAULT].header].by_role("implant_descriptor")
-CONFIG = T.HEADERS[T.VERSION_BY_ID[DEFAULT].header].by_role("configuration_descriptor")
-assert IMPLANT is not None and CONFIG is not None
+
+
+def _header_field(role: str) -> T.FieldInfo:
+    found = T.HEADERS[T.VERSION_BY_ID[DEFAULT].header].by_role(role)
+    assert found is not None, role
+    return found
+
+
+IMPLANT = _header_field("implant_descriptor")
+CONFIG = _header_field("configuration_descriptor")
 
 
 def _bits(model: cbf.Cbf, record: int = 0) -> int:
@@ -318,8 +325,8 @@ def test_json_numbers_beyond_binary32_are_refused_with_their_path(number: str, t
     src = tmp_path / "a.json"
     src.write_text(text)
     for extra in ([], ["--keep-stored"]):
-        rc, err = _cli(capsys, "encode", str(src), *extra, "-o", str(tmp_path / "a.cbf"))
-        assert rc == EXIT_USAGE and path in err, err
+        rc, said = _cli(capsys, "encode", str(src), *extra, "-o", str(tmp_path / "a.cbf"))
+        assert rc == EXIT_USAGE and path in said, said
         assert not (tmp_path / "a.cbf").exists()
 
 

@@ -81,7 +81,7 @@ def test_descriptor_of_whitespace_only_is_reported(descriptor: str) -> None:
     assert info is not None
     raw = bytearray(SMALL.read_bytes())
     raw[info.offset:info.end] = descriptor.encode().ljust(info.size, T.PAD)
-    assert [f.check for f in cbf.validate(bytes(raw))].count(check["id"]) == 1
+    assert [f.check for f in cbf.validate(bytes(raw))].count(str(check["id"])) == 1
     raw[info.offset:info.end] = (descriptor + "PN-1").encode().ljust(info.size, T.PAD)
     assert check["id"] not in [f.check for f in cbf.validate(bytes(raw))]
 
@@ -211,7 +211,8 @@ def test_implib_cut_refuses_a_name_its_reader_would_cut() -> None:
     assert f" {name} " in cbf.to_cut(model)  # the default reader takes the whole word
     with pytest.raises(ValueError, match=re.escape(repr(name))) as info:
         cbf.to_cut(model, profile=profile)
-    assert repr(re.match(pattern, name).group(0)) in str(info.value)  # says what implib would read
+    read = re.match(pattern, name)
+    assert read is not None and repr(read.group(0)) in str(info.value)  # says what implib would read
 
 
 def test_implib_cut_writes_a_name_it_reads_whole(tmp_path: Path) -> None:

@@ -13,6 +13,8 @@ from functools import lru_cache
 from importlib.util import resolve_name
 from pathlib import Path
 
+from graph_cycles import cycles
+
 GENERATOR = Path(__file__).resolve().parent.parent / "generator"
 
 
@@ -57,29 +59,6 @@ def graph(root: Path) -> dict[str, set[str]]:
             if isinstance(node, ast.Import | ast.ImportFrom):
                 edges[name] |= _targets(name, is_pkg, node, known)
     return edges
-
-
-def cycles(edges: dict[str, set[str]]) -> list[list[str]]:
-    """One cycle through each module that is on one (depth-first, in name order)."""
-    found: list[list[str]] = []
-    state: dict[str, int] = {}
-    stack: list[str] = []
-
-    def visit(m: str) -> None:
-        state[m] = 1
-        stack.append(m)
-        for d in sorted(edges.get(m, ())):
-            if state.get(d) == 1:
-                found.append(stack[stack.index(d):] + [d])
-            elif d not in state:
-                visit(d)
-        stack.pop()
-        state[m] = 2
-
-    for m in sorted(edges):
-        if m not in state:
-            visit(m)
-    return found
 
 
 @lru_cache(maxsize=1)

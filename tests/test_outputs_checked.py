@@ -142,10 +142,10 @@ def test_short_writes_are_written_on_and_a_write_of_nothing_fails(monkeypatch: p
         got.append(chunk)
         return len(chunk)
 
-    monkeypatch.setattr(cli.os, "write", short)
+    monkeypatch.setattr(os, "write", short)  # the module cbf.cli writes through
     cli._write_all(1, b"0123456789", sync=False)
     assert b"".join(got) == b"0123456789"
-    monkeypatch.setattr(cli.os, "write", lambda fd, data: 0)
+    monkeypatch.setattr(os, "write", lambda fd, data: 0)
     with pytest.raises(OSError):
         cli._write_all(1, b"x", sync=False)
 

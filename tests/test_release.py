@@ -26,6 +26,7 @@ from typing import Any
 
 import pytest
 import yaml
+from conftest import readme_ci_blocks
 
 import cbf
 import cbfgen
@@ -35,16 +36,6 @@ GOLDEN = REPO / "conformance" / "golden"
 # What the clone needs from this working tree (a clone holds HEAD; these make it this tree's state).
 OVERLAY = (".pre-commit-hooks.yaml", "pyproject.toml", "Makefile", "mk", "generated/python",
            "generator/cbfgen/__init__.py", "README.md")
-
-
-def _readme_section() -> str:
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    start = text.index("### In CI and before a commit")
-    return text[start:text.index("\n## ", start)]
-
-
-def _blocks() -> list[Any]:
-    return [yaml.safe_load(b) for b in re.findall(r"```yaml\n(.*?)```", _readme_section(), re.S)]
 
 
 def test_the_root_package_is_the_lean_cbf_distribution() -> None:
@@ -145,7 +136,7 @@ def test_make_release_tags_the_toolkit_version(released: dict[str, Any]) -> None
     again = _make_tag(clone, env)
     assert again.returncode == 0 and "already names HEAD" in again.stdout
     # the README's pre-commit example names that tag
-    assert _blocks()[0]["repos"][0]["rev"] == tag
+    assert readme_ci_blocks()[0]["repos"][0]["rev"] == tag
     # a tag naming another commit is refused, one line, exit 2
     (clone / "note.txt").write_text("x\n", encoding="utf-8")
     subprocess.run(["git", "-C", str(clone), "add", "note.txt"], check=True, env=env)
@@ -173,7 +164,7 @@ def test_pre_commit_example_against_the_tag_offline(released: dict[str, Any]) ->
     user = work / "user"
     user.mkdir()
     subprocess.run(["git", "init", "-q"], cwd=user, check=True, env=env)
-    config = _blocks()[0]
+    config = readme_ci_blocks()[0]
     config["repos"][0]["repo"] = str(clone)  # the one change: where the repository is
     (user / ".pre-commit-config.yaml").write_text(yaml.safe_dump(config), encoding="utf-8")
     (user / "cuts").mkdir()
@@ -213,7 +204,7 @@ def test_pre_commit_example_against_the_tag_offline(released: dict[str, Any]) ->
 def test_the_readme_ci_jobs_run_as_written_from_the_wheel(released: dict[str, Any], which: str) -> None:
     """Every `run:`/`script:` line as the README writes it, in a fresh venv on PATH (the runner's
     Python), with the project's `wheels/` holding the wheel `make dist` built."""
-    github, gitlab = _blocks()[1:3]
+    github, gitlab = readme_ci_blocks()[1:3]
     job = next(iter(github["jobs"].values())) if which == "github" else gitlab["validate-cut-files"]
     lines = [s["run"] for s in job["steps"] if "run" in s] if which == "github" else list(job["script"])
     installs = [ln for ln in lines if ln.startswith("pip install")]

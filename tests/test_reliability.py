@@ -22,7 +22,7 @@ from conformance.reliability.mutate import (
     transpositions,
     truncations,
 )
-from conformance.runner.run import Binding
+from conformance.runner.testee import Binding
 
 REPO = Path(__file__).resolve().parents[1]
 SMALL = (REPO / "conformance" / "golden" / "valid.v3.small.cbf").read_bytes()

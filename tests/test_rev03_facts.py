@@ -54,7 +54,7 @@ def _text() -> str:
 def _table_5_1() -> list[Row]:
     text = _text()
     body = text[text.index("Ver#\tCMD CODE\tHEX"): text.index("5.2 ")]
-    rows = []
+    rows: list[Row] = []
     for line in body.splitlines()[1:]:
         parts = line.split("\t")
         if len(parts) < 5 or not re.fullmatch(r"[0-9,]+", parts[0]):
@@ -69,7 +69,7 @@ def _offset_table(after: str) -> list[tuple[int, int, str]]:
     """(start, bytes, description) rows of the first 'Start byte' table after `after`."""
     text = _text()
     body = text[text.index("Start byte", text.index(after)):]
-    rows = []
+    rows: list[tuple[int, int, str]] = []
     for line in body.splitlines()[1:]:
         m = re.fullmatch(r"(\d+)\t(\d+)\t(.*)", line)
         if not m:
@@ -138,9 +138,9 @@ def test_table_4_2_is_the_header_of_3_0_and_4_0() -> None:
         assert h.size == 128
         for start, size, what in rows:
             assert _tiles(h.fields, start, size), (vid, start, size, what)
-    start = SPEC.common_header_field("start_pattern")
+    pattern = SPEC.common_header_field("start_pattern")
     m = re.search(r"0x([0-9A-F]{8})", rows[0][2])
-    assert m and start.magic == int(m.group(1), 16)
+    assert m and pattern.magic == int(m.group(1), 16)
     assert SPEC.common_header_field("end_pattern").magic == 0xFFFFFFFF - int(m.group(1), 16)  # "complement"
 
 
@@ -250,6 +250,7 @@ def test_a_hand_written_cut_file_encodes_and_validates() -> None:
     assert [f for f in cbf.validate(data) if f.severity == "error"] == []
     back = cbf.decode(data)
     assert back.header.implant_descriptor == "PN-1234 KNEE FEMORAL SIZE 3"
-    assert back.records[0].decode_args().text == "hand-written from the companion doc"
+    args = back.records[0].decode_args()
+    assert args is not None and args.text == "hand-written from the companion doc"
     # with the check line the document describes (section 3), the same file reads the same
     assert cbf.from_cut(HAND + f"{T.CUT['checksum_keyword']} {file_checksum_of(data)}\n") == model

@@ -97,7 +97,7 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
     alone), and no two of them add the same file."""
     quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
     assert len(quick) > 1
-    path, added = SPEC, []
+    path, added = SPEC, list[str]()
     for fx in quick:  # as drill.apply does: each fixture's ids chosen for the spec the ones before it left
         added += drill.load_fixture(fx.path, drill.read_spec(path)).files
         path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}")

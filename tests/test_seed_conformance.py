@@ -17,6 +17,7 @@ seed value at a time, and the same comparison must fail.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -94,7 +95,7 @@ def read_seed(text: str) -> Seed:
     idx = [k for k, line in enumerate(lines) if line.startswith(head)]
     header = [(r[0], r[1], r[2]) for r in _table(lines[idx[0]:], head)]
     record = [(r[0], r[1], r[2]) for r in _table(lines[idx[1]:], head)]
-    commands = []
+    commands: list[tuple[str, str, str, str, list[str]]] = []
     for r in _table(lines, "Ver#\tCMD CODE"):
         types = _types(r[4]) if "same as above" not in r[4] else list(commands[-1][4])
         commands.append((r[0], r[1], r[2], r[3], types))
@@ -180,10 +181,10 @@ def problems(seed: Seed, page: str, note_ids: set[str], errata: dict[str, str]) 
                 out.append(f"{label}: start byte {start}: the seed's example value is made a fixed value without "
                            f"a decision id")
     block = clause_block(body, "5.1") or ""
-    rows = {_text(r[1]): r for r in _rows(block[block.find("Table 5.1"):])} if "Table 5.1" in block else {}
+    table = {_text(r[1]): r for r in _rows(block[block.find("Table 5.1"):])} if "Table 5.1" in block else {}
     seen = set()
     for ver, name, hexcode, size, types in seed.commands:
-        row = rows.get(name)
+        row = table.get(name)
         if row is None:
             out.append(f"5.1: {name} is not in the table")
             continue
@@ -195,8 +196,8 @@ def problems(seed: Seed, page: str, note_ids: set[str], errata: dict[str, str]) 
             if g != w and not has_note.search(row[5]):
                 out.append(f"5.1: {name}: {what} {g!r}, the seed says {w!r}, and the row names no decision or "
                            f"erratum")
-    for name, row in rows.items():
-        if name not in seen and not has_note.search(row[5]):
+    for name, cells in table.items():
+        if name not in seen and not has_note.search(cells[5]):
             out.append(f"5.1: {name} is not in the seed's table, and the row names no decision or erratum")
     return out
 
@@ -247,7 +248,7 @@ def _field(doc: dict[str, Any], name: str) -> dict[str, Any]:
     return next(f for f in doc["headers"]["v2"]["fields"] if f["name"] == name)
 
 
-EDITS = {
+EDITS: dict[str, Callable[[dict[str, Any]], object]] = {
     # 5.1: a code, a size (every layout of 3.0 and 4.0), an argument type, the versions that have a command
     "code": lambda d: _command(d, "LINE").update(code=0xB5),
     "size": lambda d: _command(d, "SPEED")["layouts"][0]["args"].append(

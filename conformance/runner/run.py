@@ -15,7 +15,7 @@ import time
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TextIO
+from typing import Any, Protocol, TextIO
 
 import yaml
 
@@ -110,7 +110,14 @@ class Outcome:
 SKIPPED = "skipped"  # the message of a case whose declared operations the testee answered with skipped
 
 
-def run_case(t: Testee, case: Case, capabilities: tuple[str, ...] = CAPABILITIES) -> Outcome:
+class Asks(Protocol):
+    """What a case needs of a testee: one request of PROTOCOL.md answered (a Testee process, or a
+    stand-in in this process such as tests/test_witness.py's)."""
+
+    def ask(self, request: dict[str, Any], /) -> dict[str, Any]: ...
+
+
+def run_case(t: Asks, case: Case, capabilities: tuple[str, ...] = CAPABILITIES) -> Outcome:
     """One case on one testee. Only the operations of ``capabilities`` are asked; an operation of
     them that the testee answers with ``{"skipped": true}`` fails the case (``OP: skipped``: a
     failure list may name it), so a testee cannot pass by answering nothing. A case that asks none
@@ -141,7 +148,7 @@ def run_case(t: Testee, case: Case, capabilities: tuple[str, ...] = CAPABILITIES
     return Outcome("pass", "", tuple(judged))
 
 
-def _step(t: Testee, case: Case, step: str, path: str, decoded: dict[str, Any]) -> str | None:
+def _step(t: Asks, case: Case, step: str, path: str, decoded: dict[str, Any]) -> str | None:
     exp = case.expect
     if step == "decode":
         want = exp.get("decode")

@@ -187,7 +187,7 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     drop = next((c for c in cmds for lay in c["layouts"] if nid in lay["versions"]
                  and lay.get("args") and all(a.get("type") == "f4" for a in lay["args"])),
                 None)
-    drop_lay = next((lay for lay in drop["layouts"] if nid in lay["versions"]), {}) if drop else {}
+    drop_lay: dict[str, Any] = next((lay for lay in drop["layouts"] if nid in lay["versions"]), {}) if drop else {}
     drop_floats = sum(int(a.get("count", 1)) for a in drop_lay.get("args", ()))
     lacks = [str(c["name"]) for c in cmds if not _has(c, nid) or c is drop]
     writable = [str(v["id"]) for v in versions if v.get("writable")]
@@ -226,8 +226,8 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
 
     checksums = doc.get("checksums", {})
     algorithms = checksums.get("algorithms", {})
-    file_field = next((f for f in checksums.get("fields", ()) if f.get("field") == "file"), {})
-    default = next((p for p in doc.get("profiles", ()) if p.get("id") == "default"), {})
+    file_field: dict[str, Any] = next((f for f in checksums.get("fields", ()) if f.get("field") == "file"), {})
+    default: dict[str, Any] = next((p for p in doc.get("profiles", ()) if p.get("id") == "default"), {})
     current = default.get("file_algorithm", file_field.get("algorithm"))
     width = 8 * next((int(doc["types"][f["type"]].get("size") or 0) for h in headers.values()
                       for f in h.get("fields", ()) if f.get("checksum") == "file"), 0)
@@ -320,7 +320,7 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
 def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     op, path = edit.get("op"), str(edit.get("path", ""))
     slots = _resolve(root, path)
-    value = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
+    value: Any = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
     if op == "set":
         for c, k in slots:
             c[k] = value
@@ -505,7 +505,10 @@ def quick_cases(root: Path) -> list[str]:
 INDEX_SH = "git init -q && printf '/.venv\\n/node_modules\\n' >> .git/info/exclude && git add -A"
 
 
-def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str, list[str], dict[str, str]]]:
+Step = tuple[str, list[str], dict[str, str]]  # (what, argv, extra environment)
+
+
+def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
     make = ["make", "-C", str(root), "-o", ".venv/.stamp", "-o", "node_modules/.stamp"]
     env = {"PYTHONPATH": os.pathsep.join(str(root / p) for p in ("generator", "generated/python", "."))}
     py = str(REPO / ".venv" / "bin" / "python") if (REPO / ".venv").exists() else sys.executable
@@ -522,10 +525,10 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[tuple[str,
     else:
         conformance = [("conformance (every binding)", [*make, "conformance"], {})]
     # The README's walkthrough order (generate, then golden) leaves generated/ fresh: make has nothing to regenerate.
-    fresh = ("generated/ fresh after golden (`make -q`)", [*make, "-q", "build/stamps/generate-py"], {})
+    fresh: Step = ("generated/ fresh after golden (`make -q`)", [*make, "-q", "build/stamps/generate-py"], {})
     # The copy is not a checkout: the full suite reads the files a commit of the revision would track
     # (test_python_dist's `git ls-files generated`), so the revised tree, regenerated, is indexed as one.
-    index = [] if quick else [("index the revised tree (git init, git add -A)", ["sh", "-c", INDEX_SH], {})]
+    index: list[Step] = [] if quick else [("index the revised tree (git init, git add -A)", ["sh", "-c", INDEX_SH], {})]
     return [("generate", [*make, "generate"], {}),
             ("golden", [*make, "golden"], {}),
             fresh,
