@@ -1,6 +1,6 @@
 // Drives the workbench page in headless Chromium (playwright-core, Debian's /usr/bin/chromium) for
 // tests/test_workbench_page.py: node drive.mjs PAGE.html SHOTS_DIR JOBS.json
-// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph}. Prints JSON:
+// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph (optional)}. Prints JSON:
 // each file's printed text and exit status as the page shows them, the requests the page made, the
 // console errors, what fetch() gave from inside the page, and the screenshots' paths and page widths.
 import { readFileSync } from 'node:fs';
@@ -62,44 +62,48 @@ const fetched = await page.evaluate(async () => {
   }
   return out;
 });
-// Screenshots of a failing file with its first finding selected, at 390 and 1280 px.
+// Screenshots of a failing file with its first finding selected, at 390 and 1280 px (not when JOBS has no
+// "shot": `make bench` times the page, bench/workbench_rows.py).
 const widths = {};
-await feed(jobs.shot, 'default');
-await page.focus('#findings button');
-await page.keyboard.press('Enter');
-const selected = await page.evaluate(() => ({
-  finding: document.querySelectorAll('#findings .wb-selected').length,
-  row: document.querySelectorAll('#records tr.wb-selected').length,
-  hit: document.querySelectorAll('#hex .wb-hit').length,
-  segments: document.querySelectorAll('.wb-path path.wb-selected').length,
-}));
-for (const w of [390, 1280]) {
-  await page.setViewportSize({ width: w, height: 900 });
-  widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
-  await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
-}
-// A segment of the toolpath, of a record other than the selected one, chosen by click and by keyboard:
-// its record's row and bytes are selected.
+let selected = null;
 const picked = [];
-const rowNow = async () => page.evaluate(() => {
-  const row = document.querySelector('#records tr.wb-selected');
-  return { row: row === null ? null : row.dataset.record, hex: document.getElementById('hex-title').textContent,
-    segments: [...document.querySelectorAll('.wb-path path.wb-selected')].map((p) => p.dataset.record) };
-});
-const others = await page.evaluate(() => {
-  const sel = document.querySelector('#records tr.wb-selected');
-  const mine = sel === null ? null : sel.dataset.record;
-  const recs = [...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record);
-  return [...new Set(recs)].filter((r) => r !== mine).slice(0, 2);
-});
-if (others.length > 0) {
-  await page.locator(`#path-top path[data-record="${others[0]}"]`).dispatchEvent('click');
-  picked.push({ want: others[0], how: 'click', ...(await rowNow()) });
-}
-if (others.length > 1) {
-  await page.focus(`#path-top path[data-record="${others[1]}"]`);
+if (jobs.shot) {
+  await feed(jobs.shot, 'default');
+  await page.focus('#findings button');
   await page.keyboard.press('Enter');
-  picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
+  selected = await page.evaluate(() => ({
+    finding: document.querySelectorAll('#findings .wb-selected').length,
+    row: document.querySelectorAll('#records tr.wb-selected').length,
+    hit: document.querySelectorAll('#hex .wb-hit').length,
+    segments: document.querySelectorAll('.wb-path path.wb-selected').length,
+  }));
+  for (const w of [390, 1280]) {
+    await page.setViewportSize({ width: w, height: 900 });
+    widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
+    await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
+  }
+  // A segment of the toolpath, of a record other than the selected one, chosen by click and by keyboard:
+  // its record's row and bytes are selected.
+  const rowNow = async () => page.evaluate(() => {
+    const row = document.querySelector('#records tr.wb-selected');
+    return { row: row === null ? null : row.dataset.record, hex: document.getElementById('hex-title').textContent,
+      segments: [...document.querySelectorAll('.wb-path path.wb-selected')].map((p) => p.dataset.record) };
+  });
+  const others = await page.evaluate(() => {
+    const sel = document.querySelector('#records tr.wb-selected');
+    const mine = sel === null ? null : sel.dataset.record;
+    const recs = [...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record);
+    return [...new Set(recs)].filter((r) => r !== mine).slice(0, 2);
+  });
+  if (others.length > 0) {
+    await page.locator(`#path-top path[data-record="${others[0]}"]`).dispatchEvent('click');
+    picked.push({ want: others[0], how: 'click', ...(await rowNow()) });
+  }
+  if (others.length > 1) {
+    await page.focus(`#path-top path[data-record="${others[1]}"]`);
+    await page.keyboard.press('Enter');
+    picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
+  }
 }
 await context.close();
 process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked })}\n`);
