@@ -200,12 +200,13 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
 def _code_size(r: Records) -> NDArray[np.intp]:
     """(code, argument size) of every record as one index into a 256 x 256 table: a 1-d take, not a
     2-d one (made once a file: arg_size's check and the layout batches both look it up)."""
-    key: NDArray[np.intp] | None = r.state.get(_CODE_SIZE)
-    if key is None:
-        key = r.head["code"].astype(np.intp)
-        key *= 256  # the tables' width (_tables)
-        key += r.head["arg_size"]
-        r.state[_CODE_SIZE] = key
+    got = r.state.get(_CODE_SIZE)
+    if got is not None:
+        return got  # type: ignore[no-any-return]
+    key: NDArray[np.intp] = r.head["code"].astype(np.intp)
+    key *= 256  # the tables' width (_tables)
+    key += r.head["arg_size"]
+    r.state[_CODE_SIZE] = key
     return key
 
 
