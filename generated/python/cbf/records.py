@@ -197,27 +197,15 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
     return known, avail, size_ok, lay_of, lays
 
 
-def _code_size(r: Records) -> NDArray[np.intp]:
-    """(code, argument size) of every record as one index into a 256 x 256 table: a 1-d take, not a
-    2-d one (made once a file: arg_size's check and the layout batches both look it up)."""
-    got = r.state.get(_CODE_SIZE)
-    if got is not None:
-        return got  # type: ignore[no-any-return]
-    key: NDArray[np.intp] = r.head["code"].astype(np.intp)
-    key *= 256  # the tables' width (_tables)
-    key += r.head["arg_size"]
-    r.state[_CODE_SIZE] = key
-    return key
-
-
-_CODE_SIZE = "(code, arg_size)"  # its key in Records.state (a check id is a name: never this)
-
-
 def _batches(r: Records) -> Iterator[Batch]:
     """The records of each layout the file uses, one layout at a time (one layout's columns
     held at once)."""
     lay_of, lays = _tables(r.version, r.profile)[3:]
-    which = lay_of.reshape(-1).take(_code_size(r))
+    key = r.head["code"].astype(np.intp)  # (code, size) as one index: a 1-d take, not a 2-d one
+    key *= lay_of.shape[1]
+    key += r.head["arg_size"]
+    which = lay_of.reshape(-1).take(key)
+    del key
     # the rows of every layout at once: one stable sort, not one pass over the file per layout
     order = np.argsort(which, kind="stable")
     bounds = np.cumsum(np.bincount(which + 1, minlength=len(lays) + 1)).tolist()  # which -1: no layout fits
@@ -420,7 +408,7 @@ def _availability(r: Records, check: Check) -> None:
 def _arg_size(r: Records, check: Check) -> None:
     code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
     known, _, size_ok = _tables(version, profile)[:3]
-    bad = np.nonzero(known.take(code) & ~size_ok.reshape(-1).take(_code_size(r)))[0]
+    bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
 
     def sizes_msg(i: Any) -> str:
         cmd = T.BY_CODE[int(code[i])]
