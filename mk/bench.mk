@@ -6,7 +6,9 @@ BENCH_REPS ?= 5
 BENCH_VALIDATE_CALLS ?= 100
 export BENCH_VALIDATE_CALLS
 .PHONY: bench bench-readme
-bench: venv generate c-deps  ## benchmark table (Kaitai vs Python vs C); writes bench/results.json and bench/TABLE.md
+# bytecode: a user's install has it (pip compiles the wheel's modules); without it every row's first import
+# compiled cbf's modules, and the peak-RSS row moved with the tree's state (bench/NOTES.md, round 5).
+bench: venv generate c-deps bytecode  ## benchmark table (Kaitai vs Python vs C); writes bench/results.json and bench/TABLE.md
 	$(PY) -m bench --reps $(BENCH_REPS)
 
 bench-readme: venv  ## copy the table of the last `make bench` (bench/results.json) into README.md

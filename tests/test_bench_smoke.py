@@ -54,6 +54,15 @@ def test_table_and_targets_from_a_result() -> None:
                                     "compile_s": 0.02, "node_start_s": 0.1, "wasm_bytes": 1}
         row = [t for name, t in B._targets(result).items() if name.startswith("cbf-c.wasm validate")]
         assert len(row) == 1 and row[0]["met"] is met and row[0]["value"] == round(wasm_s / 0.005, 2)
+    # issue 34, point 6: the workbench page's gzipped size is a target, its time a reported row; a run
+    # that could not drive the page is a NO, not a missing line
+    for size, met in ((B.GZIP_GOAL - 1, True), (B.GZIP_GOAL, False)):
+        result["workbench"] = {"gzip_bytes": size, "page_bytes": 3 * size, "first_s": 1.5, "next_s": 1.0,
+                               "next_min_s": 0.9, "next_max_s": 1.1, "runs": 4}
+        got = {name: t for name, t in B._targets(result).items() if name.startswith("workbench page")}
+        assert [t["met"] for t in got.values()] == [met, None], got
+    result["workbench"] = {"skipped": "no chromium"}
+    assert B._targets(result)["workbench page rows"]["met"] is False
 
 
 def test_files_are_made_deterministically(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

@@ -77,11 +77,14 @@ const char *cbf_tool_why(void);
 /** Read a whole file into buf; its size, or -1 and *why (as cbf says it: "no such file", ...). A file of
   * more than cap bytes is -2 and "file too large" (from its size, unread, where it has one). */
 long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why);
+/** As cbf_tool_read_file, into a buffer of the heap sized to the file, *out (the caller frees it); *why
+ * "out of memory" when it cannot be had. */
+long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
 /** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
 /* ==== END tools/tools_api.h ==== */
-#line 85 "cbf_tools.h"
+#line 88 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -268,7 +271,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 272 "cbf_tools.h"
+#line 275 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -290,14 +293,30 @@ static long opt_too_large(const char *path, size_t max, const char *what)
     return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max, what) - 1;
 }
 
-/* An option file's bytes (data[0..n)) copied into buf (at most max bytes, buf holds max + 1), checked to be
- * UTF-8 as Python decodes it; its size, or -1 with the one line in opt_why. */
-static long opt_read(const char *path, const char *data, size_t size, char *buf, size_t max, const char *what)
+/* *text freed (and NULL); v. */
+static long opt_drop(char **text, long v)
+{
+    free(*text);
+    *text = NULL;
+    return v;
+}
+
+/* An option file's bytes (data[0..n)), at most max, copied into *text (the heap's, size + 1 bytes: the
+ * caller frees it) and checked to be UTF-8 as Python decodes it; its size, or -1 with the one line in
+ * opt_why (and nothing to free). Buffers of max bytes held for every run were most of the WebAssembly
+ * module's initial memory (bench/NOTES.md, round 5). */
+static long opt_read(const char *path, const char *data, size_t size, char **text, size_t max, const char *what)
 {
     long n = (long)size;
     size_t i = 0;
+    char *buf;
+    *text = NULL;
     if (size > max)
         return opt_too_large(path, max, what);
+    buf = (char *)malloc(size + 1u);
+    if (!buf)
+        return opt_fail("%s: out of memory reading the %s", path, what) - 1;
+    *text = buf;
     memcpy(buf, data, size);
     buf[size] = 0;
     while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
@@ -311,7 +330,7 @@ static long opt_read(const char *path, const char *data, size_t size, char *buf,
         if (u[0] >= 0xC2 && u[0] <= 0xDF) len = 2;
         else if (u[0] >= 0xE0 && u[0] <= 0xEF) len = 3;
         else if (u[0] >= 0xF0 && u[0] <= 0xF4) len = 4;
-        else return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+        else return opt_drop(text, opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1);
         if (u[0] == 0xE0) lo = 0xA0;
         if (u[0] == 0xED) hi = 0x9F;
         if (u[0] == 0xF0) lo = 0x90;
@@ -319,13 +338,13 @@ static long opt_read(const char *path, const char *data, size_t size, char *buf,
         for (k = 1; k < len; k++) {
             unsigned char a = k == 1 ? lo : 0x80, b = k == 1 ? hi : 0xBF;
             if (k >= left || u[k] < a || u[k] > b)
-                return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+                return opt_drop(text, opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1);
         }
         i += len;
     }
     if (memchr(buf, 0, (size_t)n))
-        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
-                        (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
+        return opt_drop(text, opt_fail("%s: offset %lu: not text (a NUL byte)", path,
+                                       (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1);
     return n;
 }
 
@@ -436,8 +455,8 @@ static int opt_json_depth(const char *path, const char *s, size_t n, int max)
  * JSON keeps every source line break, so a JSON line is the YAML line. */
 typedef struct yj {
     const char *file;
-    char *out;
-    size_t n, cap;
+    char *out; /* the heap's: room bytes, grown to at most cap */
+    size_t n, room, cap;
     int max_depth, depth;
     int ind[OPT_NEST_CAP + 1];
     char kind[OPT_NEST_CAP + 1]; /* 'm' or 's'; flow collections live only inside yj_flow */
@@ -452,6 +471,17 @@ static int yj_put(yj *y, const char *s, size_t len)
 {
     if (y->cap - y->n <= len)
         return opt_fail("%s: line %lu: not YAML (too long once read)", y->file, y->line);
+    if (y->room - y->n <= len) { /* grown by doubling, within cap (the test above) */
+        size_t room = y->room;
+        char *grown;
+        while (room - y->n <= len)
+            room = room >= y->cap / 2u ? y->cap : 2u * room;
+        grown = (char *)realloc(y->out, room);
+        if (!grown)
+            return opt_fail("%s: line %lu: out of memory", y->file, y->line);
+        y->out = grown;
+        y->room = room;
+    }
     memcpy(y->out + y->n, s, len);
     y->n += len;
     y->out[y->n] = 0;
@@ -911,57 +941,101 @@ static int yj_line_node(yj *y, const char *p, const char *end, int ind)
     return yj_inline(y, p, end, ind);
 }
 
-/* Translate the YAML text src into JSON in out (cap bytes); 0 with the one line in opt_why. */
-static int yj_translate(const char *file, const char *src, char *out, size_t cap, int max_depth)
+static int yj_lines(yj *y, const char *src);
+
+/* Translate the YAML text src into JSON text in *out (the heap's, at most cap bytes with its NUL: the
+ * caller frees it); 0 with the one line in opt_why (and nothing to free). */
+static int yj_translate(const char *file, const char *src, char **out, size_t cap, int max_depth)
 {
     yj y;
-    const char *line = src;
     memset(&y, 0, sizeof y);
     y.file = file;
-    y.out = out;
     y.cap = cap;
+    y.room = cap < 4096u ? cap : 4096u;
     y.max_depth = max_depth;
-    out[0] = 0;
-    if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
+    *out = NULL;
+    y.out = (char *)malloc(y.room);
+    if (!y.out)
+        return opt_fail("%s: out of memory", file);
+    y.out[0] = 0;
+    if (!yj_lines(&y, src)) {
+        free(y.out);
+        return 0;
+    }
+    *out = y.out;
+    return 1;
+}
+
+/* yj_translate's work, line by line, into y->out. */
+static int yj_lines(yj *y, const char *src)
+{
+    const char *file = y->file, *line = src;
+    if (strncmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip (src: NUL-ended) */
         line += 3;
     while (*line) {
         const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line;
         int ind;
-        y.line++;
-        end = yj_content_end(&y, line, end);
+        y->line++;
+        end = yj_content_end(y, line, end);
         if (!end)
             return 0;
         while (p < end && *p == ' ')
             p++;
         ind = (int)(p - line);
         if (p < end && *p == '\t')
-            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y.line);
-        if (!yj_markers(&y, line, &p, end, &ind))
+            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y->line);
+        if (!yj_markers(y, line, &p, end, &ind))
             return 0;
-        if (p < end && !yj_line_node(&y, p, end, ind))
+        if (p < end && !yj_line_node(y, p, end, ind))
             return 0;
-        if (!yj_c(&y, '\n'))
+        if (!yj_c(y, '\n'))
             return 0;
         if (!nl)
             break;
         line = nl + 1;
     }
-    while (y.depth)
-        if (!yj_close(&y))
+    while (y->depth)
+        if (!yj_close(y))
             return 0;
-    if (!y.root_done && !yj_put(&y, "null", 4))
+    if (!y->root_done && !yj_put(y, "null", 4))
         return 0;
     return 1;
 }
 
 /* ---- cutter tables (6.1.2): the rows, each checked as it comes by the shared rules ---- */
-static char cutter_names[OPT_CUTTER_MAX_ROWS][OPT_CUTTER_NAME_BYTES];
-static unsigned long cutter_lines[OPT_CUTTER_MAX_ROWS];
-static cbf_cutter cutters[OPT_CUTTER_MAX_ROWS];
-static size_t ncutters;
-static char cutter_text[OPT_CUTTER_MAX_BYTES + 1u];
-static char cutter_json[4u * OPT_CUTTER_MAX_BYTES + 64u];
+/* The rows of the last table, the heap's, grown by doubling to at most OPT_CUTTER_MAX_ROWS (room rows);
+ * cutters[k].name is cutter_names[k], set once the table is read (a row added may move the names). */
+typedef char cutter_name[OPT_CUTTER_NAME_BYTES];
+static cutter_name *cutter_names;
+static unsigned long *cutter_lines;
+static cbf_cutter *cutters;
+static size_t ncutters, cutter_room;
+static char *cutter_text; /* the table's text while it is read (opt_read) */
 static const char *cutter_file;
+
+/* Room for one more row; 0 with the one line in opt_why when the heap has none. */
+static int cutter_grow(unsigned long line)
+{
+    size_t room = cutter_room ? 2u * cutter_room : 64u;
+    cutter_name *names;
+    unsigned long *lines;
+    cbf_cutter *rows;
+    if (room > OPT_CUTTER_MAX_ROWS)
+        room = OPT_CUTTER_MAX_ROWS;
+    names = (cutter_name *)realloc(cutter_names, room * sizeof *cutter_names);
+    if (names)
+        cutter_names = names;
+    lines = (unsigned long *)realloc(cutter_lines, room * sizeof *cutter_lines);
+    if (lines)
+        cutter_lines = lines;
+    rows = (cbf_cutter *)realloc(cutters, room * sizeof *cutters);
+    if (rows)
+        cutters = rows;
+    if (!names || !lines || !rows)
+        return opt_fail("%s: line %lu: out of memory", cutter_file, line);
+    cutter_room = room;
+    return 1;
+}
 
 /* A row: cell[0] the name, cell[1 + k] the text of value k. */
 static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLUMNS])
@@ -990,9 +1064,11 @@ static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLU
             return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line,
                             cbf_quoted(name, CBF_QUOTE_NAME),
                             cutter_lines[k]);
+    if (ncutters == cutter_room && !cutter_grow(line))
+        return 0;
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
-    cutters[ncutters].name = cutter_names[ncutters];
+    cutters[ncutters].name = NULL; /* set when the table is read (load_cutters) */
     for (k = 0; k < CBF_CUTTER_VALUES; k++)
         cutters[ncutters].value[k] = v[k];
     ncutters++;
@@ -1200,14 +1276,27 @@ static int cutters_rows(cj *j)
     }
 }
 
+static int cutters_json(const char *path, const char *json);
+
 static int cutters_yaml(const char *path)
+{
+    char *json;
+    int ok;
+    /* the JSON text: at most 4 bytes a byte of YAML, and a few more (as the buffer of that size was) */
+    if (!yj_translate(path, cutter_text, &json, 4u * OPT_CUTTER_MAX_BYTES + 64u, OPT_CUTTER_MAX_DEPTH))
+        return 0;
+    ok = cutters_json(path, json);
+    free(json);
+    return ok;
+}
+
+/* The rows of a cutter table read as JSON text (a YAML table, translated). */
+static int cutters_json(const char *path, const char *json)
 {
     cj j;
     int seen = 0;
-    if (!yj_translate(path, cutter_text, cutter_json, sizeof cutter_json, OPT_CUTTER_MAX_DEPTH))
-        return 0;
     memset(&j, 0, sizeof j);
-    j.s = cutter_json;
+    j.s = json;
     j.line = 1;
     cj_ws(&j);
     if (j.s[j.i] != '{')
@@ -1254,19 +1343,22 @@ static int load_cutters(const char *name, const char *text, size_t size)
     static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
     long n;
     (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
+    size_t k;
+    int ok;
     ncutters = 0;
     cutter_file = path;
-    n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
+    n = opt_read(path, text, size, &cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
-    if (opt_is_yaml(name)) {
-        if (!cutters_yaml(path))
-            return 0;
-    } else if (!cutters_csv(cutter_text)) {
+    ok = opt_is_yaml(name) ? cutters_yaml(path) : cutters_csv(cutter_text);
+    free(cutter_text);
+    cutter_text = NULL;
+    if (!ok)
         return 0;
-    }
     if (!ncutters)
         return opt_fail("%s: no cutters (the table is empty)", path);
+    for (k = 0; k < ncutters; k++)
+        cutters[k].name = cutter_names[k];
     return 1;
 }
 
@@ -1280,8 +1372,6 @@ static int load_cutters(const char *name, const char *text, size_t size)
  * (or the line), as cbf says it. */
 static cbf_machine machine_file;
 static char machine_why[8192];
-static char machine_text[OPT_MACHINE_MAX_BYTES + 1u];
-static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine file, as JSON */
 
 typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
 
@@ -1502,12 +1592,14 @@ static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
     }
 }
 
-static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known)
+/* known: n names, or fewer ended by NULL (cbf_machine_limit_names has no NULL: reading one past it was a
+ * global-buffer-overflow that AddressSanitizer found on a machine file with an unknown limit). */
+static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known, size_t n)
 {
     char list[512];
     size_t k, at = 0;
     list[0] = 0;
-    for (k = 0; known[k]; k++)
+    for (k = 0; k < n && known[k]; k++)
         at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
     return mj_fail(j, path, "unknown key '%s' (known: %s)", cbf_quoted(key, CBF_QUOTE_NAME), list);
 }
@@ -1619,7 +1711,7 @@ static int mj_limit_key(mjson *j, const char *path, const char *key, void *ctx)
             if (strcmp(machine_limit_keys[q], "axes") != 0 || cbf_machine_limit_axes[L->index])
                 known[n++] = machine_limit_keys[q];
         known[n] = NULL;
-        return mj_unknown(j, path, key, known);
+        return mj_unknown(j, path, key, known, n);
     }
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     L->seen |= 1u << k;
@@ -1652,7 +1744,7 @@ static int mj_limits_key(mjson *j, const char *path, const char *key, void *ctx)
         if (strcmp(cbf_machine_limit_names[li], key) == 0)
             break;
     if (li == CBF_MACHINE__COUNT)
-        return mj_unknown(j, path, key, cbf_machine_limit_names);
+        return mj_unknown(j, path, key, cbf_machine_limit_names, CBF_MACHINE__COUNT);
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     *seen |= 1u << li;
     L.index = li;
@@ -1682,7 +1774,7 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
         if (strcmp(machine_file_keys[k], key) == 0)
             break;
     if (!machine_file_keys[k])
-        return mj_unknown(j, path, key, machine_file_keys);
+        return mj_unknown(j, path, key, machine_file_keys, sizeof machine_file_keys / sizeof *machine_file_keys);
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     if (strcmp(key, "limits") == 0) {
         unsigned lseen = 0;
@@ -1700,33 +1792,49 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
 
 /* A machine file (name: its file name, which says JSON or YAML; text[0..n): its bytes) into machine_file;
  * 0 with the one line in machine_why. */
+static int machine_read(const char *path, mjson *j);
+
 static int load_machine(const char *name, const char *text, size_t size)
 {
     static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
+    char *mtext, *json = NULL;
     long n;
     mjson j;
-    unsigned has_limits = 0;
-    int li, a;
+    int ok;
     (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
-    n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    n = opt_read(path, text, size, &mtext, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     if (n < 0) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;
     }
     memset(&machine_file, 0, sizeof machine_file);
-    j.s = machine_text;
+    j.s = mtext;
     j.n = (size_t)n;
     if (opt_is_yaml(name)) {
-        if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
-            (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-            return 0;
+        /* the JSON text: at most 4 bytes a byte of YAML, and a few more (as the buffer of that size was) */
+        ok = yj_translate(path, mtext, &json, 4u * OPT_MACHINE_MAX_BYTES + 64u, OPT_MACHINE_MAX_DEPTH);
+        if (ok) {
+            j.s = json;
+            j.n = strlen(json);
         }
-        j.s = machine_json;
-        j.n = strlen(machine_json);
-    } else if (!opt_json_depth(path, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
-        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-        return 0;
+    } else {
+        ok = opt_json_depth(path, mtext, (size_t)n, OPT_MACHINE_MAX_DEPTH);
     }
+    if (!ok)
+        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
+    else
+        ok = machine_read(path, &j);
+    free(json);
+    free(mtext);
+    return ok;
+}
+
+/* The machine file's JSON text (j) into machine_file; 0 with the one line in machine_why. */
+static int machine_read(const char *path, mjson *jp)
+{
+    mjson j = *jp;
+    unsigned has_limits = 0;
+    int li, a;
     j.i = 0;
     j.file = path;
     if (!mj_object(&j, "$", mj_top_key, &has_limits))
@@ -1772,19 +1880,21 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1776 "cbf_tools.h"
+#line 1884 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
  * testee read files through it; a page or any other host calls the *_buffer entry points instead) ---- */
 
 /* The first byte of fp first (fopen opens a directory, whose size means nothing; reading it fails), then
- * its size where it can seek. 0: fp rewound; or, unseekable, that byte in buf[0] and *n = 1; or an empty
- * file, fp at its end. -1: fp closed and *why ("file too large" when its size is over cap). */
-static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, const char **why)
+ * its size where it can seek (*size; 0 where it cannot, or says 0). 0: fp rewound; or, unseekable, that
+ * byte in buf[0] and *n = 1; or an empty file, fp at its end. -1: fp closed and *why ("file too large"
+ * when its size is over cap). */
+static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, size_t *size, const char **why)
 {
     int first = fgetc(fp);
     long end;
+    *size = 0;
     if (first == EOF) {
         int bad = ferror(fp), err = errno;
         if (!bad)
@@ -1815,6 +1925,7 @@ static int cbf_tool_size_first(FILE *fp, uint8_t *buf, size_t cap, size_t *n, co
         *why = "read error";
         return -1;
     }
+    *size = end > 0 ? (size_t)end : 0u;
     return 0;
 }
 
@@ -1877,36 +1988,38 @@ static FILE *cbf_tool_open(const char *path, const char **why)
 }
 #endif
 
-/* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
- * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
-long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
+/* The rest of fp into *bufp (room bytes; n read so far), at most cap bytes in all; fp closed. When grow,
+ * *bufp is the heap's and grows (by doubling, to cap; room + 1 bytes allocated) when the file holds more
+ * than room (a pipe, or a file longer than its size said); else room is cap. Its size, -2 ("file too
+ * large") or -1 (*why: "read error", "is a directory", "out of memory"). */
+static long cbf_tool_read_rest(FILE *fp, uint8_t **bufp, size_t room, size_t n, size_t cap, int grow,
+                               const char **why)
 {
-    FILE *fp;
-    size_t n = 0;
-    errno = 0;
-    *why = "cannot open";
-    fp = cbf_tool_open(path, why);
-    if (!fp)
-        return -1;
-    /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
-     * that way (a pipe), after cap bytes (issue 36). */
-    if (cbf_tool_size_first(fp, buf, cap, &n, why) < 0)
-        return strcmp(*why, "file too large") == 0 ? -2 : -1;
-    if (n == 0 && feof(fp)) {
-        fclose(fp);
-        return 0;
-    }
     for (;;) {
         size_t got;
-        if (n == cap) {
+        if (n == room) { /* full: one more byte says whether the file ends here */
             int c = fgetc(fp);
-            fclose(fp);
-            *why = "file too large";
-            return c == EOF ? (long)n : -2;
+            uint8_t *grown;
+            if (c == EOF)
+                break;
+            if (!grow || room >= cap) {
+                fclose(fp);
+                *why = "file too large";
+                return -2;
+            }
+            room = room >= cap / 2u ? cap : 2u * room + 1u;
+            grown = (uint8_t *)realloc(*bufp, room + 1u);
+            if (!grown) {
+                fclose(fp);
+                *why = "out of memory";
+                return -1;
+            }
+            *bufp = grown;
+            (*bufp)[n++] = (uint8_t)c;
         }
-        got = fread(buf + n, 1, cap - n, fp);
+        got = fread(*bufp + n, 1, room - n, fp);
         n += got;
-        if (got == 0)
+        if (got == 0 && n < room) /* the end, or an error; full: the test above */
             break;
     }
     if (ferror(fp)) {
@@ -1918,14 +2031,75 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
     return (long)n;
 }
 
-/* An option file read whole into opt_file_buf (at most max bytes), or 0 with the one line in opt_why. */
-static char opt_file_buf[(OPT_CUTTER_MAX_BYTES > OPT_MACHINE_MAX_BYTES ? OPT_CUTTER_MAX_BYTES : OPT_MACHINE_MAX_BYTES)
-                         + 1u];
+/* Read a whole file into buf; returns its size, -2 ("file too large": over cap, from its size before
+ * reading where it has one) or -1 (what went wrong in *why, as cbf says it). */
+long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char **why)
+{
+    FILE *fp;
+    size_t n = 0, size;
+    errno = 0;
+    *why = "cannot open";
+    fp = cbf_tool_open(path, why);
+    if (!fp)
+        return -1;
+    /* A file larger than cap is refused from its size, unread (-2); where the size cannot be known
+     * that way (a pipe), after cap bytes (issue 36). */
+    if (cbf_tool_size_first(fp, buf, cap, &n, &size, why) < 0)
+        return strcmp(*why, "file too large") == 0 ? -2 : -1;
+    if (n == 0 && feof(fp)) {
+        fclose(fp);
+        return 0;
+    }
+    return cbf_tool_read_rest(fp, &buf, cap, n, cap, 0, why);
+}
 
-static int opt_file(const char *path, size_t max, const char *what, size_t *n)
+/* As cbf_tool_read_file, into a buffer of the heap sized to the file (its size + 1 where it has one;
+ * grown to at most cap + 1 where it does not), *out; the caller frees it. Nothing in *out on failure. A
+ * tool that held a buffer of cap bytes for every file made the WebAssembly module's initial memory
+ * 24 MB, paid by every instance (bench/NOTES.md, round 5). */
+long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+{
+    FILE *fp;
+    uint8_t first[1];
+    size_t n = 0, size, room;
+    long got;
+    uint8_t *buf;
+    *out = NULL;
+    errno = 0;
+    *why = "cannot open";
+    fp = cbf_tool_open(path, why);
+    if (!fp)
+        return -1;
+    if (cbf_tool_size_first(fp, first, cap, &n, &size, why) < 0)
+        return strcmp(*why, "file too large") == 0 ? -2 : -1;
+    room = size ? size : cap < 4096u ? cap : 4096u;
+    buf = (uint8_t *)malloc(room + 1u);
+    if (!buf) {
+        fclose(fp);
+        *why = "out of memory";
+        return -1;
+    }
+    if (n)
+        buf[0] = first[0];
+    if (n == 0 && feof(fp)) {
+        fclose(fp);
+        *out = buf;
+        return 0;
+    }
+    got = cbf_tool_read_rest(fp, &buf, room, n, cap, 1, why);
+    if (got < 0)
+        free(buf);
+    else
+        *out = buf;
+    return got;
+}
+
+/* An option file read whole into *text (the heap's; at most max bytes), or 0 with the one line in opt_why. */
+static int opt_file(const char *path, size_t max, const char *what, char **text, size_t *n)
 {
     const char *why;
-    long got = cbf_tool_read_file(path, (uint8_t *)opt_file_buf, max, &why);
+    uint8_t *buf;
+    long got = cbf_tool_read_file_alloc(path, max, &buf, &why);
     if (got < 0) {
         if (strcmp(why, "file too large") == 0)
             (void)opt_too_large(cbf_tool_name(path), max, what);
@@ -1933,6 +2107,7 @@ static int opt_file(const char *path, size_t max, const char *what, size_t *n)
             (void)opt_fail("%s: cannot read %s (%s)", cbf_tool_name(path), what, why);
         return 0;
     }
+    *text = (char *)buf;
     *n = (size_t)got;
     return 1;
 }
@@ -1940,22 +2115,32 @@ static int opt_file(const char *path, size_t max, const char *what, size_t *n)
 int cbf_tool_cutters_file(const char *path, cbf_options *opt)
 {
     size_t n;
+    char *text;
+    int ok;
     opt_last_why = opt_why;
-    return opt_file(path, OPT_CUTTER_MAX_BYTES, opt_cutter_what, &n) && cbf_tool_cutters_buffer(path, opt_file_buf, n, opt);
+    if (!opt_file(path, OPT_CUTTER_MAX_BYTES, opt_cutter_what, &text, &n))
+        return 0;
+    ok = cbf_tool_cutters_buffer(path, text, n, opt);
+    free(text);
+    return ok;
 }
 
 int cbf_tool_machine_file(const char *path, cbf_options *opt)
 {
     size_t n;
-    if (!opt_file(path, OPT_MACHINE_MAX_BYTES, opt_machine_what, &n)) {
+    char *text;
+    int ok;
+    if (!opt_file(path, OPT_MACHINE_MAX_BYTES, opt_machine_what, &text, &n)) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         opt_last_why = machine_why;
         return 0;
     }
-    return cbf_tool_machine_buffer(path, opt_file_buf, n, opt);
+    ok = cbf_tool_machine_buffer(path, text, n, opt);
+    free(text);
+    return ok;
 }
 /* ==== END tools/files.c ==== */
-#line 1959 "cbf_tools.h"
+#line 2144 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2102,7 +2287,8 @@ int cbf_tool_frame_buffer(const char *name, const uint8_t *buf, size_t n, const 
 static void print_findings(const char *file, long errors, const cbf_tool_options *o)
 {
     size_t k, max = o->max_findings;
-    qsort(held, nheld, sizeof *held, finding_cmp);
+    if (nheld) /* held is NULL before the first finding: qsort's pointer must not be (UBSan) */
+        qsort(held, nheld, sizeof *held, finding_cmp);
     for (k = 0; k < nheld; k++) {
         if (max == 0 || k < max)
             print_finding(file, &held[k]);
@@ -2350,7 +2536,7 @@ int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const c
     return status;
 }
 /* ==== END tools/engine.c ==== */
-#line 2354 "cbf_tools.h"
+#line 2540 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

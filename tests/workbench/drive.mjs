@@ -1,6 +1,6 @@
 // Drives the workbench page in headless Chromium (playwright-core, Debian's /usr/bin/chromium) for
 // tests/test_workbench_page.py: node drive.mjs PAGE.html SHOTS_DIR JOBS.json
-// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph, "paged": PATH of
+// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph (optional: `make bench` times the page without, bench/workbench_rows.py), "paged": PATH of
 // a file of more than a page of motion records, "curve": [PATH, RECORD] of a curved motion}. Prints JSON:
 // each file's printed text and exit status as the page shows them, the requests the page made, the
 // console errors, what fetch() gave from inside the page, and the screenshots' paths and page widths.
@@ -68,7 +68,7 @@ for (const [path, profile] of jobs.files) {
     await page.click('#next');
     paged = [first, await tabStops()];
   }
-  if (path === jobs.curve[0] && curve === null) { // the points the top view draws for the curve's record
+  if (jobs.curve && path === jobs.curve[0] && curve === null) { // the points the top view draws for the curve's record
     curve = await page.evaluate((r) => [...document.querySelectorAll(`#path-top path[data-record="${r}"]`)]
       .map((p) => p.getAttribute('d')), String(jobs.curve[1]));
   }
@@ -81,80 +81,84 @@ const fetched = await page.evaluate(async () => {
   }
   return out;
 });
-// Screenshots of a failing file with its first finding selected, at 390 and 1280 px.
-const widths = {};
-await feed(jobs.shot, 'default');
-await page.focus('#findings button');
-await page.keyboard.press('Enter');
-const selected = await page.evaluate(() => ({
-  finding: document.querySelectorAll('#findings .wb-selected').length,
-  row: document.querySelectorAll('#records tr.wb-selected').length,
-  hit: document.querySelectorAll('#hex .wb-hit').length,
-  segments: document.querySelectorAll('.wb-path path.wb-selected').length,
-}));
-for (const w of [390, 1280]) {
-  await page.setViewportSize({ width: w, height: 900 });
-  widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
-  await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
-}
-// A segment of the toolpath, of a record other than the selected one, chosen by click and by keyboard:
-// its record's row and bytes are selected.
+let selected = null;
 const picked = [];
-const rowNow = async () => page.evaluate(() => {
-  const row = document.querySelector('#records tr.wb-selected');
-  return { row: row === null ? null : row.dataset.record, hex: document.getElementById('hex-title').textContent,
-    segments: [...document.querySelectorAll('.wb-path path.wb-selected')].map((p) => p.dataset.record) };
-});
-const others = await page.evaluate(() => {
-  const sel = document.querySelector('#records tr.wb-selected');
-  const mine = sel === null ? null : sel.dataset.record;
-  const recs = [...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record);
-  return [...new Set(recs)].filter((r) => r !== mine).slice(0, 2);
-});
-if (others.length > 0) {
-  await page.locator(`#path-top path[data-record="${others[0]}"]`).dispatchEvent('click');
-  picked.push({ want: others[0], how: 'click', ...(await rowNow()) });
-}
-if (others.length > 1) {
-  await page.focus(`#path-top path[data-record="${others[1]}"]`);
+let three = null;
+const widths = {};
+if (jobs.shot) {
+  // Screenshots of a failing file with its first finding selected, at 390 and 1280 px.
+  await feed(jobs.shot, 'default');
+  await page.focus('#findings button');
   await page.keyboard.press('Enter');
-  picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
-}
-// The 3D view shares the selection: it shows the selected record; turned and zoomed by keyboard and
-// mouse; ] selects the next motion record, a click on a drawn segment its record.
-const view = () => page.evaluate(() => {
-  const c = document.getElementById('path-3d');
-  const row = document.querySelector('#records tr.wb-selected');
-  return { ...c.dataset, row: row === null ? null : row.dataset.record };
-});
-const three = { shared: await view() };
-await page.focus('#path-3d');
-for (const key of ['ArrowRight', 'ArrowUp', '+']) await page.keyboard.press(key);
-three.keyboard = await view();
-await page.keyboard.press(']');
-three.next = await view();
-await page.keyboard.press('0');
-const box = await page.locator('#path-3d').boundingBox();
-await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-await page.mouse.down();
-await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 20, { steps: 4 });
-await page.mouse.up();
-await page.mouse.wheel(0, -200);
-three.mouse = await view();
-await page.keyboard.press('0');
-// a record other than the selected one whose segment's middle no other segment is drawn nearer to
-const aim = await page.evaluate(() => {
-  const sel = document.getElementById('path-3d').dataset.selected;
-  const recs = [...new Set([...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record))];
-  for (const r of recs.filter((x) => x !== sel)) {
-    const at = window.cbfWorkbench.where3d(Number(r));
-    if (at !== null && String(window.cbfWorkbench.pick3d(at[0], at[1])) === r) return { want: r, at };
+  selected = await page.evaluate(() => ({
+    finding: document.querySelectorAll('#findings .wb-selected').length,
+    row: document.querySelectorAll('#records tr.wb-selected').length,
+    hit: document.querySelectorAll('#hex .wb-hit').length,
+    segments: document.querySelectorAll('.wb-path path.wb-selected').length,
+  }));
+  for (const w of [390, 1280]) {
+    await page.setViewportSize({ width: w, height: 900 });
+    widths[w] = await page.evaluate(() => document.documentElement.scrollWidth);
+    await page.screenshot({ path: join(shots, `workbench-${w}.png`), fullPage: true });
   }
-  return null;
-});
-if (aim !== null) {
-  await page.mouse.click(box.x + aim.at[0], box.y + aim.at[1]);
-  three.clicked = { want: aim.want, ...(await view()) };
+  // A segment of the toolpath, of a record other than the selected one, chosen by click and by keyboard:
+  // its record's row and bytes are selected.
+  const rowNow = async () => page.evaluate(() => {
+    const row = document.querySelector('#records tr.wb-selected');
+    return { row: row === null ? null : row.dataset.record, hex: document.getElementById('hex-title').textContent,
+      segments: [...document.querySelectorAll('.wb-path path.wb-selected')].map((p) => p.dataset.record) };
+  });
+  const others = await page.evaluate(() => {
+    const sel = document.querySelector('#records tr.wb-selected');
+    const mine = sel === null ? null : sel.dataset.record;
+    const recs = [...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record);
+    return [...new Set(recs)].filter((r) => r !== mine).slice(0, 2);
+  });
+  if (others.length > 0) {
+    await page.locator(`#path-top path[data-record="${others[0]}"]`).dispatchEvent('click');
+    picked.push({ want: others[0], how: 'click', ...(await rowNow()) });
+  }
+  if (others.length > 1) {
+    await page.focus(`#path-top path[data-record="${others[1]}"]`);
+    await page.keyboard.press('Enter');
+    picked.push({ want: others[1], how: 'keyboard', ...(await rowNow()) });
+  }
+  // The 3D view shares the selection: it shows the selected record; turned and zoomed by keyboard and
+  // mouse; ] selects the next motion record, a click on a drawn segment its record.
+  const view = () => page.evaluate(() => {
+    const c = document.getElementById('path-3d');
+    const row = document.querySelector('#records tr.wb-selected');
+    return { ...c.dataset, row: row === null ? null : row.dataset.record };
+  });
+  three = { shared: await view() };
+  await page.focus('#path-3d');
+  for (const key of ['ArrowRight', 'ArrowUp', '+']) await page.keyboard.press(key);
+  three.keyboard = await view();
+  await page.keyboard.press(']');
+  three.next = await view();
+  await page.keyboard.press('0');
+  const box = await page.locator('#path-3d').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 20, { steps: 4 });
+  await page.mouse.up();
+  await page.mouse.wheel(0, -200);
+  three.mouse = await view();
+  await page.keyboard.press('0');
+  // a record other than the selected one whose segment's middle no other segment is drawn nearer to
+  const aim = await page.evaluate(() => {
+    const sel = document.getElementById('path-3d').dataset.selected;
+    const recs = [...new Set([...document.querySelectorAll('#path-top path[data-record]')].map((p) => p.dataset.record))];
+    for (const r of recs.filter((x) => x !== sel)) {
+      const at = window.cbfWorkbench.where3d(Number(r));
+      if (at !== null && String(window.cbfWorkbench.pick3d(at[0], at[1])) === r) return { want: r, at };
+    }
+    return null;
+  });
+  if (aim !== null) {
+    await page.mouse.click(box.x + aim.at[0], box.y + aim.at[1]);
+    three.clicked = { want: aim.want, ...(await view()) };
+  }
 }
 await context.close();
 process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked, paged, curve, three })}\n`);

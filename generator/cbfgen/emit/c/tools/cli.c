@@ -2,8 +2,6 @@
  * It parses the arguments, reads each file whole into memory and hands it to the engine with a sink that
  * writes to stdout and stderr. */
 
-static uint8_t file_buf[CBF_TOOL_MAX_FILE_SIZE + 1u];
-
 static void write_stdout(void *user, const char *text, size_t len)
 {
     (void)user;
@@ -45,11 +43,13 @@ static long parse_count(const char *s)
     return (long)v;
 }
 
-/* The file at path into file_buf; its size, or -1 and one line on stderr when it cannot be read. */
-static long read_cbf(const char *path)
+/* The file at path into *buf (the heap's, sized to the file: a buffer of the largest CBF file, 17 MB, was
+ * the WebAssembly module's initial memory, paid by every instance); its size, or -1 and one line on stderr
+ * when it cannot be read. */
+static long read_cbf(const char *path, uint8_t **buf)
 {
     const char *why;
-    long n = cbf_tool_read_file(path, file_buf, CBF_TOOL_MAX_FILE_SIZE, &why);
+    long n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_FILE_SIZE, buf, &why);
     if (n == -2) /* larger than a CBF file can be: from its size, unread (cbf's words) */
         fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", cbf_tool_name(path),
                 (unsigned long)CBF_TOOL_MAX_FILE_SIZE);
@@ -119,13 +119,15 @@ static int cmd_validate(int argc, char **argv)
     for (i = 0; i < argc; i++) {
         long n;
         int st;
+        uint8_t *buf;
         if (takes_value(argv[i])) {
             i++;
             continue;
         }
         files++;
-        n = read_cbf(argv[i]);
-        st = n < 0 ? CBF_TOOL_EXIT_USAGE : cbf_tool_validate_buffer(argv[i], file_buf, (size_t)n, &o, &std_sink);
+        n = read_cbf(argv[i], &buf);
+        st = n < 0 ? CBF_TOOL_EXIT_USAGE : cbf_tool_validate_buffer(argv[i], buf, (size_t)n, &o, &std_sink);
+        free(buf);
         if (st == CBF_TOOL_OUT_OF_MEMORY)
             return CBF_TOOL_EXIT_USAGE;
         if (st > status)
@@ -140,12 +142,15 @@ static int cmd_validate(int argc, char **argv)
 
 static int cmd_dump(const char *path, int drawn)
 {
-    long n = read_cbf(path);
+    uint8_t *buf;
+    long n = read_cbf(path, &buf);
+    int st;
     if (n < 0)
         return CBF_TOOL_EXIT_USAGE;
-    if (drawn)
-        return cbf_tool_path_buffer(path, file_buf, (size_t)n, &std_sink);
-    return cbf_tool_dump_buffer(path, file_buf, (size_t)n, &std_sink);
+    st = drawn ? cbf_tool_path_buffer(path, buf, (size_t)n, &std_sink)
+               : cbf_tool_dump_buffer(path, buf, (size_t)n, &std_sink);
+    free(buf);
+    return st;
 }
 
 int main(int argc, char **argv)

@@ -142,7 +142,8 @@ int cbf_tool_frame_buffer(const char *name, const uint8_t *buf, size_t n, const 
 static void print_findings(const char *file, long errors, const cbf_tool_options *o)
 {
     size_t k, max = o->max_findings;
-    qsort(held, nheld, sizeof *held, finding_cmp);
+    if (nheld) /* held is NULL before the first finding: qsort's pointer must not be (UBSan) */
+        qsort(held, nheld, sizeof *held, finding_cmp);
     for (k = 0; k < nheld; k++) {
         if (max == 0 || k < max)
             print_finding(file, &held[k]);

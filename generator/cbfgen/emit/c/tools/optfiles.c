@@ -17,14 +17,30 @@ static long opt_too_large(const char *path, size_t max, const char *what)
     return opt_fail("%s: larger than the %lu bytes a %s may have (limit max_bytes)", path, (unsigned long)max, what) - 1;
 }
 
-/* An option file's bytes (data[0..n)) copied into buf (at most max bytes, buf holds max + 1), checked to be
- * UTF-8 as Python decodes it; its size, or -1 with the one line in opt_why. */
-static long opt_read(const char *path, const char *data, size_t size, char *buf, size_t max, const char *what)
+/* *text freed (and NULL); v. */
+static long opt_drop(char **text, long v)
+{
+    free(*text);
+    *text = NULL;
+    return v;
+}
+
+/* An option file's bytes (data[0..n)), at most max, copied into *text (the heap's, size + 1 bytes: the
+ * caller frees it) and checked to be UTF-8 as Python decodes it; its size, or -1 with the one line in
+ * opt_why (and nothing to free). Buffers of max bytes held for every run were most of the WebAssembly
+ * module's initial memory (bench/NOTES.md, round 5). */
+static long opt_read(const char *path, const char *data, size_t size, char **text, size_t max, const char *what)
 {
     long n = (long)size;
     size_t i = 0;
+    char *buf;
+    *text = NULL;
     if (size > max)
         return opt_too_large(path, max, what);
+    buf = (char *)malloc(size + 1u);
+    if (!buf)
+        return opt_fail("%s: out of memory reading the %s", path, what) - 1;
+    *text = buf;
     memcpy(buf, data, size);
     buf[size] = 0;
     while (i < (size_t)n) { /* strict UTF-8: no overlong forms, surrogates or values beyond U+10FFFF */
@@ -38,7 +54,7 @@ static long opt_read(const char *path, const char *data, size_t size, char *buf,
         if (u[0] >= 0xC2 && u[0] <= 0xDF) len = 2;
         else if (u[0] >= 0xE0 && u[0] <= 0xEF) len = 3;
         else if (u[0] >= 0xF0 && u[0] <= 0xF4) len = 4;
-        else return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+        else return opt_drop(text, opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1);
         if (u[0] == 0xE0) lo = 0xA0;
         if (u[0] == 0xED) hi = 0x9F;
         if (u[0] == 0xF0) lo = 0x90;
@@ -46,13 +62,13 @@ static long opt_read(const char *path, const char *data, size_t size, char *buf,
         for (k = 1; k < len; k++) {
             unsigned char a = k == 1 ? lo : 0x80, b = k == 1 ? hi : 0xBF;
             if (k >= left || u[k] < a || u[k] > b)
-                return opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1;
+                return opt_drop(text, opt_fail("%s: offset %lu: not UTF-8 text", path, (unsigned long)i) - 1);
         }
         i += len;
     }
     if (memchr(buf, 0, (size_t)n))
-        return opt_fail("%s: offset %lu: not text (a NUL byte)", path,
-                        (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1;
+        return opt_drop(text, opt_fail("%s: offset %lu: not text (a NUL byte)", path,
+                                       (unsigned long)((const char *)memchr(buf, 0, (size_t)n) - buf)) - 1);
     return n;
 }
 
@@ -163,8 +179,8 @@ static int opt_json_depth(const char *path, const char *s, size_t n, int max)
  * JSON keeps every source line break, so a JSON line is the YAML line. */
 typedef struct yj {
     const char *file;
-    char *out;
-    size_t n, cap;
+    char *out; /* the heap's: room bytes, grown to at most cap */
+    size_t n, room, cap;
     int max_depth, depth;
     int ind[OPT_NEST_CAP + 1];
     char kind[OPT_NEST_CAP + 1]; /* 'm' or 's'; flow collections live only inside yj_flow */
@@ -179,6 +195,17 @@ static int yj_put(yj *y, const char *s, size_t len)
 {
     if (y->cap - y->n <= len)
         return opt_fail("%s: line %lu: not YAML (too long once read)", y->file, y->line);
+    if (y->room - y->n <= len) { /* grown by doubling, within cap (the test above) */
+        size_t room = y->room;
+        char *grown;
+        while (room - y->n <= len)
+            room = room >= y->cap / 2u ? y->cap : 2u * room;
+        grown = (char *)realloc(y->out, room);
+        if (!grown)
+            return opt_fail("%s: line %lu: out of memory", y->file, y->line);
+        y->out = grown;
+        y->room = room;
+    }
     memcpy(y->out + y->n, s, len);
     y->n += len;
     y->out[y->n] = 0;
@@ -638,57 +665,101 @@ static int yj_line_node(yj *y, const char *p, const char *end, int ind)
     return yj_inline(y, p, end, ind);
 }
 
-/* Translate the YAML text src into JSON in out (cap bytes); 0 with the one line in opt_why. */
-static int yj_translate(const char *file, const char *src, char *out, size_t cap, int max_depth)
+static int yj_lines(yj *y, const char *src);
+
+/* Translate the YAML text src into JSON text in *out (the heap's, at most cap bytes with its NUL: the
+ * caller frees it); 0 with the one line in opt_why (and nothing to free). */
+static int yj_translate(const char *file, const char *src, char **out, size_t cap, int max_depth)
 {
     yj y;
-    const char *line = src;
     memset(&y, 0, sizeof y);
     y.file = file;
-    y.out = out;
     y.cap = cap;
+    y.room = cap < 4096u ? cap : 4096u;
     y.max_depth = max_depth;
-    out[0] = 0;
-    if (memcmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip */
+    *out = NULL;
+    y.out = (char *)malloc(y.room);
+    if (!y.out)
+        return opt_fail("%s: out of memory", file);
+    y.out[0] = 0;
+    if (!yj_lines(&y, src)) {
+        free(y.out);
+        return 0;
+    }
+    *out = y.out;
+    return 1;
+}
+
+/* yj_translate's work, line by line, into y->out. */
+static int yj_lines(yj *y, const char *src)
+{
+    const char *file = y->file, *line = src;
+    if (strncmp(src, "\xEF\xBB\xBF", 3) == 0) /* a byte order mark, which YAML readers skip (src: NUL-ended) */
         line += 3;
     while (*line) {
         const char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line), *p = line;
         int ind;
-        y.line++;
-        end = yj_content_end(&y, line, end);
+        y->line++;
+        end = yj_content_end(y, line, end);
         if (!end)
             return 0;
         while (p < end && *p == ' ')
             p++;
         ind = (int)(p - line);
         if (p < end && *p == '\t')
-            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y.line);
-        if (!yj_markers(&y, line, &p, end, &ind))
+            return opt_fail("%s: line %lu: not YAML (a tab in the indentation)", file, y->line);
+        if (!yj_markers(y, line, &p, end, &ind))
             return 0;
-        if (p < end && !yj_line_node(&y, p, end, ind))
+        if (p < end && !yj_line_node(y, p, end, ind))
             return 0;
-        if (!yj_c(&y, '\n'))
+        if (!yj_c(y, '\n'))
             return 0;
         if (!nl)
             break;
         line = nl + 1;
     }
-    while (y.depth)
-        if (!yj_close(&y))
+    while (y->depth)
+        if (!yj_close(y))
             return 0;
-    if (!y.root_done && !yj_put(&y, "null", 4))
+    if (!y->root_done && !yj_put(y, "null", 4))
         return 0;
     return 1;
 }
 
 /* ---- cutter tables (6.1.2): the rows, each checked as it comes by the shared rules ---- */
-static char cutter_names[OPT_CUTTER_MAX_ROWS][OPT_CUTTER_NAME_BYTES];
-static unsigned long cutter_lines[OPT_CUTTER_MAX_ROWS];
-static cbf_cutter cutters[OPT_CUTTER_MAX_ROWS];
-static size_t ncutters;
-static char cutter_text[OPT_CUTTER_MAX_BYTES + 1u];
-static char cutter_json[4u * OPT_CUTTER_MAX_BYTES + 64u];
+/* The rows of the last table, the heap's, grown by doubling to at most OPT_CUTTER_MAX_ROWS (room rows);
+ * cutters[k].name is cutter_names[k], set once the table is read (a row added may move the names). */
+typedef char cutter_name[OPT_CUTTER_NAME_BYTES];
+static cutter_name *cutter_names;
+static unsigned long *cutter_lines;
+static cbf_cutter *cutters;
+static size_t ncutters, cutter_room;
+static char *cutter_text; /* the table's text while it is read (opt_read) */
 static const char *cutter_file;
+
+/* Room for one more row; 0 with the one line in opt_why when the heap has none. */
+static int cutter_grow(unsigned long line)
+{
+    size_t room = cutter_room ? 2u * cutter_room : 64u;
+    cutter_name *names;
+    unsigned long *lines;
+    cbf_cutter *rows;
+    if (room > OPT_CUTTER_MAX_ROWS)
+        room = OPT_CUTTER_MAX_ROWS;
+    names = (cutter_name *)realloc(cutter_names, room * sizeof *cutter_names);
+    if (names)
+        cutter_names = names;
+    lines = (unsigned long *)realloc(cutter_lines, room * sizeof *cutter_lines);
+    if (lines)
+        cutter_lines = lines;
+    rows = (cbf_cutter *)realloc(cutters, room * sizeof *cutters);
+    if (rows)
+        cutters = rows;
+    if (!names || !lines || !rows)
+        return opt_fail("%s: line %lu: out of memory", cutter_file, line);
+    cutter_room = room;
+    return 1;
+}
 
 /* A row: cell[0] the name, cell[1 + k] the text of value k. */
 static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLUMNS])
@@ -717,9 +788,11 @@ static int cutter_add(unsigned long line, const char *const cell[OPT_CUTTER_COLU
             return opt_fail("%s: line %lu: cutter '%s' given twice (first on line %lu)", cutter_file, line,
                             cbf_quoted(name, CBF_QUOTE_NAME),
                             cutter_lines[k]);
+    if (ncutters == cutter_room && !cutter_grow(line))
+        return 0;
     memcpy(cutter_names[ncutters], name, strlen(name) + 1); /* chars <= max: fits OPT_CUTTER_NAME_BYTES */
     cutter_lines[ncutters] = line;
-    cutters[ncutters].name = cutter_names[ncutters];
+    cutters[ncutters].name = NULL; /* set when the table is read (load_cutters) */
     for (k = 0; k < CBF_CUTTER_VALUES; k++)
         cutters[ncutters].value[k] = v[k];
     ncutters++;
@@ -927,14 +1000,27 @@ static int cutters_rows(cj *j)
     }
 }
 
+static int cutters_json(const char *path, const char *json);
+
 static int cutters_yaml(const char *path)
+{
+    char *json;
+    int ok;
+    /* the JSON text: at most 4 bytes a byte of YAML, and a few more (as the buffer of that size was) */
+    if (!yj_translate(path, cutter_text, &json, 4u * OPT_CUTTER_MAX_BYTES + 64u, OPT_CUTTER_MAX_DEPTH))
+        return 0;
+    ok = cutters_json(path, json);
+    free(json);
+    return ok;
+}
+
+/* The rows of a cutter table read as JSON text (a YAML table, translated). */
+static int cutters_json(const char *path, const char *json)
 {
     cj j;
     int seen = 0;
-    if (!yj_translate(path, cutter_text, cutter_json, sizeof cutter_json, OPT_CUTTER_MAX_DEPTH))
-        return 0;
     memset(&j, 0, sizeof j);
-    j.s = cutter_json;
+    j.s = json;
     j.line = 1;
     cj_ws(&j);
     if (j.s[j.i] != '{')
@@ -981,19 +1067,22 @@ static int load_cutters(const char *name, const char *text, size_t size)
     static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
     long n;
     (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
+    size_t k;
+    int ok;
     ncutters = 0;
     cutter_file = path;
-    n = opt_read(path, text, size, cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
+    n = opt_read(path, text, size, &cutter_text, OPT_CUTTER_MAX_BYTES, opt_cutter_what);
     if (n < 0)
         return 0;
-    if (opt_is_yaml(name)) {
-        if (!cutters_yaml(path))
-            return 0;
-    } else if (!cutters_csv(cutter_text)) {
+    ok = opt_is_yaml(name) ? cutters_yaml(path) : cutters_csv(cutter_text);
+    free(cutter_text);
+    cutter_text = NULL;
+    if (!ok)
         return 0;
-    }
     if (!ncutters)
         return opt_fail("%s: no cutters (the table is empty)", path);
+    for (k = 0; k < ncutters; k++)
+        cutters[k].name = cutter_names[k];
     return 1;
 }
 
@@ -1007,8 +1096,6 @@ static int load_cutters(const char *name, const char *text, size_t size)
  * (or the line), as cbf says it. */
 static cbf_machine machine_file;
 static char machine_why[8192];
-static char machine_text[OPT_MACHINE_MAX_BYTES + 1u];
-static char machine_json[4u * OPT_MACHINE_MAX_BYTES + 64u]; /* a YAML machine file, as JSON */
 
 typedef struct mjson { const char *s; size_t n, i; const char *file; } mjson;
 
@@ -1229,12 +1316,14 @@ static int mj_object(mjson *j, const char *path, mj_key_fn on_key, void *ctx)
     }
 }
 
-static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known)
+/* known: n names, or fewer ended by NULL (cbf_machine_limit_names has no NULL: reading one past it was a
+ * global-buffer-overflow that AddressSanitizer found on a machine file with an unknown limit). */
+static int mj_unknown(mjson *j, const char *path, const char *key, const char *const *known, size_t n)
 {
     char list[512];
     size_t k, at = 0;
     list[0] = 0;
-    for (k = 0; known[k]; k++)
+    for (k = 0; k < n && known[k]; k++)
         at += (size_t)snprintf(list + at, sizeof list - at, "%s%s", k ? ", " : "", known[k]);
     return mj_fail(j, path, "unknown key '%s' (known: %s)", cbf_quoted(key, CBF_QUOTE_NAME), list);
 }
@@ -1346,7 +1435,7 @@ static int mj_limit_key(mjson *j, const char *path, const char *key, void *ctx)
             if (strcmp(machine_limit_keys[q], "axes") != 0 || cbf_machine_limit_axes[L->index])
                 known[n++] = machine_limit_keys[q];
         known[n] = NULL;
-        return mj_unknown(j, path, key, known);
+        return mj_unknown(j, path, key, known, n);
     }
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     L->seen |= 1u << k;
@@ -1379,7 +1468,7 @@ static int mj_limits_key(mjson *j, const char *path, const char *key, void *ctx)
         if (strcmp(cbf_machine_limit_names[li], key) == 0)
             break;
     if (li == CBF_MACHINE__COUNT)
-        return mj_unknown(j, path, key, cbf_machine_limit_names);
+        return mj_unknown(j, path, key, cbf_machine_limit_names, CBF_MACHINE__COUNT);
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     *seen |= 1u << li;
     L.index = li;
@@ -1409,7 +1498,7 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
         if (strcmp(machine_file_keys[k], key) == 0)
             break;
     if (!machine_file_keys[k])
-        return mj_unknown(j, path, key, machine_file_keys);
+        return mj_unknown(j, path, key, machine_file_keys, sizeof machine_file_keys / sizeof *machine_file_keys);
     (void)snprintf(kpath, sizeof kpath, "%s.%s", path, key);
     if (strcmp(key, "limits") == 0) {
         unsigned lseen = 0;
@@ -1427,33 +1516,49 @@ static int mj_top_key(mjson *j, const char *path, const char *key, void *ctx)
 
 /* A machine file (name: its file name, which says JSON or YAML; text[0..n): its bytes) into machine_file;
  * 0 with the one line in machine_why. */
+static int machine_read(const char *path, mjson *j);
+
 static int load_machine(const char *name, const char *text, size_t size)
 {
     static char path[CBF_TOOL_NAME_BYTES]; /* the name as every message shows it (cbf_tool_name: the quoting rule) */
+    char *mtext, *json = NULL;
     long n;
     mjson j;
-    unsigned has_limits = 0;
-    int li, a;
+    int ok;
     (void)snprintf(path, sizeof path, "%s", cbf_tool_name(name));
-    n = opt_read(path, text, size, machine_text, OPT_MACHINE_MAX_BYTES, opt_machine_what);
+    n = opt_read(path, text, size, &mtext, OPT_MACHINE_MAX_BYTES, opt_machine_what);
     if (n < 0) {
         (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
         return 0;
     }
     memset(&machine_file, 0, sizeof machine_file);
-    j.s = machine_text;
+    j.s = mtext;
     j.n = (size_t)n;
     if (opt_is_yaml(name)) {
-        if (!yj_translate(path, machine_text, machine_json, sizeof machine_json, OPT_MACHINE_MAX_DEPTH)) {
-            (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-            return 0;
+        /* the JSON text: at most 4 bytes a byte of YAML, and a few more (as the buffer of that size was) */
+        ok = yj_translate(path, mtext, &json, 4u * OPT_MACHINE_MAX_BYTES + 64u, OPT_MACHINE_MAX_DEPTH);
+        if (ok) {
+            j.s = json;
+            j.n = strlen(json);
         }
-        j.s = machine_json;
-        j.n = strlen(machine_json);
-    } else if (!opt_json_depth(path, machine_text, (size_t)n, OPT_MACHINE_MAX_DEPTH)) {
-        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
-        return 0;
+    } else {
+        ok = opt_json_depth(path, mtext, (size_t)n, OPT_MACHINE_MAX_DEPTH);
     }
+    if (!ok)
+        (void)snprintf(machine_why, sizeof machine_why, "%s", opt_why);
+    else
+        ok = machine_read(path, &j);
+    free(json);
+    free(mtext);
+    return ok;
+}
+
+/* The machine file's JSON text (j) into machine_file; 0 with the one line in machine_why. */
+static int machine_read(const char *path, mjson *jp)
+{
+    mjson j = *jp;
+    unsigned has_limits = 0;
+    int li, a;
     j.i = 0;
     j.file = path;
     if (!mj_object(&j, "$", mj_top_key, &has_limits))
