@@ -14,8 +14,6 @@ Golden expectations are not asked: a near-miss spec changes what a file means.
 from __future__ import annotations
 
 import atexit
-import contextlib
-import io
 import json
 import os
 import subprocess
@@ -26,9 +24,8 @@ from pathlib import Path
 from typing import Any
 
 import ksc_serve
-from conftest import REPO, dump_yaml
+from conftest import REPO, cbfgen_here, dump_yaml
 
-from cbfgen.__main__ import main as cbfgen_main
 from cbfgen.loader import SpecError, SpecErrors, load
 
 GOLDEN = sorted(p for p in (REPO / "conformance" / "golden").glob("*.cbf") if p.stat().st_size <= 4096)
@@ -101,10 +98,8 @@ def close() -> None:
 
 def generate(spec: Path, out: Path) -> None:
     """`cbfgen --spec spec --out out` (every emitter, every Kaitai parser); AssertionError naming what failed."""
-    err = io.StringIO()
-    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
-        code = cbfgen_main(["--spec", str(spec), "--out", str(out), "--no-ksc"])
-    assert code == 0, f"cbfgen --spec {spec} exited {code}:\n{err.getvalue()[-3000:]}"
+    code, _, err = cbfgen_here("--spec", str(spec), "--out", str(out), "--no-ksc")
+    assert code == 0, f"cbfgen --spec {spec} exited {code}:\n{err[-3000:]}"
     ksc = _ksc()
     if ksc is not None:
         error = ksc.compile(out / "kaitai" / "cbf.ksy.json", out / "kaitai")
