@@ -2,18 +2,20 @@
 generated, compiled and agreed on by every binding.
 
 Accepted specs are generated into a temporary folder by every emitter (the Python package, the C
-header and testee, the .ksy, the docs), the C testee is compiled (gcc -O0: the sanitizer build is `make c-build`'s),
-ksc compiles the .ksy to Python, and the bindings answer the conformance protocol on the golden
-files: Python and C must report the same findings (check, severity, record, offset) and the same
-decode outcome on every file, and the Kaitai parser must decode every file Python finds valid.
+header and testee, the .ksy, the docs: cbfgen's main() in this process, --no-ksc), ksc compiles the .ksy
+to every Kaitai parser cbfgen compiles (ksc_driver.js in one node process for all examples:
+tests/ksc_serve.py), the C testee is compiled (gcc -O0: the sanitizer build is `make c-build`'s),
+and the bindings answer the conformance protocol on the golden files: Python and C must report the same
+findings (check, severity, record, offset) and the same decode outcome on every file, and the Kaitai
+parser must decode every file Python finds valid.
 Golden expectations are not asked: a near-miss spec changes what a file means.
 """
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
-import shutil
 import subprocess
 import sys
 from collections import Counter
@@ -21,7 +23,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from conftest import REPO, dump_yaml
+import ksc_serve
+from conftest import REPO, cbfgen_here, dump_yaml
 
 from cbfgen.loader import SpecError, SpecErrors, load
 
@@ -76,14 +79,37 @@ def _findings(answer: dict[str, Any]) -> Counter[tuple[Any, ...]]:
     return Counter((f["check"], f["severity"], f["record"], f["offset"]) for f in answer.get("findings", []))
 
 
+_KSC: list[ksc_serve.KscServer] = []
+
+
+def _ksc() -> ksc_serve.KscServer | None:
+    """The process's ksc server (started by the first example that needs it), or None without node and ksc."""
+    if not _KSC and ksc_serve.available():
+        _KSC.append(ksc_serve.KscServer())
+        atexit.register(close)
+    return _KSC[0] if _KSC else None
+
+
+def close() -> None:
+    """Stop the ksc server (a test module's teardown: its CPU time is then counted, tests/cpu_budget.py)."""
+    while _KSC:
+        _KSC.pop().close()
+
+
+def generate(spec: Path, out: Path) -> None:
+    """`cbfgen --spec spec --out out` (every emitter, every Kaitai parser); AssertionError naming what failed."""
+    code, _, err = cbfgen_here("--spec", str(spec), "--out", str(out), "--no-ksc")
+    assert code == 0, f"cbfgen --spec {spec} exited {code}:\n{err[-3000:]}"
+    ksc = _ksc()
+    if ksc is not None:
+        error = ksc.compile(out / "kaitai" / "cbf.ksy.json", out / "kaitai")
+        assert error is None, f"kaitai-struct-compiler failed on {out / 'kaitai' / 'cbf.ksy.json'}: {error}"
+
+
 def agree(spec: Path, out: Path) -> None:
-    _run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(out)], cwd=REPO)  # every emitter
+    generate(spec, out)
     testee = out / "cbf_testee"
     _run(["gcc", "-std=c99", "-O0", "-o", str(testee), str(out / "c" / "cbf_testee.c"), "-lm"])
-    node = shutil.which("node")
-    if node is not None and (REPO / "node_modules" / "kaitai-struct-compiler").exists():
-        _run([node, str(REPO / "generator" / "cbfgen" / "emit" / "kaitai" / "ksc_driver.js"),
-              str(out / "kaitai" / "cbf.ksy.json"), str(out / "kaitai"), "python"], cwd=REPO)
     requests: list[dict[str, Any]] = []
     for g in GOLDEN:
         requests.append({"op": "decode", "file": str(g)})

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 import yaml
-from conftest import REPO
+from conftest import REPO, cbfgen_here
 from revisions import drill
 
 from cbfgen.emit.c.views import context
@@ -180,9 +180,8 @@ def test_the_assembler_resolves_named_header_fields(header: Revised) -> None:
 
 # -- the bindings ------------------------------------------------------------------------------
 def _generate(path: Path, out: Path, only: str) -> None:
-    done = subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(path), "--out", str(out), "--only", only,
-                           "--no-ksc"], capture_output=True, text=True, check=False, cwd=REPO)
-    assert done.returncode == 0, done.stderr
+    code, _, err = cbfgen_here("--spec", str(path), "--out", str(out), "--only", only, "--no-ksc")
+    assert code == 0, err
 
 
 _PY = textwrap.dedent("""

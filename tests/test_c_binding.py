@@ -10,14 +10,13 @@ import json
 import re
 import shutil
 import subprocess
-import sys
 import zlib
 from pathlib import Path
 from typing import Any
 
 import pytest
 import yaml
-from conftest import cover_missing, spec_doc
+from conftest import cover_missing, generate, spec_doc
 
 from cbfgen.loader import load
 from cbfgen.model import Spec
@@ -98,9 +97,7 @@ def _need(tool: str) -> str:
 
 
 def _generate(spec: Path, out: Path) -> None:
-    env = {"PYTHONPATH": str(ROOT / "generator"), "PATH": "/usr/bin:/bin"}
-    subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(out), "--only", "c"],
-                   check=True, env=env, cwd=ROOT, capture_output=True)
+    generate(spec, out, "c")
 
 
 @functools.cache

@@ -38,13 +38,31 @@ SILENT = "import sys, time\nfor line in sys.stdin:\n    time.sleep(3600)\n"
 
 
 @pytest.fixture(scope="module")
-def kit(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The cbf-conformance command of a clean venv that installed the kit's wheel."""
-    work = tmp_path_factory.mktemp("kit")
+def wheels(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The kit's wheel and the cbf wheel, built once for the module (each build is a process of about
+    1.5 CPU s; the tests only install them)."""
+    work = tmp_path_factory.mktemp("wheels")
     _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
     _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "stage",
          cwd=work)
-    return clean_venv(work / "venv", next((work / "dist").glob("cbf_conformance-*.whl"))) / "cbf-conformance"
+    shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
+    _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", work / "cbf-src",
+         cwd=work)
+    return work / "dist"
+
+
+@pytest.fixture(scope="module")
+def kit(tmp_path_factory: pytest.TempPathFactory, wheels: Path) -> Path:
+    """The cbf-conformance command of a clean venv that installed the kit's wheel."""
+    work = tmp_path_factory.mktemp("kit")
+    return clean_venv(work / "venv", next(wheels.glob("cbf_conformance-*.whl"))) / "cbf-conformance"
+
+
+@pytest.fixture(scope="module")
+def consumer(tmp_path_factory: pytest.TempPathFactory, wheels: Path) -> Path:
+    """The bin/ of a consumer's clean venv that installed only the two wheels (the tests only run its
+    commands, each in a folder of its own)."""
+    return clean_venv(tmp_path_factory.mktemp("consumer") / "venv", *sorted(wheels.glob("*.whl")))
 
 
 def _expected_validate_failures() -> set[str]:
@@ -160,23 +178,13 @@ for line in sys.stdin:
 """
 
 
-@pytest.fixture(scope="module")
-def consumer_bin(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The bin folder of a clean venv that installed only the wheels of the kit and of cbf, built in a
-    temporary folder (what a third-party reader's author has)."""
-    work = tmp_path_factory.mktemp("consumer")
-    _run(sys.executable, "-m", "conformance.kit", work / "stage", cwd=REPO)
-    shutil.copytree(REPO / "generated" / "python", work / "cbf-src", ignore=shutil.ignore_patterns("__pycache__"))
-    for src in (work / "stage", work / "cbf-src"):
-        _run(sys.executable, "-m", "build", "--no-isolation", "--wheel", "--outdir", work / "dist", src, cwd=work)
-    return clean_venv(work / "venv", *sorted((work / "dist").glob("*.whl")))
-
-
-def test_consumer_third_party_testee_with_a_failure_list(consumer_bin: Path, tmp_path: Path) -> None:
+def test_consumer_third_party_testee_with_a_failure_list(tmp_path_factory: pytest.TempPathFactory,
+                                                          consumer: Path) -> None:
     """Only the wheels in a temporary folder: the kit judges a third-party testee with a failure
     list, and text, JSON and JUnit give the same pass / fail / expected-failure counts."""
-    bin_ = consumer_bin
-    folder = tmp_path / "user"
+    work = tmp_path_factory.mktemp("consumer")
+    bin_ = consumer
+    folder = work / "user"
     folder.mkdir()
     (folder / "reader.py").write_text(THIRD_PARTY, encoding="utf-8")
     # the check to drop: the one whose findings the most cases expect (several cases then fail)
@@ -277,13 +285,14 @@ def _judged_table(stdout: str) -> dict[str, str]:
     return {ln.split()[0]: " ".join(ln.split()[1:]) for ln in lines[start + 1:start + 4]}
 
 
-def test_consumer_a_kit_that_judges_nothing_fails(consumer_bin: Path, tmp_path: Path) -> None:
+def test_consumer_a_kit_that_judges_nothing_fails(tmp_path_factory: pytest.TempPathFactory, consumer: Path) -> None:
     """From the wheels in a temporary folder: a testee that skips everything, and a decode-only
     reader run as if it validated, both fail with one line naming what was not judged; the report
     counts per capability; the decode-only reader passes once it says so (--capabilities decode),
     and every report names that."""
-    bin_ = consumer_bin
-    folder = tmp_path / "user"
+    work = tmp_path_factory.mktemp("judging")
+    bin_ = consumer
+    folder = work / "user"
     folder.mkdir()
     (folder / "skip.py").write_text(SKIP_ALL, encoding="utf-8")
     (folder / "dec.py").write_text(DECODE_ONLY, encoding="utf-8")

@@ -18,10 +18,11 @@ import copy
 import itertools
 import os
 import string
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
+import near_miss
 import pytest
 from conftest import spec_doc
 from hypothesis import HealthCheck, event, given, settings
@@ -31,6 +32,14 @@ from near_miss import judge, write_spec
 from cbfgen.emit.kaitai import build
 from cbfgen.loader import load
 from cbfgen.registry import CHECK_KINDS, TYPES
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _ksc_server() -> Iterator[None]:
+    """The examples share one ksc process (tests/ksc_serve.py), stopped with the module."""
+    yield
+    near_miss.close()
+
 
 LONG = os.environ.get("HYPOTHESIS_PROFILE") == "long"
 EXAMPLES = 80 if LONG else 12

@@ -9,13 +9,14 @@
 // gets its `package` line, as ksc writes it, and goes to the Maven source folder
 // java/src/main/java/<package path>/.
 //   node ksc_driver.js KSY.json OUTDIR lang...
+// Also a module: compileTo(ksyPath, outDir, langs, log) is that one run, for a caller that compiles
+// many .ksy in one node process (tests/ksc_serve.py: node's start and ksc's load are most of a run).
 'use strict';
 const fs = require('fs');
 const path = require('path');
 const ksc = require('kaitai-struct-compiler');
 
-async function main() {
-  const [ksyPath, outDir, ...langs] = process.argv.slice(2);
+async function compileTo(ksyPath, outDir, langs, log = console.log) {
   const ksy = JSON.parse(fs.readFileSync(ksyPath, 'utf8'));
   let options = {};
   try {
@@ -46,13 +47,22 @@ async function main() {
       try { old = fs.readFileSync(target, 'utf8'); } catch (e) { old = null; }
       if (old === text) continue;
       fs.writeFileSync(target, text);
-      console.log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
+      log(`ksc: ${lang}: ${path.relative(process.cwd(), target)}`);
     }
   }
 }
 
-main().catch((err) => {
+function describe(err) {
   const text = err && err.stack ? err.stack : String(err);
-  console.error('ksc: ' + (Array.isArray(err) ? JSON.stringify(err) : text));
-  process.exit(1);
-});
+  return 'ksc: ' + (Array.isArray(err) ? JSON.stringify(err) : text);
+}
+
+module.exports = { compileTo, describe };
+
+if (require.main === module) {
+  const [ksyPath, outDir, ...langs] = process.argv.slice(2);
+  compileTo(ksyPath, outDir, langs).catch((err) => {
+    console.error(describe(err));
+    process.exit(1);
+  });
+}
