@@ -31,7 +31,8 @@ item. Operations:
     set      replace (or create) the value at path
     merge    update the mapping at path with value
     append   append value to the list(s) at path
-    extend_where   append value to every list at path that holds `contains`
+    extend_where   append value to every list at path that holds `contains` (at least one, unless
+                   `may_be_none: true`)
     remove   delete the item at path, or, with value, remove value from every list at path
              that holds it (at least one)
     prune    drop the items of the list(s) at path whose `key` is empty
@@ -41,6 +42,8 @@ item. Operations:
     copy           set path to a copy of the value at `from`
     splice         replace the list item at path by the items of value
     insert         put the items of value into the list at path before its item `before` (else last)
+    add_clause     (no path) the clause value = {number, text[, section]} a new check cites: its text under
+                   meta.clauses and, when its section is new, the section (titled `section`) under meta.sections
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
 expectation of a golden case, a binding's known-failure list; `optional:
 true` skips it when that file is missing). `files:` maps new paths to their
@@ -317,8 +320,24 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
     return slots
 
 
+def add_clause(root: Any, value: dict[str, Any]) -> None:
+    """What the document needs for a clause a new check (or history entry) cites: its text under meta.clauses
+    and, when its section is new, the section under meta.sections (titled `section`, default "Revisions")."""
+    meta = root["meta"]
+    number = str(value["number"])
+    sid = number.split(".")[0]
+    if not any(str(s.get("id")) == sid for s in meta["sections"]):
+        meta["sections"].append({"id": sid, "title": str(value.get("section") or "Revisions")})
+    if any(str(c.get("number")) == number for c in meta["clauses"]):
+        raise FixtureError(f"add_clause: clause {number} is already in meta.clauses")
+    meta["clauses"].append({k: v for k, v in value.items() if k != "section"})
+
+
 def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     op, path = edit.get("op"), str(edit.get("path", ""))
+    if op == "add_clause":
+        add_clause(root, copy.deepcopy(edit["value"]))
+        return
     slots = _resolve(root, path)
     value = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
     if op == "set":
@@ -340,7 +359,7 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
             if edit["contains"] in c[k] and value not in c[k]:
                 c[k].append(value)
                 hits += 1
-        if not hits:
+        if not hits and not edit.get("may_be_none"):  # may_be_none: what the newest version lacks, maybe nothing
             raise FixtureError(f"{path}: no list holds {edit['contains']!r}")
     elif op == "remove":
         if "value" in edit:  # from every list at path that holds it (at least one)
