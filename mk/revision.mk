@@ -62,3 +62,11 @@ revision-drill-quick: venv kaitai-setup
 	$(PY) tests/revisions/drill.py run --quick
 
 TEST_DEPS += revision-drill-quick
+
+# The README's walkthrough as one command (conformance/revise.py): generate, golden, generated/ fresh,
+# the golden cases the revision judges differently (each proposed expectation as a diff in
+# build/revision/expectations.patch, never written: `git apply` it to accept), conformance; then what to
+# review and commit. NO_CONFORMANCE=1 stops before `make conformance` (the drill runs its own).
+.PHONY: revision
+revision: venv kaitai-setup  ## after an edit of spec/cbf.yaml: generate, golden, freshness, expectations, conformance
+	$(PY) -m conformance.revise $(if $(NO_CONFORMANCE),--no-conformance)
