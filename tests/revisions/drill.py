@@ -205,7 +205,12 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
            "writable_with_new": _prose([*writable, f"{major}.0"]),
            "unwritable": _flow([str(v["id"]) for v in unwritable]),
            "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
-           "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing"}
+           "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing",
+           "versions": _flow([str(v["id"]) for v in versions])}
+    # The next section of the document (8 today): a revision that opens a section of its own, with its clauses.
+    sections = {str(s.get("id")) for s in doc.get("meta", {}).get("sections", ())}
+    out["free_section"] = str(next(n for n in range(1, 1000) if str(n) not in sections and n > max(
+        (int(s) for s in sections if s.isdigit()), default=0)))
     # The header of the newest version that still reserves the checksum bytes (4.2: offset 10, 6 bytes
     # "reserved for future checksum usage"), the newest header when none does.
     headers = doc.get("headers", {})
