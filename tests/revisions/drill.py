@@ -207,6 +207,9 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
            "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
            "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing",
            "versions": _flow([str(v["id"]) for v in versions])}
+    # The next decision of the toolkit's own (D9 today): a revision's prose may add one.
+    taken = {str(d.get("id")) for d in doc.get("decisions", ())}
+    out["free_decision"] = next(f"D{n}" for n in range(1, 1000) if f"D{n}" not in taken)
     # The next section of the document (8 today): a revision that opens a section of its own, with its clauses.
     sections = {str(s.get("id")) for s in doc.get("meta", {}).get("sections", ())}
     out["free_section"] = str(next(n for n in range(1, 1000) if str(n) not in sections and n > max(
