@@ -8,8 +8,9 @@
 #                             checksum algorithm chosen by a profile, a rename), its ids
 #                             chosen for the spec it meets, applied to a temporary copy of
 #                             the tree, then `cbfgen diff` (the classification the fixture
-#                             states), `make generate`, `make golden`, generated/ fresh,
-#                             `make conformance` (every binding) and the whole pytest suite;
+#                             states), `make revision` without conformance (generate, golden,
+#                             generated/ fresh, expectations), `make conformance` (every
+#                             binding) and the whole pytest suite;
 #                             then every fixture applied on top of the others in ONE copy
 #                             (`drill.py run --together`) and the same steps, the whole suite, there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
@@ -70,3 +71,11 @@ TEST_DEPS += revision-drill-quick
 .PHONY: revision
 revision: venv kaitai-setup  ## after an edit of spec/cbf.yaml: generate, golden, freshness, expectations, conformance
 	$(PY) -m conformance.revise $(if $(NO_CONFORMANCE),--no-conformance)
+
+# One kind of revision drilled alone: `make revision-kind KIND=header_move` (a fixture of tests/revisions/,
+# every step in full in a copy of the tree; QUICK=1 for the quick drill's steps).
+.PHONY: revision-kind
+revision-kind: venv kaitai-setup  ## drill one fixture of tests/revisions/ alone: KIND=<fixture name>
+	@test -n "$(KIND)" -a -f "tests/revisions/$(KIND).yaml" || { \
+	  echo "make revision-kind: KIND= one of: $$(cd tests/revisions && ls *.yaml | sed 's/\.yaml$$//' | tr '\n' ' ')" >&2; exit 2; }
+	$(PY) tests/revisions/drill.py run $(if $(QUICK),--quick) tests/revisions/$(KIND).yaml

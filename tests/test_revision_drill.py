@@ -237,9 +237,14 @@ def test_the_walkthrough_order_leaves_a_tree_make_test_accepts() -> None:
     assembler = next(i for i, line in enumerate(lines) if "-m conformance.assembler" in line)
     assert any(re.fullmatch(r"\S*make\b.* generate", line) for line in lines[assembler:]), res.stdout
     readme = (REPO / "README.md").read_text(encoding="utf-8")
-    steps = [readme.index(s) for s in ("**`make generate`.**", "`make golden`, which assembles",
-                                       "**`make conformance`, then stage the revision**", "**`make test`.**")]
-    assert steps == sorted(steps), "the README's walkthrough order changed: check make golden's recipe"
+    steps = [readme.index(s) for s in ("**`make revision`**", "**Stage the revision**", "**`make test`.**")]
+    assert steps == sorted(steps), "the README's walkthrough order changed: check make revision's steps"
+    # `make revision` (conformance/revise.py) runs generate, golden, the freshness check, the expectations, then
+    # conformance, in that order
+    source = (REPO / "conformance" / "revise.py").read_text(encoding="utf-8").split("def main(", 1)[1]
+    order = [source.index(s) for s in ('"generate"]', '"golden"]', '"build/stamps/generate-py"]', "proposals()",
+                                       '"conformance"]')]
+    assert order == sorted(order), "make revision's steps are out of the walkthrough's order"
     # make test ends with check-report, which compares the run's report with what git holds: the walkthrough
     # has the report made and staged before make test
     assert "check-report" in (REPO / "Makefile").read_text(encoding="utf-8").split("\ntest:", 1)[1].split("\n\n")[0]

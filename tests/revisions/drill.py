@@ -12,10 +12,13 @@ meaning changes), and what `cbfgen diff` must say about it.
 `run` copies the working tree (tracked and untracked files, not ignored
 ones) into a temporary folder per fixture, applies the fixture there, and
 runs, in order: `cbfgen diff` (the classification the fixture states),
-`make generate`, `make golden` (the golden .cbf re-assembled from their
-.hex: the assembler follows the revised checksums; then the docs made from
-them regenerated), a check that generated/ is fresh (the README's order
-leaves nothing to regenerate), `make conformance`
+`make revision` without its conformance (conformance/revise.py: `make
+generate`, `make golden` (the golden .cbf re-assembled from their .hex: the
+assembler follows the revised checksums; then the docs made from them
+regenerated), a check that generated/ is fresh (the README's order leaves
+nothing to regenerate), and every golden case judged as its expectation says:
+a case the fixture judges differently without its new expectation fails,
+with the proposed one shown), `make conformance`
 (every binding) and the test suite (in the copy indexed as a git repository,
 as a commit of the revision would track it). `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
