@@ -155,7 +155,8 @@ def read_spec(path: Path) -> Any:
 # A fixture names what it adds through ${...}, chosen for the spec it applies to, so that it applies on top
 # of any spec: after a real revision, and after another fixture (the quick drill applies them one after the
 # other to one tree). ${code:NAME} and ${dec:NAME} are a command's code in hex (two digits) and decimal;
-# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name.
+# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name. ${version_with:NAME} and
+# ${major_with:NAME}: the newest writable version whose files may hold the command (_version_with).
 _VAR = re.compile(r"\$\{([a-z][a-z0-9_]*)(?::([A-Za-z0-9_]+))?\}")
 _FIRST_FREE_CODE = 0x70  # where the search for a free command code starts (the drill's PROBE)
 
@@ -257,6 +258,22 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     return out
 
 
+def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
+    """The newest writable version that has the command name and whose header reserves the checksum bytes (a golden
+    file written with _header_v3.inc holds zeros there), else the newest writable one that has it: a fixture's
+    golden file of such a version holding the command stays valid after a revision that drops it from a new
+    version (a 5.0 without POINT)."""
+    cmd = next(c for c in doc["commands"] if c["name"] == name)
+    headers = doc.get("headers", {})
+    ranked = sorted((v for v in doc["versions"] if v.get("writable") and _has(cmd, str(v["id"]))), key=_key,
+                    reverse=True)
+    reserving = [v for v in ranked if any(f.get("role") == "reserved" and f.get("offset") == 10 and
+                                          f.get("size", 0) >= 4 for f in headers.get(v["header"], {}).get("fields", ()))]
+    if not ranked:
+        raise FixtureError(f"no writable version has {name}")
+    return reserving[0] if reserving else ranked[0]
+
+
 def render(text: str, doc: dict[str, Any], where: str) -> str:
     """text with each ${...} replaced by its value for the spec doc (FixtureError for an unknown one)."""
     values = variables(doc)
@@ -270,6 +287,9 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
             return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
         if var == "name" and arg is not None:
             return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
+        if var in ("version_with", "major_with") and arg in by_name:  # a version whose files may hold the command
+            v = _version_with(doc, arg)
+            return str(v["id"]) if var == "version_with" else str(v["major"])
         if var in ("now", "formerly") and arg is not None:  # a command as the spec calls it now, and its past names
             cmd = next((c for c in doc["commands"] if c["name"] == arg or arg in c.get("former_names", ())), None)
             if cmd is not None:
