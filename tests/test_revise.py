@@ -3,6 +3,7 @@ cases are judged gets each such case's new expectation proposed as a diff, never
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -46,8 +47,10 @@ def test_a_changed_judgement_is_proposed_as_a_diff_and_not_written(tmp_path: Pat
     p.write_text(text.replace(line, stale_line), encoding="utf-8")
     q = _copy(tmp_path, named)
     pointer, command = next((k, v) for k, v in originals[named]["decode_subset"].items() if k.endswith("/command"))
-    q.write_text(q.read_text(encoding="utf-8").replace(f"{pointer}: {command}", f"{pointer}: {command}_FORMERLY"),
-                 encoding="utf-8")
+    text = q.read_text(encoding="utf-8")
+    renamed = re.sub(rf'({re.escape(pointer)}: *"?){re.escape(command)}\b', rf"\g<1>{command}_FORMERLY", text, count=1)
+    assert renamed != text, (named, pointer)  # the name as written, quoted or not
+    q.write_text(renamed, encoding="utf-8")
     stale = {x: x.read_text(encoding="utf-8") for x in (p, q)}
     got = revise.proposed(tmp_path)
     assert set(got) == {p, q}
