@@ -349,6 +349,7 @@ def test_a_stale_sentence_is_named_with_its_fix() -> None:
     assert len(said) == 1 and "{{writable_versions}}" in said[0], said
     gone = 1 + max(v.major for v in SPEC.versions)
     assert any(f"{gone}.x" in p for p in prose.stale("N10", f"{gone}.x is readable.", _facts()))
+    assert any(f"{gone}.0" in p for p in prose.stale("N9", f"Version {gone}.0 forbids ARC.", _facts()))
     assert prose.stale("C1", prose.render("{{checksum_algorithms}} Writers emit {{writable_versions}}.", _facts()),
                        _facts()) == []
 

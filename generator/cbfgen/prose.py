@@ -110,7 +110,8 @@ def stale(where: str, text: str, facts: Facts) -> list[str]:
     the spec lacks, writable versions that are not the writable ones, checksums called sums that are not."""
     out = []
     ids = {v.id for v in facts.versions}
-    for major in sorted(set(re.findall(r"\b\d+\.x\b", text)) - ids):
+    named = set(re.findall(r"\b\d+\.x\b", text)) | set(re.findall(rf"\b[Vv]ersions? ({_VID})\b", text))
+    for major in sorted(v for v in named - ids if f"{v.split('.')[0]}.x" not in ids):  # 1.01 is a 1.x
         out.append(f"{where}: names version {major}, which the spec does not have: reword the sentence "
                    f"(or name the versions by a fact: {{{{versions}}}}, {{{{read_only_versions}}}})")
     emit = _EMIT.search(text)
