@@ -267,8 +267,9 @@ def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
     headers = doc.get("headers", {})
     ranked = sorted((v for v in doc["versions"] if v.get("writable") and _has(cmd, str(v["id"]))), key=_key,
                     reverse=True)
-    reserving = [v for v in ranked if any(f.get("role") == "reserved" and f.get("offset") == 10 and
-                                          f.get("size", 0) >= 4 for f in headers.get(v["header"], {}).get("fields", ()))]
+    reserving = [v for v in ranked if any(f.get("role") == "reserved" and f.get("offset") == 10
+                                          and f.get("size", 0) >= 4
+                                          for f in headers.get(v["header"], {}).get("fields", ()))]
     if not ranked:
         raise FixtureError(f"no writable version has {name}")
     return reserving[0] if reserving else ranked[0]
