@@ -30,7 +30,7 @@ showing the end of that step's output.
 
 Path syntax of an edit: keys separated by dots; `[N]` indexes a list,
 `[key=value]` picks the list item whose key equals value, `[*]` every
-item. Operations:
+item, `[key~=value]` the list items whose list `key` holds value. Operations:
     set      replace (or create) the value at path
     merge    update the mapping at path with value
     append   append value to the list(s) at path
@@ -251,6 +251,18 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     other = sorted((n for n, b in bits.items() if 0 < b <= width), key=lambda n: bits[n] != width)  # full width first
     if other:
         out["other_file_algorithm"] = other[0]
+    # The command whose layout in the newest version holds reserved bytes a layout change may turn into floats: 4 of
+    # them (CUTTER's today) first, else the fewest that 4-byte floats tile (ORIENT's 12, VERSION's 16), so that a
+    # revision that took CUTTER's leaves another. ${reserved4_count}, ${reserved4_zero}, ${reserved4_unit}: the floats.
+    held = [(c, a) for c in cmds for lay in c["layouts"] if nid in lay["versions"] for a in lay.get("args", ())
+            if a.get("reserved") and int(a.get("size") or 0) % 4 == 0 and a.get("size")]
+    if held:
+        c, a = min(held, key=lambda ca: int(ca[1]["size"]) != 4)
+        n = int(a["size"]) // 4
+        out.update({"reserved4_command": str(c["name"]), "reserved4_arg": str(a["name"]),
+                    "reserved4_count": f", count: {n}" if n > 1 else "",
+                    "reserved4_zero": _flow([0.0] * n) if n > 1 else "0.0",
+                    "reserved4_unit": "mm" if n == 1 else "deg"})  # 3 x mm would be a position the machine bounds
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
@@ -321,6 +333,13 @@ def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
             raise FixtureError(f"{where}: {tok} needs a list")
         if sel == "*":
             return [(node, i) for i in range(len(node))]
+        if "~=" in sel:  # the items whose list `key` holds value
+            key, value = sel.split("~=", 1)
+            hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict)
+                    and value in [str(x) for x in item.get(key) or ()]]
+            if not hits:
+                raise FixtureError(f"{where}: no item whose {key} holds {value}")
+            return hits
         if "=" in sel:
             key, value = sel.split("=", 1)
             hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict) and str(item.get(key)) == value]
