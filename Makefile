@@ -90,7 +90,7 @@ bytecode: generate
 	@$(PY) -m compileall -q -j0 $(BYTECODE_DIRS) >/dev/null
 
 # -- quality ------------------------------------------------------------------
-MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability conformance/kit.py bench/bench.py)
+MYPY_PATHS = generator/cbfgen generated/python/cbf $(wildcard conformance/runner conformance/assembler conformance/reliability conformance/kit.py conformance/revise.py bench/bench.py)
 LINT_INPUTS = $(shell find generator conformance tests generated/python bench -name '*.py' -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 lint: venv $(STAMPS)/lint  ## ruff + mypy --strict on hand-written Python
 $(STAMPS)/lint: $(LINT_INPUTS) $(VENV)/.stamp

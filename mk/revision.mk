@@ -8,8 +8,9 @@
 #                             checksum algorithm chosen by a profile, a rename), its ids
 #                             chosen for the spec it meets, applied to a temporary copy of
 #                             the tree, then `cbfgen diff` (the classification the fixture
-#                             states), `make generate`, `make golden`, generated/ fresh,
-#                             `make conformance` (every binding) and the whole pytest suite;
+#                             states), `make revision` without conformance (generate, golden,
+#                             generated/ fresh, expectations), `make conformance` (every
+#                             binding) and the whole pytest suite;
 #                             then every fixture applied on top of the others in ONE copy
 #                             (`drill.py run --together`) and the same steps, the whole suite, there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
@@ -31,7 +32,9 @@
 # fixture (every binding's build and the whole suite, a tree each): its five fixtures passed in
 # 1,531 s at DRILL_JOBS=1 under nice 19 on the shared machine at load 7-13. The quick drill does not
 # re-assemble the goldens `make golden` just wrote, and builds its ASan/UBSan testee at -O0
-# (QUICK_DESELECT, QUICK_C_SAN).
+# (QUICK_DESELECT, QUICK_C_SAN). Round 5, 17 fixtures (15 quick: prose_edit, new_section, header_move,
+# polyline_new_version and rename_real added): 28-37 s and 21 CPU s (user + sys) at load 2-4, its first step
+# `make revision` 7-14 s.
 BASE ?= HEAD
 # Fixtures drilled at once by `make revision-drill`, a tree each (one per core of the 2-core CI machine).
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
@@ -67,3 +70,19 @@ TEST_DEPS += revision-drill-quick
 # checks the same in-process in `make test`): the files land in build/witness/<fixture>/.
 witness-drill: venv  ## cbfgen diff --witness for every breaking tests/revisions/ fixture: a verified file per change
 	$(PY) tests/revisions/witness_drill.py build/witness
+
+# The README's walkthrough as one command (conformance/revise.py): generate, golden, generated/ fresh,
+# the golden cases the revision judges differently (each proposed expectation as a diff in
+# build/revision/expectations.patch, never written: `git apply` it to accept), conformance; then what to
+# review and commit. NO_CONFORMANCE=1 stops before `make conformance` (the drill runs its own).
+.PHONY: revision
+revision: venv kaitai-setup  ## after an edit of spec/cbf.yaml: generate, golden, freshness, expectations, conformance
+	$(PY) -m conformance.revise $(if $(NO_CONFORMANCE),--no-conformance)
+
+# One kind of revision drilled alone: `make revision-kind KIND=header_move` (a fixture of tests/revisions/,
+# every step in full in a copy of the tree; QUICK=1 for the quick drill's steps).
+.PHONY: revision-kind
+revision-kind: venv kaitai-setup  ## drill one fixture of tests/revisions/ alone: KIND=<fixture name>
+	@test -n "$(KIND)" -a -f "tests/revisions/$(KIND).yaml" || { \
+	  echo "make revision-kind: KIND= one of: $$(cd tests/revisions && ls *.yaml | sed 's/\.yaml$$//' | tr '\n' ' ')" >&2; exit 2; }
+	$(PY) tests/revisions/drill.py run $(if $(QUICK),--quick) tests/revisions/$(KIND).yaml

@@ -129,11 +129,13 @@ def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iter
     has = {v for lay in command["layouts"] for v in lay["versions"]}
     preferred = {str(p) for p in preferred}
     gates = [c for c in spec["checks"] if c["kind"] == "availability"]
+    covered = {v for c in gates if command["name"] in c["commands"] for v in c["versions"]}
     for v in spec["versions"]:
-        if v["id"] in has:
+        if v["id"] in has or v["id"] in covered:
             continue
-        # a check that names the command covers it in each of its versions: none may have the command
-        covering = [c for c in gates if v["id"] in c["versions"] and not set(c["versions"]) & has]
+        # a check that names the command covers it in each of its versions: none may have the command, nor
+        # be covered for it already (a real revision's check may span versions another check gates too)
+        covering = [c for c in gates if v["id"] in c["versions"] and not set(c["versions"]) & (has | covered)]
         if not covering:  # a version that lacks nothing else yet
             # a check id the schema takes ([a-z][a-z0-9_]*): a version id such as "5.0" or "1.x" spelled with "_"
             ident = "fixture_" + re.sub(r"[^a-z0-9_]", "_", str(v["id"]).lower())
@@ -145,6 +147,7 @@ def cover_missing(spec: dict[str, Any], command: dict[str, Any], preferred: Iter
         chosen = next((c for c in covering if str(c["id"]) in preferred), covering[0])
         if command["name"] not in chosen["commands"]:
             chosen["commands"].append(command["name"])
+        covered |= set(chosen["versions"])
 
 
 def spec_with_fixture_command(tmp: Path) -> Path:

@@ -28,19 +28,28 @@ TOL = T.TOL["position_mm"]
 WRITABLE = [v.id for v in T.VERSIONS if v.writable]
 
 
+def _curve(c: T.CommandInfo) -> bool:
+    """A motion convert lines: a circle, a helix or a three-point arc (a point motion, of n points or one, is none)."""
+    return bool(c.motion) and (c.motion["kind"] in ("circle", "helix") or "through" in c.motion)  # type: ignore[index]
+
+
+def _lacking(version: str, has: str) -> list[T.CommandInfo]:
+    return [c for c in T.COMMANDS if _curve(c) and not c.layouts_for(version) and c.layouts_for(has)]
+
+
+# a writable version that lacks some curve, and a writable one that has it (a revision may add a version whose new
+# command no other version has, a polyline of n points: it is no curve, and no version is picked for it)
+LACKS, HAS = next((a, b) for a in WRITABLE for b in WRITABLE if a != b and _lacking(a, b))
+
+
 def _curved_commands(kind: str) -> list[T.CommandInfo]:
-    return [c for c in T.COMMANDS if c.motion and c.motion["kind"] == kind]
+    """The commands of a kind of motion that HAS has (_args draws their arguments in HAS's layout)."""
+    return [c for c in T.COMMANDS if c.motion and c.motion["kind"] == kind and c.layouts_for(HAS)]
 
 
 def _missing_in(version: str) -> list[T.CommandInfo]:
-    """Motion commands some writable version has and ``version`` lacks."""
-    return [c for c in T.COMMANDS if c.motion and not c.layouts_for(version)
-            and any(c.layouts_for(v) for v in WRITABLE)]
-
-
-# a version that lacks some curve, and one that has it
-LACKS = next(v for v in WRITABLE if _missing_in(v))
-HAS = next(v for v in WRITABLE if v != LACKS)
+    """Curves HAS has and ``version`` lacks."""
+    return _lacking(version, HAS)
 
 
 def _args(cmd: T.CommandInfo, values: dict[str, Any]) -> Any:
@@ -96,7 +105,7 @@ def circular(draw: st.DrawFn) -> tuple[T.CommandInfo, Any]:
 @st.composite
 def arcs(draw: st.DrawFn) -> tuple[T.CommandInfo, Any]:
     """A random three-point arc command of the model (a line motion with a through point)."""
-    cmd = draw(st.sampled_from([c for c in T.COMMANDS if c.motion and "through" in c.motion]))
+    cmd = draw(st.sampled_from([c for c in T.COMMANDS if c.motion and "through" in c.motion and c.layouts_for(HAS)]))
     m = cmd.motion
     assert m is not None
     center = draw(st.tuples(_coord, _coord, _coord))

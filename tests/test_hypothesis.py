@@ -304,8 +304,10 @@ from cbf.model import Cbf, Record, new_header
 
 ch = next(c for c in T.checks_of("range"))
 assert (ch["min"] is None) != (ch["max"] is None), ch  # one bound, whichever the spec gives
-version = T.VERSION_BY_ID[T.DEFAULT_VERSION]
-t = next(t for t in ch["targets"] if T.BY_NAME[t["command"]].layouts_for(version.id))
+# a version the check judges (a revision may scope it: `versions:`), the default one when it does; a target there
+judged = [v for v in T.VERSIONS if not ch["versions"] or v.id in ch["versions"]]
+judged.sort(key=lambda v: (not v.writable, v.id != T.DEFAULT_VERSION))
+version, t = next((v, t) for v in judged for t in ch["targets"] if T.BY_NAME[t["command"]].layouts_for(v.id))
 cmd = T.BY_NAME[t["command"]]
 lay = cmd.layouts_for(version.id)[0]
 out = ch["min"] - 5.0 if ch["min"] is not None else ch["max"] + 5.0

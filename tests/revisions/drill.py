@@ -12,10 +12,13 @@ meaning changes), and what `cbfgen diff` must say about it.
 `run` copies the working tree (tracked and untracked files, not ignored
 ones) into a temporary folder per fixture, applies the fixture there, and
 runs, in order: `cbfgen diff` (the classification the fixture states),
-`make generate`, `make golden` (the golden .cbf re-assembled from their
-.hex: the assembler follows the revised checksums; then the docs made from
-them regenerated), a check that generated/ is fresh (the README's order
-leaves nothing to regenerate), `make conformance`
+`make revision` without its conformance (conformance/revise.py: `make
+generate`, `make golden` (the golden .cbf re-assembled from their .hex: the
+assembler follows the revised checksums; then the docs made from them
+regenerated), a check that generated/ is fresh (the README's order leaves
+nothing to regenerate), and every golden case judged as its expectation says:
+a case the fixture judges differently without its new expectation fails,
+with the proposed one shown), `make conformance`
 (every binding) and the test suite (in the copy indexed as a git repository,
 as a commit of the revision would track it). `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
@@ -27,11 +30,12 @@ showing the end of that step's output.
 
 Path syntax of an edit: keys separated by dots; `[N]` indexes a list,
 `[key=value]` picks the list item whose key equals value, `[*]` every
-item. Operations:
+item, `[key~=value]` the list items whose list `key` holds value. Operations:
     set      replace (or create) the value at path
     merge    update the mapping at path with value
     append   append value to the list(s) at path
-    extend_where   append value to every list at path that holds `contains`
+    extend_where   append value to every list at path that holds `contains` (at least one, unless
+                   `may_be_none: true`)
     remove   delete the item at path, or, with value, remove value from every list at path
              that holds it (at least one)
     prune    drop the items of the list(s) at path whose `key` is empty
@@ -41,6 +45,8 @@ item. Operations:
     copy           set path to a copy of the value at `from`
     splice         replace the list item at path by the items of value
     insert         put the items of value into the list at path before its item `before` (else last)
+    add_clause     (no path) the clause value = {number, text[, section]} a new check cites: its text under
+                   meta.clauses and, when its section is new, the section (titled `section`) under meta.sections
 An edit applies to spec/cbf.yaml unless it names another `file:` (an
 expectation of a golden case, a binding's known-failure list; `optional:
 true` skips it when that file is missing). `files:` maps new paths to their
@@ -149,7 +155,8 @@ def read_spec(path: Path) -> Any:
 # A fixture names what it adds through ${...}, chosen for the spec it applies to, so that it applies on top
 # of any spec: after a real revision, and after another fixture (the quick drill applies them one after the
 # other to one tree). ${code:NAME} and ${dec:NAME} are a command's code in hex (two digits) and decimal;
-# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name.
+# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name. ${version_with:NAME} and
+# ${major_with:NAME}: the newest writable version whose files may hold the command (_version_with).
 _VAR = re.compile(r"\$\{([a-z][a-z0-9_]*)(?::([A-Za-z0-9_]+))?\}")
 _FIRST_FREE_CODE = 0x70  # where the search for a free command code starts (the drill's PROBE)
 
@@ -202,7 +209,15 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
            "writable_with_new": _prose([*writable, f"{major}.0"]),
            "unwritable": _flow([str(v["id"]) for v in unwritable]),
            "gate_major": str(max((int(v["major"]) for v in unwritable), default=0)),
-           "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing"}
+           "new_lacks": _flow(lacks), "new_lacks_text": _prose(lacks) if lacks else "nothing",
+           "versions": _flow([str(v["id"]) for v in versions])}
+    # The next decision of the toolkit's own (D9 today): a revision's prose may add one.
+    taken = {str(d.get("id")) for d in doc.get("decisions", ())}
+    out["free_decision"] = next(f"D{n}" for n in range(1, 1000) if f"D{n}" not in taken)
+    # The next section of the document (8 today): a revision that opens a section of its own, with its clauses.
+    sections = {str(s.get("id")) for s in doc.get("meta", {}).get("sections", ())}
+    out["free_section"] = str(next(n for n in range(1, 1000) if str(n) not in sections and n > max(
+        (int(s) for s in sections if s.isdigit()), default=0)))
     # The header of the newest version that still reserves the checksum bytes (4.2: offset 10, 6 bytes
     # "reserved for future checksum usage"), the newest header when none does.
     headers = doc.get("headers", {})
@@ -236,11 +251,40 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     other = sorted((n for n, b in bits.items() if 0 < b <= width), key=lambda n: bits[n] != width)  # full width first
     if other:
         out["other_file_algorithm"] = other[0]
+    # The command whose layout in the newest version holds reserved bytes a layout change may turn into floats: 4 of
+    # them (CUTTER's today) first, else the fewest that 4-byte floats tile (ORIENT's 12, VERSION's 16), so that a
+    # revision that took CUTTER's leaves another. ${reserved4_count}, ${reserved4_zero}, ${reserved4_unit}: the floats.
+    held = [(c, a) for c in cmds for lay in c["layouts"] if nid in lay["versions"] for a in lay.get("args", ())
+            if a.get("reserved") and int(a.get("size") or 0) % 4 == 0 and a.get("size")]
+    if held:
+        c, a = min(held, key=lambda ca: int(ca[1]["size"]) != 4)
+        n = int(a["size"]) // 4
+        out.update({"reserved4_command": str(c["name"]), "reserved4_arg": str(a["name"]),
+                    "reserved4_count": f", count: {n}" if n > 1 else "",
+                    "reserved4_zero": _flow([0.0] * n) if n > 1 else "0.0",
+                    "reserved4_unit": "mm" if n == 1 else "deg"})  # 3 x mm would be a position the machine bounds
     if drop is not None:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
                     "drop_f32": " ".join(str(n) for n in range(1, drop_floats + 1))})
     return out
+
+
+def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
+    """The newest writable version that has the command name and whose header reserves the checksum bytes (a golden
+    file written with _header_v3.inc holds zeros there), else the newest writable one that has it: a fixture's
+    golden file of such a version holding the command stays valid after a revision that drops it from a new
+    version (a 5.0 without POINT)."""
+    cmd = next(c for c in doc["commands"] if c["name"] == name)
+    headers = doc.get("headers", {})
+    ranked = sorted((v for v in doc["versions"] if v.get("writable") and _has(cmd, str(v["id"]))), key=_key,
+                    reverse=True)
+    reserving = [v for v in ranked if any(f.get("role") == "reserved" and f.get("offset") == 10
+                                          and f.get("size", 0) >= 4
+                                          for f in headers.get(v["header"], {}).get("fields", ()))]
+    if not ranked:
+        raise FixtureError(f"no writable version has {name}")
+    return reserving[0] if reserving else ranked[0]
 
 
 def render(text: str, doc: dict[str, Any], where: str) -> str:
@@ -256,6 +300,9 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
             return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
         if var == "name" and arg is not None:
             return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
+        if var in ("version_with", "major_with") and arg in by_name:  # a version whose files may hold the command
+            v = _version_with(doc, arg)
+            return str(v["id"]) if var == "version_with" else str(v["major"])
         if var in ("now", "formerly") and arg is not None:  # a command as the spec calls it now, and its past names
             cmd = next((c for c in doc["commands"] if c["name"] == arg or arg in c.get("former_names", ())), None)
             if cmd is not None:
@@ -286,6 +333,13 @@ def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
             raise FixtureError(f"{where}: {tok} needs a list")
         if sel == "*":
             return [(node, i) for i in range(len(node))]
+        if "~=" in sel:  # the items whose list `key` holds value
+            key, value = sel.split("~=", 1)
+            hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict)
+                    and value in [str(x) for x in item.get(key) or ()]]
+            if not hits:
+                raise FixtureError(f"{where}: no item whose {key} holds {value}")
+            return hits
         if "=" in sel:
             key, value = sel.split("=", 1)
             hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict) and str(item.get(key)) == value]
@@ -317,8 +371,24 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
     return slots
 
 
+def add_clause(root: Any, value: dict[str, Any]) -> None:
+    """What the document needs for a clause a new check (or history entry) cites: its text under meta.clauses
+    and, when its section is new, the section under meta.sections (titled `section`, default "Revisions")."""
+    meta = root["meta"]
+    number = str(value["number"])
+    sid = number.split(".")[0]
+    if not any(str(s.get("id")) == sid for s in meta["sections"]):
+        meta["sections"].append({"id": sid, "title": str(value.get("section") or "Revisions")})
+    if any(str(c.get("number")) == number for c in meta["clauses"]):
+        raise FixtureError(f"add_clause: clause {number} is already in meta.clauses")
+    meta["clauses"].append({k: v for k, v in value.items() if k != "section"})
+
+
 def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     op, path = edit.get("op"), str(edit.get("path", ""))
+    if op == "add_clause":
+        add_clause(root, copy.deepcopy(edit["value"]))
+        return
     slots = _resolve(root, path)
     value: Any = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
     if op == "set":
@@ -340,7 +410,7 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
             if edit["contains"] in c[k] and value not in c[k]:
                 c[k].append(value)
                 hits += 1
-        if not hits:
+        if not hits and not edit.get("may_be_none"):  # may_be_none: what the newest version lacks, maybe nothing
             raise FixtureError(f"{path}: no list holds {edit['contains']!r}")
     elif op == "remove":
         if "value" in edit:  # from every list at path that holds it (at least one)
@@ -524,14 +594,15 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
                         runner, env)]
     else:
         conformance = [("conformance (every binding)", [*make, "conformance"], {})]
-    # The README's walkthrough order (generate, then golden) leaves generated/ fresh: make has nothing to regenerate.
-    fresh: Step = ("generated/ fresh after golden (`make -q`)", [*make, "-q", "build/stamps/generate-py"], {})
+    # The README's walkthrough, `make revision` (conformance/revise.py): generate, then golden, leaves generated/
+    # fresh (make has nothing to regenerate), and the fixture gave every golden case it judges differently its new
+    # expectation (else the proposed ones are shown and the step fails). Conformance is the drill's own step.
+    revision: Step = ("make revision (generate, golden, generated/ fresh, expectations)",
+                [py, "-m", "conformance.revise", "--no-conformance", *(f"--make-arg={a}" for a in make[3:])], env)
     # The copy is not a checkout: the full suite reads the files a commit of the revision would track
     # (test_python_dist's `git ls-files generated`), so the revised tree, regenerated, is indexed as one.
     index: list[Step] = [] if quick else [("index the revised tree (git init, git add -A)", ["sh", "-c", INDEX_SH], {})]
-    return [("generate", [*make, "generate"], {}),
-            ("golden", [*make, "golden"], {}),
-            fresh,
+    return [revision,
             *conformance,
             *index,
             ("pytest" + (" (subset)" if quick else ""), pytest, env)]

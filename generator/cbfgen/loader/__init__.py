@@ -9,9 +9,11 @@ collected (``SpecErrors``, each a ``Problem``: rule id, severity, line, text) be
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 from ..model import Note, Spec
+from ..prose import Facts, render
 from .errors import SpecError
 from .passes import PASSES
 from .pipeline import Pass, State, check_order, run
@@ -50,6 +52,8 @@ def _spec(path: str, st: State) -> Spec:
     errata = tuple(Note(e["id"], e["clause"], str(e["text"]), clause=e["clause"]) for e in raw["errata"])
     history = tuple(Note(h["version"], h["version"], str(h["text"]), clause=h["clause"], date=str(h["date"]))
                     for h in raw["history"])
+    facts = Facts(st.versions, st.checksums, str(raw["default_version"]), str(raw["fallback_version"]))
+    decisions = tuple(replace(d, text=render(d.text, facts), evidence=render(d.evidence, facts)) for d in st.decisions)
     return Spec(
         path=path, meta=plain(raw["meta"]), types=st.types,
         units={k: str(v["doc"]) for k, v in raw["units"].items()},
@@ -58,7 +62,7 @@ def _spec(path: str, st: State) -> Spec:
         commands=st.commands, checksums=st.checksums, profiles=st.profiles,
         tolerances={k: float(v) for k, v in raw["tolerances"].items()},
         limits={k: int(v) for k, v in raw["limits"].items()}, machine=st.machine, checks=st.checks,
-        cut=plain(raw["cut"]), decisions=st.decisions, errata=errata, history=history, raw=plain(raw),
+        cut=plain(raw["cut"]), decisions=decisions, errata=errata, history=history, raw=plain(raw),
     )
 
 
