@@ -79,6 +79,10 @@ import yaml
 _YAML_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 REPO = Path(__file__).resolve().parents[2]
+# The generator's package (cbfgen.registry names the checksum algorithms a fixture may choose): on the path when
+# the drill is run as `.venv/bin/python tests/revisions/drill.py`, not only under make (which exports PYTHONPATH).
+if str(REPO / "generator") not in sys.path:
+    sys.path.append(str(REPO / "generator"))
 HERE = Path(__file__).resolve().parent
 SPEC = "spec/cbf.yaml"
 _TOKEN = re.compile(r"\[([^\]]*)\]|([^.\[\]]+)")
