@@ -31,7 +31,8 @@ showing the end of that step's output.
 Path syntax of an edit: keys separated by dots; `[N]` indexes a list,
 `[key=value]` picks the list item whose key equals value, `[*]` every
 item, `[key~=value]` the list items whose list `key` holds value. Operations:
-    set      replace (or create) the value at path
+    set      replace (or create) the value at path (`may_be_none: true`: at each place it selects,
+             none when a key or [key=value] on the way selects nothing)
     merge    update the mapping at path with value
     append   append value to the list(s) at path
     extend_where   append value to every list at path that holds `contains` (at least one, unless
@@ -271,7 +272,49 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
         out.update({"drop": str(drop["name"]), "drop_code": str(int(drop["code"])),
                     "drop_code_hex": f"{int(drop['code']):02x}", "drop_size_hex": f"{int(drop_lay['size']):02x}",
                     "drop_f32": " ".join(str(n) for n in range(1, drop_floats + 1))})
+    out.update(_real_rename(doc))
     return out
+
+
+# Where a command's name is its reference, not prose: its own entry and a check's targets (a rename edits both).
+_NAME_SLOTS = {("commands", "name"), ("checks", "targets", "command")}
+
+
+def _texts(node: Any, path: tuple[str, ...] = ()) -> Any:
+    """(path of keys, text) for every string of a parsed spec but the names of _NAME_SLOTS."""
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield from _texts(v, (*path, str(k)))
+    elif isinstance(node, list):
+        for v in node:
+            yield from _texts(v, path)
+    elif isinstance(node, str) and path not in _NAME_SLOTS:
+        yield path, node
+
+
+def _real_rename(doc: dict[str, Any]) -> dict[str, str]:
+    """${real_rename}: the command a real rename (rename_real) takes, chosen from the model so that the fixture
+    applies after any revision, itself included (it drops the old name, so no ${now:NAME} finds it again): the
+    last command, in the spec's order, that every version has (no command a revision added, which golden cases of
+    its own may name), with no former name (not the one rename.yaml renamed) and named by no text of the spec
+    (only its entry and the checks' targets: a rename leaves no prose stale). LINE5B on rev 03. ${real_rename_to}:
+    its new name (a 5B becomes _5AXIS, LINE_5AXIS on rev 03; else the name itself), the next free one (_2 ...)."""
+    vids = [str(v["id"]) for v in doc["versions"]]
+    names = [str(c["name"]) for c in doc["commands"]]
+    texts = [t for _, t in _texts(doc)]
+
+    def named(n: str) -> bool:
+        word = re.compile(rf"(?<![A-Za-z0-9_]){re.escape(n)}(?![A-Za-z0-9_])")
+        return any(word.search(t) for t in texts)
+
+    pick = next((c for c in reversed(doc["commands"]) if all(_has(c, v) for v in vids) and not c.get("former_names")
+                 and not named(str(c["name"]))), None)
+    if pick is None:
+        return {}
+    old = str(pick["name"])
+    base = old[:-2] + "_5AXIS" if old.endswith("5B") else old
+    return {"real_rename": old,
+            "real_rename_to": next(n for n in (base, *(f"{base}_{i}" for i in range(2, 100))) if n not in names)}
 
 
 def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
@@ -329,8 +372,8 @@ def _tokens(path: str) -> list[str]:
     return out
 
 
-def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
-    """The (container, key) pairs tok selects in node."""
+def _step(node: Any, tok: str, where: str, lenient: bool = False) -> list[tuple[Any, Any]]:
+    """The (container, key) pairs tok selects in node (lenient: none when a selector picks nothing)."""
     if tok.startswith("["):
         sel = tok[1:-1]
         if not isinstance(node, list):
@@ -347,7 +390,7 @@ def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
         if "=" in sel:
             key, value = sel.split("=", 1)
             hits = [(node, i) for i, item in enumerate(node) if isinstance(item, dict) and str(item.get(key)) == value]
-            if not hits:
+            if not hits and not lenient:
                 raise FixtureError(f"{where}: no item with {key}={value}")
             return hits
         return [(node, int(sel))]
@@ -356,7 +399,9 @@ def _step(node: Any, tok: str, where: str) -> list[tuple[Any, Any]]:
     return [(node, tok)]
 
 
-def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
+def _resolve(root: Any, path: str, lenient: bool = False) -> list[tuple[Any, Any]]:
+    """The (container, key) pairs path selects; lenient (an edit's `may_be_none: true`): a key a node lacks on the
+    way, or a [key=value] no item matches, selects nothing there instead of failing."""
     toks = _tokens(path)
     if not toks:
         raise FixtureError("empty path")
@@ -364,13 +409,15 @@ def _resolve(root: Any, path: str) -> list[tuple[Any, Any]]:
     nodes = [root]
     for i, tok in enumerate(toks):
         where = "".join(t if t.startswith("[") or j == 0 else "." + t for j, t in enumerate(toks[: i + 1]))
-        slots = [s for n in nodes for s in _step(n, tok, where)]
+        slots = [s for n in nodes for s in _step(n, tok, where, lenient)]
         if i < len(toks) - 1:
             nodes = []
             for c, k in slots:
                 try:
                     nodes.append(c[k])
                 except (KeyError, IndexError):
+                    if lenient:
+                        continue
                     raise FixtureError(f"{where}: not found") from None
     return slots
 
@@ -393,7 +440,7 @@ def apply_edit(root: Any, edit: dict[str, Any]) -> None:
     if op == "add_clause":
         add_clause(root, copy.deepcopy(edit["value"]))
         return
-    slots = _resolve(root, path)
+    slots = _resolve(root, path, lenient=op == "set" and bool(edit.get("may_be_none")))
     value: Any = copy.deepcopy(edit.get("value"))  # never the fixture's own object: a later edit may change it in place
     if op == "set":
         for c, k in slots:
