@@ -33,6 +33,22 @@ def _valid(version: str) -> list[Path]:
     return out
 
 
+def _header_refusal(model: cbf.Cbf, msg: str, dst: str) -> bool:
+    """True when msg refuses the file for a header field it sets that the target's header has no field for, by
+    name or by role (a revision's new header field, flags say, set in a file of its version): the model's reason.
+    False otherwise (the record check below then judges msg)."""
+    src_fields = T.HEADERS[T.VERSION_BY_ID[model.version_id].header].fields
+    named = [f for f in src_fields if re.search(rf"\bheader: {re.escape(f.name)}\b", msg)]
+    if not named:
+        return False
+    f = named[0]
+    dst_fields = T.HEADERS[T.VERSION_BY_ID[dst].header].fields
+    if any(g.name == f.name or (f.role not in (None, "reserved") and g.role == f.role) for g in dst_fields):
+        return False
+    assert getattr(model.header, f.name) not in ("", 0), msg
+    return True
+
+
 @pytest.mark.parametrize(("src", "dst"), PAIRS)
 def test_convert_between_two_versions_carries_or_refuses_by_the_model(src: str, dst: str) -> None:
     files = _valid(src)
@@ -44,6 +60,8 @@ def test_convert_between_two_versions_carries_or_refuses_by_the_model(src: str, 
             conv = convert(model, dst, chord_tol=0.5, fill=convert_fills(model, dst))
         except ConvertError as exc:
             msg = str(exc)
+            if _header_refusal(model, msg, dst):
+                continue
             m = re.search(r"\brecord (\d+)\b", msg)
             assert m, f"{path.name} -> {dst}: the refusal names no record: {msg}"
             cmd = model.records[int(m.group(1))].command

@@ -685,6 +685,7 @@ def _said(fx: Fixture, problems: list[str], t0: float, what: str) -> None:
 
 def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> bool:
     root = Path(tempfile.mkdtemp(prefix=f"cbf-drill-{fx.name}-"))
+    root.chmod(0o755)  # as a clone is: tests/test_ci_users.py runs the CLI from it as another user (nobody)
     ok = True
     try:
         t0 = time.monotonic()
@@ -708,6 +709,7 @@ def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: b
     fixture). A failure fails every fixture of the run; `drill.py run FIXTURE` (and `make revision-drill`)
     drills each alone."""
     root = Path(tempfile.mkdtemp(prefix="cbf-drill-together-"))
+    root.chmod(0o755)  # as a clone is: tests/test_ci_users.py runs the CLI from it as another user (nobody)
     results: dict[str, bool] = {}
     ok = False
     try:
