@@ -365,7 +365,10 @@ def hostile_spec(text: str) -> tuple[dict[str, Any], dict[str, str]]:
     field = header["fields"][-1]
     header["doc"] = cmd["layouts"][0]["doc"] = text  # a header's and a layout's own doc
     check = next(c for c in doc["checks"] if c["kind"] not in ("magic", "code_copy", "arg_size", "availability"))
-    cmd["doc"] = arg["doc"] = field["doc"] = check["text"] = doc["decisions"][0]["decision"] = text
+    cmd["doc"] = arg["doc"] = field["doc"] = check["text"] = text
+    # A decision's text names facts by {{placeholder}} (cbfgen.prose), and the loader refuses any other "{{" or
+    # "}}" there with its line: the decision gets the text with each doubled brace spaced apart, all else intact.
+    doc["decisions"][0]["decision"] = re.sub(r"\}(?=\})", "} ", re.sub(r"\{(?=\{)", "{ ", text))
     doc["meta"]["title"] = doc["meta"]["document"] = text  # the title reaches packages, the document a doc-ref
     return doc, {"command": cmd["name"], "arg": arg["name"], "field": field["name"], "check": str(check["id"]),
                  "header": next(iter(doc["headers"]))}
