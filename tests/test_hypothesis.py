@@ -102,16 +102,25 @@ def test_every_command_a_shape_and_a_chain_are_drawn() -> None:
 
     # Examples grow with the command table (a coupon collector's draw): a revision adding commands
     # must not leave one undrawn by a fixed budget sized for today's table.
-    @settings(max_examples=max(60, 4 * len(T.COMMANDS)), phases=[Phase.generate], database=None, deadline=None,
-              suppress_health_check=_HEALTH)
-    @given(cutfiles(min_records=20, max_records=20))
-    def collect(data: bytes) -> None:
-        nonlocal chains
-        codes = [r.code for r in cbf.decode(data).records]
-        seen.update(codes)
-        chains += sum(1 for a, b in zip(codes, codes[1:], strict=False) if a in turning and b in moving)
+    def collect(versions: list[str] | None, examples: int) -> None:
+        @settings(max_examples=examples, phases=[Phase.generate], database=None, deadline=None,
+                  suppress_health_check=_HEALTH)
+        @given(cutfiles(versions=versions, min_records=20, max_records=20))
+        def draw(data: bytes) -> None:
+            nonlocal chains
+            codes = [r.code for r in cbf.decode(data).records]
+            seen.update(codes)
+            chains += sum(1 for a, b in zip(codes, codes[1:], strict=False) if a in turning and b in moving)
 
-    collect()
+        draw()
+
+    collect(None, max(60, 4 * len(T.COMMANDS)))
+    # A revision adding versions thins out the files of the few that hold a command (HELIX in 2.x and 3.0 of
+    # nine versions, derandomized, went undrawn): what every version's draw missed is drawn in the versions
+    # that have it, with the same budget a command; a command no file of its versions draws still fails.
+    for c in T.COMMANDS:
+        if c.code not in seen:
+            collect([v.id for v in T.VERSIONS if c.layouts_for(v.id)], 4 * len(T.COMMANDS) // 2)
     assert seen == {c.code for c in T.COMMANDS}
     assert chains > 0
 
