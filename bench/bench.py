@@ -35,9 +35,10 @@ PY = sys.executable
 def _files() -> dict[str, Path]:
     """The three benchmark files, made deterministically with the codec's model API."""
     import cbf
-    from cbf.layouts import Checkpoint, Endshape, Line5b, Orient, Point, Speed, Startshape
+    from cbf.layouts import Checkpoint, Endshape, Orient, Point, Speed, Startshape
     from cbf.model import Cbf, Record, new_header
 
+    line5 = _five_axis_line("3.0")
     WORK.mkdir(parents=True, exist_ok=True)
     files = {"65535 records": REPO / "conformance" / "golden" / "big.v3.65535.cbf"}
     five = WORK / "five_axis.v2.cbf"  # v2: within the default machine (check machine_limits)
@@ -51,8 +52,7 @@ def _files() -> dict[str, Path]:
             recs.append(Record.of(Startshape(name=f"S{shape % 1000}", moves=n)))
             step = 0.25 if shape % 2 == 0 else -0.25  # back and forth: within any machine's workspace
             for _ in range(n):
-                recs.append(Record.of(Line5b(start_pos=(x, 0.0, 0.0), end_pos=(x + step, 0.0, 0.0),
-                                             start_orient=(0.0, 0.0, 1.0), end_orient=(0.0, 0.0, 1.0))))
+                recs.append(Record.of(line5((x, 0.0, 0.0), (x + step, 0.0, 0.0))))
                 x += step
             recs.append(Record.of(Endshape(name=f"S{shape % 1000}", moves=n)))
             shape += 1
@@ -64,8 +64,7 @@ def _files() -> dict[str, Path]:
     small = WORK / "small.cbf"
     if not small.exists():
         recs = [Record.of(Point(point=(0.0, 0.0, 0.0)))]
-        recs += [Record.of(Line5b(start_pos=(float(i), 0.0, 0.0), end_pos=(float(i + 1), 0.0, 0.0),
-                                  start_orient=(0.0, 0.0, 1.0), end_orient=(0.0, 0.0, 1.0))) for i in range(29)]
+        recs += [Record.of(line5((float(i), 0.0, 0.0), (float(i + 1), 0.0, 0.0))) for i in range(29)]
         small.write_bytes(cbf.encode(Cbf(new_header("3.0", implant_descriptor="BENCH-SMALL"), tuple(recs))))
     every = WORK / "every_command.cbf"
     if not every.exists():
@@ -73,6 +72,25 @@ def _files() -> dict[str, Path]:
     files["every command ~20k"] = every
     files["small (30)"] = small
     return files
+
+
+def _five_axis_line(version: str) -> Callable[[tuple[float, ...], tuple[float, ...]], Any]:
+    """The arguments of the 5-axis straight line from start to end, oriented (0, 0, 1), made by its motion role
+    (a line with no through point whose layout carries more than its two ends: LINE5B on rev 03), not by its
+    name: a revision may rename it (tests/revisions/rename_real.yaml)."""
+    from cbf import tables as T
+    from cbf.layouts import ARGS_CLASSES
+
+    cmd, lay = next((c, lay) for c in T.COMMANDS if c.motion and c.motion["kind"] == "line"
+                    and "through" not in c.motion for lay in c.layouts_for(version) if len(lay.args) > 2)
+    cls = ARGS_CLASSES[(cmd.name, lay.variant)]
+    start, end = str(cmd.motion["start"]), str(cmd.motion["end"])
+    others = [f.name for f in lay.args if f.name not in (start, end)]
+
+    def make(a: tuple[float, ...], b: tuple[float, ...]) -> Any:
+        return cls(**{start: a, end: b}, **dict.fromkeys(others, (0.0, 0.0, 1.0)))
+
+    return make
 
 
 def _curve_values(cmd: Any, lay: Any) -> dict[str, Any]:
