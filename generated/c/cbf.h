@@ -4914,6 +4914,20 @@ static long cbf__motion_arg(int layout, int key, unsigned *n)
     return (long)f->offset;
 }
 
+/* The offset of the end a layout's motion role names in a record of nargs argument bytes: when the end is
+ * the layout's repeated group (a polyline's points), its last item, as the Python codec's drawing and the
+ * continuity check take it; else the argument's own offset (-1: none, or no n tiles nargs). */
+static long cbf__motion_end(int layout, size_t nargs)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    long off = cbf__motion_arg(layout, CBF__M_END, NULL);
+    long n;
+    if (off < 0 || L->group < 0 || L->motion[CBF__M_END] != L->group)
+        return off;
+    n = cbf__group_n(L, nargs);
+    return n > 0 ? off + (long)(L->group_item * (size_t)(n - 1)) : -1;
+}
+
 /* ceil(x) steps, at least 1, at most max (x is a turn over the step: in degrees or in radians, as
  * cbf.geometry reckons each case, so the counts are its counts). */
 static size_t cbf__path_steps(double x, size_t max)
@@ -5044,14 +5058,14 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     kind = cbf__commands[cbf__layouts[layout].command].motion;
     switch (kind) {
     case CBF__MOTION_POINT:
-        if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+        if (!cbf__vec_at(args, cbf__motion_end(layout, nargs), end))
             return 0;
         cbf__put(&out[0], from ? from : end);
         cbf__put(&out[1], end);
         return 2;
     case CBF__MOTION_LINE:
         if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_START, NULL), start)
-            || !cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+            || !cbf__vec_at(args, cbf__motion_end(layout, nargs), end))
             return 0;
         if (cbf__layouts[layout].motion[CBF__M_THROUGH] >= 0) {
             if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_THROUGH, NULL), mid))
@@ -5075,7 +5089,7 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     }
 }
 /* ==== END runtime/path.c ==== */
-#line 5079 "cbf.h"
+#line 5093 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5241,7 +5255,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5245 "cbf.h"
+#line 5259 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5278,7 +5292,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5282 "cbf.h"
+#line 5296 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6264,7 +6278,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6268 "cbf.h"
+#line 6282 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -22,6 +22,20 @@ static long cbf__motion_arg(int layout, int key, unsigned *n)
     return (long)f->offset;
 }
 
+/* The offset of the end a layout's motion role names in a record of nargs argument bytes: when the end is
+ * the layout's repeated group (a polyline's points), its last item, as the Python codec's drawing and the
+ * continuity check take it; else the argument's own offset (-1: none, or no n tiles nargs). */
+static long cbf__motion_end(int layout, size_t nargs)
+{
+    const cbf__layout *L = &cbf__layouts[layout];
+    long off = cbf__motion_arg(layout, CBF__M_END, NULL);
+    long n;
+    if (off < 0 || L->group < 0 || L->motion[CBF__M_END] != L->group)
+        return off;
+    n = cbf__group_n(L, nargs);
+    return n > 0 ? off + (long)(L->group_item * (size_t)(n - 1)) : -1;
+}
+
 /* ceil(x) steps, at least 1, at most max (x is a turn over the step: in degrees or in radians, as
  * cbf.geometry reckons each case, so the counts are its counts). */
 static size_t cbf__path_steps(double x, size_t max)
@@ -152,14 +166,14 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     kind = cbf__commands[cbf__layouts[layout].command].motion;
     switch (kind) {
     case CBF__MOTION_POINT:
-        if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+        if (!cbf__vec_at(args, cbf__motion_end(layout, nargs), end))
             return 0;
         cbf__put(&out[0], from ? from : end);
         cbf__put(&out[1], end);
         return 2;
     case CBF__MOTION_LINE:
         if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_START, NULL), start)
-            || !cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_END, NULL), end))
+            || !cbf__vec_at(args, cbf__motion_end(layout, nargs), end))
             return 0;
         if (cbf__layouts[layout].motion[CBF__M_THROUGH] >= 0) {
             if (!cbf__vec_at(args, cbf__motion_arg(layout, CBF__M_THROUGH, NULL), mid))
