@@ -84,7 +84,8 @@ def _five_axis_line(version: str) -> Callable[[tuple[float, ...], tuple[float, .
     cmd, lay = next((c, lay) for c in T.COMMANDS if c.motion and c.motion["kind"] == "line"
                     and "through" not in c.motion for lay in c.layouts_for(version) if len(lay.args) > 2)
     cls = ARGS_CLASSES[(cmd.name, lay.variant)]
-    start, end = str(cmd.motion["start"]), str(cmd.motion["end"])
+    motion = cmd.motion or {}
+    start, end = str(motion["start"]), str(motion["end"])
     others = [f.name for f in lay.args if f.name not in (start, end)]
 
     def make(a: tuple[float, ...], b: tuple[float, ...]) -> Any:
