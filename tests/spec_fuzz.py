@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import hashlib
 import json
 import os
 import random
@@ -40,10 +41,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
-from collections import Counter
+from collections import Counter, deque
 from collections.abc import Callable, Iterator
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -401,8 +403,8 @@ def _dead_clause_links(docs: Path) -> str:
     return ""
 
 
-def judge(mutant: Mutant, work: Path) -> Outcome:
-    """Refused with a line, or generated, compiled, imported and run alike by both tools."""
+def judge(mutant: Mutant, work: Path, seen: dict[str, Outcome] | None = None) -> Outcome:
+    """Refused with a line by `cbfgen --check-spec` (a process), or built alike (``build``)."""
     work.mkdir(parents=True, exist_ok=True)
     spec = work / "cbf.yaml"
     spec.write_text(dump(mutant.doc), encoding="utf-8")
@@ -417,6 +419,28 @@ def judge(mutant: Mutant, work: Path) -> Outcome:
         if res.returncode == 2 and res.stderr.strip():
             return Outcome("refused", _first(res.stderr))
         return Outcome("crash:check-spec", f"exit {res.returncode}: {_first(res.stderr)}")
+    return build(spec, work, seen)
+
+
+def _digest(out: Path) -> str:
+    """What the Python package and the C tool are made of: two mutants with the same digest compile, import
+    and run alike (the golden files are the same), so the second reuses the first's outcome."""
+    h = hashlib.sha256()
+    for top in ("python", "c"):
+        for p in sorted((out / top).rglob("*")):
+            if p.is_file() and "__pycache__" not in p.parts:
+                h.update(p.relative_to(out).as_posix().encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+_SEEN = threading.Lock()
+
+
+def build(spec: Path, work: Path, seen: dict[str, Outcome] | None = None) -> Outcome:
+    """A spec the loader accepted: generated, compiled, imported and run alike by both tools. ``seen`` maps the
+    digest of a generated Python package and C tool to its outcome (the documents are judged every time)."""
+    py = sys.executable
+    env = dict(os.environ, PYTHONPATH=str(REPO / "generator"), PYTHONDONTWRITEBYTECODE="1")
     out = work / "gen"
     res = _run([py, "-m", "cbfgen", "--spec", str(spec), "--out", str(out), "--only", "python", "--only", "c",
                 "--only", "docs"],
@@ -428,6 +452,20 @@ def judge(mutant: Mutant, work: Path) -> Outcome:
     dead = _dead_clause_links(out / "docs")
     if dead:
         return Outcome("broken:docs", dead)
+    digest = _digest(out)
+    with _SEEN:
+        first = None if seen is None else seen.get(digest)
+    if first is not None:
+        return Outcome(first.kind, f"{first.detail} (its Python and C alike an earlier mutant's: not rebuilt)")
+    outcome = _compile_and_run(out, work)
+    if seen is not None:
+        with _SEEN:
+            seen[digest] = outcome
+    return outcome
+
+
+def _compile_and_run(out: Path, work: Path) -> Outcome:
+    py = sys.executable
     tool = work / "cbf-c"
     res = _run(["gcc", *_strict_flags(), "-O1", "-o", str(tool), str(out / "c" / "cbf_tool.c"), "-lm"], "compile",
                cwd=out / "c")
@@ -482,7 +520,8 @@ def judge_loader(mutant: Mutant, work: Path) -> Outcome:
     try:
         load(spec)
     except SpecError as exc:
-        return Outcome("refused", _first(str(exc)))
+        line = _first(str(exc))
+        return Outcome("refused", line) if line else Outcome("crash:check-spec", "a refusal without a line")
     except BaseException as exc:  # noqa: BLE001 - any other end of the loader is the finding
         return Outcome("crash:check-spec", f"{type(exc).__name__}: {exc}"[:200])
     finally:
@@ -492,40 +531,61 @@ def judge_loader(mutant: Mutant, work: Path) -> Outcome:
 
 
 def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False) -> int:
+    """Every mutant through the loader in this process first (what `--check-spec` runs: a refusal is its
+    SpecError's lines, a crash any other end; a process each cost a second a mutant); the accepted ones,
+    unless ``loader_only``, then built in ``jobs`` threads, a mutant whose generated Python and C equal an
+    earlier one's reusing its outcome."""
     base = Path(tempfile.mkdtemp(prefix="spec-fuzz-"))
     counts: Counter[str] = Counter()
     start = time.monotonic()
-    how = judge_loader if loader_only else judge
-    if loader_only:
-        sys.path.insert(0, str(REPO / "generator"))
-        jobs = 1  # in this process: the alarm is the main thread's
-        resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+    sys.path.insert(0, str(REPO / "generator"))
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))  # the loader's cap, as _cap gives --check-spec
+    seen: dict[str, Outcome] = {}
 
-    def one(item: tuple[int, Mutant]) -> tuple[int, Mutant, Outcome]:
-        i, m = item
-        work = base / f"m{i:05d}"
+    def built(spec: Path, work: Path) -> Outcome:
         try:
-            return i, m, how(m, work)
+            return build(spec, work, seen)
         finally:
             shutil.rmtree(work, ignore_errors=True)
 
     bad = 0
+    pending: deque[tuple[int, Mutant, Future[Outcome]]] = deque()
+
+    def report(block: bool) -> None:
+        nonlocal bad
+        while pending and (block or pending[0][2].done()):
+            i, m, fut = pending.popleft()
+            o = fut.result()
+            counts[o.kind] += 1
+            bad += o.bad
+            print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
+            if keep is not None and o.bad:
+                keep.mkdir(parents=True, exist_ok=True)
+                (keep / f"seed{seed}-{i:05d}.yaml").write_text(dump(m.doc), encoding="utf-8")
+
     try:
         with ThreadPoolExecutor(max(1, jobs)) as pool:
-            results = map(one, mutants(seed, count)) if loader_only else pool.map(one, mutants(seed, count))
-            for i, m, o in results:
-                counts[o.kind] += 1
-                bad += o.bad
-                print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
-                if keep is not None and o.bad:
-                    keep.mkdir(parents=True, exist_ok=True)
-                    (keep / f"seed{seed}-{i:05d}.yaml").write_text(dump(m.doc), encoding="utf-8")
+            for i, m in mutants(seed, count):
+                work = base / f"m{i:05d}"
+                o = judge_loader(m, work)
+                if o.kind == "accepted" and not loader_only:
+                    pending.append((i, m, pool.submit(built, work / "cbf.yaml", work)))
+                else:
+                    shutil.rmtree(work, ignore_errors=True)
+                    done: Future[Outcome] = Future()
+                    done.set_result(o)
+                    pending.append((i, m, done))
+                while len(pending) > 4 * max(1, jobs) and not pending[0][2].done():
+                    wait([pending[0][2]])  # the loader no further ahead of the builds than a few mutants
+                report(False)
+            report(True)
     finally:
         shutil.rmtree(base, ignore_errors=True)
     took = time.monotonic() - start
     by = ", ".join(f"{n} {k}" for k, n in sorted(counts.items()))
+    rebuilt = f"; {len(seen)} distinct builds" if not loader_only else ""
     print(f"spec-fuzz: {sum(counts.values())} mutants (seed {seed}) in {took:.0f} s: {by}; "
-          f"{bad} crashed or accepted-but-broken")
+          f"{bad} crashed or accepted-but-broken{rebuilt}")
     return 1 if bad else 0
 
 
