@@ -18,7 +18,7 @@ a golden file), `broken:differ` (the two tools disagree), `broken:docs` (a docum
 anchor it lacks), `broken:cut-roundtrip` (the generated CUT
 writer's text of a golden file is refused, or read as other records, by the generated reader).
 
-    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR] [--loader-only]
+    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR] [--loader-only] [--index I ...]
     python tests/spec_fuzz.py case NAME        one fixed class (CLASSES), its outcome
 
 `run` prints one line per mutant (seed, index, what changed, outcome) and a closing line with
@@ -530,11 +530,13 @@ def judge_loader(mutant: Mutant, work: Path) -> Outcome:
     return Outcome("accepted", "by the loader (not built: --loader-only)")
 
 
-def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False) -> int:
+def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False,
+        only: frozenset[int] = frozenset()) -> int:
     """Every mutant through the loader in this process first (what `--check-spec` runs: a refusal is its
     SpecError's lines, a crash any other end; a process each cost a second a mutant); the accepted ones,
     unless ``loader_only``, then built in ``jobs`` threads, a mutant whose generated Python and C equal an
-    earlier one's reusing its outcome."""
+    earlier one's reusing its outcome. ``only``: judge just these indexes of the campaign (its failing
+    mutants, again), the others drawn and skipped."""
     base = Path(tempfile.mkdtemp(prefix="spec-fuzz-"))
     counts: Counter[str] = Counter()
     start = time.monotonic()
@@ -566,6 +568,8 @@ def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool =
     try:
         with ThreadPoolExecutor(max(1, jobs)) as pool:
             for i, m in mutants(seed, count):
+                if only and i not in only:
+                    continue
                 work = base / f"m{i:05d}"
                 o = judge_loader(m, work)
                 if o.kind == "accepted" and not loader_only:
@@ -597,6 +601,8 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--count", type=int, default=1000)
     r.add_argument("--jobs", type=int, default=1)
     r.add_argument("--keep", type=Path, help="write each crashing or broken mutant's spec here")
+    r.add_argument("--index", type=int, action="append", default=[],
+                   help="judge only this mutant of the campaign (repeatable): its failing mutants again")
     r.add_argument("--loader-only", action="store_true",
                    help="judge each mutant by the loader alone, in this process (refused, accepted, or a crash)")
     c = sub.add_parser("case", help="one fixed class of issue 36")
@@ -609,7 +615,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{m.what}: {o.kind}: {o.detail}")
             return 1 if o.bad else 0
     seed = a.seed if a.seed is not None else int(time.time())
-    return run(seed, a.count, a.jobs, a.keep, a.loader_only)
+    return run(seed, a.count, a.jobs, a.keep, a.loader_only, frozenset(a.index))
 
 
 if __name__ == "__main__":
