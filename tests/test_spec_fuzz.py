@@ -39,6 +39,9 @@ def test_the_fixed_sample_is_refused_or_built_alike(index: int, tmp_path: Path) 
     i, m = next((i, m) for i, m in mutants(SAMPLE_SEED, SAMPLE_COUNT) if i == index)
     outcome = judge(m, tmp_path)
     assert outcome.kind in ("refused", "accepted"), f"#{i} {m.what}: {outcome.kind}: {outcome.detail}"
+    # `run` judges refusal by the loader in its own process: the same verdict as `cbfgen --check-spec`
+    in_process = spec_fuzz.judge_loader(m, tmp_path / "in-process")
+    assert in_process.kind == outcome.kind if outcome.kind == "refused" else in_process.kind == "accepted", in_process
 
 
 def test_the_mutator_is_derandomised_and_changes_the_spec() -> None:
