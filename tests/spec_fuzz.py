@@ -6,7 +6,8 @@ another name of the spec, a list item dropped or repeated, a key dropped, a valu
 type), plus the classes a hostile contributor found in issue 36 (each a fixed case, `CLASSES`).
 Each mutant is then either
 
-  refused   `cbfgen --check-spec` exits 2 with its lines and no traceback, or
+  refused   `cbfgen --check-spec` exits 2 with its lines and no traceback (`run` calls the loader in its
+            own process instead: the same verdict without a process a mutant), or
   accepted  and then generated (Python, C and the documents), the C tool compiled under the project's strict
             flags (mk/c.mk's rule, so the flags are the build's own), the Python package imported,
             and both tools run over the golden files: `cbf validate` and `cbf-c validate` must
