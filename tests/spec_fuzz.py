@@ -290,7 +290,7 @@ CLASSES: dict[str, tuple[Callable[[Any], str], str | None]] = {
     "vector_separator_is_arg_separator": (_separators_collide, "schema"),
     "clause_note_names_nothing": (_note_names_nothing, "notes"),
     "check_cites_no_clause": (_check_cites_no_clause, "clauses"),
-    "name_4096": (_long_name, "names"),
+    "name_4096": (_long_name, "schema"),
     "string_padding_32": (_set_path(("meta", "string_padding"), 32), "padding"),
     "range_min_negative_zero": (_range_min_negative_zero, "numbers"),
     "tolerance_nan": (_tolerance_nan, "numbers"),
