@@ -44,7 +44,7 @@ import sys
 import tempfile
 import threading
 import time
-from collections import Counter, deque
+from collections import Counter, defaultdict, deque
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass
@@ -540,6 +540,7 @@ def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool =
     mutants, again), the others drawn and skipped."""
     base = Path(tempfile.mkdtemp(prefix="spec-fuzz-"))
     counts: Counter[str] = Counter()
+    by_class: defaultdict[str, Counter[str]] = defaultdict(Counter)  # mutation class -> outcomes
     start = time.monotonic()
     sys.path.insert(0, str(REPO / "generator"))
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))  # the loader's cap, as _cap gives --check-spec
@@ -560,6 +561,7 @@ def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool =
             i, m, fut = pending.popleft()
             o = fut.result()
             counts[o.kind] += 1
+            by_class[m.what.split(" ", 1)[0]][o.kind] += 1
             bad += o.bad
             print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
             if keep is not None and o.bad:
@@ -591,6 +593,9 @@ def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool =
     rebuilt = f"; {len(seen)} distinct builds" if not loader_only else ""
     print(f"spec-fuzz: {sum(counts.values())} mutants (seed {seed}) in {took:.0f} s: {by}; "
           f"{bad} crashed or accepted-but-broken{rebuilt}")
+    print("spec-fuzz: by mutation class: " + "; ".join(
+        f"{name} {sum(c.values())} ({', '.join(f'{n} {k}' for k, n in sorted(c.items()))})"
+        for name, c in sorted(by_class.items())))
     return 1 if bad else 0
 
 
