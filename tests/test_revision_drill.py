@@ -259,16 +259,29 @@ def test_the_readme_lists_no_versions_by_hand() -> None:
         assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
 
 
+_FOR: dict[tuple[Path, bytes], drill.Fixture] = {}
+
+
+def _fixture_for(path: Path, base: Path) -> drill.Fixture:
+    """drill.load_fixture(path, drill.read_spec(base)), once per fixture and base text: a pair's revision, its
+    files and its judged diff all read the fixture as it reads for the base (a Fixture is frozen; its edits are
+    read, never changed: revised_spec renders its own copy)."""
+    key = (path, hashlib.sha256(Path(base).read_bytes()).digest())
+    if key not in _FOR:
+        _FOR[key] = drill.load_fixture(path, _read_spec(base))
+    return _FOR[key]
+
+
 def _revised(fx: drill.Fixture, base: Path, out: Path) -> tuple[Path, drill.Fixture]:
     """base revised by fx into out, and fx as it reads for base (its ids chosen there)."""
-    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, _read_spec(base))
+    return drill.revised_spec(fx, base, out, _read_spec(base)), _fixture_for(fx.path, base)
 
 
 def _judged(fx: drill.Fixture, base: Path, revised: Path, models: tuple[Spec, Spec] | None = None) -> list[str]:
     """drill.check_diff in this process: what cbfgen diff of base against revised says, judged for fx (models: the
     two specs already loaded, each load about a third of a pair's time)."""
     d = diff(*(models or (load(base), load(revised))))
-    return drill.judge(drill.load_fixture(fx.path, _read_spec(base)), d.exit_code, d.as_json())
+    return drill.judge(_fixture_for(fx.path, base), d.exit_code, d.as_json())
 
 
 @pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
@@ -276,13 +289,13 @@ def test_each_fixture_applies_on_top_of_each_other(first: Path, tmp_path: Path) 
     """Fixture B applied to fixture A's revised spec (every ordered pair, the spec edits only) gives a spec the
     loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause taken
     twice) and cbfgen diff of A's spec against it says what B states."""
-    a = drill.load_fixture(first)
+    a = _fixture_for(first, SPEC)
     base, a_here = _revised(a, SPEC, tmp_path / "a")
     spec_a = load(base)
     for other in FIXTURES:
         if other == first:
             continue
-        b = drill.load_fixture(other)
+        b = _fixture_for(other, SPEC)
         both, b_there = _revised(b, base, tmp_path / f"a_{other.stem}")
         spec = load(both)  # the loader's checks (make check-spec)
         assert len({c.code for c in spec.commands}) == len(spec.commands), (first.stem, other.stem)
