@@ -745,6 +745,15 @@ def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
     numbers, so their order comes from a scatter into a table of the records, not a sort."""
     if len(parts) == 1:
         return parts[0][0], list(parts[0][1:])
+    # Each part's rows ascend (a batch's rows do). When the parts do not interleave (a file of
+    # one motion command after a few set-up records), their concatenation by first row is the
+    # file order: no permutation, no gather of every field.
+    ordered = sorted((p for p in parts if len(p[0])), key=lambda p: int(p[0][0]))
+    if all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:])):
+        if len(ordered) == 1:
+            return ordered[0][0], list(ordered[0][1:])
+        return np.concatenate([p[0] for p in ordered]), [np.concatenate([p[j] for p in ordered])
+                                                         for j in range(1, len(parts[0]))]
     rows = np.concatenate([p[0] for p in parts])
     at: Any = np.full(int(rows.max()) + 1, -1, dtype=np.int32 if rows.size < 1 << 31 else np.int64)
     at[rows] = np.arange(rows.size, dtype=at.dtype)
