@@ -197,15 +197,36 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
     return known, avail, size_ok, lay_of, lays
 
 
+@lru_cache(maxsize=16)
+def _size_bad(version: str, profile: str) -> NDArray[np.bool_]:
+    """Per (code, argument size) as one index (``_key``): a known code with a size no layout of
+    it accepts."""
+    known, _, size_ok = _tables(version, profile)[:3]
+    return (known[:, None] & ~size_ok).reshape(-1)  # type: ignore[no-any-return]
+
+
+def _key(r: Records) -> Any:
+    """(code, argument size) of every record as one index into the tables of ``_tables`` (a 1-d
+    take, not a 2-d one), made once a validation and kept in 2 bytes a record."""
+    got = r.state.get(_KEY)
+    if got is None:
+        code, nb = r.head["code"], r.head["arg_size"]
+        # 1-byte fields: 2 bytes a record (the tables are 256 x 256; wider fields index as before)
+        got = code.astype(np.uint16 if code.itemsize == nb.itemsize == 1 else np.intp)
+        got <<= 8
+        got |= nb
+        r.state[_KEY] = got
+    return got
+
+
+_KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
+
+
 def _batches(r: Records) -> Iterator[Batch]:
     """The records of each layout the file uses, one layout at a time (one layout's columns
     held at once)."""
     lay_of, lays = _tables(r.version, r.profile)[3:]
-    key = r.head["code"].astype(np.intp)  # (code, size) as one index: a 1-d take, not a 2-d one
-    key *= lay_of.shape[1]
-    key += r.head["arg_size"]
-    which = lay_of.reshape(-1).take(key)
-    del key
+    which = lay_of.reshape(-1).take(_key(r))
     # the rows of every layout at once: one stable sort, not one pass over the file per layout
     order = np.argsort(which, kind="stable")
     bounds = np.cumsum(np.bincount(which + 1, minlength=len(lays) + 1)).tolist()  # which -1: no layout fits
@@ -407,8 +428,7 @@ def _availability(r: Records, check: Check) -> None:
 
 def _arg_size(r: Records, check: Check) -> None:
     code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
-    known, _, size_ok = _tables(version, profile)[:3]
-    bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
+    bad = np.flatnonzero(_size_bad(version, profile).take(_key(r)))
 
     def sizes_msg(i: Any) -> str:
         cmd = T.BY_CODE[int(code[i])]
