@@ -256,7 +256,8 @@ class _Columns(Mapping[str, Any]):
         if col is None:
             col = self._raw[name]
             if col.dtype.kind == "f":
-                with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
+                # signalling NaNs stay NaN (its own errstate: a message may read a column late)
+                with np.errstate(invalid="ignore"):
                     col = col.astype(np.float64)
             self._done[name] = col
         return col
@@ -446,14 +447,13 @@ def _finite(r: Records, check: Check, b: Batch) -> None:
     # A NaN or an infinity makes the sum not finite, so rows whose sum is finite hold only
     # finite floats; the others (an overflow too) are looked at field by field.
     total = np.zeros(b.rows.size, dtype=np.float32)
-    with np.errstate(invalid="ignore", over="ignore"):
-        for f in floats:
-            col = b.raw[f.name]
-            if col.ndim == 1:
-                total += col
-            else:
-                for j in range(col.shape[1]):
-                    total += col[:, j]
+    for f in floats:
+        col = b.raw[f.name]
+        if col.ndim == 1:
+            total += col
+        else:
+            for j in range(col.shape[1]):
+                total += col[:, j]
     suspect = np.flatnonzero(~np.isfinite(total))
     if suspect.size == 0:
         return
@@ -539,8 +539,7 @@ def _positive(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            with np.errstate(invalid="ignore"):
-                bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
+            bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad, _valued(f"{b.cmd.name}.{nm} is ", v, ", must be > 0"))
 
 
@@ -558,10 +557,9 @@ def _range(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            with np.errstate(invalid="ignore"):
-                out = ((v <= lo) if check["min_exclusive"] else (v < lo)) | ((v >= hi) if check["max_exclusive"]
-                                                                           else (v > hi))
-                bad = np.nonzero(np.isfinite(v) & out)[0]
+            out = ((v <= lo) if check["min_exclusive"] else (v < lo)) | ((v >= hi) if check["max_exclusive"]
+                                                                       else (v > hi))
+            bad = np.nonzero(np.isfinite(v) & out)[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad,
                   _valued(f"{b.cmd.name}.{nm} is ", v, f", {range_text(check)}"))
 
@@ -728,15 +726,14 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
           & np.isfinite(deg) & np.isfinite(length))
     nn = np.sqrt((normal * normal).sum(axis=1))
     ok &= nn != 0.0
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        kk = normal / nn[:, None]
-        v = start - center
-        th = deg * (math.pi / 180.0)
-        c, s = np.cos(th), np.sin(th)
-        kxv = np.cross(kk, v)
-        kdv = (kk * v).sum(axis=1)
-        rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
-        end = center + rot + length[:, None] * kk
+    kk = normal / nn[:, None]
+    v = start - center
+    th = deg * (math.pi / 180.0)
+    c, s = np.cos(th), np.sin(th)
+    kxv = np.cross(kk, v)
+    kdv = (kk * v).sum(axis=1)
+    rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
+    end = center + rot + length[:, None] * kk
     end[~ok] = np.nan
     return end
 
@@ -804,9 +801,8 @@ def _continuity_end(r: Records, check: Check) -> None:
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
     dvec = start[todo].astype(np.float64)
     dvec -= end[todo - 1]
-    with np.errstate(invalid="ignore", over="ignore"):
-        d = np.sqrt((dvec * dvec).sum(axis=1))
-        keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
+    d = np.sqrt((dvec * dvec).sum(axis=1))
+    keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
     bad = todo[keep]
     dist, label = d[keep], names[bad]
     r.add(check, rows[bad], starts[bad], np.arange(bad.size),
@@ -834,12 +830,11 @@ def _orientation_end(r: Records, check: Check) -> None:
     # are measured (a valid file's paths all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
     s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
-    with np.errstate(invalid="ignore", over="ignore"):
-        prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
-        s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
-        cx = np.cross(s, prev)
-        ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
-        keep = s_ok & prev_ok & (ang > tol)
+    prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
+    s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
+    cx = np.cross(s, prev)
+    ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
+    keep = s_ok & prev_ok & (ang > tol)
     bad = todo[keep]
     angle, label = ang[keep], cnames[bad]
     r.add(check, rows[bad], aoff[bad], np.arange(bad.size),
@@ -1025,7 +1020,8 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
     active = tuple(x for x in _active(cutters is not None) if x[0]["id"] not in elsewhere)
     # The kernels meet NaNs (signalling ones too), infinities and huge values on purpose: the
     # checks report them as findings. numpy's floating-point warnings (an invalid cast, an
-    # overflow) would only be noise on stderr, never a finding: they are off while the kernels run.
+    # overflow) would only be noise on stderr, never a finding: they are off while the kernels run
+    # (here, once: a kernel opens no errstate of its own, each cost a few microseconds a call).
     with np.errstate(all="ignore"):
         for check, kernel in active:
             if kernel.every is not None:
