@@ -59,6 +59,9 @@ class Batch:
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
     plain: dict[str, bool] = field(default_factory=dict)  # string argument -> every row a plain string
     bytes_: Any = None  # the argument bytes, rows x layout size
+    # the records of every layout of this argument size the file uses, batched together: (the
+    # position of the first layout in _size_order, their rows, their argument bytes)
+    group: tuple[int, Any, Any] | None = None
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -222,23 +225,57 @@ def _key(r: Records) -> Any:
 _KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
 
 
+@lru_cache(maxsize=16)
+def _size_order(version: str, profile: str) -> tuple[NDArray[np.int16], list[int], list[int]]:
+    """The layouts of ``_tables`` ordered by argument size (then as listed): per layout index + 1
+    its position + 1 (0: no layout fits), the layout index at each position, and where each run of
+    one size starts (a position, per position)."""
+    lays = _tables(version, profile)[4]
+    by_pos = sorted(range(len(lays)), key=lambda li: (lays[li].size, li))
+    rank = np.zeros(len(lays) + 1, dtype=np.int16)
+    rank[[li + 1 for li in by_pos]] = np.arange(1, len(lays) + 1, dtype=np.int16)
+    first = [next(q for q in range(p + 1) if lays[by_pos[q]].size == lays[by_pos[p]].size) for p in range(len(by_pos))]
+    return rank, by_pos, first
+
+
 def _batches(r: Records) -> Iterator[Batch]:
-    """The records of each layout the file uses, one layout at a time (one layout's columns
-    held at once)."""
-    lay_of, lays = _tables(r.version, r.profile)[3:]
-    which = lay_of.reshape(-1).take(_key(r))
-    # the rows of every layout at once: one stable sort, not one pass over the file per layout
-    order = np.argsort(which, kind="stable")
-    bounds = np.cumsum(np.bincount(which + 1, minlength=len(lays) + 1)).tolist()  # which -1: no layout fits
-    for li in range(len(lays)):
-        if bounds[li + 1] == bounds[li]:
-            continue
-        lay, rows = lays[li], order[bounds[li]:bounds[li + 1]]
-        aoff = r.off[rows] + T.HEAD_SIZE
-        data = _gather(r.a, aoff, lay.size)
-        arr = data.view(_dtype(lay))[:, 0] if lay.size else None
-        raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
-        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw, bytes_=data)
+    """The records of each layout the file uses, one layout at a time. The layouts of one argument
+    size are gathered together (one gather for several commands: a file of many layouts pays numpy's
+    per-call cost once a size, not once a layout); each layout's rows are a slice of them."""
+    lays = _tables(r.version, r.profile)[4]
+    rank, by_pos, first = _size_order(r.version, r.profile)
+    which = _tables(r.version, r.profile)[3].reshape(-1).take(_key(r))
+    which += 1  # 0: no layout fits
+    pos = rank.take(which)
+    del which
+    # the rows of every layout at once, by size then layout, each in file order: one stable sort
+    order = np.argsort(pos, kind="stable")
+    bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
+    del pos
+    p, count = 0, len(by_pos)
+    while p < count:
+        q = p + 1
+        while q < count and first[q] == p:
+            q += 1
+        lo, hi = bounds[p], bounds[q]  # the rows of positions p .. q-1: one size
+        if hi > lo:
+            rows = order[lo:hi]
+            aoff = r.off[rows] + T.HEAD_SIZE
+            lay0 = lays[by_pos[p]]
+            data = _gather(r.a, aoff, lay0.size)
+            group = (p, rows, data)
+            for k in range(p, q):
+                if bounds[k + 1] > bounds[k]:
+                    yield _batch(lays[by_pos[k]], group, bounds[k] - lo, bounds[k + 1] - lo, aoff)
+        p = q
+
+
+def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any], lo: int, hi: int, aoff: Any) -> Batch:
+    """The batch of one layout: rows lo .. hi of its size group."""
+    rows, data = group[1][lo:hi], group[2][lo:hi]
+    arr = data.view(_dtype(lay))[:, 0] if lay.size else None
+    raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+    return Batch(lay, T.BY_CODE[lay.code], rows, aoff[lo:hi], _Columns(raw), raw, bytes_=data, group=group)
 
 
 class _Columns(Mapping[str, Any]):
@@ -333,8 +370,16 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
         held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=r.head["checksum"].dtype),
                                        np.zeros(len(r.off), dtype=bool))
     sums, done = held
-    sums[b.rows] = _arg_sums(cov, b.bytes_)
-    done[b.rows] = True
+    if b.group is None:
+        rows, data = b.rows, b.bytes_
+    else:  # the layouts of one size: summed together, when the first of them comes
+        key = (check["id"], "group", b.group[0])
+        if key in r.state:
+            return
+        r.state[key] = True
+        rows, data = b.group[1], b.group[2]
+    sums[rows] = _arg_sums(cov, data)
+    done[rows] = True
 
 
 def _arg_checksum(r: Records, check: Check) -> None:
