@@ -801,29 +801,47 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
                                                 b.cmd.name))
 
 
-def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
-    """The rows of every part (one per layout) in file order, and each field of the parts
-    concatenated in that order (field j of a part is part[j + 1]). The rows are distinct record
-    numbers, so their order comes from a scatter into a table of the records, not a sort."""
-    if len(parts) == 1:
-        return parts[0][0], list(parts[0][1:])
-    # Each part's rows ascend (a batch's rows do). When the parts do not interleave (a file of
-    # one motion command after a few set-up records), their concatenation by first row is the
-    # file order: no permutation, no gather of every field.
+def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
+    """The parts (one per layout; part[0] their rows, ascending) in the order to concatenate them,
+    and the permutation that puts the concatenation in file order (None: it is in file order).
+    When the parts do not interleave (a file of one motion command after a few set-up records),
+    their concatenation by first row is the file order: no permutation, no gather. Otherwise the
+    rows are distinct record numbers, so their order comes from a scatter into a table of the
+    records, not a sort."""
     ordered = sorted((p for p in parts if len(p[0])), key=lambda p: int(p[0][0]))
-    if all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:])):
-        if len(ordered) == 1:
-            return ordered[0][0], list(ordered[0][1:])
-        return np.concatenate([p[0] for p in ordered]), [np.concatenate([p[j] for p in ordered])
-                                                         for j in range(1, len(parts[0]))]
+    if ordered and all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:])):
+        return ordered, None
     rows = np.concatenate([p[0] for p in parts])
+    if rows.size == 0:
+        return parts, None
     at: Any = np.full(int(rows.max()) + 1, -1, dtype=np.int32 if rows.size < 1 << 31 else np.int64)
     at[rows] = np.arange(rows.size, dtype=at.dtype)
     order = at[at >= 0]
     del at
     if order.size != rows.size:  # a row twice (two targets naming one argument): sorted, stably
         order = np.argsort(rows, kind="stable")
-    return rows[order], [np.concatenate([p[j] for p in parts])[order] for j in range(1, len(parts[0]))]
+    return parts, order
+
+
+def _field(parts: list[Any], j: int, pick: Any) -> Any:
+    """Field j of the parts concatenated, at ``pick`` (None: all, as concatenated)."""
+    got = parts[0][j] if len(parts) == 1 else np.concatenate([p[j] for p in parts])
+    return got if pick is None else got[pick]
+
+
+def _part_of(parts: list[Any], at: Any) -> list[int]:
+    """Which part each position ``at`` of the concatenation is in."""
+    ends = np.cumsum([len(p[0]) for p in parts])
+    return np.searchsorted(ends, at, side="right").tolist()  # type: ignore[no-any-return]
+
+
+def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
+    """The rows of every part (one per layout) in file order, and each field of the parts
+    concatenated in that order (field j of a part is part[j + 1])."""
+    if len(parts) == 1:
+        return parts[0][0], list(parts[0][1:])
+    cat, order = _merge_order(parts)
+    return _field(cat, 0, order), [_field(cat, j, order) for j in range(1, len(parts[0]))]
 
 
 def _same_rows(x: Any, y: Any) -> Any:
@@ -835,12 +853,11 @@ def _same_rows(x: Any, y: Any) -> Any:
 
 
 def _continuity_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])
+    parts = r.state.pop(check["id"], [])  # (rows, start, end, start offsets, command name) a layout
     if not parts:
         return
-    labels = [p[4] for p in parts]
-    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
-    rows, (start, end, starts, names) = _in_file_order(parts)
+    cat, order = _merge_order(parts)
+    start, end = _field(cat, 1, order), _field(cat, 2, order)
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
     # measured (a valid file's motions all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
@@ -849,9 +866,12 @@ def _continuity_end(r: Records, check: Check) -> None:
     d = np.sqrt((dvec * dvec).sum(axis=1))
     keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
     bad = todo[keep]
-    dist, label = d[keep], names[bad]
-    r.add(check, rows[bad], starts[bad], np.arange(bad.size),
-          lambda k: f"{labels[label[k]]} starts {float(dist[k]):.6g} mm from the current position")
+    if bad.size == 0:
+        return
+    dist, src = d[keep], bad if order is None else order[bad]  # src: positions in the concatenation
+    names = [cat[j][4] for j in _part_of(cat, src)]
+    r.add(check, _field(cat, 0, src), _field(cat, 3, src), np.arange(bad.size),
+          lambda k: f"{names[k]} starts {float(dist[k]):.6g} mm from the current position")
 
 
 def _orientation(r: Records, check: Check, b: Batch) -> None:
@@ -864,16 +884,15 @@ def _orientation(r: Records, check: Check, b: Batch) -> None:
 
 
 def _orientation_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])
+    parts = r.state.pop(check["id"], [])  # (rows, start, end, argument offsets, command name) a layout
     if not parts:
         return
-    labels = [p[4] for p in parts]
-    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
-    rows, (start, end, aoff, cnames) = _in_file_order(parts)
+    cat, order = _merge_order(parts)
+    start, end = _field(cat, 1, order), _field(cat, 2, order)
     tol = T.TOL["orientation_deg"]
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
     s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
     prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
     s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
@@ -881,9 +900,12 @@ def _orientation_end(r: Records, check: Check) -> None:
     ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
     keep = s_ok & prev_ok & (ang > tol)
     bad = todo[keep]
-    angle, label = ang[keep], cnames[bad]
-    r.add(check, rows[bad], aoff[bad], np.arange(bad.size),
-          lambda k: f"{labels[label[k]]} starts {float(angle[k]):.6g} deg from the current orientation")
+    if bad.size == 0:
+        return
+    angle, src = ang[keep], bad if order is None else order[bad]  # src: positions in the concatenation
+    names = [cat[j][4] for j in _part_of(cat, src)]
+    r.add(check, _field(cat, 0, src), _field(cat, 3, src), np.arange(bad.size),
+          lambda k: f"{names[k]} starts {float(angle[k]):.6g} deg from the current orientation")
 
 
 def _shape(r: Records, check: Check, b: Batch) -> None:
