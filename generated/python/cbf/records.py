@@ -141,15 +141,16 @@ def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDAr
 
 
 def _head(a: NDArray[np.uint8], off: NDArray[np.int64]) -> dict[str, Any]:
-    """The head fields of every record (role -> column), each its own small array: one gather
-    of the heads as structured items, then a copy of each field (1-, 2-, 4- and 8-byte fields;
-    others are assembled from their bytes)."""
+    """The head fields of every record (role -> column): one gather of the heads as opaque
+    items, each field a strided view of them (1-, 2-, 4- and 8-byte fields; others are assembled
+    from their bytes). The views hold the gathered heads, as many bytes as copies of every field
+    would, and spare a copy a field."""
     plain = [f for f in T.RECORD_FIELDS if f.size in (1, 2, 4, 8)]
     dtype = np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
                       "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
     rows = _gather(a, off, T.HEAD_SIZE)
     heads = rows.view(dtype)[:, 0]
-    out = {f.role or f.name: np.ascontiguousarray(heads[f.name]) for f in plain}
+    out = {f.role or f.name: heads[f.name] for f in plain}  # views of the rows (copies cost more than they save)
     for f in T.RECORD_FIELDS:
         if f not in plain:
             out[f.role or f.name] = _uint(rows, f)
@@ -226,16 +227,18 @@ _KEY = "(code, size)"  # r.state's key of _key's column (check ids are never thi
 
 
 @lru_cache(maxsize=16)
-def _size_order(version: str, profile: str) -> tuple[NDArray[np.int16], list[int], list[int]]:
-    """The layouts of ``_tables`` ordered by argument size (then as listed): per layout index + 1
-    its position + 1 (0: no layout fits), the layout index at each position, and where each run of
-    one size starts (a position, per position)."""
-    lays = _tables(version, profile)[4]
+def _size_order(version: str, profile: str) -> tuple[Any, list[int], list[int]]:
+    """The layouts of ``_tables`` ordered by argument size (then as listed): per (code, size) index
+    (``_key``) the position + 1 of its layout in that order (0: no layout fits; one byte while
+    there are fewer than 256 layouts: numpy's stable sort of bytes is one radix pass), the layout
+    index at each position, and where each run of one size starts (a position, per position)."""
+    lay_of, lays = _tables(version, profile)[3:]
     by_pos = sorted(range(len(lays)), key=lambda li: (lays[li].size, li))
-    rank = np.zeros(len(lays) + 1, dtype=np.int16)
-    rank[[li + 1 for li in by_pos]] = np.arange(1, len(lays) + 1, dtype=np.int16)
+    rank = np.zeros(len(lays) + 1, dtype=np.uint8 if len(lays) < 255 else np.int32)
+    rank[[li + 1 for li in by_pos]] = np.arange(1, len(lays) + 1)
+    pos_of = rank.take(lay_of.reshape(-1).astype(np.intp) + 1)
     first = [next(q for q in range(p + 1) if lays[by_pos[q]].size == lays[by_pos[p]].size) for p in range(len(by_pos))]
-    return rank, by_pos, first
+    return pos_of, by_pos, first
 
 
 def _batches(r: Records) -> Iterator[Batch]:
@@ -243,11 +246,8 @@ def _batches(r: Records) -> Iterator[Batch]:
     size are gathered together (one gather for several commands: a file of many layouts pays numpy's
     per-call cost once a size, not once a layout); each layout's rows are a slice of them."""
     lays = _tables(r.version, r.profile)[4]
-    rank, by_pos, first = _size_order(r.version, r.profile)
-    which = _tables(r.version, r.profile)[3].reshape(-1).take(_key(r))
-    which += 1  # 0: no layout fits
-    pos = rank.take(which)
-    del which
+    pos_of, by_pos, first = _size_order(r.version, r.profile)
+    pos = pos_of.take(_key(r))  # 0: no layout fits
     # the rows of every layout at once, by size then layout, each in file order: one stable sort
     order = np.argsort(pos, kind="stable")
     bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
@@ -451,7 +451,7 @@ def _carries(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
 def _unknown_code(r: Records, check: Check) -> None:
     code = r.head["code"]
     known = _tables(r.version, r.profile)[0]
-    bad = np.nonzero(~known[code])[0]
+    bad = np.flatnonzero(~known.take(code))  # take: several times a fancy index by a byte column
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_CODE].offset, bad,
           lambda i: f"unknown command code 0x{code[i]:02X}")
 
@@ -459,7 +459,7 @@ def _unknown_code(r: Records, check: Check) -> None:
 def _availability(r: Records, check: Check) -> None:
     code, version = r.head["code"], r.version
     known, avail = _tables(version, r.profile)[:2]
-    bad = np.flatnonzero((known & ~avail)[code])
+    bad = np.flatnonzero((known & ~avail).take(code))
     if bad.size == 0:
         return
     covering = availability_checks()  # (version, command) -> the one check that covers it
