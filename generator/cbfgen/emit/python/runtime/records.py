@@ -775,7 +775,7 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     v = start - center
     th = deg * (math.pi / 180.0)
     c, s = np.cos(th), np.sin(th)
-    kxv = np.cross(kk, v)
+    kxv = _cross(kk, v)
     kdv = (kk * v).sum(axis=1)
     rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
     end = center + rot + length[:, None] * kk
@@ -805,22 +805,18 @@ def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
     """The parts (one per layout; part[0] their rows, ascending) in the order to concatenate them,
     and the permutation that puts the concatenation in file order (None: it is in file order).
     When the parts do not interleave (a file of one motion command after a few set-up records),
-    their concatenation by first row is the file order: no permutation, no gather. Otherwise the
-    rows are distinct record numbers, so their order comes from a scatter into a table of the
-    records, not a sort."""
+    their concatenation by first row is the file order: no permutation, no gather. Otherwise a
+    stable sort of the concatenated rows: numpy's stable sort of 4- and 8-byte integers is a
+    timsort, which merges the parts' ascending runs (a few microseconds for thousands of rows,
+    where a scatter into a table of every record cost a pass over the file's records); a row in
+    two parts (two targets naming one argument) keeps the parts' order."""
     ordered = sorted((p for p in parts if len(p[0])), key=lambda p: int(p[0][0]))
     if ordered and all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:])):
         return ordered, None
     rows = np.concatenate([p[0] for p in parts])
     if rows.size == 0:
         return parts, None
-    at: Any = np.full(int(rows.max()) + 1, -1, dtype=np.int32 if rows.size < 1 << 31 else np.int64)
-    at[rows] = np.arange(rows.size, dtype=at.dtype)
-    order = at[at >= 0]
-    del at
-    if order.size != rows.size:  # a row twice (two targets naming one argument): sorted, stably
-        order = np.argsort(rows, kind="stable")
-    return parts, order
+    return parts, np.argsort(rows, kind="stable")
 
 
 def _field(parts: list[Any], j: int, pick: Any) -> Any:
@@ -842,6 +838,18 @@ def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
         return parts[0][0], list(parts[0][1:])
     cat, order = _merge_order(parts)
     return _field(cat, 0, order), [_field(cat, j, order) for j in range(1, len(parts[0]))]
+
+
+def _cross(a: Any, b: Any) -> Any:
+    """Row-wise cross products of n x 3 float64 arrays: the operations of ``np.cross`` in its
+    order (the same bits), without its axis handling (some twenty Python-level calls)."""
+    cp = np.empty(a.shape, dtype=np.float64)
+    tmp = np.empty(a.shape[0], dtype=np.float64)
+    for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):  # cp_i = a_j b_k - a_k b_j
+        np.multiply(a[:, j], b[:, k], out=cp[:, i])
+        np.multiply(a[:, k], b[:, j], out=tmp)
+        cp[:, i] -= tmp
+    return cp
 
 
 def _same_rows(x: Any, y: Any) -> Any:
@@ -896,7 +904,7 @@ def _orientation_end(r: Records, check: Check) -> None:
     s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
     prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
     s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
-    cx = np.cross(s, prev)
+    cx = _cross(s, prev)
     ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
     keep = s_ok & prev_ok & (ang > tol)
     bad = todo[keep]
@@ -922,13 +930,13 @@ def _shape_end(r: Records, check: Check) -> None:
     held = r.state.pop(check["id"], None)
     if held is None or not held["parts"]:
         return
+    parts = held["parts"]
+    if _shapes_balanced(parts, held["motion"]):
+        return
     motion = np.zeros(len(r.off) + 1, dtype=np.int32)  # 4 bytes a record: counts stay below 2**31 records
     for rows in held["motion"]:
         motion[rows + 1] = 1
     cm = np.cumsum(motion, out=motion)  # motions before each record
-    parts = held["parts"]
-    if _shapes_balanced(parts, cm):
-        return
     shape_rows = sorted((row, kind, bytes(names[k]), int(counts[k]), cname)
                         for rows, kind, names, counts, cname in parts for k, row in enumerate(rows.tolist()))
     off = r.off
@@ -955,11 +963,11 @@ def _shape_end(r: Records, check: Check) -> None:
         r.found(check, open_[0], int(off[open_[0]]), f"shape {string_value(open_[1])} is never closed")
 
 
-def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
+def _shapes_balanced(parts: list[Any], motion: list[Any]) -> bool:
     """True when the loop of _shape_end would find nothing: starts and ends alternate, from a
     start to an end, each end repeats its start's name and count, and the count is the number
-    of motions between them (cm: motions before each record). Only a quick yes: on False the
-    loop decides."""
+    of motions between them (motion: the rows of motion commands, ascending a part: counted by
+    binary search, no pass over the file's records). Only a quick yes: on False the loop decides."""
     if len({p[2].shape[1] for p in parts}) != 1:
         return False
     rows, (kinds, names, counts) = _in_file_order(
@@ -967,8 +975,13 @@ def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
     if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
         return False
     opened, closed = rows[0::2], rows[1::2]
-    return bool((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()
-                and (cm[closed] - cm[opened + 1] == counts[0::2]).all())
+    if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
+        return False
+    inside = np.zeros(len(opened), dtype=np.int64)  # motions after each start, before its end
+    for m in motion:
+        inside += np.searchsorted(m, closed)
+        inside -= np.searchsorted(m, opened + 1)
+    return bool((inside == counts[0::2]).all())
 
 
 Applies = Callable[[Check, T.LayoutInfo, T.CommandInfo], bool]
