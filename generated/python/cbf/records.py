@@ -309,10 +309,45 @@ class _Columns(Mapping[str, Any]):
         return len(self._raw)
 
 
+# Row reductions over the few components of a vector (n x 3): numpy sets its loop up for every
+# row, which made ``.all(axis=1)`` / ``.sum(axis=1)`` of 20,000 rows 5 to 10 times slower than the
+# same work done a column at a time. The helpers below work a column at a time.
 def _finite_rows(v: Any) -> Any:
     """Per row: every component finite."""
-    fin = np.isfinite(v)
-    return fin if fin.ndim == 1 else fin.all(axis=1)
+    if v.ndim == 1:
+        return np.isfinite(v)
+    fin = np.isfinite(v[:, 0])
+    for j in range(1, v.shape[1]):
+        fin &= np.isfinite(v[:, j])
+    return fin
+
+
+def _all_cols(m: Any) -> Any:
+    """Per row of a boolean matrix: every column true."""
+    out = m[:, 0].copy()
+    for j in range(1, m.shape[1]):
+        out &= m[:, j]
+    return out
+
+
+def _any_cols(m: Any) -> Any:
+    """Per row of a boolean matrix: some column true."""
+    out = m[:, 0].copy()
+    for j in range(1, m.shape[1]):
+        out |= m[:, j]
+    return out
+
+
+def _rowsum(x: Any) -> Any:
+    """``x.sum(axis=1)`` of a float64 matrix of fewer than 8 columns, with the same bits: numpy adds
+    such a row from +0.0, one element after the other (pairwise summation starts at 8), so the
+    columns are added to zeros in their order."""
+    if x.dtype != np.float64 or x.shape[1] >= 8:
+        return x.sum(axis=1)
+    out = np.zeros(x.shape[0], dtype=np.float64)
+    for j in range(x.shape[1]):
+        out += x[:, j]
+    return out
 
 
 # -- head kernels (every record) -------------------------------------------------------
@@ -592,7 +627,7 @@ def _nonzero_vector(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            bad = np.nonzero(np.isfinite(v).all(axis=1) & (v == 0.0).all(axis=1))[0]
+            bad = np.nonzero(_finite_rows(v) & _all_cols(v == 0.0))[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad, _const(f"{b.cmd.name}.{nm} has zero length"))
 
 
@@ -615,8 +650,8 @@ def _ordered(r: Records, check: Check, b: Batch) -> None:
         if not all(nm in cols for nm in names):
             continue
         vals = np.stack([cols[nm] for nm in names], axis=1)
-        fin = np.isfinite(vals).all(axis=1)
-        bad = np.nonzero(fin & (vals[:, :-1] > vals[:, 1:]).any(axis=1))[0]
+        fin = _finite_rows(vals)
+        bad = np.nonzero(fin & _any_cols(vals[:, :-1] > vals[:, 1:]))[0]
         r.add(check, b.rows[bad], b.aoff[bad], bad, _ordered_msg(cname, cols, names))
 
 
@@ -692,9 +727,9 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
         if not out.any():
             continue
         v = np.asarray(b.cols[f.name], dtype=np.float64).reshape(len(b.rows), -1)
-        keep = out & np.isfinite(v).all(axis=1)
+        keep = out & _finite_rows(v)
         if positive:
-            keep &= ~(v <= 0.0).any(axis=1)
+            keep &= ~_any_cols(v <= 0.0)
         bad = np.nonzero(keep)[0]
         r.add(check, b.rows[bad], b.at(f.name)[bad], bad, _breach(f"{b.cmd.name}.{f.name}", v, lim, positive))
 
@@ -767,16 +802,16 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]
     deg = cols[m["degrees"]]
     length = cols[m["length"]] if kind == "helix" else np.zeros(k)
-    ok = (np.isfinite(start).all(axis=1) & np.isfinite(center).all(axis=1) & np.isfinite(normal).all(axis=1)
+    ok = (_finite_rows(start) & _finite_rows(center) & _finite_rows(normal)
           & np.isfinite(deg) & np.isfinite(length))
-    nn = np.sqrt((normal * normal).sum(axis=1))
+    nn = np.sqrt(_rowsum(normal * normal))
     ok &= nn != 0.0
     kk = normal / nn[:, None]
     v = start - center
     th = deg * (math.pi / 180.0)
     c, s = np.cos(th), np.sin(th)
     kxv = _cross(kk, v)
-    kdv = (kk * v).sum(axis=1)
+    kdv = _rowsum(kk * v)
     rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
     end = center + rot + length[:, None] * kk
     end[~ok] = np.nan
@@ -871,8 +906,8 @@ def _continuity_end(r: Records, check: Check) -> None:
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
     dvec = start[todo].astype(np.float64)
     dvec -= end[todo - 1]
-    d = np.sqrt((dvec * dvec).sum(axis=1))
-    keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
+    d = np.sqrt(_rowsum(dvec * dvec))
+    keep = _finite_rows(start[todo]) & (d > T.TOL["position_mm"])
     bad = todo[keep]
     if bad.size == 0:
         return
@@ -902,10 +937,10 @@ def _orientation_end(r: Records, check: Check) -> None:
     # are measured (a valid file's paths all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
     s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
-    prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
-    s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
+    prev_ok = _finite_rows(prev) & (np.sqrt(_rowsum(prev * prev)) > 0.0)
+    s_ok = _finite_rows(s) & (np.sqrt(_rowsum(s * s)) > 0.0)
     cx = _cross(s, prev)
-    ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
+    ang = np.degrees(np.arctan2(np.sqrt(_rowsum(cx * cx)), _rowsum(s * prev)))
     keep = s_ok & prev_ok & (ang > tol)
     bad = todo[keep]
     if bad.size == 0:
