@@ -520,9 +520,38 @@ def _arg_size(r: Records, check: Check) -> None:
 
 
 # -- argument kernels (one layout at a time) -------------------------------------------
+_FLOAT_WORDS: dict[int, Any] = {}
+_EXPONENT32 = 0x7F800000  # a binary32 is not finite when these bits are all set
+
+
+def _float_words(lay: T.LayoutInfo) -> Any:
+    """The 4-byte words of a layout's arguments that hold its binary32 floats (a slice when they
+    are all of them), or None when its floats are not all binary32 at word offsets (made once a
+    layout)."""
+    key = id(lay)
+    if key not in _FLOAT_WORDS:
+        floats = [f for f in lay.args if f.kind == "float"]
+        ok = lay.size % 4 == 0 and all(f.numpy == "f4" and f.offset % 4 == 0 for f in floats)
+        words = [f.offset // 4 + k for f in floats for k in range(f.size // 4)] if ok else None
+        _FLOAT_WORDS[key] = (slice(None) if words == list(range(lay.size // 4)) else np.asarray(words, dtype=np.intp)
+                             ) if words is not None else None
+    return _FLOAT_WORDS[key]
+
+
+def _all_finite32(b: Batch) -> bool:
+    """True when every binary32 float of the batch is finite: one test of the exponent bits over
+    the floats' words as one flat run (no loop set-up a row); False when not known so."""
+    words = _float_words(b.lay)
+    if words is None or b.bytes_ is None:
+        return False
+    sel = b.bytes_.view(T.BO + "u4")[:, words].reshape(-1)
+    exp = np.uint32(_EXPONENT32)
+    return not (np.bitwise_and(sel, exp) == exp).any()
+
+
 def _finite(r: Records, check: Check, b: Batch) -> None:
     floats = [f for f in b.lay.args if f.kind == "float"]
-    if not floats:
+    if not floats or _all_finite32(b):
         return
     # A NaN or an infinity makes the sum not finite, so rows whose sum is finite hold only
     # finite floats; the others (an overflow too) are looked at field by field.
