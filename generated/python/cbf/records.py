@@ -603,6 +603,13 @@ def _plain_strings(b: Batch, name: str) -> bool:
     return got
 
 
+def _plain_bytes(raw: bytes) -> bool:
+    """One string field's bytes are printable ASCII then NULs only (plain Python: a header field
+    is one short row, where numpy's per-call cost is all there is)."""
+    text = raw.rstrip(b"\0")
+    return b"\0" not in text and all(0x20 <= c <= 0x7E for c in text)
+
+
 def _first_nul(b: Batch, name: str) -> Any:
     """Per row, where the first NUL of string argument ``name`` is (its size when none); made once
     for both string kernels."""
@@ -1182,8 +1189,11 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
 
 
 def header_string_findings(raw: bytes, offset: int, name: str) -> list[Finding]:
-    """The string checks of one header string field: the same kernels, one row, no record."""
+    """The string checks of one header string field: the same kernels, one row, no record (none
+    when the field is printable ASCII then NULs only: neither kernel flags that, as _plain_strings)."""
     out: list[Finding] = []
+    if _plain_bytes(raw):
+        return out
 
     def add(check: Check | None, rows: Any, offs: Any, keys: Any, msg: Message) -> None:
         if check is not None:
