@@ -833,7 +833,9 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     kind = m["kind"]
     if kind in ("point", "line"):
         end = cols[m["end"]][:, -3:].copy()  # a repeated group's last point (issue 25, point 3)
-        end[~_finite_rows(end)] = np.nan
+        fin = _finite_rows(end)
+        if not fin.all():
+            end[~fin] = np.nan
         return end
     start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]
     deg = cols[m["degrees"]]
