@@ -884,7 +884,7 @@ def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
     where a scatter into a table of every record cost a pass over the file's records); a row in
     two parts (two targets naming one argument) keeps the parts' order."""
     ordered = sorted((p for p in parts if len(p[0])), key=lambda p: int(p[0][0]))
-    if ordered and all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:])):
+    if ordered and all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:], strict=False)):
         return ordered, None
     rows = np.concatenate([p[0] for p in parts])
     if rows.size == 0:
