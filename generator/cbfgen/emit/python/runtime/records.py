@@ -408,7 +408,7 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
     if b.group is None:
         rows, data = b.rows, b.bytes_
     else:  # the layouts of one size: summed together, when the first of them comes
-        key = (check["id"], "group", b.group[0])
+        key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
         if key in r.state:
             return
         r.state[key] = True
