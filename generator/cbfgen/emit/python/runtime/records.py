@@ -224,6 +224,7 @@ def _key(r: Records) -> Any:
 
 
 _KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
+_NO_LAYOUT = "rows of no layout"  # r.state's key of the records no layout fits (made by _batches)
 
 
 @lru_cache(maxsize=16)
@@ -252,6 +253,7 @@ def _batches(r: Records) -> Iterator[Batch]:
     order = np.argsort(pos, kind="stable")
     bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
     del pos
+    r.state[_NO_LAYOUT] = order[:bounds[0]]  # position 0 first: the records no layout fits, in file order
     p, count = 0, len(by_pos)
     while p < count:
         q = p + 1
@@ -396,48 +398,55 @@ def _arg_sums(cov: tuple[str, int], rows: NDArray[np.uint8]) -> NDArray[np.int64
 
 
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
-    """The checksums of the records of a layout, from the argument bytes the batch gathered."""
+    """The checksums of the records of a layout (of every layout of its argument size, when the
+    first of them comes), from the argument bytes the batch gathered, against the stored ones."""
     cov = _head_coverage()
     if cov is None:
         return
-    held = r.state.get(check["id"])
-    if held is None:
-        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=r.head["checksum"].dtype),
-                                       np.zeros(len(r.off), dtype=bool))
-    sums, done = held
     if b.group is None:
         rows, data = b.rows, b.bytes_
-    else:  # the layouts of one size: summed together, when the first of them comes
+    else:
         key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
         if key in r.state:
             return
         r.state[key] = True
         rows, data = b.group[1], b.group[2]
-    sums[rows] = _arg_sums(cov, data)
-    done[rows] = True
+    r.state[check["id"]] = True  # the batches judge the records that have a layout
+    _report_sums(r, check, rows, _arg_sums(cov, data))
+
+
+def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
+    """The records ``rows`` whose stored argument checksum is not ``want`` (computed, per row)."""
+    got = r.head["checksum"][rows]
+    bad = np.flatnonzero(got != want)
+    if bad.size == 0:
+        return
+    bad = bad[np.argsort(rows[bad], kind="stable")]  # a size group's rows are by layout: in file order
+    at, stored, computed = rows[bad], got[bad], want[bad]
+    r.add(check, at, r.off[at] + T.ARG_CHECKSUM.offset, np.arange(bad.size),
+          lambda k: f"stored argument checksum {stored[k]}, computed {computed[k]}")
 
 
 def _arg_checksum(r: Records, check: Check) -> None:
     nb, chk, off, a, hs = r.head["arg_size"], r.head["checksum"], r.off, r.a, T.HEAD_SIZE
     cov = _head_coverage()
     if cov is not None:
-        # The batches summed the records of each layout; the others (no layout fits) are
-        # summed here, one argument size at a time, their arguments gathered as rows
-        # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
-        held = r.state.pop(check["id"], None)
-        sums, done = held if held is not None else (np.zeros(len(off), dtype=chk.dtype), np.zeros(len(off), dtype=bool))
-        left = np.flatnonzero(~done)
+        # The batches judged the records of each layout; the others (no layout fits: _batches
+        # keeps them) are summed here, one argument size at a time, their arguments gathered as
+        # rows (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
+        left = r.state.get(_NO_LAYOUT) if r.state.pop(check["id"], None) else None
+        if left is None:  # no batch judged any: every record here
+            left = np.arange(len(off))
         if left.size:
             nbl = nb[left]
             for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
                 rows = left[nbl == size]
-                sums[rows] = _arg_sums(cov, _gather(a, off[rows] + hs, size))
-        want = sums  # in the field's type: row_checksums gave each in the field's width
-        del sums, done
-    else:  # a coverage reaching outside the record (no spec has one): a record at a time
-        buf = r.buf
-        want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
-                         for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
+                _report_sums(r, check, rows, _arg_sums(cov, _gather(a, off[rows] + hs, size)))
+        return
+    # a coverage reaching outside the record (no spec has one): a record at a time
+    buf = r.buf
+    want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
+                     for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
     bad = np.nonzero(chk != want)[0]
     r.add(check, bad, off[bad] + T.ARG_CHECKSUM.offset, bad,
           lambda i: f"stored argument checksum {chk[i]}, computed {want[i]}")
