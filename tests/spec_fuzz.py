@@ -6,7 +6,8 @@ another name of the spec, a list item dropped or repeated, a key dropped, a valu
 type), plus the classes a hostile contributor found in issue 36 (each a fixed case, `CLASSES`).
 Each mutant is then either
 
-  refused   `cbfgen --check-spec` exits 2 with its lines and no traceback, or
+  refused   `cbfgen --check-spec` exits 2 with its lines and no traceback (`run` calls the loader in its
+            own process instead: the same verdict without a process a mutant), or
   accepted  and then generated (Python, C and the documents), the C tool compiled under the project's strict
             flags (mk/c.mk's rule, so the flags are the build's own), the Python package imported,
             and both tools run over the golden files: `cbf validate` and `cbf-c validate` must
@@ -18,7 +19,7 @@ a golden file), `broken:differ` (the two tools disagree), `broken:docs` (a docum
 anchor it lacks), `broken:cut-roundtrip` (the generated CUT
 writer's text of a golden file is refused, or read as other records, by the generated reader).
 
-    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR] [--loader-only]
+    python tests/spec_fuzz.py run [--seed N] [--count N] [--jobs N] [--keep DIR] [--loader-only] [--index I ...]
     python tests/spec_fuzz.py case NAME        one fixed class (CLASSES), its outcome
 
 `run` prints one line per mutant (seed, index, what changed, outcome) and a closing line with
@@ -31,6 +32,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import hashlib
 import json
 import os
 import random
@@ -40,10 +42,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
-from collections import Counter
+from collections import Counter, defaultdict, deque
 from collections.abc import Callable, Iterator
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -287,7 +290,7 @@ CLASSES: dict[str, tuple[Callable[[Any], str], str | None]] = {
     "vector_separator_is_arg_separator": (_separators_collide, "schema"),
     "clause_note_names_nothing": (_note_names_nothing, "notes"),
     "check_cites_no_clause": (_check_cites_no_clause, "clauses"),
-    "name_4096": (_long_name, "names"),
+    "name_4096": (_long_name, "schema"),
     "string_padding_32": (_set_path(("meta", "string_padding"), 32), "padding"),
     "range_min_negative_zero": (_range_min_negative_zero, "numbers"),
     "tolerance_nan": (_tolerance_nan, "numbers"),
@@ -401,8 +404,8 @@ def _dead_clause_links(docs: Path) -> str:
     return ""
 
 
-def judge(mutant: Mutant, work: Path) -> Outcome:
-    """Refused with a line, or generated, compiled, imported and run alike by both tools."""
+def judge(mutant: Mutant, work: Path, seen: dict[str, Outcome] | None = None) -> Outcome:
+    """Refused with a line by `cbfgen --check-spec` (a process), or built alike (``build``)."""
     work.mkdir(parents=True, exist_ok=True)
     spec = work / "cbf.yaml"
     spec.write_text(dump(mutant.doc), encoding="utf-8")
@@ -417,6 +420,28 @@ def judge(mutant: Mutant, work: Path) -> Outcome:
         if res.returncode == 2 and res.stderr.strip():
             return Outcome("refused", _first(res.stderr))
         return Outcome("crash:check-spec", f"exit {res.returncode}: {_first(res.stderr)}")
+    return build(spec, work, seen)
+
+
+def _digest(out: Path) -> str:
+    """What the Python package and the C tool are made of: two mutants with the same digest compile, import
+    and run alike (the golden files are the same), so the second reuses the first's outcome."""
+    h = hashlib.sha256()
+    for top in ("python", "c"):
+        for p in sorted((out / top).rglob("*")):
+            if p.is_file() and "__pycache__" not in p.parts:
+                h.update(p.relative_to(out).as_posix().encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+_SEEN = threading.Lock()
+
+
+def build(spec: Path, work: Path, seen: dict[str, Outcome] | None = None) -> Outcome:
+    """A spec the loader accepted: generated, compiled, imported and run alike by both tools. ``seen`` maps the
+    digest of a generated Python package and C tool to its outcome (the documents are judged every time)."""
+    py = sys.executable
+    env = dict(os.environ, PYTHONPATH=str(REPO / "generator"), PYTHONDONTWRITEBYTECODE="1")
     out = work / "gen"
     res = _run([py, "-m", "cbfgen", "--spec", str(spec), "--out", str(out), "--only", "python", "--only", "c",
                 "--only", "docs"],
@@ -428,6 +453,20 @@ def judge(mutant: Mutant, work: Path) -> Outcome:
     dead = _dead_clause_links(out / "docs")
     if dead:
         return Outcome("broken:docs", dead)
+    digest = _digest(out)
+    with _SEEN:
+        first = None if seen is None else seen.get(digest)
+    if first is not None:
+        return Outcome(first.kind, f"{first.detail} (its Python and C alike an earlier mutant's: not rebuilt)")
+    outcome = _compile_and_run(out, work)
+    if seen is not None:
+        with _SEEN:
+            seen[digest] = outcome
+    return outcome
+
+
+def _compile_and_run(out: Path, work: Path) -> Outcome:
+    py = sys.executable
     tool = work / "cbf-c"
     res = _run(["gcc", *_strict_flags(), "-O1", "-o", str(tool), str(out / "c" / "cbf_tool.c"), "-lm"], "compile",
                cwd=out / "c")
@@ -482,7 +521,8 @@ def judge_loader(mutant: Mutant, work: Path) -> Outcome:
     try:
         load(spec)
     except SpecError as exc:
-        return Outcome("refused", _first(str(exc)))
+        line = _first(str(exc))
+        return Outcome("refused", line) if line else Outcome("crash:check-spec", "a refusal without a line")
     except BaseException as exc:  # noqa: BLE001 - any other end of the loader is the finding
         return Outcome("crash:check-spec", f"{type(exc).__name__}: {exc}"[:200])
     finally:
@@ -491,41 +531,71 @@ def judge_loader(mutant: Mutant, work: Path) -> Outcome:
     return Outcome("accepted", "by the loader (not built: --loader-only)")
 
 
-def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False) -> int:
+def run(seed: int, count: int, jobs: int, keep: Path | None, loader_only: bool = False,
+        only: frozenset[int] = frozenset()) -> int:
+    """Every mutant through the loader in this process first (what `--check-spec` runs: a refusal is its
+    SpecError's lines, a crash any other end; a process each cost a second a mutant); the accepted ones,
+    unless ``loader_only``, then built in ``jobs`` threads, a mutant whose generated Python and C equal an
+    earlier one's reusing its outcome. ``only``: judge just these indexes of the campaign (its failing
+    mutants, again), the others drawn and skipped."""
     base = Path(tempfile.mkdtemp(prefix="spec-fuzz-"))
     counts: Counter[str] = Counter()
+    by_class: defaultdict[str, Counter[str]] = defaultdict(Counter)  # mutation class -> outcomes
     start = time.monotonic()
-    how = judge_loader if loader_only else judge
-    if loader_only:
-        sys.path.insert(0, str(REPO / "generator"))
-        jobs = 1  # in this process: the alarm is the main thread's
-        resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+    sys.path.insert(0, str(REPO / "generator"))
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))  # the loader's cap, as _cap gives --check-spec
+    seen: dict[str, Outcome] = {}
 
-    def one(item: tuple[int, Mutant]) -> tuple[int, Mutant, Outcome]:
-        i, m = item
-        work = base / f"m{i:05d}"
+    def built(spec: Path, work: Path) -> Outcome:
         try:
-            return i, m, how(m, work)
+            return build(spec, work, seen)
         finally:
             shutil.rmtree(work, ignore_errors=True)
 
     bad = 0
+    pending: deque[tuple[int, Mutant, Future[Outcome]]] = deque()
+
+    def report(block: bool) -> None:
+        nonlocal bad
+        while pending and (block or pending[0][2].done()):
+            i, m, fut = pending.popleft()
+            o = fut.result()
+            counts[o.kind] += 1
+            by_class[m.what.split(" ", 1)[0]][o.kind] += 1
+            bad += o.bad
+            print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
+            if keep is not None and o.bad:
+                keep.mkdir(parents=True, exist_ok=True)
+                (keep / f"seed{seed}-{i:05d}.yaml").write_text(dump(m.doc), encoding="utf-8")
+
     try:
         with ThreadPoolExecutor(max(1, jobs)) as pool:
-            results = map(one, mutants(seed, count)) if loader_only else pool.map(one, mutants(seed, count))
-            for i, m, o in results:
-                counts[o.kind] += 1
-                bad += o.bad
-                print(f"spec-fuzz seed {seed} #{i}: {m.what}: {o.kind}: {o.detail}", flush=True)
-                if keep is not None and o.bad:
-                    keep.mkdir(parents=True, exist_ok=True)
-                    (keep / f"seed{seed}-{i:05d}.yaml").write_text(dump(m.doc), encoding="utf-8")
+            for i, m in mutants(seed, count):
+                if only and i not in only:
+                    continue
+                work = base / f"m{i:05d}"
+                o = judge_loader(m, work)
+                if o.kind == "accepted" and not loader_only:
+                    pending.append((i, m, pool.submit(built, work / "cbf.yaml", work)))
+                else:
+                    shutil.rmtree(work, ignore_errors=True)
+                    done: Future[Outcome] = Future()
+                    done.set_result(o)
+                    pending.append((i, m, done))
+                while len(pending) > 4 * max(1, jobs) and not pending[0][2].done():
+                    wait([pending[0][2]])  # the loader no further ahead of the builds than a few mutants
+                report(False)
+            report(True)
     finally:
         shutil.rmtree(base, ignore_errors=True)
     took = time.monotonic() - start
     by = ", ".join(f"{n} {k}" for k, n in sorted(counts.items()))
+    rebuilt = f"; {len(seen)} distinct builds" if not loader_only else ""
     print(f"spec-fuzz: {sum(counts.values())} mutants (seed {seed}) in {took:.0f} s: {by}; "
-          f"{bad} crashed or accepted-but-broken")
+          f"{bad} crashed or accepted-but-broken{rebuilt}")
+    print("spec-fuzz: by mutation class: " + "; ".join(
+        f"{name} {sum(c.values())} ({', '.join(f'{n} {k}' for k, n in sorted(c.items()))})"
+        for name, c in sorted(by_class.items())))
     return 1 if bad else 0
 
 
@@ -537,6 +607,8 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--count", type=int, default=1000)
     r.add_argument("--jobs", type=int, default=1)
     r.add_argument("--keep", type=Path, help="write each crashing or broken mutant's spec here")
+    r.add_argument("--index", type=int, action="append", default=[],
+                   help="judge only this mutant of the campaign (repeatable): its failing mutants again")
     r.add_argument("--loader-only", action="store_true",
                    help="judge each mutant by the loader alone, in this process (refused, accepted, or a crash)")
     c = sub.add_parser("case", help="one fixed class of issue 36")
@@ -549,7 +621,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{m.what}: {o.kind}: {o.detail}")
             return 1 if o.bad else 0
     seed = a.seed if a.seed is not None else int(time.time())
-    return run(seed, a.count, a.jobs, a.keep, a.loader_only)
+    return run(seed, a.count, a.jobs, a.keep, a.loader_only, frozenset(a.index))
 
 
 if __name__ == "__main__":

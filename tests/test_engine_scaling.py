@@ -28,7 +28,7 @@ from typing import Any
 
 import engine_probe
 import pytest
-from conftest import REPO
+from conftest import REPO, cbfgen_here
 from revisions import drill
 
 from cbfgen.loader import load
@@ -136,8 +136,9 @@ def _revised_together(tmp: Path) -> Path:
     top of the others fails here."""
     base = path = REPO / "spec" / "cbf.yaml"
     for fx_path in drill.fixtures():
-        fx = drill.load_fixture(fx_path, drill.read_spec(path))
-        new = drill.revised_spec(fx, path, tmp / fx.name)
+        doc = drill.read_spec(path)  # parsed once: the fixture renders for it, then revised_spec edits it
+        fx = drill.load_fixture(fx_path, doc)
+        new = drill.revised_spec(fx, path, tmp / fx.name, doc)
         if not _loads(new) and not _loads(drill.revised_spec(fx, base, tmp / f"{fx.name}.alone")):
             continue
         path = new
@@ -149,9 +150,8 @@ def test_calls_do_not_grow_with_records_on_every_revision(tmp_path: Path) -> Non
     assert drill.fixtures(), "no revision fixture found"
     spec = _revised_together(tmp_path)
     out = tmp_path / "gen"
-    done = subprocess.run([sys.executable, "-m", "cbfgen", "--spec", str(spec), "--out", str(out), "--only", "python",
-                           "--no-ksc"], capture_output=True, text=True, check=False, cwd=REPO)
-    assert done.returncode == 0, done.stderr
+    code, _, err = cbfgen_here("--spec", str(spec), "--out", str(out), "--only", "python", "--no-ksc")
+    assert code == 0, err
     probe = subprocess.run([sys.executable, str(REPO / "tests" / "engine_probe.py"), "2"], capture_output=True,
                            text=True, check=False, cwd=tmp_path,
                            env={"PYTHONPATH": str(out / "python"), "PATH": "/usr/bin:/bin"})

@@ -3,10 +3,12 @@
 records.py skips work where a quick test shows there is nothing to find: the batch kernels of
 a layout are planned once (``Kernel.applies``: a kernel is not called on a layout it has
 nothing in), and a string column that is printable ASCII then NULs only, tested as a whole, is
-not looked at row by row. Here the same files are validated with the shortcuts and without
-them (every batch kernel on every layout, every string column row by row), and the row gather
-and the argument byte sums are compared with plain Python. These are the engine's own private
-helpers, so the test reaches into records.py on purpose.
+not looked at row by row, nor a layout's binary32 floats whose exponent bits, tested as one flat
+run, show them all finite, nor a header string field that is plain. Here the same files are
+validated with the shortcuts and without them (every batch kernel on every layout, every string
+column row by row, every float field by field, every header string by the kernels), and the row
+gather and the argument byte sums are compared with plain Python. These are the engine's own
+private helpers, so the test reaches into records.py on purpose.
 """
 
 from __future__ import annotations
@@ -35,6 +37,8 @@ def _both(data: bytes, **opts: Any) -> tuple[list[cbf.Finding], list[cbf.Finding
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(records, "_plan", _all_kernels)
         mp.setattr(records, "_plain_strings", lambda b, name: False)
+        mp.setattr(records, "_all_finite32", lambda b: False)
+        mp.setattr(records, "_plain_bytes", lambda raw: False)
         slow = cbf.validate(data, **opts)
     return fast, slow
 

@@ -38,7 +38,7 @@ from conftest import HYPOTHESIS_PROFILE, REPO, dump_yaml, spec_doc
 from hypothesis import Phase, example, given, settings
 from hypothesis import strategies as st
 
-from cbfgen import escape
+from cbfgen import escape, prose
 from cbfgen.emit import kaitai as kaitai_emit
 from cbfgen.emit import python as python_emit
 from cbfgen.loader import MAX_DEPTH, MAX_NODES, SpecError, load
@@ -366,9 +366,14 @@ def hostile_spec(text: str) -> tuple[dict[str, Any], dict[str, str]]:
     header["doc"] = cmd["layouts"][0]["doc"] = text  # a header's and a layout's own doc
     check = next(c for c in doc["checks"] if c["kind"] not in ("magic", "code_copy", "arg_size", "availability"))
     cmd["doc"] = arg["doc"] = field["doc"] = check["text"] = text
-    # A decision's text names facts by {{placeholder}} (cbfgen.prose), and the loader refuses any other "{{" or
-    # "}}" there with its line: the decision gets the text with each doubled brace spaced apart, all else intact.
-    doc["decisions"][0]["decision"] = re.sub(r"\}(?=\})", "} ", re.sub(r"\{(?=\{)", "{ ", text))
+    # A decision's text may name a fact by placeholder ({{name}}, cbfgen.prose), rendered at load; any
+    # other '{{' or '}}' there is refused (bad spec prose_unknown_fact). The decision gets the text with
+    # those pairs spaced ("{ {"), so it still carries '{', '}', '{%' and the rest to every emitter.
+    decision = text
+    while "{{" in decision or "}}" in decision:
+        decision = decision.replace("{{", "{ {").replace("}}", "} }")
+    assert not prose.unknown(decision)
+    doc["decisions"][0]["decision"] = decision
     doc["meta"]["title"] = doc["meta"]["document"] = text  # the title reaches packages, the document a doc-ref
     return doc, {"command": cmd["name"], "arg": arg["name"], "field": field["name"], "check": str(check["id"]),
                  "header": next(iter(doc["headers"]))}

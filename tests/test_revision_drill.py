@@ -15,6 +15,7 @@ import re
 import shutil
 import subprocess
 import sys
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -49,6 +50,16 @@ def load(path: Path) -> Spec:
 _PARSED: dict[bytes, Any] = {}
 
 
+@pytest.fixture(scope="module", autouse=True)
+def _forget() -> Iterator[None]:
+    """The caches of this file dropped when it ends: the specs, parsed texts and fixtures it kept (320,000
+    objects) would stay alive in the xdist worker for every later file, and every full collection there
+    (gc.collect, or the collector's own) would walk them again."""
+    yield
+    for cache in (_LOADED, _PARSED, _FOR):
+        cache.clear()
+
+
 def _read_spec(path: Path) -> Any:
     """drill.read_spec(path), parsed once per text (a copy of its own each call: the caller may edit it)."""
     text = Path(path).read_bytes()
@@ -62,7 +73,7 @@ def test_the_kinds_of_revision_are_drilled_and_classed_as_a_format_owner_would()
     """The fixtures make each kind of revision, and each states the class a format owner gives it: a new
     version is not breaking, a layout change to an existing version is wire-breaking, a rename is
     text-breaking and not wire-breaking (test_cbfgen_diff_classifies_the_fixture holds cbfgen diff to it)."""
-    fixtures = [drill.load_fixture(p) for p in FIXTURES]
+    fixtures = [_fixture_for(p, SPEC) for p in FIXTURES]
     kinds = {(w["kind"], w.get("breaking")) for fx in fixtures for w in fx.expect}
     assert len(FIXTURES) >= 5
     assert {("command_added", True), ("version_added", False), ("command_removed", False), ("field_retyped", True),
@@ -81,7 +92,7 @@ def test_the_quick_drill_leaves_out_only_what_an_in_tree_test_makes() -> None:
     """`make test` makes every fixture's kind of revision: in the quick drill, or in the in-tree
     test IN_TREE names, which revises a copy of the spec the same way (a new command, another
     checksum algorithm) and runs generation and the bindings on it."""
-    names = {drill.load_fixture(p).name for p in FIXTURES}
+    names = {_fixture_for(p, SPEC).name for p in FIXTURES}
     assert set(drill.IN_TREE) < names, "IN_TREE names a fixture that does not exist, or every fixture"
     kinds = {"new_command": "command_added", "checksum_profile": "profile_checksum_algorithm_changed"}
     for name, test in drill.IN_TREE.items():
@@ -95,12 +106,12 @@ def test_the_quick_fixtures_apply_together(tmp_path: Path) -> None:
     """The quick drill applies its fixtures to one tree: their spec edits, one after the other, give a spec
     the loader accepts that holds each fixture's own revision (each changes what cbfgen diff says of it
     alone), and no two of them add the same file."""
-    quick = [drill.load_fixture(p) for p in FIXTURES if p.stem not in drill.IN_TREE]
+    quick = [_fixture_for(p, SPEC) for p in FIXTURES if p.stem not in drill.IN_TREE]
     assert len(quick) > 1
     path, added = SPEC, list[str]()
     for fx in quick:  # as drill.apply does: each fixture's ids chosen for the spec the ones before it left
-        added += drill.load_fixture(fx.path, drill.read_spec(path)).files
-        path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}")
+        added += _fixture_for(fx.path, path).files
+        path = drill.revised_spec(fx, path, tmp_path / f"then_{fx.name}", _read_spec(path))
     together, before = load(path), len(load(SPEC).versions)
     names = {c.name for c in load(SPEC).commands}
     new_versions = 0
@@ -198,7 +209,7 @@ def test_a_fixture_that_does_not_apply_names_the_edit(tmp_path: Path) -> None:
 
 
 def _fixture_with(breaking: bool) -> drill.Fixture:
-    return next(fx for fx in map(drill.load_fixture, FIXTURES) if fx.breaking == breaking)
+    return next(fx for fx in (_fixture_for(p, SPEC) for p in FIXTURES) if fx.breaking == breaking)
 
 
 def test_make_breaking_reads_the_spec_at_a_git_ref(tmp_path: Path) -> None:
@@ -259,16 +270,29 @@ def test_the_readme_lists_no_versions_by_hand() -> None:
         assert not re.search(r"(?<![\w.])\d\.[\dx]\|\d\.[\dx](?![\w])", line), f"README.md:{n}: {line}"
 
 
+_FOR: dict[tuple[Path, bytes], drill.Fixture] = {}
+
+
+def _fixture_for(path: Path, base: Path) -> drill.Fixture:
+    """drill.load_fixture(path, drill.read_spec(base)), once per fixture and base text: a pair's revision, its
+    files and its judged diff all read the fixture as it reads for the base (a Fixture is frozen; its edits are
+    read, never changed: revised_spec renders its own copy)."""
+    key = (path, hashlib.sha256(Path(base).read_bytes()).digest())
+    if key not in _FOR:
+        _FOR[key] = drill.load_fixture(path, _read_spec(base))
+    return _FOR[key]
+
+
 def _revised(fx: drill.Fixture, base: Path, out: Path) -> tuple[Path, drill.Fixture]:
     """base revised by fx into out, and fx as it reads for base (its ids chosen there)."""
-    return drill.revised_spec(fx, base, out), drill.load_fixture(fx.path, _read_spec(base))
+    return drill.revised_spec(fx, base, out, _read_spec(base)), _fixture_for(fx.path, base)
 
 
 def _judged(fx: drill.Fixture, base: Path, revised: Path, models: tuple[Spec, Spec] | None = None) -> list[str]:
     """drill.check_diff in this process: what cbfgen diff of base against revised says, judged for fx (models: the
     two specs already loaded, each load about a third of a pair's time)."""
     d = diff(*(models or (load(base), load(revised))))
-    return drill.judge(drill.load_fixture(fx.path, _read_spec(base)), d.exit_code, d.as_json())
+    return drill.judge(_fixture_for(fx.path, base), d.exit_code, d.as_json())
 
 
 @pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
@@ -276,13 +300,13 @@ def test_each_fixture_applies_on_top_of_each_other(first: Path, tmp_path: Path) 
     """Fixture B applied to fixture A's revised spec (every ordered pair, the spec edits only) gives a spec the
     loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause taken
     twice) and cbfgen diff of A's spec against it says what B states."""
-    a = drill.load_fixture(first)
+    a = _fixture_for(first, SPEC)
     base, a_here = _revised(a, SPEC, tmp_path / "a")
     spec_a = load(base)
     for other in FIXTURES:
         if other == first:
             continue
-        b = drill.load_fixture(other)
+        b = _fixture_for(other, SPEC)
         both, b_there = _revised(b, base, tmp_path / f"a_{other.stem}")
         spec = load(both)  # the loader's checks (make check-spec)
         assert len({c.code for c in spec.commands}) == len(spec.commands), (first.stem, other.stem)
@@ -316,14 +340,14 @@ def test_the_fixtures_apply_after_a_real_revision(tmp_path: Path) -> None:
     would commit it), and one whose layouts moved, take every fixture, new_version again included: the next
     free version, code and clause are chosen there, the loader accepts the result and cbfgen diff says what
     each fixture states."""
-    adds_version = next(fx for fx in map(drill.load_fixture, FIXTURES)
+    adds_version = next(fx for fx in (_fixture_for(p, SPEC) for p in FIXTURES)
                         if any(w["kind"] == "version_added" for w in fx.expect))
     real = drill.revised_spec(adds_version, SPEC, tmp_path / "real")
     newest = max(load(real).versions, key=lambda v: (v.major, v.minor or 0)).id
     assert newest not in {v.id for v in load(SPEC).versions}
     for base in (real, _layouts_moved(tmp_path)):
         for path in FIXTURES:
-            fx = drill.load_fixture(path)
+            fx = _fixture_for(path, SPEC)
             revised, there = _revised(fx, base, tmp_path / base.parent.name / path.stem)
             load(revised)
             assert _judged(fx, base, revised) == [], (base, path.stem)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import shutil
 from pathlib import Path
+from typing import Any
 
 import pytest
 import spec_fuzz
@@ -38,6 +39,9 @@ def test_the_fixed_sample_is_refused_or_built_alike(index: int, tmp_path: Path) 
     i, m = next((i, m) for i, m in mutants(SAMPLE_SEED, SAMPLE_COUNT) if i == index)
     outcome = judge(m, tmp_path)
     assert outcome.kind in ("refused", "accepted"), f"#{i} {m.what}: {outcome.kind}: {outcome.detail}"
+    # `run` judges refusal by the loader in its own process: the same verdict as `cbfgen --check-spec`
+    in_process = spec_fuzz.judge_loader(m, tmp_path / "in-process")
+    assert in_process.kind == outcome.kind if outcome.kind == "refused" else in_process.kind == "accepted", in_process
 
 
 def test_the_mutator_is_derandomised_and_changes_the_spec() -> None:
@@ -66,3 +70,29 @@ def test_a_crash_and_a_difference_are_findings(tmp_path: Path) -> None:
     doc["commands"] = "not a list"
     outcome = judge(spec_fuzz.Mutant("type commands", doc), tmp_path)
     assert outcome.kind == "refused" and outcome.detail, outcome
+
+
+def test_every_key_of_the_schema_has_a_type() -> None:
+    """The class of seed 2026120605 #505 (meta.part_number null: accepted, generation died): a key the
+    schema names but does not type, or an object open to keys it does not name, lets a value no
+    emitter expects through. Every property of the loader's schema (enums filled) is typed, every
+    object with properties closed."""
+    from cbfgen.loader.schema import schema
+
+    loose: list[str] = []
+
+    def walk(node: Any, path: str) -> None:
+        if isinstance(node, dict):
+            for key, sub in node.get("properties", {}).items():
+                if not {"type", "enum", "$ref", "const", "oneOf", "anyOf", "allOf"} & set(sub):
+                    loose.append(f"{path}/{key}: no type")
+            if node.get("type") == "object" and "properties" in node and "additionalProperties" not in node:
+                loose.append(f"{path}: open to other keys")
+            for key, sub in node.items():
+                walk(sub, f"{path}/{key}")
+        elif isinstance(node, list):
+            for i, sub in enumerate(node):
+                walk(sub, f"{path}[{i}]")
+
+    walk(schema(), "")
+    assert not loose, loose

@@ -541,9 +541,10 @@ def apply(fx: Fixture, root: Path) -> None:
         (root / rel).write_text(text, encoding="utf-8")
 
 
-def revised_spec(fx: Fixture, base: Path, out: Path) -> Path:
-    """The spec at base, revised by fx (its ids chosen for base), written to out/cbf.yaml (no other file)."""
-    doc = read_spec(base)
+def revised_spec(fx: Fixture, base: Path, out: Path, parsed: Any = None) -> Path:
+    """The spec at base, revised by fx (its ids chosen for base), written to out/cbf.yaml (no other file).
+    parsed: read_spec(base) when the caller has it (a copy of its own: it is edited)."""
+    doc = read_spec(base) if parsed is None else parsed
     fx = load_fixture(fx.path, doc)
     for i, edit in enumerate(fx.edits):
         if str(edit.get("file", SPEC)) == SPEC:

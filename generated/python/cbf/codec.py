@@ -76,14 +76,17 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
             code = a[s + f_code.offset:e + f_code.offset]
             np.equal(code, a[s + f_copy.offset:e + f_copy.offset], out=ok)
             if not known[0]:  # runs of zero bytes (zero floats) look like heads otherwise
-                np.logical_and(ok, code, out=ok)  # the code is not 0
+                np.logical_and(ok, code.view(np.bool_), out=ok)  # the code is not 0 (bytes as bools: no cast)
         else:
             ok = np.ones(e - s, dtype=bool)
         if f_res.size == 1:
             np.greater(ok, a[s + f_res.offset:e + f_res.offset], out=ok)  # True (1) > the byte: it is 0
         found = np.flatnonzero(ok) + s
         if f_code.size == 1:  # a table look-up costs more than a comparison: on the few left only
-            found = found[sized[a[found + f_code.offset], a[found + at]]]
+            key = a[found + f_code.offset].astype(np.intp)  # (code, size) as one index: a 1-d take
+            key <<= 8
+            key += a[found + at]
+            found = found[sized.reshape(-1).take(key)]
         parts.append(found)
     cand = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
     del parts

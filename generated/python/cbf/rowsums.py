@@ -34,21 +34,29 @@ Rows = Any  # NDArray[np.uint8], rows x bytes
 _BLOCK = 1 << 13  # rows widened at once (memory: a few hundred KiB however many rows)
 
 
-def _blocks(rows: Rows, fn: Callable[[Rows], Any]) -> NDArray[np.int64]:
-    if rows.shape[0] <= _BLOCK:
+def _blocks(rows: Rows, fn: Callable[[Rows], Any], block: int = _BLOCK) -> NDArray[np.int64]:
+    if rows.shape[0] <= block:
         return fn(rows).astype(np.int64, copy=False)  # type: ignore[no-any-return]
     out = np.empty(rows.shape[0], dtype=np.int64)
-    for s in range(0, rows.shape[0], _BLOCK):
-        out[s:s + _BLOCK] = fn(rows[s:s + _BLOCK])
+    for s in range(0, rows.shape[0], block):
+        out[s:s + block] = fn(rows[s:s + block])
     return out
 
 
+_EXACT32 = 1 << 24  # binary32 holds every integer below this, so sums below it add exactly
+
+
 def _sum(rows: Rows) -> NDArray[np.int64]:
-    """The byte sum of each row. einsum's loop is about three times faster than numpy's row
-    reduction on rows of a few bytes; it adds in the type of its input, so the rows are widened
-    to the narrowest type that holds 255 x the row width (exact)."""
-    wide = np.uint16 if rows.shape[1] * 255 < 1 << 16 else np.int64
-    return _blocks(rows, lambda part: np.einsum("ij->i", part.astype(wide)))
+    """The byte sum of each row. Rows whose sum stays below 2**24 are widened to binary32 and
+    multiplied by a vector of ones (one matrix-vector product: every partial sum is an integer
+    below 2**24, so exact in any order), about twice as fast as einsum on uint16, which in turn
+    is three times faster than numpy's row reduction on rows of a few bytes; half the rows a
+    block, so the widened copy holds what the uint16 one did. Wider rows: einsum on int64."""
+    width = rows.shape[1]
+    if width * 255 < _EXACT32:
+        ones = np.ones(width, dtype=np.float32)
+        return _blocks(rows, lambda part: part.astype(np.float32) @ ones, _BLOCK // 2)
+    return _blocks(rows, lambda part: np.einsum("ij->i", part.astype(np.int64)))
 
 
 def _weighted(rows: Rows, modulus: int) -> NDArray[np.int64]:

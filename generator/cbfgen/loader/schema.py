@@ -10,6 +10,7 @@ from typing import Any
 
 import jsonschema
 
+from ..escape import NAME_MAX
 from ..registry import ALGORITHMS, CHECK_KINDS, FIELD_KINDS, ROLE_KINDS, SEVERITIES, TYPES
 from .problems import Problem
 from .yaml_reader import Map, line_of_path
@@ -32,7 +33,28 @@ def schema() -> dict[str, Any]:
     command = out["properties"]["commands"]["items"]["properties"]
     for role, kinds in ROLE_KINDS.items():
         command[role]["allOf"][1]["properties"]["kind"] = {"enum": list(kinds)}
+    _bound_names(out)
     return out
+
+
+def _bound_names(out: dict[str, Any]) -> None:
+    """Every name of the spec no longer than every binding takes (escape.NAME_MAX): the names of
+    $defs and every key of a map. A layout variant of 4,098 characters passed and generation died
+    writing a file named by it (spec-fuzz seed 2026120606 #90)."""
+    for name in ("name", "cmdname", "keyword"):
+        out["$defs"][name]["maxLength"] = NAME_MAX
+
+    def walk(node: Any) -> None:
+        if isinstance(node, dict):
+            if isinstance(node.get("additionalProperties"), dict):
+                node.setdefault("propertyNames", {})["maxLength"] = NAME_MAX
+            for sub in node.values():
+                walk(sub)
+        elif isinstance(node, list):
+            for sub in node:
+                walk(sub)
+
+    walk(out)
 
 
 def _integer(_checker: Any, value: Any) -> bool:
@@ -58,8 +80,16 @@ def shape_problems(raw: Map) -> list[Problem]:
     out = []
     for e in errors:
         where = "/".join(str(p) for p in e.absolute_path) or "(top)"
-        out.append(Problem("schema", "error", line_of_path(raw, e.absolute_path), f"schema: {where}: {e.message}"))
+        out.append(Problem("schema", "error", line_of_path(raw, e.absolute_path), f"schema: {where}: {_message(e)}"))
     return out
+
+
+def _message(e: jsonschema.ValidationError) -> str:
+    """jsonschema's message, but a name (or a map's key) over NAME_MAX by its length, not the 4,096
+    characters again."""
+    if str(e.validator) == "maxLength" and isinstance(e.instance, str):
+        return f"a name of {len(e.instance)} characters; every binding takes at most {NAME_MAX} (escape.NAME_MAX)"
+    return str(e.message)
 
 
 # Why pieces: a `load()` spent 0.09 CPU s in jsonschema on the whole spec, and the tests load hundreds

@@ -72,13 +72,22 @@ def canary(b: Browser, out: Path) -> list[str]:
     return []
 
 
+# The layout is forced first (a <picture> chooses its source at layout after a resize), and every image
+# must be complete on two polls in a row: right after a resize the old drawing is still complete until
+# the browser starts loading the one the new width selects (docs-check saw "image not loaded" of a
+# drawing that loaded a moment later, on a loaded machine).
+SETTLED = "document.body.offsetHeight >= 0 && Array.from(document.images).every(i => i.complete)"
+
+
 def settle(b: Browser, seconds: float = 10.0) -> None:
     """Wait until every image of the page has loaded or failed (complete), at most seconds."""
     import time
 
     deadline = time.monotonic() + seconds
-    while not b.evaluate("Array.from(document.images).every(i => i.complete)") and time.monotonic() < deadline:
-        time.sleep(0.02)
+    calm = 0
+    while calm < 2 and time.monotonic() < deadline:
+        calm = calm + 1 if b.evaluate(SETTLED) else 0
+        time.sleep(0.05)
 
 
 def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTHS) -> list[str]:
@@ -96,6 +105,9 @@ def check_page(b: Browser, page: Path, rel: str, widths: tuple[int, ...] = WIDTH
                    {"width": width, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": False})
             settle(b)  # a <picture> may load another drawing at this width
         probe = json.loads(b.evaluate(PROBE))
+        if probe["broken"]:  # one that was switching source when probed is judged once settled
+            settle(b)
+            probe = json.loads(b.evaluate(PROBE))
         if probe["scroll"] > probe["client"]:
             problems.append(f"{rel} @{width}px: horizontal overflow ({probe['scroll']} px wide in "
                             f"{probe['client']} px)")

@@ -10,9 +10,16 @@ from .checksums import fits
 
 @define("profiles", "resolve", reads=("raw",), produces=("profiles",))
 def PROFILES(ctx: Problems, st: State) -> None:
-    """The profiles, in the spec's order."""
-    st.profiles = tuple(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]),
-                                tuple(p["hint_coverages"]), p.get("file_algorithm")) for p in st.raw["profiles"])
+    """The profiles, in the spec's order; a duplicate id is refused (and left out): the C binding
+    names each profile once (a profile repeated broke generation: spec-fuzz seed 2026120607 #214)."""
+    out: list[Profile] = []
+    for p in st.raw["profiles"]:
+        if any(o.id == p["id"] for o in out):
+            ctx.fail(p, f"duplicate profile id {p['id']!r}", "id")
+            continue
+        out.append(Profile(p["id"], str(p["doc"]).strip(), tuple(p["file_coverages"]), tuple(p["hint_coverages"]),
+                           p.get("file_algorithm")))
+    st.profiles = tuple(out)
 
 
 @define("profile-refs", "check",

@@ -46,15 +46,16 @@ def _shapes(ctx: Problems, t: Map, cmd: Command, cid: str, kname: str) -> None:
 
 @define("check-targets", "check", reads=("bare_commands", "machine", "raw_checks"))
 def CHECK_TARGETS(ctx: Problems, st: State) -> None:
-    """Each target names a command and arguments it has, each once (a name twice made the bindings
-    judge it a different number of times: spec-fuzz mutant 240 of seed 3601), of the shape its kind
-    reads, and names a
-    machine limit exactly when its kind is limited (registry.LoaderRules.limits), one its
-    arguments fit."""
+    """Each target names a command and arguments it has, each once, and no argument another target of
+    the check names (a whole kind: no target twice) (a name twice made the bindings judge it a
+    different number of times: spec-fuzz mutant 240 of seed 3601, and a machine_limits target twice
+    mutant 194 of seed 2026120606), of the shape its kind reads, and names a machine limit exactly
+    when its kind is limited (registry.LoaderRules.limits), one its arguments fit."""
     by_name = {c.name: c for c in st.bare_commands}
     for cid, ch in st.raw_checks.items():
         kname = ch["kind"]
         limited = loader_rules(kname).limits
+        named: set[tuple[str, ...]] = set()
         for t in ch.get("targets", []):
             cmd = by_name.get(t["command"])
             if cmd is None:
@@ -63,6 +64,13 @@ def CHECK_TARGETS(ctx: Problems, st: State) -> None:
             twice = sorted({a for a in t["args"] if list(t["args"]).count(a) > 1})
             if twice:
                 ctx.fail(t, f"check {cid}: target {cmd.name} names argument {twice[0]} twice", "args")
+                continue
+            mine = {(cmd.name, *t["args"])} if CHECK_KINDS[kname].whole else {(cmd.name, a) for a in t["args"]}
+            again = sorted(mine & named)
+            named |= mine
+            if again:
+                ctx.fail(t, f"check {cid}: {'.'.join(again[0][:2])}{'...' if len(again[0]) > 2 else ''} is "
+                            f"named by another target of the check as well", "args")
                 continue
             _shapes(ctx, t, cmd, cid, kname)
             if ("limit" in t) != limited:

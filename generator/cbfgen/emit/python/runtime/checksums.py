@@ -36,7 +36,9 @@ def _byte_sum(part: Buffer) -> int:
         return sum(part)
     import numpy as np
 
-    return int(np.frombuffer(part, dtype=np.uint8).sum(dtype=np.uint64))
+    # numpy adds uint32 about three times faster than uint64; exact while 255 x the length fits
+    acc = np.uint32 if len(part) * 255 < 1 << 32 else np.uint64
+    return int(np.frombuffer(part, dtype=np.uint8).sum(dtype=acc))
 
 
 def byte_sum(parts: Iterable[Buffer]) -> int:

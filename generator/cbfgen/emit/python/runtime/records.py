@@ -59,6 +59,9 @@ class Batch:
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
     plain: dict[str, bool] = field(default_factory=dict)  # string argument -> every row a plain string
     bytes_: Any = None  # the argument bytes, rows x layout size
+    # the records of every layout of this argument size the file uses, batched together: (the
+    # position of the first layout in _size_order, their rows, their argument bytes)
+    group: tuple[int, Any, Any] | None = None
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -138,15 +141,16 @@ def _gather(a: NDArray[np.uint8], starts: NDArray[np.int64], width: int) -> NDAr
 
 
 def _head(a: NDArray[np.uint8], off: NDArray[np.int64]) -> dict[str, Any]:
-    """The head fields of every record (role -> column), each its own small array: one gather
-    of the heads as structured items, then a copy of each field (1-, 2-, 4- and 8-byte fields;
-    others are assembled from their bytes)."""
+    """The head fields of every record (role -> column): one gather of the heads as opaque
+    items, each field a strided view of them (1-, 2-, 4- and 8-byte fields; others are assembled
+    from their bytes). The views hold the gathered heads, as many bytes as copies of every field
+    would, and spare a copy a field."""
     plain = [f for f in T.RECORD_FIELDS if f.size in (1, 2, 4, 8)]
     dtype = np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
                       "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
     rows = _gather(a, off, T.HEAD_SIZE)
     heads = rows.view(dtype)[:, 0]
-    out = {f.role or f.name: np.ascontiguousarray(heads[f.name]) for f in plain}
+    out = {f.role or f.name: heads[f.name] for f in plain}  # views of the rows (copies cost more than they save)
     for f in T.RECORD_FIELDS:
         if f not in plain:
             out[f.role or f.name] = _uint(rows, f)
@@ -197,27 +201,83 @@ def _tables(version: str, profile: str) -> tuple[Any, Any, Any, Any, list[T.Layo
     return known, avail, size_ok, lay_of, lays
 
 
+@lru_cache(maxsize=16)
+def _size_bad(version: str, profile: str) -> NDArray[np.bool_]:
+    """Per (code, argument size) as one index (``_key``): a known code with a size no layout of
+    it accepts."""
+    known, _, size_ok = _tables(version, profile)[:3]
+    return (known[:, None] & ~size_ok).reshape(-1)  # type: ignore[no-any-return]
+
+
+def _key(r: Records) -> Any:
+    """(code, argument size) of every record as one index into the tables of ``_tables`` (a 1-d
+    take, not a 2-d one), made once a validation and kept in 2 bytes a record."""
+    got = r.state.get(_KEY)
+    if got is None:
+        code, nb = r.head["code"], r.head["arg_size"]
+        # 1-byte fields: 2 bytes a record (the tables are 256 x 256; wider fields index as before)
+        got = code.astype(np.uint16 if code.itemsize == nb.itemsize == 1 else np.intp)
+        got <<= 8
+        got |= nb
+        r.state[_KEY] = got
+    return got
+
+
+_KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
+_NO_LAYOUT = "rows of no layout"  # r.state's key of the records no layout fits (made by _batches)
+
+
+@lru_cache(maxsize=16)
+def _size_order(version: str, profile: str) -> tuple[Any, list[int], list[int]]:
+    """The layouts of ``_tables`` ordered by argument size (then as listed): per (code, size) index
+    (``_key``) the position + 1 of its layout in that order (0: no layout fits; one byte while
+    there are fewer than 256 layouts: numpy's stable sort of bytes is one radix pass), the layout
+    index at each position, and where each run of one size starts (a position, per position)."""
+    lay_of, lays = _tables(version, profile)[3:]
+    by_pos = sorted(range(len(lays)), key=lambda li: (lays[li].size, li))
+    rank = np.zeros(len(lays) + 1, dtype=np.uint8 if len(lays) < 255 else np.int32)
+    rank[[li + 1 for li in by_pos]] = np.arange(1, len(lays) + 1)
+    pos_of = rank.take(lay_of.reshape(-1).astype(np.intp) + 1)
+    first = [next(q for q in range(p + 1) if lays[by_pos[q]].size == lays[by_pos[p]].size) for p in range(len(by_pos))]
+    return pos_of, by_pos, first
+
+
 def _batches(r: Records) -> Iterator[Batch]:
-    """The records of each layout the file uses, one layout at a time (one layout's columns
-    held at once)."""
-    lay_of, lays = _tables(r.version, r.profile)[3:]
-    key = r.head["code"].astype(np.intp)  # (code, size) as one index: a 1-d take, not a 2-d one
-    key *= lay_of.shape[1]
-    key += r.head["arg_size"]
-    which = lay_of.reshape(-1).take(key)
-    del key
-    # the rows of every layout at once: one stable sort, not one pass over the file per layout
-    order = np.argsort(which, kind="stable")
-    bounds = np.cumsum(np.bincount(which + 1, minlength=len(lays) + 1)).tolist()  # which -1: no layout fits
-    for li in range(len(lays)):
-        if bounds[li + 1] == bounds[li]:
-            continue
-        lay, rows = lays[li], order[bounds[li]:bounds[li + 1]]
-        aoff = r.off[rows] + T.HEAD_SIZE
-        data = _gather(r.a, aoff, lay.size)
-        arr = data.view(_dtype(lay))[:, 0] if lay.size else None
-        raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
-        yield Batch(lay, T.BY_CODE[lay.code], rows, aoff, _Columns(raw), raw, bytes_=data)
+    """The records of each layout the file uses, one layout at a time. The layouts of one argument
+    size are gathered together (one gather for several commands: a file of many layouts pays numpy's
+    per-call cost once a size, not once a layout); each layout's rows are a slice of them."""
+    lays = _tables(r.version, r.profile)[4]
+    pos_of, by_pos, first = _size_order(r.version, r.profile)
+    pos = pos_of.take(_key(r))  # 0: no layout fits
+    # the rows of every layout at once, by size then layout, each in file order: one stable sort
+    order = np.argsort(pos, kind="stable")
+    bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
+    del pos
+    r.state[_NO_LAYOUT] = order[:bounds[0]]  # position 0 first: the records no layout fits, in file order
+    p, count = 0, len(by_pos)
+    while p < count:
+        q = p + 1
+        while q < count and first[q] == p:
+            q += 1
+        lo, hi = bounds[p], bounds[q]  # the rows of positions p .. q-1: one size
+        if hi > lo:
+            rows = order[lo:hi]
+            aoff = r.off[rows] + T.HEAD_SIZE
+            lay0 = lays[by_pos[p]]
+            data = _gather(r.a, aoff, lay0.size)
+            group = (p, rows, data)
+            for k in range(p, q):
+                if bounds[k + 1] > bounds[k]:
+                    yield _batch(lays[by_pos[k]], group, bounds[k] - lo, bounds[k + 1] - lo, aoff)
+        p = q
+
+
+def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any], lo: int, hi: int, aoff: Any) -> Batch:
+    """The batch of one layout: rows lo .. hi of its size group."""
+    rows, data = group[1][lo:hi], group[2][lo:hi]
+    arr = data.view(_dtype(lay))[:, 0] if lay.size else None
+    raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+    return Batch(lay, T.BY_CODE[lay.code], rows, aoff[lo:hi], _Columns(raw), raw, bytes_=data, group=group)
 
 
 class _Columns(Mapping[str, Any]):
@@ -235,7 +295,8 @@ class _Columns(Mapping[str, Any]):
         if col is None:
             col = self._raw[name]
             if col.dtype.kind == "f":
-                with np.errstate(invalid="ignore"):  # signalling NaNs stay NaN
+                # signalling NaNs stay NaN (its own errstate: a message may read a column late)
+                with np.errstate(invalid="ignore"):
                     col = col.astype(np.float64)
             self._done[name] = col
         return col
@@ -250,10 +311,45 @@ class _Columns(Mapping[str, Any]):
         return len(self._raw)
 
 
+# Row reductions over the few components of a vector (n x 3): numpy sets its loop up for every
+# row, which made ``.all(axis=1)`` / ``.sum(axis=1)`` of 20,000 rows 5 to 10 times slower than the
+# same work done a column at a time. The helpers below work a column at a time.
 def _finite_rows(v: Any) -> Any:
     """Per row: every component finite."""
-    fin = np.isfinite(v)
-    return fin if fin.ndim == 1 else fin.all(axis=1)
+    if v.ndim == 1:
+        return np.isfinite(v)
+    fin = np.isfinite(v[:, 0])
+    for j in range(1, v.shape[1]):
+        fin &= np.isfinite(v[:, j])
+    return fin
+
+
+def _all_cols(m: Any) -> Any:
+    """Per row of a boolean matrix: every column true."""
+    out = m[:, 0].copy()
+    for j in range(1, m.shape[1]):
+        out &= m[:, j]
+    return out
+
+
+def _any_cols(m: Any) -> Any:
+    """Per row of a boolean matrix: some column true."""
+    out = m[:, 0].copy()
+    for j in range(1, m.shape[1]):
+        out |= m[:, j]
+    return out
+
+
+def _rowsum(x: Any) -> Any:
+    """``x.sum(axis=1)`` of a float64 matrix of fewer than 8 columns, with the same bits: numpy adds
+    such a row from +0.0, one element after the other (pairwise summation starts at 8), so the
+    columns are added to zeros in their order."""
+    if x.dtype != np.float64 or x.shape[1] >= 8:
+        return x.sum(axis=1)
+    out = np.zeros(x.shape[0], dtype=np.float64)
+    for j in range(x.shape[1]):
+        out += x[:, j]
+    return out
 
 
 # -- head kernels (every record) -------------------------------------------------------
@@ -302,40 +398,55 @@ def _arg_sums(cov: tuple[str, int], rows: NDArray[np.uint8]) -> NDArray[np.int64
 
 
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
-    """The checksums of the records of a layout, from the argument bytes the batch gathered."""
+    """The checksums of the records of a layout (of every layout of its argument size, when the
+    first of them comes), from the argument bytes the batch gathered, against the stored ones."""
     cov = _head_coverage()
     if cov is None:
         return
-    held = r.state.get(check["id"])
-    if held is None:
-        held = r.state[check["id"]] = (np.zeros(len(r.off), dtype=r.head["checksum"].dtype),
-                                       np.zeros(len(r.off), dtype=bool))
-    sums, done = held
-    sums[b.rows] = _arg_sums(cov, b.bytes_)
-    done[b.rows] = True
+    if b.group is None:
+        rows, data = b.rows, b.bytes_
+    else:
+        key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
+        if key in r.state:
+            return
+        r.state[key] = True
+        rows, data = b.group[1], b.group[2]
+    r.state[check["id"]] = True  # the batches judge the records that have a layout
+    _report_sums(r, check, rows, _arg_sums(cov, data))
+
+
+def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
+    """The records ``rows`` whose stored argument checksum is not ``want`` (computed, per row)."""
+    got = r.head["checksum"][rows]
+    bad = np.flatnonzero(got != want)
+    if bad.size == 0:
+        return
+    bad = bad[np.argsort(rows[bad], kind="stable")]  # a size group's rows are by layout: in file order
+    at, stored, computed = rows[bad], got[bad], want[bad]
+    r.add(check, at, r.off[at] + T.ARG_CHECKSUM.offset, np.arange(bad.size),
+          lambda k: f"stored argument checksum {stored[k]}, computed {computed[k]}")
 
 
 def _arg_checksum(r: Records, check: Check) -> None:
     nb, chk, off, a, hs = r.head["arg_size"], r.head["checksum"], r.off, r.a, T.HEAD_SIZE
     cov = _head_coverage()
     if cov is not None:
-        # The batches summed the records of each layout; the others (no layout fits) are
-        # summed here, one argument size at a time, their arguments gathered as rows
-        # (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
-        held = r.state.pop(check["id"], None)
-        sums, done = held if held is not None else (np.zeros(len(off), dtype=chk.dtype), np.zeros(len(off), dtype=bool))
-        left = np.flatnonzero(~done)
+        # The batches judged the records of each layout; the others (no layout fits: _batches
+        # keeps them) are summed here, one argument size at a time, their arguments gathered as
+        # rows (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
+        left = r.state.get(_NO_LAYOUT) if r.state.pop(check["id"], None) else None
+        if left is None:  # no batch judged any: every record here
+            left = np.arange(len(off))
         if left.size:
             nbl = nb[left]
             for size in np.flatnonzero(np.bincount(nbl, minlength=1)).tolist():
                 rows = left[nbl == size]
-                sums[rows] = _arg_sums(cov, _gather(a, off[rows] + hs, size))
-        want = sums  # in the field's type: row_checksums gave each in the field's width
-        del sums, done
-    else:  # a coverage reaching outside the record (no spec has one): a record at a time
-        buf = r.buf
-        want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
-                         for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
+                _report_sums(r, check, rows, _arg_sums(cov, _gather(a, off[rows] + hs, size)))
+        return
+    # a coverage reaching outside the record (no spec has one): a record at a time
+    buf = r.buf
+    want = np.array([field_checksum("args", buf, [], args=buf[o + hs:o + hs + int(s)])
+                     for o, s in zip(off.tolist(), nb.tolist(), strict=True)], dtype=np.int64)
     bad = np.nonzero(chk != want)[0]
     r.add(check, bad, off[bad] + T.ARG_CHECKSUM.offset, bad,
           lambda i: f"stored argument checksum {chk[i]}, computed {want[i]}")
@@ -384,7 +495,7 @@ def _carries(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
 def _unknown_code(r: Records, check: Check) -> None:
     code = r.head["code"]
     known = _tables(r.version, r.profile)[0]
-    bad = np.nonzero(~known[code])[0]
+    bad = np.flatnonzero(~known.take(code))  # take: several times a fancy index by a byte column
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_CODE].offset, bad,
           lambda i: f"unknown command code 0x{code[i]:02X}")
 
@@ -392,7 +503,7 @@ def _unknown_code(r: Records, check: Check) -> None:
 def _availability(r: Records, check: Check) -> None:
     code, version = r.head["code"], r.version
     known, avail = _tables(version, r.profile)[:2]
-    bad = np.flatnonzero((known & ~avail)[code])
+    bad = np.flatnonzero((known & ~avail).take(code))
     if bad.size == 0:
         return
     covering = availability_checks()  # (version, command) -> the one check that covers it
@@ -407,8 +518,7 @@ def _availability(r: Records, check: Check) -> None:
 
 def _arg_size(r: Records, check: Check) -> None:
     code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
-    known, _, size_ok = _tables(version, profile)[:3]
-    bad = np.nonzero(known[code] & ~size_ok[code, nb])[0]
+    bad = np.flatnonzero(_size_bad(version, profile).take(_key(r)))
 
     def sizes_msg(i: Any) -> str:
         cmd = T.BY_CODE[int(code[i])]
@@ -419,21 +529,49 @@ def _arg_size(r: Records, check: Check) -> None:
 
 
 # -- argument kernels (one layout at a time) -------------------------------------------
+_FLOAT_WORDS: dict[int, Any] = {}
+_EXPONENT32 = 0x7F800000  # a binary32 is not finite when these bits are all set
+
+
+def _float_words(lay: T.LayoutInfo) -> Any:
+    """The 4-byte words of a layout's arguments that hold its binary32 floats (a slice when they
+    are all of them), or None when its floats are not all binary32 at word offsets (made once a
+    layout)."""
+    key = id(lay)
+    if key not in _FLOAT_WORDS:
+        floats = [f for f in lay.args if f.kind == "float"]
+        ok = lay.size % 4 == 0 and all(f.numpy == "f4" and f.offset % 4 == 0 for f in floats)
+        words = [f.offset // 4 + k for f in floats for k in range(f.size // 4)] if ok else None
+        _FLOAT_WORDS[key] = (slice(None) if words == list(range(lay.size // 4)) else np.asarray(words, dtype=np.intp)
+                             ) if words is not None else None
+    return _FLOAT_WORDS[key]
+
+
+def _all_finite32(b: Batch) -> bool:
+    """True when every binary32 float of the batch is finite: one test of the exponent bits over
+    the floats' words as one flat run (no loop set-up a row); False when not known so."""
+    words = _float_words(b.lay)
+    if words is None or b.bytes_ is None:
+        return False
+    sel = b.bytes_.view(T.BO + "u4")[:, words].reshape(-1)
+    exp = np.uint32(_EXPONENT32)
+    return not (np.bitwise_and(sel, exp) == exp).any()
+
+
 def _finite(r: Records, check: Check, b: Batch) -> None:
     floats = [f for f in b.lay.args if f.kind == "float"]
-    if not floats:
+    if not floats or _all_finite32(b):
         return
     # A NaN or an infinity makes the sum not finite, so rows whose sum is finite hold only
     # finite floats; the others (an overflow too) are looked at field by field.
     total = np.zeros(b.rows.size, dtype=np.float32)
-    with np.errstate(invalid="ignore", over="ignore"):
-        for f in floats:
-            col = b.raw[f.name]
-            if col.ndim == 1:
-                total += col
-            else:
-                for j in range(col.shape[1]):
-                    total += col[:, j]
+    for f in floats:
+        col = b.raw[f.name]
+        if col.ndim == 1:
+            total += col
+        else:
+            for j in range(col.shape[1]):
+                total += col[:, j]
     suspect = np.flatnonzero(~np.isfinite(total))
     if suspect.size == 0:
         return
@@ -472,6 +610,13 @@ def _plain_strings(b: Batch, name: str) -> bool:
         got = not rise.any() and not (used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20))).any()
         b.plain[name] = got
     return got
+
+
+def _plain_bytes(raw: bytes) -> bool:
+    """One string field's bytes are printable ASCII then NULs only (plain Python: a header field
+    is one short row, where numpy's per-call cost is all there is)."""
+    text = raw.rstrip(b"\0")
+    return b"\0" not in text and all(0x20 <= c <= 0x7E for c in text)
 
 
 def _first_nul(b: Batch, name: str) -> Any:
@@ -519,8 +664,7 @@ def _positive(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            with np.errstate(invalid="ignore"):
-                bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
+            bad = np.nonzero(np.isfinite(v) & (v <= 0))[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad, _valued(f"{b.cmd.name}.{nm} is ", v, ", must be > 0"))
 
 
@@ -528,7 +672,7 @@ def _nonzero_vector(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            bad = np.nonzero(np.isfinite(v).all(axis=1) & (v == 0.0).all(axis=1))[0]
+            bad = np.nonzero(_finite_rows(v) & _all_cols(v == 0.0))[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad, _const(f"{b.cmd.name}.{nm} has zero length"))
 
 
@@ -538,10 +682,9 @@ def _range(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
             v = b.cols[nm]
-            with np.errstate(invalid="ignore"):
-                out = ((v <= lo) if check["min_exclusive"] else (v < lo)) | ((v >= hi) if check["max_exclusive"]
-                                                                           else (v > hi))
-                bad = np.nonzero(np.isfinite(v) & out)[0]
+            out = ((v <= lo) if check["min_exclusive"] else (v < lo)) | ((v >= hi) if check["max_exclusive"]
+                                                                       else (v > hi))
+            bad = np.nonzero(np.isfinite(v) & out)[0]
             r.add(check, b.rows[bad], b.at(nm)[bad], bad,
                   _valued(f"{b.cmd.name}.{nm} is ", v, f", {range_text(check)}"))
 
@@ -552,8 +695,8 @@ def _ordered(r: Records, check: Check, b: Batch) -> None:
         if not all(nm in cols for nm in names):
             continue
         vals = np.stack([cols[nm] for nm in names], axis=1)
-        fin = np.isfinite(vals).all(axis=1)
-        bad = np.nonzero(fin & (vals[:, :-1] > vals[:, 1:]).any(axis=1))[0]
+        fin = _finite_rows(vals)
+        bad = np.nonzero(fin & _any_cols(vals[:, :-1] > vals[:, 1:]))[0]
         r.add(check, b.rows[bad], b.aoff[bad], bad, _ordered_msg(cname, cols, names))
 
 
@@ -629,9 +772,9 @@ def _machine_limits(r: Records, check: Check, b: Batch) -> None:
         if not out.any():
             continue
         v = np.asarray(b.cols[f.name], dtype=np.float64).reshape(len(b.rows), -1)
-        keep = out & np.isfinite(v).all(axis=1)
+        keep = out & _finite_rows(v)
         if positive:
-            keep &= ~(v <= 0.0).any(axis=1)
+            keep &= ~_any_cols(v <= 0.0)
         bad = np.nonzero(keep)[0]
         r.add(check, b.rows[bad], b.at(f.name)[bad], bad, _breach(f"{b.cmd.name}.{f.name}", v, lim, positive))
 
@@ -699,24 +842,25 @@ def _ends(m: dict[str, str], cols: Mapping[str, Any], k: int) -> Any:
     kind = m["kind"]
     if kind in ("point", "line"):
         end = cols[m["end"]][:, -3:].copy()  # a repeated group's last point (issue 25, point 3)
-        end[~_finite_rows(end)] = np.nan
+        fin = _finite_rows(end)
+        if not fin.all():
+            end[~fin] = np.nan
         return end
     start, center, normal = cols[m["start"]], cols[m["center"]], cols[m["normal"]]
     deg = cols[m["degrees"]]
     length = cols[m["length"]] if kind == "helix" else np.zeros(k)
-    ok = (np.isfinite(start).all(axis=1) & np.isfinite(center).all(axis=1) & np.isfinite(normal).all(axis=1)
+    ok = (_finite_rows(start) & _finite_rows(center) & _finite_rows(normal)
           & np.isfinite(deg) & np.isfinite(length))
-    nn = np.sqrt((normal * normal).sum(axis=1))
+    nn = np.sqrt(_rowsum(normal * normal))
     ok &= nn != 0.0
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        kk = normal / nn[:, None]
-        v = start - center
-        th = deg * (math.pi / 180.0)
-        c, s = np.cos(th), np.sin(th)
-        kxv = np.cross(kk, v)
-        kdv = (kk * v).sum(axis=1)
-        rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
-        end = center + rot + length[:, None] * kk
+    kk = normal / nn[:, None]
+    v = start - center
+    th = deg * (math.pi / 180.0)
+    c, s = np.cos(th), np.sin(th)
+    kxv = _cross(kk, v)
+    kdv = _rowsum(kk * v)
+    rot = v * c[:, None] + kxv * s[:, None] + kk * (kdv * (1.0 - c))[:, None]
+    end = center + rot + length[:, None] * kk
     end[~ok] = np.nan
     return end
 
@@ -739,20 +883,55 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
                                                 b.cmd.name))
 
 
+def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
+    """The parts (one per layout; part[0] their rows, ascending) in the order to concatenate them,
+    and the permutation that puts the concatenation in file order (None: it is in file order).
+    When the parts do not interleave (a file of one motion command after a few set-up records),
+    their concatenation by first row is the file order: no permutation, no gather. Otherwise a
+    stable sort of the concatenated rows: numpy's stable sort of 4- and 8-byte integers is a
+    timsort, which merges the parts' ascending runs (a few microseconds for thousands of rows,
+    where a scatter into a table of every record cost a pass over the file's records); a row in
+    two parts (two targets naming one argument) keeps the parts' order."""
+    ordered = sorted((p for p in parts if len(p[0])), key=lambda p: int(p[0][0]))
+    if ordered and all(int(x[0][-1]) < int(y[0][0]) for x, y in zip(ordered, ordered[1:], strict=False)):
+        return ordered, None
+    rows = np.concatenate([p[0] for p in parts])
+    if rows.size == 0:
+        return parts, None
+    return parts, np.argsort(rows, kind="stable")
+
+
+def _field(parts: list[Any], j: int, pick: Any) -> Any:
+    """Field j of the parts concatenated, at ``pick`` (None: all, as concatenated)."""
+    got = parts[0][j] if len(parts) == 1 else np.concatenate([p[j] for p in parts])
+    return got if pick is None else got[pick]
+
+
+def _part_of(parts: list[Any], at: Any) -> list[int]:
+    """Which part each position ``at`` of the concatenation is in."""
+    ends = np.cumsum([len(p[0]) for p in parts])
+    return np.searchsorted(ends, at, side="right").tolist()  # type: ignore[no-any-return]
+
+
 def _in_file_order(parts: list[Any]) -> tuple[Any, list[Any]]:
     """The rows of every part (one per layout) in file order, and each field of the parts
-    concatenated in that order (field j of a part is part[j + 1]). The rows are distinct record
-    numbers, so their order comes from a scatter into a table of the records, not a sort."""
+    concatenated in that order (field j of a part is part[j + 1])."""
     if len(parts) == 1:
         return parts[0][0], list(parts[0][1:])
-    rows = np.concatenate([p[0] for p in parts])
-    at: Any = np.full(int(rows.max()) + 1, -1, dtype=np.int32 if rows.size < 1 << 31 else np.int64)
-    at[rows] = np.arange(rows.size, dtype=at.dtype)
-    order = at[at >= 0]
-    del at
-    if order.size != rows.size:  # a row twice (two targets naming one argument): sorted, stably
-        order = np.argsort(rows, kind="stable")
-    return rows[order], [np.concatenate([p[j] for p in parts])[order] for j in range(1, len(parts[0]))]
+    cat, order = _merge_order(parts)
+    return _field(cat, 0, order), [_field(cat, j, order) for j in range(1, len(parts[0]))]
+
+
+def _cross(a: Any, b: Any) -> Any:
+    """Row-wise cross products of n x 3 float64 arrays: the operations of ``np.cross`` in its
+    order (the same bits), without its axis handling (some twenty Python-level calls)."""
+    cp = np.empty(a.shape, dtype=np.float64)
+    tmp = np.empty(a.shape[0], dtype=np.float64)
+    for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):  # cp_i = a_j b_k - a_k b_j
+        np.multiply(a[:, j], b[:, k], out=cp[:, i])
+        np.multiply(a[:, k], b[:, j], out=tmp)
+        cp[:, i] -= tmp
+    return cp
 
 
 def _same_rows(x: Any, y: Any) -> Any:
@@ -764,24 +943,25 @@ def _same_rows(x: Any, y: Any) -> Any:
 
 
 def _continuity_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])
+    parts = r.state.pop(check["id"], [])  # (rows, start, end, start offsets, command name) a layout
     if not parts:
         return
-    labels = [p[4] for p in parts]
-    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
-    rows, (start, end, starts, names) = _in_file_order(parts)
+    cat, order = _merge_order(parts)
+    start, end = _field(cat, 1, order), _field(cat, 2, order)
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
     # measured (a valid file's motions all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
     dvec = start[todo].astype(np.float64)
     dvec -= end[todo - 1]
-    with np.errstate(invalid="ignore", over="ignore"):
-        d = np.sqrt((dvec * dvec).sum(axis=1))
-        keep = np.isfinite(start[todo]).all(axis=1) & (d > T.TOL["position_mm"])
+    d = np.sqrt(_rowsum(dvec * dvec))
+    keep = _finite_rows(start[todo]) & (d > T.TOL["position_mm"])
     bad = todo[keep]
-    dist, label = d[keep], names[bad]
-    r.add(check, rows[bad], starts[bad], np.arange(bad.size),
-          lambda k: f"{labels[label[k]]} starts {float(dist[k]):.6g} mm from the current position")
+    if bad.size == 0:
+        return
+    dist, src = d[keep], bad if order is None else order[bad]  # src: positions in the concatenation
+    names = [cat[j][4] for j in _part_of(cat, src)]
+    r.add(check, _field(cat, 0, src), _field(cat, 3, src), np.arange(bad.size),
+          lambda k: f"{names[k]} starts {float(dist[k]):.6g} mm from the current position")
 
 
 def _orientation(r: Records, check: Check, b: Batch) -> None:
@@ -794,27 +974,28 @@ def _orientation(r: Records, check: Check, b: Batch) -> None:
 
 
 def _orientation_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])
+    parts = r.state.pop(check["id"], [])  # (rows, start, end, argument offsets, command name) a layout
     if not parts:
         return
-    labels = [p[4] for p in parts]
-    parts = [(p[0], p[1], p[2], p[3], np.full(len(p[0]), j, dtype=np.int16)) for j, p in enumerate(parts)]
-    rows, (start, end, aoff, cnames) = _in_file_order(parts)
+    cat, order = _merge_order(parts)
+    start, end = _field(cat, 1, order), _field(cat, 2, order)
     tol = T.TOL["orientation_deg"]
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(rows))
+    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
     s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
-    with np.errstate(invalid="ignore", over="ignore"):
-        prev_ok = np.isfinite(prev).all(axis=1) & (np.sqrt((prev * prev).sum(axis=1)) > 0.0)
-        s_ok = np.isfinite(s).all(axis=1) & (np.sqrt((s * s).sum(axis=1)) > 0.0)
-        cx = np.cross(s, prev)
-        ang = np.degrees(np.arctan2(np.sqrt((cx * cx).sum(axis=1)), (s * prev).sum(axis=1)))
-        keep = s_ok & prev_ok & (ang > tol)
+    prev_ok = _finite_rows(prev) & (np.sqrt(_rowsum(prev * prev)) > 0.0)
+    s_ok = _finite_rows(s) & (np.sqrt(_rowsum(s * s)) > 0.0)
+    cx = _cross(s, prev)
+    ang = np.degrees(np.arctan2(np.sqrt(_rowsum(cx * cx)), _rowsum(s * prev)))
+    keep = s_ok & prev_ok & (ang > tol)
     bad = todo[keep]
-    angle, label = ang[keep], cnames[bad]
-    r.add(check, rows[bad], aoff[bad], np.arange(bad.size),
-          lambda k: f"{labels[label[k]]} starts {float(angle[k]):.6g} deg from the current orientation")
+    if bad.size == 0:
+        return
+    angle, src = ang[keep], bad if order is None else order[bad]  # src: positions in the concatenation
+    names = [cat[j][4] for j in _part_of(cat, src)]
+    r.add(check, _field(cat, 0, src), _field(cat, 3, src), np.arange(bad.size),
+          lambda k: f"{names[k]} starts {float(angle[k]):.6g} deg from the current orientation")
 
 
 def _shape(r: Records, check: Check, b: Batch) -> None:
@@ -831,13 +1012,13 @@ def _shape_end(r: Records, check: Check) -> None:
     held = r.state.pop(check["id"], None)
     if held is None or not held["parts"]:
         return
+    parts = held["parts"]
+    if _shapes_balanced(parts, held["motion"]):
+        return
     motion = np.zeros(len(r.off) + 1, dtype=np.int32)  # 4 bytes a record: counts stay below 2**31 records
     for rows in held["motion"]:
         motion[rows + 1] = 1
     cm = np.cumsum(motion, out=motion)  # motions before each record
-    parts = held["parts"]
-    if _shapes_balanced(parts, cm):
-        return
     shape_rows = sorted((row, kind, bytes(names[k]), int(counts[k]), cname)
                         for rows, kind, names, counts, cname in parts for k, row in enumerate(rows.tolist()))
     off = r.off
@@ -864,11 +1045,11 @@ def _shape_end(r: Records, check: Check) -> None:
         r.found(check, open_[0], int(off[open_[0]]), f"shape {string_value(open_[1])} is never closed")
 
 
-def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
+def _shapes_balanced(parts: list[Any], motion: list[Any]) -> bool:
     """True when the loop of _shape_end would find nothing: starts and ends alternate, from a
     start to an end, each end repeats its start's name and count, and the count is the number
-    of motions between them (cm: motions before each record). Only a quick yes: on False the
-    loop decides."""
+    of motions between them (motion: the rows of motion commands, ascending a part: counted by
+    binary search, no pass over the file's records). Only a quick yes: on False the loop decides."""
     if len({p[2].shape[1] for p in parts}) != 1:
         return False
     rows, (kinds, names, counts) = _in_file_order(
@@ -876,8 +1057,13 @@ def _shapes_balanced(parts: list[Any], cm: Any) -> bool:
     if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
         return False
     opened, closed = rows[0::2], rows[1::2]
-    return bool((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()
-                and (cm[closed] - cm[opened + 1] == counts[0::2]).all())
+    if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
+        return False
+    inside = np.zeros(len(opened), dtype=np.int64)  # motions after each start, before its end
+    for m in motion:
+        inside += np.searchsorted(m, closed)
+        inside -= np.searchsorted(m, opened + 1)
+    return bool((inside == counts[0::2]).all())
 
 
 Applies = Callable[[Check, T.LayoutInfo, T.CommandInfo], bool]
@@ -996,7 +1182,8 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
     active = tuple(x for x in _active(cutters is not None) if x[0]["id"] not in elsewhere)
     # The kernels meet NaNs (signalling ones too), infinities and huge values on purpose: the
     # checks report them as findings. numpy's floating-point warnings (an invalid cast, an
-    # overflow) would only be noise on stderr, never a finding: they are off while the kernels run.
+    # overflow) would only be noise on stderr, never a finding: they are off while the kernels run
+    # (here, once: a kernel opens no errstate of its own, each cost a few microseconds a call).
     with np.errstate(all="ignore"):
         for check, kernel in active:
             if kernel.every is not None:
@@ -1013,8 +1200,11 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
 
 
 def header_string_findings(raw: bytes, offset: int, name: str) -> list[Finding]:
-    """The string checks of one header string field: the same kernels, one row, no record."""
+    """The string checks of one header string field: the same kernels, one row, no record (none
+    when the field is printable ASCII then NULs only: neither kernel flags that, as _plain_strings)."""
     out: list[Finding] = []
+    if _plain_bytes(raw):
+        return out
 
     def add(check: Check | None, rows: Any, offs: Any, keys: Any, msg: Message) -> None:
         if check is not None:
