@@ -190,6 +190,9 @@ def mutants(seed: int, count: int) -> Iterator[tuple[int, Mutant]]:
             yield i, Mutant(f"class {name}: {CLASSES[name][0](doc)}", doc)
             continue
         what = rng.choice(RANDOM)(rng, doc)
+        while doc == base:  # a mutation that wrote what was there (a value a revision happens to hold): draw again
+            doc = copy.deepcopy(base)
+            what = rng.choice(RANDOM)(rng, doc)
         yield i, Mutant(what, doc)
 
 

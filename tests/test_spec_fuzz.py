@@ -50,7 +50,9 @@ def test_the_mutator_is_derandomised_and_changes_the_spec() -> None:
     assert first != [(i, m.what) for i, m in mutants(SAMPLE_SEED + 1, 40)]
     base = spec_fuzz.dump(load_spec())
     assert all(spec_fuzz.dump(m.doc) != base for _, m in mutants(SAMPLE_SEED, 40))
-    kinds = {what.split(" ", 1)[0] for _, what in first}
+    # every kind of mutation is drawn (within 200 draws, not 40: which ones the first 40 hold depends on
+    # the spec a revision made, as the drill's header_move tree showed)
+    kinds = {m.what.split(" ", 1)[0] for _, m in mutants(SAMPLE_SEED, 200)}
     assert {"number", "string", "drop", "repeat", "type"} <= kinds, kinds
 
 
