@@ -174,8 +174,24 @@ def _retype(rng: random.Random, doc: Any) -> str:
     return f"type {_show_path(path)}: {_short(old)} -> {_short(new)}"
 
 
+def _rekey(rng: random.Random, doc: Any) -> str:
+    """A mapping key renamed in place (the value and the order kept): misspelt, upper-cased, emptied,
+    made a sibling's (that sibling then dropped, as a YAML mapping cannot hold a key twice), or a key of
+    elsewhere in the spec. The loader's schema gate sees a key it does not know, or one it needs gone."""
+    maps = [(p, v) for p, v in _walk(doc) if isinstance(v, dict) and v]
+    path, node = rng.choice(maps)
+    old = rng.choice(list(node))
+    keys = sorted({str(k) for _, v in _walk(doc) if isinstance(v, dict) for k in v})
+    new = rng.choice([old + "s", old[:-1] or "x", old.upper(), "", " " + old, *rng.sample(list(node), 1),
+                      *rng.sample(keys, 2)])
+    items = [(new if k == old else k, v) for k, v in node.items() if k != new or k == old]
+    node.clear()
+    node.update(items)
+    return f"key {_show_path((*path, old))} -> {_short(new)}"
+
+
 RANDOM: tuple[Callable[[random.Random, Any], str], ...] = (_number, _number, _string, _string, _drop, _repeat,
-                                                           _retype)
+                                                           _retype, _rekey)
 
 
 def mutants(seed: int, count: int) -> Iterator[tuple[int, Mutant]]:

@@ -53,7 +53,7 @@ def test_the_mutator_is_derandomised_and_changes_the_spec() -> None:
     # every kind of mutation is drawn (within 200 draws, not 40: which ones the first 40 hold depends on
     # the spec a revision made, as the drill's header_move tree showed)
     kinds = {m.what.split(" ", 1)[0] for _, m in mutants(SAMPLE_SEED, 200)}
-    assert {"number", "string", "drop", "repeat", "type"} <= kinds, kinds
+    assert {"number", "string", "drop", "repeat", "type", "key"} <= kinds, kinds
 
 
 def test_every_class_changes_the_spec() -> None:
