@@ -215,18 +215,21 @@ static int cmd_encode(int argc, char **argv)
     return st;
 }
 
-/* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". */
+/* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
+ * file's first bytes are read (the header and the 256 of the text test): a large CBF file costs nothing. */
 static int cmd_sniff(const char *path)
 {
-    uint8_t *buf;
-    const char *why;
-    long n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &buf, &why);
-    if (n < 0) {
-        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), n == -2 ? "file too large" : why);
+    uint8_t head[CBF_HEADER_SIZE + 256u];
+    const char *why = "cannot open";
+    FILE *fp = cbf_tool_open(path, &why);
+    size_t n;
+    if (!fp) {
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), why);
         return CBF_TOOL_EXIT_USAGE;
     }
-    puts(cbf_tool_is_cut(buf, (size_t)n) ? "cut" : "cbf");
-    free(buf);
+    n = fread(head, 1, sizeof head, fp);
+    fclose(fp);
+    puts(cbf_tool_is_cut(head, n) ? "cut" : "cbf");
     return CBF_TOOL_EXIT_OK;
 }
 
@@ -250,4 +253,4 @@ int main(int argc, char **argv)
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 254 "cbf_tool.c"
+#line 257 "cbf_tool.c"
