@@ -9,6 +9,8 @@
  * validate prints what `cbf validate` prints, in its order (header first, then by record,
  * check order, offset), at most --max-findings findings a file (default 50, 0 for all).
  *   cbf-c dump [--path] FILE   (--path: each motion record's drawn path, cbf_motion_path)
+ *   cbf-c encode [--profile P] FILE.cut   (CUT text to the CBF it encodes to, on stdout: cbf_cut_encode)
+ *   cbf-c sniff FILE           (cut or cbf: whether the engine reads it as CUT text, cbf_tool_is_cut)
  *   cbf-c --version
  *
  * Exit status, as `cbf` (README, "Exit codes"): 0 ok; 1 validate found an
@@ -253,4 +255,4 @@ int main(int argc, char **argv)
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 257 "cbf_tool.c"
+#line 259 "cbf_tool.c"
