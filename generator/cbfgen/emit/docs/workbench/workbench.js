@@ -1,6 +1,7 @@
 // The workbench page (issue 34, point 3). It runs cbf-c.wasm (the C engine, c-wasm binding) as a WASI
 // command over an in-memory file system and shows what it prints: `cbf-c validate` (verdict, findings)
-// and `cbf-c dump` (the records). Nothing here checks a file: every finding is the engine's. What the
+// and `cbf-c dump` (the records); CUT text (`cbf-c sniff`) is first encoded by the engine (`cbf-c encode`).
+// Nothing here checks or reads a file's format: every finding is the engine's. What the
 // page knows of the format (byte layouts, profiles, each check's place in the document) is the spec's,
 // as data (#cbf-data, written by cbfgen.emit.docs.workbench).
 'use strict';
