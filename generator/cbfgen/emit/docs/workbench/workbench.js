@@ -30,7 +30,7 @@ function wasmModule() {
   return compiled;
 }
 
-function runCommand(args, files) {
+function runCommand(args, files, binary = false) {
   const enc = new TextEncoder();
   const out = [[], [], []];
   const open = new Map(); // fd -> { data, pos }
@@ -170,10 +170,13 @@ function runCommand(args, files) {
     for (const c of chunks) { all.set(c, at); at += c.length; }
     return new TextDecoder().decode(all);
   };
-  const raw = new Uint8Array(out[1].reduce((n, c) => n + c.length, 0));
-  let at = 0;
-  for (const c of out[1]) { raw.set(c, at); at += c.length; }
-  return { status, stdout: text(out[1]), stderr: text(out[2]), bytes: raw };
+  if (binary) { // the standard output as bytes (cbf-c encode's CBF), not as text
+    const raw = new Uint8Array(out[1].reduce((n, c) => n + c.length, 0));
+    let at = 0;
+    for (const c of out[1]) { raw.set(c, at); at += c.length; }
+    return { status, stdout: '', stderr: text(out[2]), bytes: raw };
+  }
+  return { status, stdout: text(out[1]), stderr: text(out[2]) };
 }
 
 // -- reading what cbf-c prints ---------------------------------------------------------------------
@@ -579,7 +582,7 @@ async function check(readFile) {
   const cut = runCommand(['cbf-c', 'sniff', chosen], files).stdout.trim() === 'cut';
   showCut(null);
   if (cut) {
-    const enc = runCommand(['cbf-c', 'encode', '--profile', profile, chosen], files);
+    const enc = runCommand(['cbf-c', 'encode', '--profile', profile, chosen], files, true);
     if (enc.status !== 0) {
       showCutError(enc, chosen, profile, mine);
       return;
