@@ -458,3 +458,55 @@ def test_cbf_c_dumps_each_item_and_validates_the_group(revised: Revised, tmp_pat
     assert f" {group}[{n - 1}]={n - 1},0,1" in line, line
     valid = subprocess.run([str(exe), "validate", str(tmp_path / "p.cbf")], capture_output=True, text=True)
     assert valid.returncode == 0, valid.stdout + valid.stderr
+
+
+def test_c_cut_reader_reads_a_group_line_as_python_does(revised: Revised, tmp_path: Path) -> None:
+    """cbf-c encode of the revised spec (the C CUT reader, runtime/cut.c) against the Python package's CUT
+    reader on the group's line: n items at the group's least, greatest and a middle n give Python's bytes;
+    one item fewer or more than the group holds is refused by both, with the line."""
+    exe = tmp_path / "cbf-c"
+    subprocess.run([_cc(), "-std=c99", "-O0", "-o", str(exe), str(revised.gen / "c" / "cbf_tool.c"), "-lm"],
+                   check=True, capture_output=True)
+    script = (
+        "import json, sys\n"
+        "from cbf import codec, tables as T\n"
+        "from cbf.cut import from_cut, to_cut\n"
+        "from cbf.errors import CbfError\n"
+        "from cbf.model import Cbf, Record, new_header\n"
+        "cmd = T.BY_NAME[sys.argv[1]]\n"
+        "lays = [lay for lay in cmd.layouts if lay.n is not None]\n"
+        "lo, hi = lays[0].repeated.repeat\n"
+        "v = next(v for v in T.VERSIONS if v.writable and cmd.layouts_for(v.id))\n"
+        "out = {}\n"
+        "for n in sorted({lo, (lo + hi) // 2, hi}):\n"
+        "    lay = next(x for x in lays if x.n == n)\n"
+        "    pts = tuple((float(i) + 0.25, -1.5, 3.0) for i in range(n))\n"
+        "    head = new_header(f'{v.major}.{v.minor or 0}', implant_descriptor='PN-1')\n"
+        "    m = Cbf(head, (Record.of(lay.cls(points=pts)),))\n"
+        "    out[f'n{n}'] = to_cut(m)\n"
+        "last = out[f'n{hi}'].rstrip('\\n').split('\\n')\n"
+        "item = last[-1][len(last[-1].rsplit('<', 1)[0]):]\n"
+        "out['more'] = '\\n'.join(last[:-1] + [last[-1] + ' ' + item]) + '\\n'\n"
+        "first = out[f'n{lo}'].rstrip('\\n').split('\\n')\n"
+        "out['fewer'] = '\\n'.join(first[:-1] + [first[-1].rsplit(' <', 1)[0]]) + '\\n'\n"
+        "res = {}\n"
+        "for k, text in out.items():\n"
+        "    try:\n"
+        "        res[k] = [text, codec.pack_file(from_cut(text)).hex(), None]\n"
+        "    except CbfError as exc:\n"
+        "        res[k] = [text, None, exc.line]\n"
+        "print(json.dumps(res))\n")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(revised.gen / "python"), *sys.path]))
+    made = subprocess.run([sys.executable, "-c", script, revised.name], env=env, capture_output=True, text=True,
+                          check=True)
+    cases = yaml.safe_load(made.stdout)
+    assert cases["more"][1] is None and cases["fewer"][1] is None, "Python reads a group of n out of its range"
+    for name, (text, want, line) in cases.items():
+        path = tmp_path / f"{name}.cut"
+        path.write_text(text, encoding="ascii")
+        got = subprocess.run([str(exe), "encode", str(path)], capture_output=True)
+        if want is not None:
+            assert got.returncode == 0 and got.stdout.hex() == want, (name, got.stderr)
+        else:
+            assert got.returncode == 2 and not got.stdout, name
+            assert f": line {line}:" in got.stderr.decode(), (name, line, got.stderr)

@@ -24,9 +24,12 @@ from c_programs import built
 
 from cbf import codec
 from cbf import geometry as G
+from cbf.cut import to_cut
 from cbf.errors import CbfError
+from cbfgen.emit.docs import golden as docs_golden
 from cbfgen.emit.docs import workbench
 from cbfgen.loader import load
+from cbfgen.model import Spec
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "conformance" / "golden"
@@ -65,8 +68,9 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     paths = {f: _drawn(f) for f in files if _native(f, profiles[0])[1] != 2}
     paged = max(paths, key=lambda f: len(paths[f]))
     curve = _flat_arc(files)
+    cuts = _cut_files(spec, tmp / "cut", files)
     jobs.write_text(json.dumps({"files": [[str(f), p] for f, p in feed], "shot": str(drawn[0]), "paged": str(paged),
-                                "curve": [str(curve[0]), curve[1]]}))
+                                "curve": [str(curve[0]), curve[1]], "cuts": [str(c) for c in cuts]}))
     SHOTS.mkdir(parents=True, exist_ok=True)
     res = subprocess.run(["node", str(DRIVER), str(page), str(SHOTS), str(jobs)], cwd=REPO, capture_output=True,
                          text=True, timeout=600)
@@ -75,6 +79,38 @@ def run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, object]:
     out["expected"] = len(feed)
     out["page"] = str(page)
     out["circle"] = [*curve[2], curve[3]]
+    return out
+
+
+def _cut_files(spec: Spec, folder: Path, files: list[Path]) -> list[Path]:
+    """The golden CUT forms to drop onto the page (the docs' complete example and each command's example
+    line, cbfgen.emit.docs.golden; the CUT text Python writes for each valid golden file), and last one
+    the engine refuses (its first keyword line's keyword made unknown)."""
+    folder.mkdir()
+    cases = docs_golden.load_cases(GOLDEN)
+    example = docs_golden.cut_example(spec, cases)
+    assert example is not None
+    texts = {f"example.{example[0]}": example[1]}
+    data = {c.name: c.data for c in cases}
+    vkw = spec.cut["extensions"]["version_keyword"]
+    for name, ex in docs_golden.examples(spec, cases).items():
+        major, minor = codec.decode(data[ex.case]).version
+        texts[f"line.{name}"] = f"{vkw} {major}.{minor}\n{ex.cut}\n"
+    for f in files:
+        if f.name.startswith("valid."):
+            try:
+                texts[f.stem] = to_cut(codec.decode(f.read_bytes()))
+            except (CbfError, ValueError):
+                continue
+    kws = {c.name.lower() for c in spec.commands}
+    lines = example[1].split("\n")
+    k = next(i for i, line in enumerate(lines) if line.split(" ", 1)[0] in kws)
+    unknown = next(w for w in (f"no_command_{n}" for n in range(100)) if w not in kws)
+    texts["zz.refused"] = "\n".join(lines[:k] + [f"{unknown} {lines[k].partition(' ')[2]}"] + lines[k + 1:])
+    out = []
+    for name, text in texts.items():
+        out.append(folder / f"{name}.cut")
+        out[-1].write_text(text, encoding="ascii")
     return out
 
 
@@ -209,3 +245,51 @@ def test_the_page_gzipped_stays_under_its_bound(run: dict[str, object]) -> None:
     page = Path(str(run["page"])).read_bytes()
     size = len(gzip.compress(page, 9))
     assert 0 < size < GZIP_BOUND, f"the workbench page is {size:,} bytes gzipped (bound {GZIP_BOUND:,})"
+
+
+def _encoded(cut: Path) -> tuple[Path | None, str]:
+    """Native cbf-c encode of a CUT file, written beside it under the name the page gives it (NAME.cbf), or
+    None and the engine's one line."""
+    res = subprocess.run([str(_cbf_c()), "encode", cut.name], cwd=cut.parent, capture_output=True)
+    if res.returncode != 0:
+        return None, res.stderr.decode()
+    out = cut.with_suffix(".cbf")
+    out.write_bytes(res.stdout)
+    return out, ""
+
+
+def test_a_dropped_cut_file_is_shown_as_the_cbf_it_encodes_to(run: dict[str, object]) -> None:
+    cuts = run["cuts"]
+    assert isinstance(cuts, list) and len(cuts) > 2
+    differ = []
+    shown = 0
+    for r in cuts[:-1]:  # each golden CUT form: the findings of the CBF it encodes to, as cbf-c validate prints them
+        cbf, why = _encoded(Path(r["path"]))
+        if cbf is None:  # a version the writers do not write, say: the engine's one line, as for a refused text
+            assert r["note"] is None and r["status"] == 2 and why.strip() in r["verdict"] and r["text"] == why, r
+            continue
+        shown += 1
+        size = cbf.stat().st_size
+        text, status = _native(cbf, "default")
+        if (r["text"], r["status"]) != (text, status) or r["shown"] != cbf.name:
+            differ.append(f"{cbf.name}: page {r['status']} {r['text']!r}, cbf-c {status} {text!r}")
+        assert r["note"] is not None and f"CUT text, shown as the CBF it encodes to ({size} bytes)" in r["note"], r
+        assert r["href"].startswith("blob:") and r["download"] == cbf.name, r
+        assert r["records"] > 0 or "records" not in text
+    assert not differ, "\n".join(differ[:5])
+    assert shown > len(cuts) // 2, f"only {shown} of {len(cuts)} golden CUT forms encode"
+    first = cuts[0]
+    cbf, _ = _encoded(Path(first["path"]))
+    assert cbf is not None and bytes(first["downloaded"]) == cbf.read_bytes()  # the download is that CBF
+    assert first["segments"] > 0  # its toolpath drawn
+    assert (SHOTS / "workbench-cut-1280.png").stat().st_size > 0
+
+
+def test_a_cut_file_the_engine_refuses_shows_its_one_line(run: dict[str, object]) -> None:
+    cuts = run["cuts"]
+    assert isinstance(cuts, list)
+    r = cuts[-1]
+    cbf, why = _encoded(Path(r["path"]))
+    assert cbf is None and why.count("\n") == 1 and ": line " in why
+    assert r["note"] is None and r["status"] == 2 and r["records"] == 0
+    assert why.strip() in r["verdict"] and r["text"] == why

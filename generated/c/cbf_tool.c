@@ -9,6 +9,8 @@
  * validate prints what `cbf validate` prints, in its order (header first, then by record,
  * check order, offset), at most --max-findings findings a file (default 50, 0 for all).
  *   cbf-c dump [--path] FILE   (--path: each motion record's drawn path, cbf_motion_path)
+ *   cbf-c encode [--profile P] FILE.cut   (CUT text to the CBF it encodes to, on stdout: cbf_cut_encode)
+ *   cbf-c sniff FILE           (cut or cbf: whether the engine reads it as CUT text, cbf_tool_is_cut)
  *   cbf-c --version
  *
  * Exit status, as `cbf` (README, "Exit codes"): 0 ok; 1 validate found an
@@ -50,6 +52,8 @@ static void usage(void)
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
           "FILE...\n"
           "       cbf-c dump [--path] FILE\n"
+          "       cbf-c encode [--profile P] FILE.cut   (the CBF it encodes to, on stdout)\n"
+          "       cbf-c sniff FILE                      (cut or cbf: how the workbench reads it)\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
     for (p = 0; p < CBF_PROFILE__COUNT; p++)
@@ -181,6 +185,56 @@ static int cmd_dump(const char *path, int drawn)
     return st;
 }
 
+/* cbf-c encode [--profile P] FILE: CUT text to the CBF it encodes to, written to stdout. */
+static int cmd_encode(int argc, char **argv)
+{
+    int profile = CBF_TOOL_DEFAULT_PROFILE, st = CBF_TOOL_EXIT_OK;
+    const char *path;
+    uint8_t *text, *cbf = NULL;
+    const char *why;
+    long n, len;
+    if (argc == 3 && strcmp(argv[0], "--profile") == 0) {
+        profile = cbf_profile_find(argv[1]);
+        if (profile < 0) {
+            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[1], CBF_QUOTE_NAME));
+            return CBF_TOOL_EXIT_USAGE;
+        }
+    } else if (argc != 1 || argv[0][0] == '-') {
+        usage();
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    path = argv[argc - 1];
+    n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &why);
+    if (n < 0) {
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), n == -2 ? "larger than the most CUT text the engine reads" : why);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    len = cbf_tool_cut_buffer(path, text, (size_t)n, profile, &cbf, &std_sink);
+    if (len < 0 || fwrite(cbf, 1, (size_t)len, stdout) != (size_t)len || fflush(stdout) != 0)
+        st = CBF_TOOL_EXIT_USAGE;
+    free(text);
+    free(cbf);
+    return st;
+}
+
+/* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
+ * file's first bytes are read (the header and the 256 of the text test): a large CBF file costs nothing. */
+static int cmd_sniff(const char *path)
+{
+    uint8_t head[CBF_HEADER_SIZE + 256u];
+    const char *why = "cannot open";
+    FILE *fp = cbf_tool_open(path, &why);
+    size_t n;
+    if (!fp) {
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), why);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    n = fread(head, 1, sizeof head, fp);
+    fclose(fp);
+    puts(cbf_tool_is_cut(head, n) ? "cut" : "cbf");
+    return CBF_TOOL_EXIT_OK;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--version") == 0) {
@@ -193,8 +247,12 @@ int main(int argc, char **argv)
         return cmd_dump(argv[2], 0);
     if (argc == 4 && strcmp(argv[1], "dump") == 0 && strcmp(argv[2], "--path") == 0)
         return cmd_dump(argv[3], 1);
+    if (argc >= 3 && strcmp(argv[1], "encode") == 0)
+        return cmd_encode(argc - 2, argv + 2);
+    if (argc == 3 && strcmp(argv[1], "sniff") == 0)
+        return cmd_sniff(argv[2]);
     usage();
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 201 "cbf_tool.c"
+#line 259 "cbf_tool.c"

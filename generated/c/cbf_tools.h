@@ -65,6 +65,18 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
  * INDEX x,y,z x,y,z ... (a point motion from where the motion before it ended); the status. */
 int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
 
+/** CUT text (the toolkit's text form, spec `cut`): 1 when buf[0..n) is to be read as CUT rather than as a
+ * CBF file (no magic number of the header right, or shorter than the header, and its first 256 bytes text:
+ * printable ASCII, TAB, CR, LF), else 0. The workbench page asks it of a dropped file. */
+int cbf_tool_is_cut(const uint8_t *buf, size_t n);
+/** The most CUT text the engine reads: 64 times the largest CBF file (cbf encode's bound). */
+#define CBF_TOOL_MAX_CUT_SIZE (64u * CBF_TOOL_MAX_FILE_SIZE)
+/** cbf-c encode of one CUT text: the CBF it encodes to (cbf_cut_encode under profile) in *out, a buffer of
+ * the heap the caller frees, and its size; or -1, *out NULL, and one line on sink->err naming the file, the
+ * line (and column) and what is wrong. */
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+                         const cbf_tool_sink *sink);
+
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
  * the engine's copy, valid until the next call; else 0 and cbf_tool_why() says why in one line. */
@@ -84,7 +96,7 @@ long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
 /* ==== END tools/tools_api.h ==== */
-#line 88 "cbf_tools.h"
+#line 100 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -271,7 +283,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 275 "cbf_tools.h"
+#line 287 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -1880,7 +1892,7 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1884 "cbf_tools.h"
+#line 1896 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
@@ -2140,7 +2152,7 @@ int cbf_tool_machine_file(const char *path, cbf_options *opt)
     return ok;
 }
 /* ==== END tools/files.c ==== */
-#line 2144 "cbf_tools.h"
+#line 2156 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2535,8 +2547,74 @@ int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const c
     out_flush();
     return status;
 }
+
+/* ---- CUT text (issue 34: a dropped CUT file is shown as the CBF it encodes to) ---- */
+
+/* Whether buf[0..n) is text to read as CUT rather than a CBF file: no magic number of the header is right
+ * (or it is shorter than the header) and its first 256 bytes are text, frame_magic's test of text. */
+int cbf_tool_is_cut(const uint8_t *buf, size_t n)
+{
+    const cbf_field_info *fields;
+    size_t nf, i;
+    if (n == 0)
+        return 0;
+    if (n >= CBF_HEADER_SIZE) {
+        nf = cbf_header_fields(cbf_version_header_layout(CBF_DEFAULT_VERSION), &fields);
+        for (i = 0; i < nf; i++)
+            if ((fields[i].flags & CBF_FIELD_MAGIC) && cbf_field_uint(&fields[i], buf) == fields[i].magic)
+                return 0;
+    }
+    for (i = 0; i < n && i < 256u; i++)
+        if (!((buf[i] >= 0x20u && buf[i] < 0x7Fu) || buf[i] == '\t' || buf[i] == '\r' || buf[i] == '\n'))
+            return 0;
+    return 1;
+}
+
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+                         const cbf_tool_sink *sink)
+{
+    const char *file = cbf_tool_name(name);
+    size_t cap = (size_t)CBF_HEADER_SIZE + 8u * n + 256u;
+    cbf_cut_error err;
+    long len = CBF_ERR_BUFFER;
+    *out = NULL;
+    out_begin(sink);
+    if (n > CBF_TOOL_MAX_CUT_SIZE) {
+        err_printf("cbf-c: %s: larger than %lu bytes, the most CUT text the engine reads\n", file,
+                   (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
+        return -1;
+    }
+    if (cap > CBF_TOOL_MAX_FILE_SIZE || cap < n)
+        cap = CBF_TOOL_MAX_FILE_SIZE;
+    while (len == CBF_ERR_BUFFER) { /* a first guess from the text's size, then room for the largest file */
+        free(*out);
+        *out = (uint8_t *)malloc(cap);
+        if (!*out) {
+            err_printf("cbf-c: %s: out of memory for the CBF it encodes to\n", file);
+            return -1;
+        }
+        len = cbf_cut_encode((const char *)text, n, profile, *out, cap, &err);
+        if (len == CBF_ERR_BUFFER && cap == CBF_TOOL_MAX_FILE_SIZE)
+            break;
+        cap = CBF_TOOL_MAX_FILE_SIZE;
+    }
+    if (len < 0) {
+        free(*out);
+        *out = NULL;
+        if (len != CBF_ERR_SYNTAX)
+            err_printf("cbf-c: %s: the text does not encode (%s)\n", file, cbf_strerror((int)len));
+        else if (err.line && err.column)
+            err_printf("cbf-c: %s: line %lu, column %lu: %s\n", file, err.line, err.column, err.message);
+        else if (err.line)
+            err_printf("cbf-c: %s: line %lu: %s\n", file, err.line, err.message);
+        else
+            err_printf("cbf-c: %s: %s\n", file, err.message);
+        return -1;
+    }
+    return len;
+}
 /* ==== END tools/engine.c ==== */
-#line 2540 "cbf_tools.h"
+#line 2618 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

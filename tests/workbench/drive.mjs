@@ -1,6 +1,6 @@
 // Drives the workbench page in headless Chromium (playwright-core, Debian's /usr/bin/chromium) for
 // tests/test_workbench_page.py: node drive.mjs PAGE.html SHOTS_DIR JOBS.json
-// JOBS: {"files": [[PATH, PROFILE], ...], "shot": PATH of a failing file to photograph (optional: `make bench` times the page without, bench/workbench_rows.py), "paged": PATH of
+// JOBS: {"files": [[PATH, PROFILE], ...], "cuts": [PATH of CUT text dropped, ...], "shot": PATH of a failing file to photograph (optional: `make bench` times the page without, bench/workbench_rows.py), "paged": PATH of
 // a file of more than a page of motion records, "curve": [PATH, RECORD] of a curved motion}. Prints JSON:
 // each file's printed text and exit status as the page shows them, the requests the page made, the
 // console errors, what fetch() gave from inside the page, and the screenshots' paths and page widths.
@@ -72,6 +72,49 @@ for (const [path, profile] of jobs.files) {
     curve = await page.evaluate((r) => [...document.querySelectorAll(`#path-top path[data-record="${r}"]`)]
       .map((p) => p.getAttribute('d')), String(jobs.curve[1]));
   }
+}
+// CUT text dropped onto the page (issue 34): each file as a drop event carries it; what the page prints for
+// the CBF it encodes to, its note, and (for the first) the CBF the download link gives.
+const cuts = [];
+async function dropFile(path) {
+  const name = path.split('/').pop();
+  const bytes = [...readFileSync(path)];
+  await page.selectOption('#profile', 'default');
+  await page.evaluate(([n, b]) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([new Uint8Array(b)], n));
+    document.getElementById('drop').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, [name, bytes]);
+  for (let waited = 0; ; waited += 20) {
+    const done = await page.evaluate((n) => {
+      const d = document.body.dataset;
+      return d.file === n && d.done === d.generation;
+    }, name);
+    if (done) return;
+    if (waited > 60000) throw new Error(`the page did not show the dropped ${name} within 60 s`);
+    await new Promise((r) => { setTimeout(r, 20); });
+  }
+}
+for (const [k, path] of (jobs.cuts || []).entries()) {
+  await dropFile(path);
+  const shown = await page.evaluate(() => ({
+    shown: document.body.dataset.shown, note: document.getElementById('cut-note').hidden ? null
+      : document.getElementById('cut-note').textContent,
+    href: document.getElementById('cut-download').getAttribute('href'),
+    download: document.getElementById('cut-download').getAttribute('download'),
+    verdict: document.getElementById('verdict').textContent,
+    records: document.querySelectorAll('#records tbody tr').length,
+    segments: document.querySelectorAll('#path-top path[data-record]').length,
+  }));
+  const r = { path, ...shown, text: await page.textContent('#raw'),
+    status: Number(await page.getAttribute('#verdict', 'data-status')) };
+  if (k === 0 && shown.note !== null) {
+    const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#cut-download')]);
+    r.downloaded = [...readFileSync(await dl.path())];
+    await page.setViewportSize({ width: 1280, height: 900 });
+    await page.screenshot({ path: join(shots, 'workbench-cut-1280.png'), fullPage: true });
+  }
+  cuts.push(r);
 }
 // Nothing leaves the page: a fetch() from inside it is refused by the Content-Security-Policy.
 const fetched = await page.evaluate(async () => {
@@ -161,4 +204,4 @@ if (jobs.shot) {
   }
 }
 await context.close();
-process.stdout.write(`${JSON.stringify({ url, results, requests, errors, fetched, widths, selected, picked, paged, curve, three })}\n`);
+process.stdout.write(`${JSON.stringify({ url, results, cuts, requests, errors, fetched, widths, selected, picked, paged, curve, three })}\n`);

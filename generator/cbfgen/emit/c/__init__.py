@@ -16,9 +16,11 @@ from __future__ import annotations
 
 import textwrap
 from pathlib import Path
+from typing import Any
 
 from ...model import Spec
 from ...options import option_rules
+from ...registry import DERIVED_HEADER_ROLES
 from ...render import environment
 from .algorithms import algorithm_tables
 from .cnames import c_or, cfloat, cname, comment, ctype, macro
@@ -65,6 +67,32 @@ def _resume_lines(text: str, name: str) -> str:
     return "\n".join(lines)
 
 
+# The number grammar runtime/cut.c reads (an optional minus, digits, an optional point and digits): the
+# spec's float_pattern must be this one, or the C reader would read another language than cbf's.
+CUT_FLOAT_PATTERN = r"-?\d+\.?\d*"
+
+
+def cut_syntax(spec: Spec) -> dict[str, Any]:
+    """The CUT syntax's words for the C reader (runtime/cut.c), from the model's `cut` section."""
+    cut = spec.cut
+    if cut["float_pattern"] != CUT_FLOAT_PATTERN or cut["arg_separator"] != " ":
+        raise ValueError(f"C binding: runtime/cut.c reads numbers as {CUT_FLOAT_PATTERN} and separates arguments "
+                         f"with one space; the spec's cut section asks {cut['float_pattern']!r} and "
+                         f"{cut['arg_separator']!r}: teach runtime/cut.c first")
+    ext = cut["extensions"]
+    roles = {f.role for h in spec.headers.values() for f in h.fields if f.role}
+    lower = cut["keyword_case"] == "lower"
+    return {
+        "lower": lower, "header": cut["header_keyword"], "header_ext": cut["header_ext_keyword"],
+        "checksum": cut["checksum_keyword"], "version": ext["version_keyword"], "field": ext["field_keyword"],
+        "record": ext["record_keyword"], "open": cut["vector_open"], "close": cut["vector_close"],
+        "sep": cut["vector_separator"],
+        "derived": tuple(macro(r) for r in DERIVED_HEADER_ROLES if r in roles),
+        "former": tuple((n, c.code) for c in spec.commands for n in c.former_names),
+        "max_header_fields": max(len(h.fields) for h in spec.headers.values()),
+    }
+
+
 def emit(spec: Spec) -> dict[str, bytes]:
     env = environment(HERE / "templates")
     env.globals["runtime"] = runtime_section
@@ -79,6 +107,8 @@ def emit(spec: Spec) -> dict[str, bytes]:
     assert "options" not in names
     names["options"] = option_rules(spec)  # option files, cbf_tools.h.j2 (issue 28)
     names["checksum_algorithms"] = algorithm_tables()  # cbf/algorithms.c.j2 (issue 33, point 1)
+    assert "cut_syntax" not in names
+    names["cut_syntax"] = cut_syntax(spec)  # cbf/cut.c.j2, read by runtime/cut.c (issue 34: a dropped CUT file)
     out: dict[str, bytes] = {}
     for name in ("cbf.h", "cbf_tools.h", "cbf_testee.c", "cbf_tool.c", "cbf_fuzz.c", "cbf.pc.in"):
         text = env.get_template(name + ".j2").render(**names)

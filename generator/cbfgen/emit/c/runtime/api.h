@@ -117,6 +117,15 @@ int cbf_encode_bytes(cbf_writer *w, const uint8_t *bytes, size_t n);
  *  writer's first error (errors are sticky: a refused record fails the end). */
 long cbf_encode_end(cbf_writer *w, int profile, int fill);
 
+/** CUT text (the toolkit's text form of a CBF file: the spec's `cut` section) to the CBF file it encodes to,
+ * as cbf's CUT reader and writer make it: text[0..n), read in place, never past n; the file written into
+ * out[0..cap) with every derived value filled (cbf_encode_end with fill) under profile, NOT validated.
+ * Returns the file's size; CBF_ERR_SYNTAX with *err set when the text does not read or does not encode
+ * (the line of the record concerned); CBF_ERR_BUFFER when cap is too small (the text read: call again
+ * with more room; a CBF file never needs more than the header and CBF_LIMIT_MAX_COMMANDS largest
+ * records); CBF_ERR_ARGUMENT for a bad argument. */
+long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_t cap, cbf_cut_error *err);
+
 /** Run every check of the spec; each finding goes to fn. Returns the number
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);

@@ -79,6 +79,7 @@ const char *cbf_strerror(int err)
     case CBF_ERR_RANGE: return "value out of range";
     case CBF_ERR_NOT_WRITABLE: return "not writable";
     case CBF_ERR_INVALID: return "the result would not validate";
+    case CBF_ERR_SYNTAX: return "the text does not read";
     default: return "unknown error";
     }
 }

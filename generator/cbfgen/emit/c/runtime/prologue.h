@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h> /* strtof, strtod: the CUT reader's numbers (runtime/cut.c) */
 #include <string.h>
 
 #ifdef __cplusplus

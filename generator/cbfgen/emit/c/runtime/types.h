@@ -52,6 +52,15 @@ typedef struct cbf_writer {
     int error;             /**< first error, sticky */
 } cbf_writer;
 
+/** Why cbf_cut_encode refused CUT text: the line (from 1; 0: the text as a whole), the column (from 1;
+ * 0: the line alone is named) and what is wrong, one line of printable ASCII (a token of the text is
+ * quoted and cut short; nothing of the text starts the line). */
+typedef struct cbf_cut_error {
+    unsigned long line;
+    unsigned long column;
+    char message[400];
+} cbf_cut_error;
+
 /** A finding of cbf_validate. */
 typedef struct cbf_finding {
     const char *check;     /**< a CBF_CHECK_* id */

@@ -390,3 +390,69 @@ int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const c
     out_flush();
     return status;
 }
+
+/* ---- CUT text (issue 34: a dropped CUT file is shown as the CBF it encodes to) ---- */
+
+/* Whether buf[0..n) is text to read as CUT rather than a CBF file: no magic number of the header is right
+ * (or it is shorter than the header) and its first 256 bytes are text, frame_magic's test of text. */
+int cbf_tool_is_cut(const uint8_t *buf, size_t n)
+{
+    const cbf_field_info *fields;
+    size_t nf, i;
+    if (n == 0)
+        return 0;
+    if (n >= CBF_HEADER_SIZE) {
+        nf = cbf_header_fields(cbf_version_header_layout(CBF_DEFAULT_VERSION), &fields);
+        for (i = 0; i < nf; i++)
+            if ((fields[i].flags & CBF_FIELD_MAGIC) && cbf_field_uint(&fields[i], buf) == fields[i].magic)
+                return 0;
+    }
+    for (i = 0; i < n && i < 256u; i++)
+        if (!((buf[i] >= 0x20u && buf[i] < 0x7Fu) || buf[i] == '\t' || buf[i] == '\r' || buf[i] == '\n'))
+            return 0;
+    return 1;
+}
+
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+                         const cbf_tool_sink *sink)
+{
+    const char *file = cbf_tool_name(name);
+    size_t cap = (size_t)CBF_HEADER_SIZE + 8u * n + 256u;
+    cbf_cut_error err;
+    long len = CBF_ERR_BUFFER;
+    *out = NULL;
+    out_begin(sink);
+    if (n > CBF_TOOL_MAX_CUT_SIZE) {
+        err_printf("cbf-c: %s: larger than %lu bytes, the most CUT text the engine reads\n", file,
+                   (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
+        return -1;
+    }
+    if (cap > CBF_TOOL_MAX_FILE_SIZE || cap < n)
+        cap = CBF_TOOL_MAX_FILE_SIZE;
+    while (len == CBF_ERR_BUFFER) { /* a first guess from the text's size, then room for the largest file */
+        free(*out);
+        *out = (uint8_t *)malloc(cap);
+        if (!*out) {
+            err_printf("cbf-c: %s: out of memory for the CBF it encodes to\n", file);
+            return -1;
+        }
+        len = cbf_cut_encode((const char *)text, n, profile, *out, cap, &err);
+        if (len == CBF_ERR_BUFFER && cap == CBF_TOOL_MAX_FILE_SIZE)
+            break;
+        cap = CBF_TOOL_MAX_FILE_SIZE;
+    }
+    if (len < 0) {
+        free(*out);
+        *out = NULL;
+        if (len != CBF_ERR_SYNTAX)
+            err_printf("cbf-c: %s: the text does not encode (%s)\n", file, cbf_strerror((int)len));
+        else if (err.line && err.column)
+            err_printf("cbf-c: %s: line %lu, column %lu: %s\n", file, err.line, err.column, err.message);
+        else if (err.line)
+            err_printf("cbf-c: %s: line %lu: %s\n", file, err.line, err.message);
+        else
+            err_printf("cbf-c: %s: %s\n", file, err.message);
+        return -1;
+    }
+    return len;
+}

@@ -30,6 +30,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     long n, errors;
     int rc, rc2, p;
 
+    /* the CUT reader on the same bytes as text (cbf_cut_encode): an answer, never a crash; a refusal is one
+     * line of text; a file it writes frames */
+    {
+        cbf_cut_error e;
+        long m = cbf_cut_encode((const char *)data, size, CBF_FUZZ_DEFAULT_PROFILE, out, sizeof out, &e);
+        CHECK(m >= (long)CBF_HEADER_SIZE || m == CBF_ERR_SYNTAX || m == CBF_ERR_BUFFER);
+        if (m == CBF_ERR_SYNTAX)
+            CHECK(e.message[0] != 0 && strchr(e.message, '\n') == NULL);
+        if (m > 0)
+            CHECK(cbf_reader_init(&r, out, (size_t)m) == CBF_OK);
+    }
     for (p = 0; p < CBF_PROFILE__COUNT; p++) {
         memset(&opt, 0, sizeof opt);
         opt.profile = p;

@@ -47,6 +47,18 @@ int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const c
  * INDEX x,y,z x,y,z ... (a point motion from where the motion before it ended); the status. */
 int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink);
 
+/** CUT text (the toolkit's text form, spec `cut`): 1 when buf[0..n) is to be read as CUT rather than as a
+ * CBF file (no magic number of the header right, or shorter than the header, and its first 256 bytes text:
+ * printable ASCII, TAB, CR, LF), else 0. The workbench page asks it of a dropped file. */
+int cbf_tool_is_cut(const uint8_t *buf, size_t n);
+/** The most CUT text the engine reads: 64 times the largest CBF file (cbf encode's bound). */
+#define CBF_TOOL_MAX_CUT_SIZE (64u * CBF_TOOL_MAX_FILE_SIZE)
+/** cbf-c encode of one CUT text: the CBF it encodes to (cbf_cut_encode under profile) in *out, a buffer of
+ * the heap the caller frees, and its size; or -1, *out NULL, and one line on sink->err naming the file, the
+ * line (and column) and what is wrong. */
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+                         const cbf_tool_sink *sink);
+
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
  * the engine's copy, valid until the next call; else 0 and cbf_tool_why() says why in one line. */

@@ -4,7 +4,9 @@ the C engine says of it, in the browser, with nothing installed and nothing sent
 The page runs build/wasm/cbf-c.wasm (the c-wasm binding: the C engine's own files, mk/wasm.mk) as a WASI
 command, through a small in-page WASI layer (workbench.js) over an in-memory file system: the verdict
 and findings are exactly what `cbf-c validate` prints, the records table is `cbf-c dump`, the toolpath
-(top, side and 3D views) is `cbf-c dump --path` (each motion as the engine's geometry turns it). What the page
+(top, side and 3D views) is `cbf-c dump --path` (each motion as the engine's geometry turns it). A file the
+engine takes for CUT text (`cbf-c sniff`) is encoded by it (`cbf-c encode`) and shown as that CBF, with a note
+and a download link (a blob URL); a refusal shows the engine's one line. What the page
 knows of the format beyond that comes from the spec, as data: the byte layouts (the same
 layouts.json the conformance kit ships), the profiles, and each check's anchor in the document.
 

@@ -1,6 +1,7 @@
 // The workbench page (issue 34, point 3). It runs cbf-c.wasm (the C engine, c-wasm binding) as a WASI
 // command over an in-memory file system and shows what it prints: `cbf-c validate` (verdict, findings)
-// and `cbf-c dump` (the records). Nothing here checks a file: every finding is the engine's. What the
+// and `cbf-c dump` (the records); CUT text (`cbf-c sniff`) is first encoded by the engine (`cbf-c encode`).
+// Nothing here checks or reads a file's format: every finding is the engine's. What the
 // page knows of the format (byte layouts, profiles, each check's place in the document) is the spec's,
 // as data (#cbf-data, written by cbfgen.emit.docs.workbench).
 'use strict';
@@ -29,7 +30,7 @@ function wasmModule() {
   return compiled;
 }
 
-function runCommand(args, files) {
+function runCommand(args, files, binary = false) {
   const enc = new TextEncoder();
   const out = [[], [], []];
   const open = new Map(); // fd -> { data, pos }
@@ -169,6 +170,12 @@ function runCommand(args, files) {
     for (const c of chunks) { all.set(c, at); at += c.length; }
     return new TextDecoder().decode(all);
   };
+  if (binary) { // the standard output as bytes (cbf-c encode's CBF), not as text
+    const raw = new Uint8Array(out[1].reduce((n, c) => n + c.length, 0));
+    let at = 0;
+    for (const c of out[1]) { raw.set(c, at); at += c.length; }
+    return { status, stdout: '', stderr: text(out[2]), bytes: raw };
+  }
   return { status, stdout: text(out[1]), stderr: text(out[2]) };
 }
 
@@ -566,9 +573,26 @@ async function check(readFile) {
   for (const id of ['cutters', 'machine']) options.push(await readInput($(id)));
   if (file === null) return;
   if (mine !== generation) return;
-  state.name = safeName(file.name, 'input.cbf');
+  const chosen = safeName(file.name, 'input.cbf');
+  state.name = chosen;
   state.data = file.data;
   const files = new Map([[state.name, file.data]]);
+  // CUT text (the engine's rule, cbf-c sniff: no magic number of the header right, or shorter than the
+  // header, and the first 256 bytes text) is encoded by the engine (cbf-c encode) and shown as that CBF.
+  const cut = runCommand(['cbf-c', 'sniff', chosen], files).stdout.trim() === 'cut';
+  showCut(null);
+  if (cut) {
+    const enc = runCommand(['cbf-c', 'encode', '--profile', profile, chosen], files, true);
+    if (enc.status !== 0) {
+      showCutError(enc, chosen, profile, mine);
+      return;
+    }
+    state.name = safeName(`${chosen.replace(/\.cut$/i, '')}.cbf`, 'input.cbf');
+    if (state.name === chosen) state.name = `encoded-${chosen}`;
+    state.data = enc.bytes;
+    files.set(state.name, enc.bytes);
+    showCut(chosen, state.name, enc.bytes);
+  }
   const args = ['cbf-c', 'validate', '--max-findings', '0', '--profile', profile];
   const flags = [['--cutters', 'cutters.txt'], ['--machine', 'machine.json']];
   for (const [i, [flag, fallback]] of flags.entries()) {
@@ -596,7 +620,43 @@ async function check(readFile) {
   showHex(null);
   showPath(paths);
   showRecords();
-  Object.assign(document.body.dataset, { done: String(mine), file: state.name, profile });
+  Object.assign(document.body.dataset, { done: String(mine), file: chosen, profile, shown: state.name });
+}
+
+// The note over a CUT file's results: what it encoded to, and the CBF to download (a blob URL: no network).
+let cutUrl = null;
+function showCut(source, name, bytes) {
+  if (cutUrl !== null) URL.revokeObjectURL(cutUrl);
+  cutUrl = null;
+  const note = $('cut-note');
+  note.hidden = source === null;
+  if (source === null) return;
+  cutUrl = URL.createObjectURL(new Blob([bytes], { type: 'application/octet-stream' }));
+  $('cut-text').textContent = `${source}: CUT text, shown as the CBF it encodes to (${bytes.length} bytes). `;
+  const a = $('cut-download');
+  a.href = cutUrl;
+  a.download = name;
+  a.textContent = `Download ${name}`;
+}
+
+// A CUT file the engine does not encode: its one line (cbf-c encode's), and nothing else to show.
+function showCutError(enc, chosen, profile, mine) {
+  state.findings = [];
+  state.dump = { version: null, headerLine: '', records: [] };
+  state.data = new Uint8Array(0);
+  state.byRecord = new Map();
+  state.selected = null;
+  state.page = 0;
+  $('raw').textContent = enc.stderr;
+  showVerdict(enc);
+  $('verdict').textContent = `CUT text that does not encode: ${enc.stderr.trim()}`;
+  showFindings();
+  $('hex').replaceChildren();
+  $('legend').replaceChildren();
+  $('hex-title').textContent = '';
+  showPath(new Map());
+  showRecords();
+  Object.assign(document.body.dataset, { done: String(mine), file: chosen, profile, shown: '' });
 }
 
 function showVerdict(v) {
@@ -720,9 +780,10 @@ function select(sel) {
 function setup() {
   for (const p of DATA.profiles) $('profile').append(el('option', { value: p.id, title: p.doc }, p.id));
   const chosen = () => readInput($('file'));
-  $('file').addEventListener('change', () => check(chosen));
-  $('profile').addEventListener('change', () => check(chosen));
-  for (const id of ['cutters', 'machine']) $(id).addEventListener('change', () => check(chosen));
+  let source = chosen; // the file shown: the one chosen, or the one dropped since (a profile change shows it again)
+  $('file').addEventListener('change', () => { source = chosen; check(chosen); });
+  $('profile').addEventListener('change', () => check(source));
+  for (const id of ['cutters', 'machine']) $(id).addEventListener('change', () => check(source));
   const drop = $('drop');
   drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('wb-over'); });
   drop.addEventListener('dragleave', () => drop.classList.remove('wb-over'));
@@ -730,7 +791,10 @@ function setup() {
     e.preventDefault();
     drop.classList.remove('wb-over');
     const f = e.dataTransfer.files[0];
-    if (f !== undefined) await check(async () => ({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) }));
+    if (f === undefined) return;
+    $('file').value = ''; // the chooser no longer names the file shown
+    source = async () => ({ name: f.name, data: new Uint8Array(await f.arrayBuffer()) });
+    await check(source);
   });
   drop.addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); $('file').click(); } });
   for (const id of ['path-top', 'path-side']) {

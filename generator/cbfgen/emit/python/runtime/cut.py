@@ -700,7 +700,8 @@ def from_cut(text: str, *, version: str | None = None, profile: str = "default",
     major, minor = T.parse_version(chosen)
     vid = T.version_id(major, minor)
     if vid is None:
-        raise CutSyntaxError(f"version {chosen} is not a version of this spec", line=1)
+        at = next((n for n, line in _lines(text, checked=True) if line.strip(" ").partition(" ")[0] == vkw), 1)
+        raise CutSyntaxError(f"version {chosen} is not a version of this spec", line=at)  # its line (cbf-c's too)
     info = T.HEADERS[T.VERSION_BY_ID[vid].header]
     fields: dict[str, Any] = {}
     set_on: dict[str, int] = {}  # header field (or check_sum) -> the line that set it
