@@ -4198,6 +4198,17 @@ int cbf_encode_comment(cbf_writer *w, const struct cbf_comment_args *args)
 /* ==== BEGIN runtime/validator.c: verbatim from generator/cbfgen/emit/c/runtime/validator.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/validator.c"
 /* ---- validation ------------------------------------------------------------ */
+/* The straight-line checks (below, and the string checks) are called from one generated function per
+ * layout (cbf__layout_checks_*) with the layout's offsets as constants; forced inline, each folds to a
+ * few loads and compares. An offset of -1 means the layout has no such argument. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CBF__INLINE static inline __attribute__((always_inline))
+#define CBF__COLD __attribute__((cold, noinline)) /* a finding's path: out of the record loop's way */
+#else
+#define CBF__INLINE static inline
+#define CBF__COLD
+#endif
+
 typedef struct cbf__vctx {
     const uint8_t *buf;
     size_t len;
@@ -4369,6 +4380,36 @@ static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
     return size;
 }
 
+/* Whether any of the n bytes at s is not the pad byte: a word at a time (the every-command file's
+ * strings are mostly padding, and a byte loop over it was a fifth of its validation's instructions). */
+CBF__INLINE int cbf__any_unpadded(const uint8_t *s, size_t n)
+{
+    const uint64_t pad = (uint64_t)CBF__PAD * 0x0101010101010101u;
+    uint64_t diff = 0u, w;
+    size_t i = 0;
+    for (; i + 8u <= n; i += 8u) {
+        memcpy(&w, s + i, sizeof w);
+        diff |= w ^ pad;
+    }
+    for (; i < n; i++)
+        diff |= (uint64_t)(s[i] ^ CBF__PAD);
+    return diff != 0u;
+}
+
+/* string_tail: the bytes after the first NUL, in hex, up to the last that is not NUL. Cold. */
+CBF__COLD static void cbf__string_tail(cbf__vctx *v, const char *cmd, const cbf_field_info *f, const uint8_t *s,
+                                       size_t n, size_t size, size_t base_off, long rec)
+{
+    char msg[256];
+    size_t at = 0, last = size, i;
+    while (last > n + 1u && s[last - 1u] == CBF__PAD)
+        last--;
+    cbf__cat(msg, sizeof msg, &at, "%s%s%s: bytes after the first NUL: ", cmd ? cmd : "", cmd ? "." : "", f->name);
+    for (i = n + 1u; i < last; i++)
+        cbf__cat(msg, sizeof msg, &at, "%02x", (unsigned)s[i]);
+    cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset, "%s", msg);
+}
+
 /* string_tail and string_ascii on one string field; cmd: the record's command name, NULL in the header. */
 static void cbf__check_string(cbf__vctx *v, const char *cmd, const cbf_field_info *f, const uint8_t *base,
                               size_t base_off, long rec)
@@ -4376,20 +4417,8 @@ static void cbf__check_string(cbf__vctx *v, const char *cmd, const cbf_field_inf
     const uint8_t *s = base + f->offset;
     size_t size = (size_t)f->elem * f->count;
     size_t n = cbf__strvalue_len(s, size), i;
-    for (i = n; i < size; i++) {
-        if (s[i] != CBF__PAD) { /* the bytes after the first NUL, in hex, up to the last that is not NUL */
-            char msg[256];
-            size_t at = 0, last = size;
-            while (last > n + 1u && s[last - 1u] == CBF__PAD)
-                last--;
-            cbf__cat(msg, sizeof msg, &at, "%s%s%s: bytes after the first NUL: ", cmd ? cmd : "", cmd ? "." : "",
-                     f->name);
-            for (i = n + 1u; i < last; i++)
-                cbf__cat(msg, sizeof msg, &at, "%02x", (unsigned)s[i]);
-            cbf__each(v, CBF__KIND_STRING_TAIL, rec, base_off + f->offset, "%s", msg);
-            break;
-        }
-    }
+    if (n < size && cbf__any_unpadded(s + n + 1u, size - n - 1u))
+        cbf__string_tail(v, cmd, f, s, n, size, base_off, rec);
     for (i = 0; i < n; i++) {
         if (s[i] < 0x20u || s[i] > 0x7Eu) {
             cbf__each(v, CBF__KIND_STRING_ASCII, rec, base_off + f->offset, "%s%s%s: non-ASCII byte 0x%02X",
@@ -4445,18 +4474,6 @@ static void cbf__check_descriptor_word(cbf__vctx *v)
 }
 
 static double cbf__norm(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
-/* The straight-line checks below are called from one generated function per
- * layout (cbf__layout_checks_*) with the layout's offsets as constants; forced
- * inline, each folds to a few loads and compares. An offset of -1 means the
- * layout has no such argument. */
-#if defined(__GNUC__) || defined(__clang__)
-#define CBF__INLINE static inline __attribute__((always_inline))
-#define CBF__COLD __attribute__((cold, noinline)) /* a finding's path: out of the record loop's way */
-#else
-#define CBF__INLINE static inline
-#define CBF__COLD
-#endif
 
 /* The binary32 element at p, decoded once a record into *x (the generated layout
  * function reads each element of a float argument with it, one call an element,
@@ -4887,7 +4904,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4891 "cbf.h"
+#line 4908 "cbf.h"
 /* ==== BEGIN runtime/path.c: verbatim from generator/cbfgen/emit/c/runtime/path.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/path.c"
 /* ---- the drawn path of a motion record (issue 34: the workbench draws curves with the engine's geometry) ----
@@ -5089,7 +5106,7 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     }
 }
 /* ==== END runtime/path.c ==== */
-#line 5093 "cbf.h"
+#line 5110 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5255,7 +5272,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5259 "cbf.h"
+#line 5276 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5292,7 +5309,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5296 "cbf.h"
+#line 5313 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6278,7 +6295,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6282 "cbf.h"
+#line 6299 "cbf.h"
 #ifdef __cplusplus
 }
 #endif
