@@ -600,6 +600,9 @@ def _plain_strings(b: Batch, name: str) -> bool:
     look row by row). The tests run on the column's bytes as one flat run: numpy's operations
     on rows of a few bytes pay a loop set-up a row."""
     got = b.plain.get(name)
+    if got is None and b.raw[name].shape[0] <= _PLAIN_PYTHON_ROWS:
+        got = _plain_rows(b.raw[name])
+        b.plain[name] = got
     if got is None:
         col = b.raw[name]
         width = col.shape[1]
@@ -610,6 +613,17 @@ def _plain_strings(b: Batch, name: str) -> bool:
         got = not rise.any() and not (used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20))).any()
         b.plain[name] = got
     return got
+
+
+_PLAIN_PYTHON_ROWS = 8  # up to this many rows, plain Python on the bytes (~0.5 us a row) beats ~8 numpy calls (~5 us)
+_PRINTABLE = bytes(range(0x20, 0x7F))
+
+
+def _plain_rows(col: NDArray[np.uint8]) -> bool:
+    """_plain_strings on a few rows: each row, its trailing NULs dropped, holds printable ASCII only."""
+    width = col.shape[1]
+    raw = col.tobytes()
+    return not any(raw[i:i + width].rstrip(b"\0").translate(None, _PRINTABLE) for i in range(0, len(raw), width))
 
 
 def _plain_bytes(raw: bytes) -> bool:
