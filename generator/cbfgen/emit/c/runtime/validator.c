@@ -181,19 +181,33 @@ static size_t cbf__strvalue_len(const uint8_t *s, size_t size)
     return size;
 }
 
-/* Whether any of the n bytes at s is not the pad byte: a word at a time (the every-command file's
- * strings are mostly padding, and a byte loop over it was a fifth of its validation's instructions). */
+/* The w (1, 2, 4 or 8) bytes at p, as the pad bytes compare with them (memcpy: any alignment). */
+CBF__INLINE uint64_t cbf__bytes_at(const uint8_t *p, size_t w)
+{
+    uint64_t x8;
+    uint32_t x4;
+    uint16_t x2;
+    switch (w) {
+    case 8u: memcpy(&x8, p, 8u); return x8;
+    case 4u: memcpy(&x4, p, 4u); return x4;
+    case 2u: memcpy(&x2, p, 2u); return x2;
+    default: return *p;
+    }
+}
+
+/* Whether any of the n bytes at s is not the pad byte: words of 8 (4, 2, 1 below 8 bytes), the last
+ * word overlapping the one before (the every-command file's strings are mostly padding, and a byte
+ * loop over it was a fifth of its validation's instructions). */
 CBF__INLINE int cbf__any_unpadded(const uint8_t *s, size_t n)
 {
     const uint64_t pad = (uint64_t)CBF__PAD * 0x0101010101010101u;
-    uint64_t diff = 0u, w;
-    size_t i = 0;
-    for (; i + 8u <= n; i += 8u) {
-        memcpy(&w, s + i, sizeof w);
-        diff |= w ^ pad;
-    }
-    for (; i < n; i++)
-        diff |= (uint64_t)(s[i] ^ CBF__PAD);
+    size_t w = n >= 8u ? 8u : n >= 4u ? 4u : n >= 2u ? 2u : 1u, i;
+    uint64_t mask = w == 8u ? ~(uint64_t)0 : (((uint64_t)1 << (8u * w)) - 1u), diff = 0u;
+    if (n == 0u)
+        return 0;
+    for (i = 0; i + w <= n; i += w)
+        diff |= cbf__bytes_at(s + i, w) ^ (pad & mask);
+    diff |= cbf__bytes_at(s + n - w, w) ^ (pad & mask); /* the rest: the last w bytes */
     return diff != 0u;
 }
 
