@@ -2286,13 +2286,20 @@ static int frame(const char *file, const uint8_t *buf, size_t n)
     return frame_magic(file, buf, n);
 }
 
+/* One of the tool's operations on a buffer, its output to sink (the buffer entry points below). */
+static int on_buffer(int (*op)(const char *, const uint8_t *, size_t), const char *name, const uint8_t *buf, size_t n,
+                     const cbf_tool_sink *sink)
+{
+    int status;
+    out_begin(sink);
+    status = op(cbf_tool_name(name), buf, n);
+    out_flush();
+    return status;
+}
+
 int cbf_tool_frame_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
 {
-    int ok;
-    out_begin(sink);
-    ok = frame(cbf_tool_name(name), buf, n);
-    out_flush();
-    return ok;
+    return on_buffer(frame, name, buf, n, sink);
 }
 
 /* The findings held, sorted, at most max of them (0: all), and the summary line; frees them. */
@@ -2503,11 +2510,7 @@ static int dump(const char *file, const uint8_t *buf, size_t n)
 
 int cbf_tool_dump_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
 {
-    int status;
-    out_begin(sink);
-    status = dump(cbf_tool_name(name), buf, n);
-    out_flush();
-    return status;
+    return on_buffer(dump, name, buf, n, sink);
 }
 
 /* cbf-c dump --path: each motion record's drawn path (cbf_motion_path), one line a record,
@@ -2541,11 +2544,7 @@ static int dump_path(const char *file, const uint8_t *buf, size_t n)
 
 int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const cbf_tool_sink *sink)
 {
-    int status;
-    out_begin(sink);
-    status = dump_path(cbf_tool_name(name), buf, n);
-    out_flush();
-    return status;
+    return on_buffer(dump_path, name, buf, n, sink);
 }
 
 /* ---- CUT text (issue 34: a dropped CUT file is shown as the CBF it encodes to) ---- */
@@ -2614,7 +2613,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int pr
     return len;
 }
 /* ==== END tools/engine.c ==== */
-#line 2618 "cbf_tools.h"
+#line 2617 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
