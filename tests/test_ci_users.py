@@ -294,6 +294,27 @@ def test_one_hostile_name_alone_gives_its_bytes_back(every_command: list[Result]
     assert len(seen) >= len(HOSTILE) - 1  # all but the text file not CBF
 
 
+def test_every_hidden_character_is_quoted_alike_by_both_tools(tmp_path: Path, cbf_c: Path) -> None:
+    """Each end of each hidden range of the rule (and the character just outside it) in a file name:
+    `cbf` and `cbf-c` print the same line, and a hidden one is quoted. Up to round 6, `cbf` printed
+    U+FEFF, U+FFF9-U+FFFB and U+FFFE/U+FFFF as they are, where `cbf-c` quoted them."""
+    from cbf import quoting
+
+    hidden = [(lo, hi) for lo, hi in quoting.HIDDEN if (lo, hi) != quoting.SURROGATES]
+    chars = sorted({ch for lo, hi in hidden for ch in (lo - 1, lo, hi, hi + 1)})
+    names = []
+    for ch in chars:
+        p = tmp_path / f"a{chr(ch)}b.cbf"
+        p.write_bytes(CLEAN.read_bytes())
+        names.append(p)
+        assert quoting.is_plain(p.name) == (not any(lo <= ch <= hi for lo, hi in hidden)), hex(ch)
+    a = py("validate", "--max-findings", "0", *map(str, names))
+    b = c(cbf_c, "validate", "--max-findings", "0", *map(str, names))
+    assert a.returncode == b.returncode == 0, (a.stderr, b.stderr)
+    assert a.stdout.splitlines()[:-1] == b.stdout.splitlines(), (a.stdout, b.stdout)  # cbf adds a summary line
+    assert b.stdout.count(b'"') == 2 * sum(any(lo <= ch <= hi for lo, hi in hidden) for ch in chars)
+
+
 def test_both_tools_print_the_same_quoted_name(every_command: list[Result], hostile_dir: Path,
                                                cbf_c: Path) -> None:
     by_name = {os.fsencode(r.args[-1]): r for r in every_command if list(r.args[:5]) == [

@@ -24,15 +24,17 @@ from __future__ import annotations
 
 import re
 
-_HIDDEN = ((0x2028, 0x2029), (0x200B, 0x200F), (0x202A, 0x202E), (0x2060, 0x206F), (0xFEFF, 0xFEFF),
+HIDDEN = ((0x2028, 0x2029), (0x200B, 0x200F), (0x202A, 0x202E), (0x2060, 0x206F), (0xFEFF, 0xFEFF),
            (0xFFF9, 0xFFFB), (0xFFFE, 0xFFFF), (0xD800, 0xDFFF))
+SURROGATES = (0xD800, 0xDFFF)  # last in the class: a range of lone surrogates is spelt on its own
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\n": "\\n", "\r": "\\r", "\t": "\\t"}
-# The characters that are not plain, as one class of small ranges: the controls (C0, DEL, C1), the
-# hidden ranges below the surrogates, the surrogates. (Written as the complement of the printable
-# ranges, a class up to U+10FFFF, re took ~6 ms to compile each pattern, a good part of `cbf`'s own
-# start-up; the set is the same, every code point compared.)
+# The characters that are not plain, as one class of small ranges: the controls (C0, DEL, C1), every
+# hidden range, the surrogates. (Written as the complement of the printable ranges, a class up to
+# U+10FFFF, re took ~6 ms to compile each pattern, a good part of `cbf`'s own start-up. Both forms
+# left out the hidden ranges above the surrogates until round 6: U+FEFF, U+FFF9-U+FFFB and
+# U+FFFE/U+FFFF printed as they are, where cbf-c quoted them.)
 _NOT_PRINTABLE = "\x00-\x1f\x7f-\x9f" + "".join(
-    f"{chr(lo)}-{chr(hi)}" if lo != hi else chr(lo) for lo, hi in _HIDDEN if lo < 0xD800) + "\ud800-\udfff"
+    f"{chr(lo)}-{chr(hi)}" if lo != hi else chr(lo) for lo, hi in HIDDEN if (lo, hi) != SURROGATES) + "\ud800-\udfff"
 _NOT_PLAIN = re.compile("[" + _NOT_PRINTABLE + '"\\\\]')
 _NOT_LINE = re.compile("[" + _NOT_PRINTABLE + "]")
 
