@@ -9,7 +9,9 @@
  * validate prints what `cbf validate` prints, in its order (header first, then by record,
  * check order, offset), at most --max-findings findings a file (default 50, 0 for all).
  *   cbf-c dump [--path] FILE   (--path: each motion record's drawn path, cbf_motion_path)
- *   cbf-c encode [--profile P] FILE.cut   (CUT text to the CBF it encodes to, on stdout: cbf_cut_encode)
+ *   cbf-c encode [--profile P] [--version V] [--input-format cut] FILE.cut -o OUT
+ *                              (CUT text to the CBF it encodes to, cbf_cut_encode_as, written to OUT as
+ *                              cbf encode writes: atomically, every write checked; -o - is stdout)
  *   cbf-c sniff FILE           (cut or cbf: whether the engine reads it as CUT text, cbf_tool_is_cut)
  *   cbf-c --version
  *
@@ -52,7 +54,8 @@ static void usage(void)
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
           "FILE...\n"
           "       cbf-c dump [--path] FILE\n"
-          "       cbf-c encode [--profile P] FILE.cut   (the CBF it encodes to, on stdout)\n"
+          "       cbf-c encode [--profile P] [--version V] [--input-format cut] FILE.cut -o OUT   (CUT text to CBF;\n"
+          "                    -o - for standard output; cbf-c reads CUT text, not JSON)\n"
           "       cbf-c sniff FILE                      (cut or cbf: how the workbench reads it)\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
@@ -185,36 +188,131 @@ static int cmd_dump(const char *path, int drawn)
     return st;
 }
 
-/* cbf-c encode [--profile P] FILE: CUT text to the CBF it encodes to, written to stdout. */
+/* The writable version named by its id ("4.0"), or -1 and one line on stderr naming the writable ones. */
+static int parse_version(const char *value)
+{
+    char list[128];
+    size_t used = 0;
+    int v;
+    for (v = 0; v < CBF__NVERSIONS; v++)
+        if (cbf_version_writable(v) && strcmp(cbf_version_name(v), value) == 0)
+            return v;
+    list[0] = '\0';
+    for (v = 0; v < CBF__NVERSIONS; v++)
+        if (cbf_version_writable(v) && used < sizeof list)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", used ? ", " : "", cbf_version_name(v));
+    fprintf(stderr, "cbf-c: --version: not a version cbf-c writes: %s (writable: %s)\n",
+            cbf_quoted(value, CBF_QUOTE_NAME), list);
+    return -1;
+}
+
+/* Whether text is canonical JSON rather than CUT, as cbf encode tells them apart: a name ending in .json,
+ * or text whose first character (after a byte order mark and white space) is '{'. */
+static int looks_like_json(const char *path, const uint8_t *text, size_t n)
+{
+    size_t pn = strlen(path), i = n >= 3u && memcmp(text, "\xEF\xBB\xBF", 3u) == 0 ? 3u : 0u;
+    if (pn >= 5u && strcmp(path + pn - 5u, ".json") == 0)
+        return 1;
+    while (i < n && strchr(" \t\n\r\v\f", text[i]) && text[i])
+        i++;
+    return i < n && text[i] == '{';
+}
+
+/* Whether text holds nothing but white space (cbf encode: "empty input: nothing to encode"). */
+static int is_blank(const uint8_t *text, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!text[i] || !strchr(" \t\n\r\v\f\x1c\x1d\x1e\x1f", text[i]))
+            return 0;
+    return 1;
+}
+
+/* cbf-c encode [--profile P] [--version V] [--input-format cut] FILE -o OUT: CUT text to the CBF it encodes
+ * to, written to OUT (- for standard output) as cbf encode writes it: atomically, every write checked,
+ * nothing written on any refusal. The command line is cbf encode's for CUT input; JSON is refused with one
+ * line (cbf-c reads CUT text only), --keep-stored with cbf's line (CUT stores nothing to keep). */
 static int cmd_encode(int argc, char **argv)
 {
-    int profile = CBF_TOOL_DEFAULT_PROFILE, st = CBF_TOOL_EXIT_OK;
-    const char *path;
+    static char why[2u * CBF_TOOL_NAME_BYTES + 256u];
+    int profile = CBF_TOOL_DEFAULT_PROFILE, version = CBF_V__UNKNOWN, keep = 0, json = -1, i;
+    const char *path = NULL, *output = NULL;
     uint8_t *text, *cbf = NULL;
-    const char *why;
     long n, len;
-    if (argc == 3 && strcmp(argv[0], "--profile") == 0) {
-        profile = cbf_profile_find(argv[1]);
-        if (profile < 0) {
-            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[1], CBF_QUOTE_NAME));
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        int valued = strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "-o") == 0
+                     || strcmp(a, "--output") == 0 || strcmp(a, "--input-format") == 0;
+        if (valued && i + 1 >= argc) {
+            usage();
             return CBF_TOOL_EXIT_USAGE;
         }
-    } else if (argc != 1 || argv[0][0] == '-') {
+        if (strcmp(a, "--profile") == 0) {
+            profile = cbf_profile_find(argv[++i]);
+            if (profile < 0) {
+                fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
+                return CBF_TOOL_EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--version") == 0) {
+            version = parse_version(argv[++i]);
+            if (version < 0)
+                return CBF_TOOL_EXIT_USAGE;
+        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            output = argv[++i];
+        } else if (strcmp(a, "--input-format") == 0) {
+            i++;
+            json = strcmp(argv[i], "json") == 0 ? 1 : strcmp(argv[i], "cut") == 0 ? 0 : -2;
+            if (json == -2) {
+                fprintf(stderr, "cbf-c: --input-format: %s is neither cut nor json\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
+                return CBF_TOOL_EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--keep-stored") == 0) {
+            keep = 1;
+        } else if ((a[0] == '-' && a[1]) || path) {
+            usage();
+            return CBF_TOOL_EXIT_USAGE;
+        } else {
+            path = a;
+        }
+    }
+    if (!path || !output) {
+        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", path ? "-o/--output" : "FILE");
         usage();
         return CBF_TOOL_EXIT_USAGE;
     }
-    path = argv[argc - 1];
-    n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &why);
-    if (n < 0) {
-        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), n == -2 ? "larger than the most CUT text the engine reads" : why);
+    if (!cbf_tool_check_output(output, why, sizeof why)) { /* before the work, as cbf does */
+        fprintf(stderr, "cbf-c: %s\n", why);
         return CBF_TOOL_EXIT_USAGE;
     }
-    len = cbf_tool_cut_buffer(path, text, (size_t)n, profile, &cbf, &std_sink);
-    if (len < 0 || fwrite(cbf, 1, (size_t)len, stdout) != (size_t)len || fflush(stdout) != 0)
-        st = CBF_TOOL_EXIT_USAGE;
+    {
+        const char *cause;
+        n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
+        if (n < 0) {
+            fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path),
+                    n == -2 ? "larger than the most CUT text the engine reads" : cause);
+            return CBF_TOOL_EXIT_USAGE;
+        }
+    }
+    if (is_blank(text, (size_t)n))
+        fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));
+    else if (json == 1 || (json < 0 && looks_like_json(path, text, (size_t)n)))
+        fprintf(stderr, "cbf-c: %s: not CUT text: canonical JSON, which cbf-c does not read (cbf encode reads it)\n",
+                cbf_tool_name(path));
+    else if (keep) /* CUT carries no sequence numbers, count or checksums: nothing stored to keep (cbf's line) */
+        fprintf(stderr, "cbf-c: %s: --keep-stored applies to JSON input only: CUT text carries no stored sequence "
+                "numbers, count or checksums to keep\n", cbf_tool_name(path));
+    else {
+        len = cbf_tool_cut_buffer(path, text, (size_t)n, version, profile, &cbf, &std_sink);
+        if (len >= 0 && !cbf_tool_write_file(output, cbf, (size_t)len, why, sizeof why)) {
+            fprintf(stderr, "cbf-c: %s\n", why);
+            len = -1;
+        }
+        free(text);
+        free(cbf);
+        return len < 0 ? CBF_TOOL_EXIT_USAGE : CBF_TOOL_EXIT_OK;
+    }
     free(text);
-    free(cbf);
-    return st;
+    return CBF_TOOL_EXIT_USAGE;
 }
 
 /* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
@@ -255,4 +353,4 @@ int main(int argc, char **argv)
     return CBF_TOOL_EXIT_USAGE;
 }
 /* ==== END tools/cli.c ==== */
-#line 259 "cbf_tool.c"
+#line 357 "cbf_tool.c"

@@ -413,7 +413,7 @@ int cbf_tool_is_cut(const uint8_t *buf, size_t n)
     return 1;
 }
 
-long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int version, int profile, uint8_t **out,
                          const cbf_tool_sink *sink)
 {
     const char *file = cbf_tool_name(name);
@@ -436,7 +436,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int pr
             err_printf("cbf-c: %s: out of memory for the CBF it encodes to\n", file);
             return -1;
         }
-        len = cbf_cut_encode((const char *)text, n, profile, *out, cap, &err);
+        len = cbf_cut_encode_as((const char *)text, n, version, profile, *out, cap, &err);
         if (len == CBF_ERR_BUFFER && cap == CBF_TOOL_MAX_FILE_SIZE)
             break;
         cap = CBF_TOOL_MAX_FILE_SIZE;
