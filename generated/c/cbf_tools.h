@@ -2275,8 +2275,18 @@ static int cbf_tool_check_target(const char *path, const char *target, const cha
     if (stat(target, st) != 0) {
         if (errno != ENOENT)
             return cbf_tool_out_fail(why, cap, path, "cannot write", strerror(errno));
-        if (stat(dir, &ds) != 0 || !S_ISDIR(ds.st_mode)) {
-            (void)snprintf(why, cap, "%s: folder %s does not exist", cbf_tool_name(path), cbf_quoted(dir, CBF_QUOTE_NAME));
+        if (stat(dir, &ds) != 0 || !S_ISDIR(ds.st_mode)) { /* the folder from the root, as cbf names it */
+            char cwd[4096];
+            int rel = dir[0] != '/' && getcwd(cwd, sizeof cwd) != NULL;
+            size_t dn = strlen(dir), cn = rel ? strlen(cwd) : 0u;
+            char *full = (char *)malloc(cn + dn + 2u);
+            if (full && rel && strcmp(dir, ".") == 0)
+                (void)memcpy(full, cwd, cn + 1u);
+            else if (full)
+                (void)sprintf(full, "%s%s%s", rel ? cwd : "", rel && cn > 1u ? "/" : "", dir);
+            (void)snprintf(why, cap, "%s: folder %s does not exist", cbf_tool_name(path),
+                           cbf_quoted(full ? full : dir, CBF_QUOTE_NAME));
+            free(full);
             return 0;
         }
         return 1;
@@ -2443,7 +2453,7 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
 }
 #endif
 /* ==== END tools/files.c ==== */
-#line 2447 "cbf_tools.h"
+#line 2457 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2905,7 +2915,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     return len;
 }
 /* ==== END tools/engine.c ==== */
-#line 2909 "cbf_tools.h"
+#line 2919 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
