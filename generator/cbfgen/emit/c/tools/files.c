@@ -265,7 +265,8 @@ static int cbf_tool_out_fail(char *why, size_t cap, const char *path, const char
     return 0;
 }
 
-#ifdef CBF_TOOLS_POSIX
+/* POSIX (not WASI, which has no mkstemp, no modes and no temporary names of its own): the atomic writer. */
+#if defined(CBF_TOOLS_POSIX) && !defined(__wasi__)
 /* Every byte of data[0..n) to fd: a short write goes on from where it stopped, a write that takes nothing
  * is a full disk (never a short output). 0, or -1 with errno. */
 static int cbf_tool_write_all(int fd, const uint8_t *data, size_t n)
@@ -478,14 +479,12 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
         ok = cbf_tool_out_fail(why, cap, path, "cannot write", strerror(errno));
         goto done;
     }
-#ifndef __wasi__ /* mkstemp makes 0600: an ordinary file's mode (0666 under the umask); WASI has no modes */
-    {
+    { /* mkstemp makes 0600: an ordinary file's mode (0666 under the umask), as cbf gives it */
         mode_t mask = umask(0);
         (void)umask(mask);
         if (fchmod(fd, (mode_t)(0666u & ~(unsigned)mask)) != 0)
             err = errno;
     }
-#endif
     if (!err && (cbf_tool_write_all(fd, data, n) != 0 || fsync(fd) != 0))
         err = errno;
     if (close(fd) != 0 && !err)
@@ -504,7 +503,8 @@ done:
     return ok;
 }
 #else
-/* Without POSIX: a file beside the target ("NAME.tmp"), written whole, closed, then renamed over it. */
+/* Without POSIX, and on WASI (whose host is a page writing to standard output): a file beside the target
+ * ("NAME.tmp"), written whole, closed, then renamed over it; standard output written and flushed. */
 int cbf_tool_check_output(const char *path, char *why, size_t cap)
 {
     (void)path;
