@@ -2411,9 +2411,27 @@ done:
     free(dir);
     return ok;
 }
+#elif defined(__wasi__)
+/* WASI (cbf-c.wasm, run by the workbench page and node's WASI): standard output only, written and flushed;
+ * writing a file would need imports the page's WASI has not (rename, unlink), and the page reads -o -. */
+int cbf_tool_check_output(const char *path, char *why, size_t cap)
+{
+    if (strcmp(path, "-") == 0)
+        return 1;
+    return cbf_tool_out_fail(why, cap, path, "cannot write", "cbf-c.wasm writes to standard output only: -o -");
+}
+
+int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *why, size_t cap)
+{
+    if (!cbf_tool_check_output(path, why, cap))
+        return 0;
+    if (fwrite(data, 1, n, stdout) != n || fflush(stdout) != 0)
+        return cbf_tool_out_fail(why, cap, path, "cannot write", strerror(errno));
+    return 1;
+}
 #else
-/* Without POSIX, and on WASI (whose host is a page writing to standard output): a file beside the target
- * ("NAME.tmp"), written whole, closed, then renamed over it; standard output written and flushed. */
+/* Without POSIX: a file beside the target ("NAME.tmp"), written whole, closed, then renamed over it;
+ * standard output written and flushed. */
 int cbf_tool_check_output(const char *path, char *why, size_t cap)
 {
     (void)path;
@@ -2453,7 +2471,7 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
 }
 #endif
 /* ==== END tools/files.c ==== */
-#line 2457 "cbf_tools.h"
+#line 2475 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2915,7 +2933,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     return len;
 }
 /* ==== END tools/engine.c ==== */
-#line 2919 "cbf_tools.h"
+#line 2937 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
