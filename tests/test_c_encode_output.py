@@ -3,7 +3,7 @@ same bytes, the same refusals (one line each, the tool's name aside) and the sam
 "Exit codes and bad input": an output written atomically, every write checked, nothing written on a
 refusal). What the README table does not say row by row: --version, a disk that fills part way (a file
 size limit, RLIMIT_FSIZE, with SIGXFSZ ignored: the write fails with EFBIG as on a full disk), a standard
-output that fails, a symlink as the output, the new file's mode. Every expectation is what `cbf` does on
+output that fails (for every command), a symlink as the output, the new file's mode. Every expectation is what `cbf` does on
 the same input; the inputs are the CUT text cbf writes for a golden file."""
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from pathlib import Path
 import pytest
 from c_programs import built
 from conftest import ENV
+from test_exit_codes import READER
 
 import cbf
 from cbf import tables as T
@@ -193,3 +194,17 @@ def test_a_symlink_stays_a_link_and_the_new_file_has_cbfs_mode(cbf_c: Path, cut:
         modes[tool] = stat.S_IMODE(os.stat(fresh).st_mode)
     assert modes["cbf"] == modes["cbf-c"]
     assert not [p.name for p in cut.parent.iterdir() if p.name.startswith(".")]
+
+
+@pytest.mark.parametrize("command", ["validate GOOD", "READER GOOD", "--version", "encode CUT -o -"])
+def test_every_command_checks_standard_output(cbf_c: Path, cut: Path, command: str) -> None:
+    """A standard output that cannot be written (/dev/full) is one line and exit 2 for every command, cbf's
+    line (README: "Every write is checked, to a file and to standard output alike")."""
+    if not Path("/dev/full").exists():
+        pytest.skip("no /dev/full")
+    lines = {}
+    for tool in ("cbf", "cbf-c"):
+        argv = [{"GOOD": str(VALID), "CUT": cut.name, "READER": READER[tool]}.get(a, a) for a in command.split()]
+        with open("/dev/full", "wb") as full:
+            lines[tool] = _line(_run(tool, cbf_c, argv, cut.parent, stdout=full), tool)
+    assert lines["cbf"] == lines["cbf-c"]

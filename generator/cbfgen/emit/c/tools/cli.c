@@ -2,10 +2,52 @@
  * It parses the arguments, reads each file whole into memory and hands it to the engine with a sink that
  * writes to stdout and stderr. */
 
+/* Standard output is checked as cbf checks it: the first failed write's errno is kept, and at the end a
+ * stdout that failed is one line and exit 2, what went to a regular file there cut off again (nothing that
+ * looks complete stays). cbf-c encode -o - writes through the file layer, which checks the same way. */
+static int stdout_errno;
+
 static void write_stdout(void *user, const char *text, size_t len)
 {
     (void)user;
-    (void)fwrite(text, 1, len, stdout);
+    errno = 0;
+    if (fwrite(text, 1, len, stdout) != len && !stdout_errno)
+        stdout_errno = errno ? errno : EIO;
+}
+
+#if defined(CBF_TOOLS_POSIX) && !defined(__wasi__)
+static off_t stdout_start = -1; /* where this process began writing a regular file on stdout */
+
+static void stdout_begin(void)
+{
+    struct stat st;
+    if (fstat(1, &st) == 0 && S_ISREG(st.st_mode))
+        stdout_start = lseek(1, 0, SEEK_CUR);
+}
+
+static void stdout_cut_off(void)
+{
+    if (stdout_start >= 0 && ftruncate(1, stdout_start) != 0)
+        stdout_start = -1; /* cut off as far as it could be */
+}
+#else
+static void stdout_begin(void) {}
+static void stdout_cut_off(void) {}
+#endif
+
+/* The exit status once stdout is flushed: status, or 2 and one line when a write to it failed. */
+static int stdout_end(int status)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 && !stdout_errno)
+        stdout_errno = errno ? errno : EIO;
+    if (ferror(stdout) && !stdout_errno)
+        stdout_errno = EIO;
+    if (!stdout_errno)
+        return status;
+    stdout_cut_off();
+    fprintf(stderr, "cbf-c: standard output: cannot write (%s)\n", strerror(stdout_errno));
+    return CBF_TOOL_EXIT_USAGE;
 }
 
 static void write_stderr(void *user, const char *text, size_t len)
@@ -301,7 +343,7 @@ static int cmd_sniff(const char *path)
     return CBF_TOOL_EXIT_OK;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--version") == 0) {
         printf("cbf-c %s (spec %s)\n", CBF_TOOLKIT_VERSION, CBF_SPEC_REVISION);
@@ -319,4 +361,10 @@ int main(int argc, char **argv)
         return cmd_sniff(argv[2]);
     usage();
     return CBF_TOOL_EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    stdout_begin();
+    return stdout_end(run(argc, argv));
 }
