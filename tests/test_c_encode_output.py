@@ -3,8 +3,8 @@ same bytes, the same refusals (one line each, the tool's name aside) and the sam
 "Exit codes and bad input": an output written atomically, every write checked, nothing written on a
 refusal). What the README table does not say row by row: --version, a disk that fills part way (a file
 size limit, RLIMIT_FSIZE, with SIGXFSZ ignored: the write fails with EFBIG as on a full disk), a standard
-output that fails (for every command), a symlink as the output, the new file's mode. Every expectation is what `cbf` does on
-the same input; the inputs are the CUT text cbf writes for a golden file."""
+output that fails (for every command), a symlink as the output, the new file's mode. Every expectation is
+what `cbf` does on the same input; the inputs are the CUT text cbf writes for a golden file."""
 
 from __future__ import annotations
 
