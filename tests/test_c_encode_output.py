@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 from c_programs import built
 from conftest import ENV
-from test_exit_codes import READER
+from test_exit_codes import HEAD_LINES, NO_TEXT_REC, READER
 
 import cbf
 from cbf import tables as T
@@ -39,7 +39,7 @@ def cbf_c() -> Path:
 
 
 def _run(tool: str, cbf_c: Path, argv: list[str], cwd: Path, limit: int | None = None,
-         stdout: object = subprocess.PIPE) -> subprocess.CompletedProcess[bytes]:
+         stdout: object = subprocess.PIPE, stdin: object = subprocess.DEVNULL) -> subprocess.CompletedProcess[bytes]:
     exe = [str(cbf_c)] if tool == "cbf-c" else [sys.executable, "-m", "cbf"]
     pre: Callable[[], None] | None = None
     if limit is not None:
@@ -47,7 +47,7 @@ def _run(tool: str, cbf_c: Path, argv: list[str], cwd: Path, limit: int | None =
             signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
             resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
     return subprocess.run([*exe, *argv], cwd=cwd, env=ENV, stdout=stdout, stderr=subprocess.PIPE,
-                          stdin=subprocess.DEVNULL, preexec_fn=pre, timeout=120)
+                          stdin=stdin, preexec_fn=pre, timeout=120)
 
 
 def _line(res: subprocess.CompletedProcess[bytes], tool: str) -> str:
@@ -208,3 +208,24 @@ def test_every_command_checks_standard_output(cbf_c: Path, cut: Path, command: s
         with open("/dev/full", "wb") as full:
             lines[tool] = _line(_run(tool, cbf_c, argv, cut.parent, stdout=full), tool)
     assert lines["cbf"] == lines["cbf-c"]
+
+
+def test_dash_is_standard_input(cbf_c: Path, cut: Path) -> None:
+    """`-` as the input is standard input, as in cbf: the same bytes, and a refusal names `-` and the line."""
+    bad = cut.parent / "bad.cut"
+    lines = cut.read_text().splitlines()
+    at = HEAD_LINES + NO_TEXT_REC  # a record with no text argument: text after it is refused
+    lines[at] += " extra"
+    bad.write_text("\n".join(lines) + "\n", encoding="ascii")
+    got = {}
+    for tool in ("cbf", "cbf-c"):
+        with cut.open("rb") as fh:
+            res = _run(tool, cbf_c, ["encode", "-", "-o", "-"], cut.parent, stdin=fh)
+        assert res.returncode == 0, (tool, res.stderr)
+        with bad.open("rb") as fh:
+            refused = _run(tool, cbf_c, ["encode", "-", "-o", "out.cbf"], cut.parent, stdin=fh)
+        with VALID.open("rb") as fh:
+            checked = _run(tool, cbf_c, ["validate", "-"], cut.parent, stdin=fh)
+        got[tool] = (res.stdout, _line(refused, tool), checked.returncode, checked.stdout.splitlines()[-1])
+    assert got["cbf"] == got["cbf-c"]
+    assert got["cbf"][0] == cbf.encode(MODEL) and got["cbf"][1].startswith(f"-: line {at + 1}: ")

@@ -93,6 +93,8 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
 /** As cbf_tool_read_file, into a buffer of the heap sized to the file, *out (the caller frees it); *why
  * "out of memory" when it cannot be had. */
 long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
+/** As cbf_tool_read_file_alloc, "-" being standard input (read to its end; cbf's rule for an input). */
+long cbf_tool_read_input_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
 /** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
@@ -108,7 +110,7 @@ int cbf_tool_check_output(const char *path, char *why, size_t cap);
  * /dev/full is a failure, never a short file. */
 int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *why, size_t cap);
 /* ==== END tools/tools_api.h ==== */
-#line 112 "cbf_tools.h"
+#line 114 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -295,7 +297,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 299 "cbf_tools.h"
+#line 301 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -1904,7 +1906,7 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1908 "cbf_tools.h"
+#line 1910 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
@@ -2081,19 +2083,12 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
  * grown to at most cap + 1 where it does not), *out; the caller frees it. Nothing in *out on failure. A
  * tool that held a buffer of cap bytes for every file made the WebAssembly module's initial memory
  * 24 MB, paid by every instance (bench/NOTES.md, round 5). */
-long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+static long cbf_tool_read_fp_alloc(FILE *fp, size_t cap, uint8_t **out, const char **why)
 {
-    FILE *fp;
     uint8_t first[1];
     size_t n = 0, size, room;
     long got;
     uint8_t *buf;
-    *out = NULL;
-    errno = 0;
-    *why = "cannot open";
-    fp = cbf_tool_open(path, why);
-    if (!fp)
-        return -1;
     if (cbf_tool_size_first(fp, first, cap, &n, &size, why) < 0)
         return strcmp(*why, "file too large") == 0 ? -2 : -1;
     room = size ? size : cap < 4096u ? cap : 4096u;
@@ -2116,6 +2111,25 @@ long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const
     else
         *out = buf;
     return got;
+}
+
+long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+{
+    FILE *fp;
+    *out = NULL;
+    errno = 0;
+    *why = "cannot open";
+    fp = cbf_tool_open(path, why);
+    return fp ? cbf_tool_read_fp_alloc(fp, cap, out, why) : -1;
+}
+
+long cbf_tool_read_input_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+{
+    if (strcmp(path, "-") != 0)
+        return cbf_tool_read_file_alloc(path, cap, out, why);
+    *out = NULL;
+    errno = 0;
+    return cbf_tool_read_fp_alloc(stdin, cap, out, why);
 }
 
 /* An option file read whole into *text (the heap's; at most max bytes), or 0 with the one line in opt_why. */
@@ -2471,7 +2485,7 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
 }
 #endif
 /* ==== END tools/files.c ==== */
-#line 2475 "cbf_tools.h"
+#line 2489 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2933,7 +2947,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     return len;
 }
 /* ==== END tools/engine.c ==== */
-#line 2937 "cbf_tools.h"
+#line 2951 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

@@ -94,7 +94,7 @@ static long parse_count(const char *s)
 static long read_cbf(const char *path, uint8_t **buf)
 {
     const char *why;
-    long n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_FILE_SIZE, buf, &why);
+    long n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_FILE_SIZE, buf, &why);
     if (n == -2) /* larger than a CBF file can be: from its size, unread (cbf's words) */
         fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", cbf_tool_name(path),
                 (unsigned long)CBF_TOOL_MAX_FILE_SIZE);
@@ -296,7 +296,7 @@ static int cmd_encode(int argc, char **argv)
     }
     {
         const char *cause;
-        n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
+        n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
         if (n < 0) {
             fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path),
                     n == -2 ? "larger than the most CUT text the engine reads" : cause);

@@ -172,19 +172,12 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
  * grown to at most cap + 1 where it does not), *out; the caller frees it. Nothing in *out on failure. A
  * tool that held a buffer of cap bytes for every file made the WebAssembly module's initial memory
  * 24 MB, paid by every instance (bench/NOTES.md, round 5). */
-long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+static long cbf_tool_read_fp_alloc(FILE *fp, size_t cap, uint8_t **out, const char **why)
 {
-    FILE *fp;
     uint8_t first[1];
     size_t n = 0, size, room;
     long got;
     uint8_t *buf;
-    *out = NULL;
-    errno = 0;
-    *why = "cannot open";
-    fp = cbf_tool_open(path, why);
-    if (!fp)
-        return -1;
     if (cbf_tool_size_first(fp, first, cap, &n, &size, why) < 0)
         return strcmp(*why, "file too large") == 0 ? -2 : -1;
     room = size ? size : cap < 4096u ? cap : 4096u;
@@ -207,6 +200,25 @@ long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const
     else
         *out = buf;
     return got;
+}
+
+long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+{
+    FILE *fp;
+    *out = NULL;
+    errno = 0;
+    *why = "cannot open";
+    fp = cbf_tool_open(path, why);
+    return fp ? cbf_tool_read_fp_alloc(fp, cap, out, why) : -1;
+}
+
+long cbf_tool_read_input_alloc(const char *path, size_t cap, uint8_t **out, const char **why)
+{
+    if (strcmp(path, "-") != 0)
+        return cbf_tool_read_file_alloc(path, cap, out, why);
+    *out = NULL;
+    errno = 0;
+    return cbf_tool_read_fp_alloc(stdin, cap, out, why);
 }
 
 /* An option file read whole into *text (the heap's; at most max bytes), or 0 with the one line in opt_why. */

@@ -75,6 +75,8 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
 /** As cbf_tool_read_file, into a buffer of the heap sized to the file, *out (the caller frees it); *why
  * "out of memory" when it cannot be had. */
 long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
+/** As cbf_tool_read_file_alloc, "-" being standard input (read to its end; cbf's rule for an input). */
+long cbf_tool_read_input_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
 /** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
