@@ -356,6 +356,9 @@ INPUTS: dict[str, Callable[[Path], list[Input]]] = {
         Input(_json(tmp, "valid.json", _doc()))],
     "an output that cannot be written: a full disk (`/dev/full`)": _cut_text,
     "an output in a folder that does not exist": _cut_text,
+    "bad usage: `encode` without `-o`": _cut_text,
+    "`encode --version` a version that cannot be written": lambda tmp: [
+        Input(_cut(tmp, "valid.cut", CUT_LINES), (TARGET,))],
     "`convert` of a file that fails validation": _one("flipped.cbf", FLIPPED),
     "`convert --to-version` a version that cannot be written": _one("valid.cbf", VALID.read_bytes(), TARGET),
     "`convert --chord-tol` not a positive number": _one("valid.cbf", VALID.read_bytes()),
