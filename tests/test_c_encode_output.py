@@ -229,3 +229,16 @@ def test_dash_is_standard_input(cbf_c: Path, cut: Path) -> None:
         got[tool] = (res.stdout, _line(refused, tool), checked.returncode, checked.stdout.splitlines()[-1])
     assert got["cbf"] == got["cbf-c"]
     assert got["cbf"][0] == cbf.encode(MODEL) and got["cbf"][1].startswith(f"-: line {at + 1}: ")
+
+
+def test_the_longest_name_the_folder_takes_is_written(cbf_c: Path, cut: Path) -> None:
+    """The temporary name fits NAME_MAX whenever the final name does; one byte more is cbf's line."""
+    longest = os.pathconf(cut.parent, "PC_NAME_MAX")
+    for tool in ("cbf", "cbf-c"):
+        target = cut.parent / ("n" * longest)
+        res = _run(tool, cbf_c, ["encode", cut.name, "-o", target.name], cut.parent)
+        assert res.returncode == 0 and target.read_bytes() == cbf.encode(MODEL), (tool, res.stderr)
+        assert sorted(p.name for p in cut.parent.iterdir()) == sorted([cut.name, target.name]), tool
+        target.unlink()
+    res = _both(cbf_c, ["encode", cut.name, "-o", "n" * (longest + 1)], cut.parent)
+    assert _line(res["cbf"], "cbf") == _line(res["cbf-c"], "cbf-c")
