@@ -113,13 +113,17 @@ def test_a_version_that_is_not_writable_is_refused_with_the_writable_ones(cbf_c:
     assert not (cut.parent / "out.cbf").exists()
 
 
-@pytest.mark.parametrize("case", ["keep_stored", "empty", "no_folder", "a_directory", "dev_full", "stdout_full"])
+@pytest.mark.parametrize("case", ["keep_stored", "empty", "too_large", "no_folder", "a_directory", "dev_full",
+                                  "stdout_full"])
 def test_refusals_say_cbfs_line(cbf_c: Path, cut: Path, case: str) -> None:
     """One line, cbf's words, exit 2, and the output as it was (here: never made)."""
     (cut.parent / "sub").mkdir()
     (cut.parent / "blank.cut").write_text(" \n\n  \n", encoding="ascii")
+    with (cut.parent / "huge.cut").open("wb") as fh:  # sparse: more text than either tool reads (the line names
+        fh.truncate(1 << 40)                          # the limit, so both lines agree only when the limits do)
     argv = {"keep_stored": ["encode", cut.name, "--keep-stored", "-o", "out.cbf"],
             "empty": ["encode", "blank.cut", "-o", "out.cbf"],
+            "too_large": ["encode", "huge.cut", "-o", "out.cbf"],
             "no_folder": ["encode", cut.name, "-o", "none/out.cbf"],
             "a_directory": ["encode", cut.name, "-o", "sub"],
             "dev_full": ["encode", cut.name, "-o", "/dev/full"],

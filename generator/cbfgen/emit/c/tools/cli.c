@@ -297,11 +297,13 @@ static int cmd_encode(int argc, char **argv)
     {
         const char *cause;
         n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
-        if (n < 0) {
-            fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path),
-                    n == -2 ? "larger than the most CUT text the engine reads" : cause);
+        if (n == -2) /* from its size, unread where it has one: cbf's line */
+            fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n",
+                    cbf_tool_name(path), (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
+        else if (n < 0)
+            fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
+        if (n < 0)
             return CBF_TOOL_EXIT_USAGE;
-        }
     }
     if (is_blank(text, (size_t)n))
         fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));

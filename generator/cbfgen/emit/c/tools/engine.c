@@ -423,7 +423,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     *out = NULL;
     out_begin(sink);
     if (n > CBF_TOOL_MAX_CUT_SIZE) {
-        err_printf("cbf-c: %s: larger than %lu bytes, the most CUT text the engine reads\n", file,
+        err_printf("cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n", file,
                    (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
         return -1;
     }
