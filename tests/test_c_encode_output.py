@@ -143,6 +143,25 @@ def test_refusals_say_cbfs_line(cbf_c: Path, cut: Path, case: str) -> None:
     assert lines["cbf"] == lines["cbf-c"]
 
 
+def test_a_byte_order_mark_is_read_past(cbf_c: Path, cut: Path) -> None:
+    """Editors on Windows start a text with one: cbf reads the text after it, and so does cbf-c (the line
+    and column of a refusal counted without it)."""
+    marked = cut.parent / "marked.cut"
+    marked.write_bytes(b"\xef\xbb\xbf" + cut.read_bytes())
+    only = cut.parent / "only.cut"
+    only.write_bytes(b"\xef\xbb\xbf\n")
+    bad = cut.parent / "bad.cut"
+    bad.write_bytes(b"\xef\xbb\xbf" + cut.read_bytes().replace(b"\n", b"\n\x0c", 1))
+    got = {}
+    for tool in ("cbf", "cbf-c"):
+        res = _run(tool, cbf_c, ["encode", marked.name, "-o", "-"], cut.parent)
+        assert res.returncode == 0, (tool, res.stderr)
+        got[tool] = (res.stdout, *(_line(_run(tool, cbf_c, ["encode", p.name, "-o", "out.cbf"], cut.parent), tool)
+                                   for p in (only, bad)))
+    assert got["cbf"] == got["cbf-c"] and got["cbf"][0] == cbf.encode(MODEL)
+    assert ": line 2, column 1: " in got["cbf"][2]
+
+
 def test_json_is_refused_with_one_line(cbf_c: Path, tmp_path: Path) -> None:
     """cbf-c reads no JSON: canonical JSON, by its name or its first character, is one line, exit 2."""
     doc = cbf.to_canonical(MODEL)

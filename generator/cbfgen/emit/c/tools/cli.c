@@ -217,10 +217,10 @@ static int parse_version(const char *value)
 }
 
 /* Whether text is canonical JSON rather than CUT, as cbf encode tells them apart: a name ending in .json,
- * or text whose first character (after a byte order mark and white space) is '{'. */
+ * or text whose first character (after white space) is '{'. */
 static int looks_like_json(const char *path, const uint8_t *text, size_t n)
 {
-    size_t pn = strlen(path), i = n >= 3u && memcmp(text, "\xEF\xBB\xBF", 3u) == 0 ? 3u : 0u;
+    size_t pn = strlen(path), i = 0;
     if (pn >= 5u && strcmp(path + pn - 5u, ".json") == 0)
         return 1;
     while (i < n && strchr(" \t\n\r\v\f", text[i]) && text[i])
@@ -304,6 +304,10 @@ static int cmd_encode(int argc, char **argv)
             fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
         if (n < 0)
             return CBF_TOOL_EXIT_USAGE;
+    }
+    if (n >= 3 && memcmp(text, "\xEF\xBB\xBF", 3u) == 0) { /* a byte order mark (editors on Windows write one): */
+        memmove(text, text + 3, (size_t)n - 3u);                  /* cbf reads the text after it */
+        n -= 3;
     }
     if (is_blank(text, (size_t)n))
         fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));
