@@ -162,6 +162,18 @@ def test_a_byte_order_mark_is_read_past(cbf_c: Path, cut: Path) -> None:
     assert ": line 2, column 1: " in got["cbf"][2]
 
 
+@pytest.mark.parametrize("bad", [b"\xff", b"\xc0\xaf", b"\xed\xa0\x80", b"\xf4\x90\x80\x80", b"\xe2\x82"],
+                         ids=["not_a_start", "overlong", "surrogate", "beyond_u10ffff", "cut_by_the_end"])
+def test_text_that_is_not_utf8_is_cbfs_line(cbf_c: Path, cut: Path, bad: bytes) -> None:
+    """Text is UTF-8 before anything else is asked of it: the first byte a strict decoder stops at, with its
+    line and offset, past a character that is UTF-8 but not CUT (which the CUT reader would name first)."""
+    text = cut.read_bytes()
+    cut.write_bytes(b"\xef\xbb\xbf" + text.replace(b"\n", "\n\u00e9\n".encode(), 1) + bad)
+    res = _both(cbf_c, ["encode", cut.name, "-o", "out.cbf"], cut.parent)
+    assert _line(res["cbf"], "cbf") == _line(res["cbf-c"], "cbf-c")
+    assert "is not UTF-8 text" in _line(res["cbf-c"], "cbf-c")
+
+
 def test_json_is_refused_with_one_line(cbf_c: Path, tmp_path: Path) -> None:
     """cbf-c reads no JSON: canonical JSON, by its name or its first character, is one line, exit 2."""
     doc = cbf.to_canonical(MODEL)
