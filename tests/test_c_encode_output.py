@@ -277,3 +277,22 @@ def test_the_longest_name_the_folder_takes_is_written(cbf_c: Path, cut: Path) ->
         target.unlink()
     res = _both(cbf_c, ["encode", cut.name, "-o", "n" * (longest + 1)], cut.parent)
     assert _line(res["cbf"], "cbf") == _line(res["cbf-c"], "cbf-c")
+
+
+def test_check_encodes_each_file_and_writes_nothing(cbf_c: Path, cut: Path) -> None:
+    """--check (a pre-commit hook on *.cut): each file encoded in memory, one line for each that does not,
+    exit 2 then; nothing written; cbf's lines."""
+    lines = cut.read_text().splitlines()
+    lines[HEAD_LINES + NO_TEXT_REC] += " extra"
+    (cut.parent / "bad.cut").write_text("\n".join(lines) + "\n", encoding="ascii")
+    (cut.parent / "blank.cut").write_text("\n", encoding="ascii")
+    before = sorted(p.name for p in cut.parent.iterdir())
+    got = {}
+    for tool in ("cbf", "cbf-c"):
+        good = _run(tool, cbf_c, ["encode", "--check", cut.name, cut.name], cut.parent)
+        assert good.returncode == 0 and good.stdout == good.stderr == b"", (tool, good)
+        res = _run(tool, cbf_c, ["encode", "--check", "bad.cut", cut.name, "blank.cut"], cut.parent)
+        assert res.returncode == 2 and res.stdout == b"", (tool, res)
+        got[tool] = [ln.removeprefix(f"{tool}: ") for ln in res.stderr.decode().splitlines()]
+        assert sorted(p.name for p in cut.parent.iterdir()) == before
+    assert got["cbf"] == got["cbf-c"] and len(got["cbf"]) == 2

@@ -98,6 +98,7 @@ static void usage(void)
           "       cbf-c dump [--path] FILE\n"
           "       cbf-c encode [--profile P] [--version V] [--input-format cut] FILE.cut -o OUT   (CUT text to CBF;\n"
           "                    -o - for standard output; cbf-c reads CUT text, not JSON)\n"
+          "       cbf-c encode --check [--profile P] [--version V] FILE.cut...   (only check that each encodes)\n"
           "       cbf-c sniff FILE                      (cut or cbf: how the workbench reads it)\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
@@ -301,17 +302,83 @@ static int is_blank(const uint8_t *text, size_t n)
     return 1;
 }
 
-/* cbf-c encode [--profile P] [--version V] [--input-format cut] FILE -o OUT: CUT text to the CBF it encodes
- * to, written to OUT (- for standard output) as cbf encode writes it: atomically, every write checked,
- * nothing written on any refusal. The command line is cbf encode's for CUT input; JSON is refused with one
- * line (cbf-c reads CUT text only), --keep-stored with cbf's line (CUT stores nothing to keep). */
-static int cmd_encode(int argc, char **argv)
+/* What cbf-c encode is asked: the options of cbf encode that CUT input has. */
+typedef struct encode_options {
+    int profile, version, keep, json; /* json: 1 --input-format json, 0 cut, -1 from the name or the text */
+    const char *output;               /* NULL with --check: nothing is written */
+} encode_options;
+
+/* One input of cbf-c encode: its CBF written to o->output (or, with --check, only made); CBF_TOOL_EXIT_OK,
+ * or CBF_TOOL_EXIT_USAGE after one line on stderr naming the file and what is wrong. */
+static int encode_one(const char *path, const encode_options *o)
 {
     static char why[2u * CBF_TOOL_NAME_BYTES + 256u];
-    int profile = CBF_TOOL_DEFAULT_PROFILE, version = CBF_V__UNKNOWN, keep = 0, json = -1, i;
-    const char *path = NULL, *output = NULL;
     uint8_t *text, *cbf = NULL;
+    const char *cause;
     long n, len;
+    size_t bad, k;
+    unsigned long line = 1;
+    if (o->output && !cbf_tool_check_output(o->output, why, sizeof why)) { /* before the work, as cbf does */
+        fprintf(stderr, "cbf-c: %s\n", why);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
+    if (n == -2) /* from its size, unread where it has one: cbf's line */
+        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n",
+                cbf_tool_name(path), (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
+    else if (n < 0)
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
+    if (n < 0)
+        return CBF_TOOL_EXIT_USAGE;
+    bad = not_utf8(text, (size_t)n);
+    if (bad < (size_t)n) { /* text is UTF-8 before anything else is asked of it: cbf's line */
+        for (k = 0; k < bad; k++)
+            line += text[k] == '\n';
+        fprintf(stderr, "cbf-c: %s: line %lu (offset %lu): byte 0x%02X is not UTF-8 text\n", cbf_tool_name(path),
+                line, (unsigned long)bad, (unsigned)text[bad]);
+        free(text);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (n >= 3 && memcmp(text, "\xEF\xBB\xBF", 3u) == 0) { /* a byte order mark (editors on Windows write one): */
+        memmove(text, text + 3, (size_t)n - 3u);          /* cbf reads the text after it */
+        n -= 3;
+    }
+    len = -1;
+    if (is_blank(text, (size_t)n))
+        fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));
+    else if (o->json == 1 || (o->json < 0 && looks_like_json(path, text, (size_t)n)))
+        fprintf(stderr, "cbf-c: %s: not CUT text: canonical JSON, which cbf-c does not read (cbf encode reads it)\n",
+                cbf_tool_name(path));
+    else if (o->keep) /* CUT carries no sequence numbers, count or checksums: nothing stored to keep (cbf's line) */
+        fprintf(stderr, "cbf-c: %s: --keep-stored applies to JSON input only: CUT text carries no stored sequence "
+                "numbers, count or checksums to keep\n", cbf_tool_name(path));
+    else {
+        len = cbf_tool_cut_buffer(path, text, (size_t)n, o->version, o->profile, &cbf, &std_sink);
+        if (len >= 0 && o->output && !cbf_tool_write_file(o->output, cbf, (size_t)len, why, sizeof why)) {
+            fprintf(stderr, "cbf-c: %s\n", why);
+            len = -1;
+        }
+    }
+    free(text);
+    free(cbf);
+    return len < 0 ? CBF_TOOL_EXIT_USAGE : CBF_TOOL_EXIT_OK;
+}
+
+/* cbf-c encode [--profile P] [--version V] [--input-format cut] FILE -o OUT, or --check FILE...: CUT text to
+ * the CBF it encodes to, written to OUT (- for standard output) as cbf encode writes it: atomically, every
+ * write checked, nothing written on any refusal; with --check each file only encoded, one line for each
+ * that does not (a pre-commit hook). The command line is cbf encode's for CUT input; JSON is refused with
+ * one line (cbf-c reads CUT text only), --keep-stored with cbf's line (CUT stores nothing to keep). */
+static int cmd_encode(int argc, char **argv)
+{
+    encode_options o;
+    int i, check = 0, files = 0, status = CBF_TOOL_EXIT_OK;
+    const char *first = NULL;
+    o.profile = CBF_TOOL_DEFAULT_PROFILE;
+    o.version = CBF_V__UNKNOWN;
+    o.keep = 0;
+    o.json = -1;
+    o.output = NULL;
     for (i = 0; i < argc; i++) {
         const char *a = argv[i];
         int valued = strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "-o") == 0
@@ -321,89 +388,59 @@ static int cmd_encode(int argc, char **argv)
             return CBF_TOOL_EXIT_USAGE;
         }
         if (strcmp(a, "--profile") == 0) {
-            profile = cbf_profile_find(argv[++i]);
-            if (profile < 0) {
+            o.profile = cbf_profile_find(argv[++i]);
+            if (o.profile < 0) {
                 fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
                 return CBF_TOOL_EXIT_USAGE;
             }
         } else if (strcmp(a, "--version") == 0) {
-            version = parse_version(argv[++i]);
-            if (version < 0)
+            o.version = parse_version(argv[++i]);
+            if (o.version < 0)
                 return CBF_TOOL_EXIT_USAGE;
         } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-            output = argv[++i];
+            o.output = argv[++i];
         } else if (strcmp(a, "--input-format") == 0) {
             i++;
-            json = strcmp(argv[i], "json") == 0 ? 1 : strcmp(argv[i], "cut") == 0 ? 0 : -2;
-            if (json == -2) {
+            o.json = strcmp(argv[i], "json") == 0 ? 1 : strcmp(argv[i], "cut") == 0 ? 0 : -2;
+            if (o.json == -2) {
                 fprintf(stderr, "cbf-c: --input-format: %s is neither cut nor json\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
                 return CBF_TOOL_EXIT_USAGE;
             }
         } else if (strcmp(a, "--keep-stored") == 0) {
-            keep = 1;
-        } else if ((a[0] == '-' && a[1]) || path) {
+            o.keep = 1;
+        } else if (strcmp(a, "--check") == 0) {
+            check = 1;
+        } else if (a[0] == '-' && a[1]) {
             usage();
             return CBF_TOOL_EXIT_USAGE;
-        } else {
-            path = a;
+        } else if (!files++) {
+            first = a;
         }
     }
-    if (!path || !output) {
-        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", path ? "-o/--output" : "FILE");
+    if (check && o.output) {
+        fprintf(stderr, "cbf-c encode: --check writes nothing: drop -o\n");
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!files || (!check && !o.output)) {
+        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", files ? "-o/--output" : "FILE");
         usage();
         return CBF_TOOL_EXIT_USAGE;
     }
-    if (!cbf_tool_check_output(output, why, sizeof why)) { /* before the work, as cbf does */
-        fprintf(stderr, "cbf-c: %s\n", why);
-        return CBF_TOOL_EXIT_USAGE;
-    }
-    {
-        const char *cause;
-        n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
-        if (n == -2) /* from its size, unread where it has one: cbf's line */
-            fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n",
-                    cbf_tool_name(path), (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
-        else if (n < 0)
-            fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
-        if (n < 0)
-            return CBF_TOOL_EXIT_USAGE;
-    }
-    {
-        size_t bad = not_utf8(text, (size_t)n), k;
-        unsigned long line = 1;
-        if (bad < (size_t)n) { /* text is UTF-8 before anything else is asked of it: cbf's line */
-            for (k = 0; k < bad; k++)
-                line += text[k] == '\n';
-            fprintf(stderr, "cbf-c: %s: line %lu (offset %lu): byte 0x%02X is not UTF-8 text\n", cbf_tool_name(path),
-                    line, (unsigned long)bad, (unsigned)text[bad]);
-            free(text);
+    if (!check) {
+        if (files > 1) {
+            fprintf(stderr, "cbf-c encode: one FILE with -o; several only with --check\n");
             return CBF_TOOL_EXIT_USAGE;
         }
+        return encode_one(first, &o);
     }
-    if (n >= 3 && memcmp(text, "\xEF\xBB\xBF", 3u) == 0) { /* a byte order mark (editors on Windows write one): */
-        memmove(text, text + 3, (size_t)n - 3u);                  /* cbf reads the text after it */
-        n -= 3;
+    for (i = 0; i < argc; i++) { /* --check: every file, in order; the worst status */
+        const char *a = argv[i];
+        if (strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "--input-format") == 0)
+            i++;
+        else if (!(a[0] == '-' && a[1]) && encode_one(a, &o) != CBF_TOOL_EXIT_OK)
+            status = CBF_TOOL_EXIT_USAGE;
     }
-    if (is_blank(text, (size_t)n))
-        fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));
-    else if (json == 1 || (json < 0 && looks_like_json(path, text, (size_t)n)))
-        fprintf(stderr, "cbf-c: %s: not CUT text: canonical JSON, which cbf-c does not read (cbf encode reads it)\n",
-                cbf_tool_name(path));
-    else if (keep) /* CUT carries no sequence numbers, count or checksums: nothing stored to keep (cbf's line) */
-        fprintf(stderr, "cbf-c: %s: --keep-stored applies to JSON input only: CUT text carries no stored sequence "
-                "numbers, count or checksums to keep\n", cbf_tool_name(path));
-    else {
-        len = cbf_tool_cut_buffer(path, text, (size_t)n, version, profile, &cbf, &std_sink);
-        if (len >= 0 && !cbf_tool_write_file(output, cbf, (size_t)len, why, sizeof why)) {
-            fprintf(stderr, "cbf-c: %s\n", why);
-            len = -1;
-        }
-        free(text);
-        free(cbf);
-        return len < 0 ? CBF_TOOL_EXIT_USAGE : CBF_TOOL_EXIT_OK;
-    }
-    free(text);
-    return CBF_TOOL_EXIT_USAGE;
+    return status;
 }
 
 /* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
@@ -450,4 +487,4 @@ int main(int argc, char **argv)
     return stdout_end(run(argc, argv));
 }
 /* ==== END tools/cli.c ==== */
-#line 454 "cbf_tool.c"
+#line 491 "cbf_tool.c"
