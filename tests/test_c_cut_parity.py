@@ -47,7 +47,7 @@ def _python(data: bytes, profile: str) -> tuple[bytes | None, int | None]:
 
 
 def _c(path: Path, profile: str) -> tuple[bytes | None, str, int]:
-    res = subprocess.run([str(_cbf_c()), "encode", "--profile", profile, path.name], cwd=path.parent,
+    res = subprocess.run([str(_cbf_c()), "encode", "--profile", profile, path.name, "-o", "-"], cwd=path.parent,
                          capture_output=True, timeout=60)
     return (res.stdout if res.returncode == 0 else None), res.stderr.decode("utf-8", "replace"), res.returncode
 

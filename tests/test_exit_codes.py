@@ -352,6 +352,13 @@ INPUTS: dict[str, Callable[[Path], list[Input]]] = {
     "a string with a byte outside printable ASCII anywhere in the field, after a NUL too (unless "
     "`--keep-stored`)": _not_ascii,
     "`--keep-stored` with CUT input (CUT stores no sequence numbers, count or checksums to keep)": _cut_text,
+    "canonical JSON given to `cbf-c encode` (cbf-c reads CUT text only)": lambda tmp: [
+        Input(_json(tmp, "valid.json", _doc()))],
+    "an output that cannot be written: a full disk (`/dev/full`)": _cut_text,
+    "an output in a folder that does not exist": _cut_text,
+    "bad usage: `encode` without `-o`": _cut_text,
+    "`encode --version` a version that cannot be written": lambda tmp: [
+        Input(_cut(tmp, "valid.cut", CUT_LINES), (TARGET,))],
     "`convert` of a file that fails validation": _one("flipped.cbf", FLIPPED),
     "`convert --to-version` a version that cannot be written": _one("valid.cbf", VALID.read_bytes(), TARGET),
     "`convert --chord-tol` not a positive number": _one("valid.cbf", VALID.read_bytes()),
@@ -467,7 +474,7 @@ def cbf_done(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, tuple[
 def test_the_readme_table(row: Row, tool: str, request: pytest.FixtureRequest, tmp_path: Path) -> None:
     code = row.exits[tool]
     if code is None:
-        pytest.skip(f"{tool} has no {row.commands[0].split()[0]}")
+        pytest.skip(f"{tool} has no {row.commands[0].split()[0]} of this input (`—` in the table)")
     if tool == "cbf":
         done: Done | str = request.getfixturevalue("cbf_done")[row.input, row.commands]
     else:

@@ -250,11 +250,10 @@ def test_the_page_gzipped_stays_under_its_bound(run: dict[str, object]) -> None:
 def _encoded(cut: Path) -> tuple[Path | None, str]:
     """Native cbf-c encode of a CUT file, written beside it under the name the page gives it (NAME.cbf), or
     None and the engine's one line."""
-    res = subprocess.run([str(_cbf_c()), "encode", cut.name], cwd=cut.parent, capture_output=True)
+    out = cut.with_suffix(".cbf")
+    res = subprocess.run([str(_cbf_c()), "encode", cut.name, "-o", out.name], cwd=cut.parent, capture_output=True)
     if res.returncode != 0:
         return None, res.stderr.decode()
-    out = cut.with_suffix(".cbf")
-    out.write_bytes(res.stdout)
     return out, ""
 
 

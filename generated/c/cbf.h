@@ -1107,12 +1107,17 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  * with more room; a CBF file never needs more than the header and CBF_LIMIT_MAX_COMMANDS largest
  * records); CBF_ERR_ARGUMENT for a bad argument. */
 long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_t cap, cbf_cut_error *err);
+/** cbf_cut_encode in a version asked for (an enum cbf_version; CBF_V__UNKNOWN: none, as cbf_cut_encode):
+ * the version of a text without a version line (cbf encode --version); a version line naming another
+ * version is refused with its line. */
+long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
+                       cbf_cut_error *err);
 
 /** Run every check of the spec; each finding goes to fn. Returns the number
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1116 "cbf.h"
+#line 1121 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1278,7 +1283,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1282 "cbf.h"
+#line 1287 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1371,7 +1376,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1375 "cbf.h"
+#line 1380 "cbf.h"
 /* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
  * runtime/checksums.c implements each family once and switches on it with no default (a family
  * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
@@ -2553,7 +2558,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2557 "cbf.h"
+#line 2562 "cbf.h"
 /* ==== BEGIN runtime/quote.c: verbatim from generator/cbfgen/emit/c/runtime/quote.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/quote.c"
 /* ---- the one quoting rule for names and values from input (issue #35) ----
@@ -2692,7 +2697,7 @@ const char *cbf_quoted(const char *s, int mode)
     return buf;
 }
 /* ==== END runtime/quote.c ==== */
-#line 2696 "cbf.h"
+#line 2701 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2809,7 +2814,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2813 "cbf.h"
+#line 2818 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -3035,7 +3040,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 3039 "cbf.h"
+#line 3044 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3292,7 +3297,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3296 "cbf.h"
+#line 3301 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3470,7 +3475,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3474 "cbf.h"
+#line 3479 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3764,7 +3769,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3768 "cbf.h"
+#line 3773 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4939,7 +4944,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4943 "cbf.h"
+#line 4948 "cbf.h"
 /* ==== BEGIN runtime/path.c: verbatim from generator/cbfgen/emit/c/runtime/path.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/path.c"
 /* ---- the drawn path of a motion record (issue 34: the workbench draws curves with the engine's geometry) ----
@@ -5141,7 +5146,7 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     }
 }
 /* ==== END runtime/path.c ==== */
-#line 5145 "cbf.h"
+#line 5150 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5307,7 +5312,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5311 "cbf.h"
+#line 5316 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5344,7 +5349,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5348 "cbf.h"
+#line 5353 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6330,7 +6335,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6334 "cbf.h"
+#line 6339 "cbf.h"
 /* ---- the CUT text form's syntax (spec `cut`), read by cbf_cut_encode (runtime/cut.c) ---- */
 #define CBF__CUT_LOWER 1 /* keywords compare in lower case */
 static const char cbf__cut_header[] = "header";
@@ -7077,8 +7082,11 @@ static int cbf__cut_sum_agrees(const cbf__cutdoc *d, uint8_t *out, size_t len, c
                         (unsigned long)computed);
 }
 
-/* The version the text's one version line names, *line its line (0: none); CBF_OK or a refusal. */
-static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsigned *minor, unsigned long *line)
+/* The version the text's one version line names, *line its line (0: none); CBF_OK or a refusal. A line
+ * naming another version than the one asked for (requested: an enum cbf_version, or -1) is refused, as
+ * cbf encode --version refuses it (cut.py, _version_line). */
+static int cbf__cut_version_line(cbf__cutp *c, size_t n, int requested, unsigned *major, unsigned *minor,
+                                 unsigned long *line)
 {
     size_t at = 0;
     char show[96];
@@ -7105,6 +7113,9 @@ static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsign
         }
         if (!ok || !dot || !parts[0] || !parts[1] || v[0] > 255u || v[1] > 255u)
             return cbf__cut_fail(c, "%s is not major.minor (two numbers 0 to 255)", cbf__cut_show(show, sizeof show, c->t + s, len));
+        if (requested >= 0 && (v[0] != *major || v[1] != *minor))
+            return cbf__cut_say(c->err, c->line, 0, "%s %.*s contradicts the requested version %s", cbf__cut_version,
+                                (int)len, c->t + s, cbf_version_name(requested));
         *major = v[0];
         *minor = v[1];
         *line = c->line;
@@ -7113,6 +7124,12 @@ static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsign
 }
 
 long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_t cap, cbf_cut_error *err)
+{
+    return cbf_cut_encode_as(text, n, CBF_V__UNKNOWN, profile, out, cap, err);
+}
+
+long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
+                       cbf_cut_error *err)
 {
     cbf__cutp c;
     cbf__cutdoc d;
@@ -7126,7 +7143,8 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     long len;
     uint8_t args[CBF_LIMIT_MAX_ARG_SIZE + 8u];
     char why[sizeof err->message];
-    if (!err || (!text && n) || !out || profile < 0 || profile >= CBF_PROFILE__COUNT)
+    if (!err || (!text && n) || !out || profile < 0 || profile >= CBF_PROFILE__COUNT || version < CBF_V__UNKNOWN
+        || version >= CBF__NVERSIONS)
         return CBF_ERR_ARGUMENT;
     memset(err, 0, sizeof *err);
     memset(&d, 0, sizeof d);
@@ -7136,9 +7154,10 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     d.profile = profile;
     if ((rc = cbf__cut_chars(text, n, err)) != CBF_OK)
         return rc;
-    major = (unsigned)cbf__versions[CBF_DEFAULT_VERSION].major;
-    minor = cbf__versions[CBF_DEFAULT_VERSION].minor < 0 ? 0u : (unsigned)cbf__versions[CBF_DEFAULT_VERSION].minor;
-    if ((rc = cbf__cut_version_line(&c, n, &major, &minor, &vline)) != CBF_OK)
+    i = version == CBF_V__UNKNOWN ? (size_t)CBF_DEFAULT_VERSION : (size_t)version; /* without a version line */
+    major = (unsigned)cbf__versions[i].major;
+    minor = cbf__versions[i].minor < 0 ? 0u : (unsigned)cbf__versions[i].minor;
+    if ((rc = cbf__cut_version_line(&c, n, version, &major, &minor, &vline)) != CBF_OK)
         return rc;
     d.version = cbf_version_find(major, minor);
     if (d.version == CBF_V__UNKNOWN)
@@ -7251,7 +7270,7 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     return len;
 }
 /* ==== END runtime/cut.c ==== */
-#line 7255 "cbf.h"
+#line 7274 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

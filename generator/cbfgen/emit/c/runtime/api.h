@@ -125,6 +125,11 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill);
  * with more room; a CBF file never needs more than the header and CBF_LIMIT_MAX_COMMANDS largest
  * records); CBF_ERR_ARGUMENT for a bad argument. */
 long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_t cap, cbf_cut_error *err);
+/** cbf_cut_encode in a version asked for (an enum cbf_version; CBF_V__UNKNOWN: none, as cbf_cut_encode):
+ * the version of a text without a version line (cbf encode --version); a version line naming another
+ * version is refused with its line. */
+long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
+                       cbf_cut_error *err);
 
 /** Run every check of the spec; each finding goes to fn. Returns the number
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */

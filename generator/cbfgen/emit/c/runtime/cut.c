@@ -724,8 +724,11 @@ static int cbf__cut_sum_agrees(const cbf__cutdoc *d, uint8_t *out, size_t len, c
                         (unsigned long)computed);
 }
 
-/* The version the text's one version line names, *line its line (0: none); CBF_OK or a refusal. */
-static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsigned *minor, unsigned long *line)
+/* The version the text's one version line names, *line its line (0: none); CBF_OK or a refusal. A line
+ * naming another version than the one asked for (requested: an enum cbf_version, or -1) is refused, as
+ * cbf encode --version refuses it (cut.py, _version_line). */
+static int cbf__cut_version_line(cbf__cutp *c, size_t n, int requested, unsigned *major, unsigned *minor,
+                                 unsigned long *line)
 {
     size_t at = 0;
     char show[96];
@@ -752,6 +755,9 @@ static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsign
         }
         if (!ok || !dot || !parts[0] || !parts[1] || v[0] > 255u || v[1] > 255u)
             return cbf__cut_fail(c, "%s is not major.minor (two numbers 0 to 255)", cbf__cut_show(show, sizeof show, c->t + s, len));
+        if (requested >= 0 && (v[0] != *major || v[1] != *minor))
+            return cbf__cut_say(c->err, c->line, 0, "%s %.*s contradicts the requested version %s", cbf__cut_version,
+                                (int)len, c->t + s, cbf_version_name(requested));
         *major = v[0];
         *minor = v[1];
         *line = c->line;
@@ -760,6 +766,12 @@ static int cbf__cut_version_line(cbf__cutp *c, size_t n, unsigned *major, unsign
 }
 
 long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_t cap, cbf_cut_error *err)
+{
+    return cbf_cut_encode_as(text, n, CBF_V__UNKNOWN, profile, out, cap, err);
+}
+
+long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
+                       cbf_cut_error *err)
 {
     cbf__cutp c;
     cbf__cutdoc d;
@@ -773,7 +785,8 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     long len;
     uint8_t args[CBF_LIMIT_MAX_ARG_SIZE + 8u];
     char why[sizeof err->message];
-    if (!err || (!text && n) || !out || profile < 0 || profile >= CBF_PROFILE__COUNT)
+    if (!err || (!text && n) || !out || profile < 0 || profile >= CBF_PROFILE__COUNT || version < CBF_V__UNKNOWN
+        || version >= CBF__NVERSIONS)
         return CBF_ERR_ARGUMENT;
     memset(err, 0, sizeof *err);
     memset(&d, 0, sizeof d);
@@ -783,9 +796,10 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     d.profile = profile;
     if ((rc = cbf__cut_chars(text, n, err)) != CBF_OK)
         return rc;
-    major = (unsigned)cbf__versions[CBF_DEFAULT_VERSION].major;
-    minor = cbf__versions[CBF_DEFAULT_VERSION].minor < 0 ? 0u : (unsigned)cbf__versions[CBF_DEFAULT_VERSION].minor;
-    if ((rc = cbf__cut_version_line(&c, n, &major, &minor, &vline)) != CBF_OK)
+    i = version == CBF_V__UNKNOWN ? (size_t)CBF_DEFAULT_VERSION : (size_t)version; /* without a version line */
+    major = (unsigned)cbf__versions[i].major;
+    minor = cbf__versions[i].minor < 0 ? 0u : (unsigned)cbf__versions[i].minor;
+    if ((rc = cbf__cut_version_line(&c, n, version, &major, &minor, &vline)) != CBF_OK)
         return rc;
     d.version = cbf_version_find(major, minor);
     if (d.version == CBF_V__UNKNOWN)

@@ -2,10 +2,52 @@
  * It parses the arguments, reads each file whole into memory and hands it to the engine with a sink that
  * writes to stdout and stderr. */
 
+/* Standard output is checked as cbf checks it: the first failed write's errno is kept, and at the end a
+ * stdout that failed is one line and exit 2, what went to a regular file there cut off again (nothing that
+ * looks complete stays). cbf-c encode -o - writes through the file layer, which checks the same way. */
+static int stdout_errno;
+
 static void write_stdout(void *user, const char *text, size_t len)
 {
     (void)user;
-    (void)fwrite(text, 1, len, stdout);
+    errno = 0;
+    if (fwrite(text, 1, len, stdout) != len && !stdout_errno)
+        stdout_errno = errno ? errno : EIO;
+}
+
+#if defined(CBF_TOOLS_POSIX) && !defined(__wasi__)
+static off_t stdout_start = -1; /* where this process began writing a regular file on stdout */
+
+static void stdout_begin(void)
+{
+    struct stat st;
+    if (fstat(1, &st) == 0 && S_ISREG(st.st_mode))
+        stdout_start = lseek(1, 0, SEEK_CUR);
+}
+
+static void stdout_cut_off(void)
+{
+    if (stdout_start >= 0 && ftruncate(1, stdout_start) != 0)
+        stdout_start = -1; /* cut off as far as it could be */
+}
+#else
+static void stdout_begin(void) {}
+static void stdout_cut_off(void) {}
+#endif
+
+/* The exit status once stdout is flushed: status, or 2 and one line when a write to it failed. */
+static int stdout_end(int status)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 && !stdout_errno)
+        stdout_errno = errno ? errno : EIO;
+    if (ferror(stdout) && !stdout_errno)
+        stdout_errno = EIO;
+    if (!stdout_errno)
+        return status;
+    stdout_cut_off();
+    fprintf(stderr, "cbf-c: standard output: cannot write (%s)\n", strerror(stdout_errno));
+    return CBF_TOOL_EXIT_USAGE;
 }
 
 static void write_stderr(void *user, const char *text, size_t len)
@@ -22,7 +64,9 @@ static void usage(void)
     fputs("usage: cbf-c validate [--profile P] [--part-number N] [--cutters TABLE] [--machine FILE] [--max-findings N] "
           "FILE...\n"
           "       cbf-c dump [--path] FILE\n"
-          "       cbf-c encode [--profile P] FILE.cut   (the CBF it encodes to, on stdout)\n"
+          "       cbf-c encode [--profile P] [--version V] [--input-format cut] FILE.cut -o OUT   (CUT text to CBF;\n"
+          "                    -o - for standard output; cbf-c reads CUT text, not JSON)\n"
+          "       cbf-c encode --check [--profile P] [--version V] FILE.cut...   (only check that each encodes)\n"
           "       cbf-c sniff FILE                      (cut or cbf: how the workbench reads it)\n"
           "       cbf-c --version\n"
           "profiles:", stderr);
@@ -51,7 +95,7 @@ static long parse_count(const char *s)
 static long read_cbf(const char *path, uint8_t **buf)
 {
     const char *why;
-    long n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_FILE_SIZE, buf, &why);
+    long n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_FILE_SIZE, buf, &why);
     if (n == -2) /* larger than a CBF file can be: from its size, unread (cbf's words) */
         fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most a CBF file can hold\n", cbf_tool_name(path),
                 (unsigned long)CBF_TOOL_MAX_FILE_SIZE);
@@ -155,36 +199,216 @@ static int cmd_dump(const char *path, int drawn)
     return st;
 }
 
-/* cbf-c encode [--profile P] FILE: CUT text to the CBF it encodes to, written to stdout. */
+/* The writable version named by its id ("4.0"), or -1 and one line on stderr naming the writable ones. */
+static int parse_version(const char *value)
+{
+    char list[128];
+    size_t used = 0;
+    int v;
+    for (v = 0; v < CBF__NVERSIONS; v++)
+        if (cbf_version_writable(v) && strcmp(cbf_version_name(v), value) == 0)
+            return v;
+    list[0] = '\0';
+    for (v = 0; v < CBF__NVERSIONS; v++)
+        if (cbf_version_writable(v) && used < sizeof list)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", used ? ", " : "", cbf_version_name(v));
+    fprintf(stderr, "cbf-c: --version: not a version cbf-c writes: %s (writable: %s)\n",
+            cbf_quoted(value, CBF_QUOTE_NAME), list);
+    return -1;
+}
+
+/* Whether text is canonical JSON rather than CUT, as cbf encode tells them apart: a name ending in .json,
+ * or text whose first character (after white space) is '{'. */
+static int looks_like_json(const char *path, const uint8_t *text, size_t n)
+{
+    size_t pn = strlen(path), i = 0;
+    if (pn >= 5u && strcmp(path + pn - 5u, ".json") == 0)
+        return 1;
+    while (i < n && strchr(" \t\n\r\v\f", text[i]) && text[i])
+        i++;
+    return i < n && text[i] == '{';
+}
+
+/* The first byte of t[0..n) that does not start a UTF-8 character (where a strict decoder stops: a byte
+ * that starts none, an overlong form, a surrogate, beyond U+10FFFF, a character cut by the end), or n. */
+static size_t not_utf8(const uint8_t *t, size_t n)
+{
+    size_t i = 0, k, more;
+    while (i < n) {
+        unsigned c = t[i], lo = 0x80u, hi = 0xBFu;
+        if (c < 0x80u) {
+            i++;
+            continue;
+        }
+        if (c >= 0xC2u && c <= 0xDFu)
+            more = 1;
+        else if (c >= 0xE0u && c <= 0xEFu) {
+            more = 2;
+            lo = c == 0xE0u ? 0xA0u : 0x80u; /* no overlong form */
+            hi = c == 0xEDu ? 0x9Fu : 0xBFu; /* no surrogate */
+        } else if (c >= 0xF0u && c <= 0xF4u) {
+            more = 3;
+            lo = c == 0xF0u ? 0x90u : 0x80u;
+            hi = c == 0xF4u ? 0x8Fu : 0xBFu; /* nothing beyond U+10FFFF */
+        } else
+            return i;
+        for (k = 1; k <= more; k++)
+            if (i + k >= n || t[i + k] < (k == 1 ? lo : 0x80u) || t[i + k] > (k == 1 ? hi : 0xBFu))
+                return i;
+        i += more + 1u;
+    }
+    return n;
+}
+
+/* Whether text holds nothing but white space (cbf encode: "empty input: nothing to encode"). */
+static int is_blank(const uint8_t *text, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!text[i] || !strchr(" \t\n\r\v\f\x1c\x1d\x1e\x1f", text[i]))
+            return 0;
+    return 1;
+}
+
+/* What cbf-c encode is asked: the options of cbf encode that CUT input has. */
+typedef struct encode_options {
+    int profile, version, keep, json; /* json: 1 --input-format json, 0 cut, -1 from the name or the text */
+    const char *output;               /* NULL with --check: nothing is written */
+} encode_options;
+
+/* One input of cbf-c encode: its CBF written to o->output (or, with --check, only made); CBF_TOOL_EXIT_OK,
+ * or CBF_TOOL_EXIT_USAGE after one line on stderr naming the file and what is wrong. */
+static int encode_one(const char *path, const encode_options *o)
+{
+    static char why[2u * CBF_TOOL_NAME_BYTES + 256u];
+    uint8_t *text, *cbf = NULL;
+    const char *cause;
+    long n, len;
+    size_t bad, k;
+    unsigned long line = 1;
+    if (o->output && !cbf_tool_check_output(o->output, why, sizeof why)) { /* before the work, as cbf does */
+        fprintf(stderr, "cbf-c: %s\n", why);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    n = cbf_tool_read_input_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &cause);
+    if (n == -2) /* from its size, unread where it has one: cbf's line */
+        fprintf(stderr, "cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n",
+                cbf_tool_name(path), (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
+    else if (n < 0)
+        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
+    if (n < 0)
+        return CBF_TOOL_EXIT_USAGE;
+    bad = not_utf8(text, (size_t)n);
+    if (bad < (size_t)n) { /* text is UTF-8 before anything else is asked of it: cbf's line */
+        for (k = 0; k < bad; k++)
+            line += text[k] == '\n';
+        fprintf(stderr, "cbf-c: %s: line %lu (offset %lu): byte 0x%02X is not UTF-8 text\n", cbf_tool_name(path),
+                line, (unsigned long)bad, (unsigned)text[bad]);
+        free(text);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (n >= 3 && memcmp(text, "\xEF\xBB\xBF", 3u) == 0) { /* a byte order mark (editors on Windows write one): */
+        memmove(text, text + 3, (size_t)n - 3u);          /* cbf reads the text after it */
+        n -= 3;
+    }
+    len = -1;
+    if (is_blank(text, (size_t)n))
+        fprintf(stderr, "cbf-c: %s: empty input: nothing to encode\n", cbf_tool_name(path));
+    else if (o->json == 1 || (o->json < 0 && looks_like_json(path, text, (size_t)n)))
+        fprintf(stderr, "cbf-c: %s: not CUT text: canonical JSON, which cbf-c does not read (cbf encode reads it)\n",
+                cbf_tool_name(path));
+    else if (o->keep) /* CUT carries no sequence numbers, count or checksums: nothing stored to keep (cbf's line) */
+        fprintf(stderr, "cbf-c: %s: --keep-stored applies to JSON input only: CUT text carries no stored sequence "
+                "numbers, count or checksums to keep\n", cbf_tool_name(path));
+    else {
+        len = cbf_tool_cut_buffer(path, text, (size_t)n, o->version, o->profile, &cbf, &std_sink);
+        if (len >= 0 && o->output && !cbf_tool_write_file(o->output, cbf, (size_t)len, why, sizeof why)) {
+            fprintf(stderr, "cbf-c: %s\n", why);
+            len = -1;
+        }
+    }
+    free(text);
+    free(cbf);
+    return len < 0 ? CBF_TOOL_EXIT_USAGE : CBF_TOOL_EXIT_OK;
+}
+
+/* cbf-c encode [--profile P] [--version V] [--input-format cut] FILE -o OUT, or --check FILE...: CUT text to
+ * the CBF it encodes to, written to OUT (- for standard output) as cbf encode writes it: atomically, every
+ * write checked, nothing written on any refusal; with --check each file only encoded, one line for each
+ * that does not (a pre-commit hook). The command line is cbf encode's for CUT input; JSON is refused with
+ * one line (cbf-c reads CUT text only), --keep-stored with cbf's line (CUT stores nothing to keep). */
 static int cmd_encode(int argc, char **argv)
 {
-    int profile = CBF_TOOL_DEFAULT_PROFILE, st = CBF_TOOL_EXIT_OK;
-    const char *path;
-    uint8_t *text, *cbf = NULL;
-    const char *why;
-    long n, len;
-    if (argc == 3 && strcmp(argv[0], "--profile") == 0) {
-        profile = cbf_profile_find(argv[1]);
-        if (profile < 0) {
-            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[1], CBF_QUOTE_NAME));
+    encode_options o;
+    int i, check = 0, files = 0, status = CBF_TOOL_EXIT_OK;
+    const char *first = NULL;
+    o.profile = CBF_TOOL_DEFAULT_PROFILE;
+    o.version = CBF_V__UNKNOWN;
+    o.keep = 0;
+    o.json = -1;
+    o.output = NULL;
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        int valued = strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "-o") == 0
+                     || strcmp(a, "--output") == 0 || strcmp(a, "--input-format") == 0;
+        if (valued && i + 1 >= argc) {
+            usage();
             return CBF_TOOL_EXIT_USAGE;
         }
-    } else if (argc != 1 || argv[0][0] == '-') {
+        if (strcmp(a, "--profile") == 0) {
+            o.profile = cbf_profile_find(argv[++i]);
+            if (o.profile < 0) {
+                fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
+                return CBF_TOOL_EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--version") == 0) {
+            o.version = parse_version(argv[++i]);
+            if (o.version < 0)
+                return CBF_TOOL_EXIT_USAGE;
+        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            o.output = argv[++i];
+        } else if (strcmp(a, "--input-format") == 0) {
+            i++;
+            o.json = strcmp(argv[i], "json") == 0 ? 1 : strcmp(argv[i], "cut") == 0 ? 0 : -2;
+            if (o.json == -2) {
+                fprintf(stderr, "cbf-c: --input-format: %s is neither cut nor json\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
+                return CBF_TOOL_EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--keep-stored") == 0) {
+            o.keep = 1;
+        } else if (strcmp(a, "--check") == 0) {
+            check = 1;
+        } else if (a[0] == '-' && a[1]) {
+            usage();
+            return CBF_TOOL_EXIT_USAGE;
+        } else if (!files++) {
+            first = a;
+        }
+    }
+    if (check && o.output) {
+        fprintf(stderr, "cbf-c encode: --check writes nothing: drop -o\n");
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!files || (!check && !o.output)) {
+        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", files ? "-o/--output" : "FILE");
         usage();
         return CBF_TOOL_EXIT_USAGE;
     }
-    path = argv[argc - 1];
-    n = cbf_tool_read_file_alloc(path, CBF_TOOL_MAX_CUT_SIZE, &text, &why);
-    if (n < 0) {
-        fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), n == -2 ? "larger than the most CUT text the engine reads" : why);
-        return CBF_TOOL_EXIT_USAGE;
+    if (!check) {
+        if (files > 1) {
+            fprintf(stderr, "cbf-c encode: one FILE with -o; several only with --check\n");
+            return CBF_TOOL_EXIT_USAGE;
+        }
+        return encode_one(first, &o);
     }
-    len = cbf_tool_cut_buffer(path, text, (size_t)n, profile, &cbf, &std_sink);
-    if (len < 0 || fwrite(cbf, 1, (size_t)len, stdout) != (size_t)len || fflush(stdout) != 0)
-        st = CBF_TOOL_EXIT_USAGE;
-    free(text);
-    free(cbf);
-    return st;
+    for (i = 0; i < argc; i++) { /* --check: every file, in order; the worst status */
+        const char *a = argv[i];
+        if (strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "--input-format") == 0)
+            i++;
+        else if (!(a[0] == '-' && a[1]) && encode_one(a, &o) != CBF_TOOL_EXIT_OK)
+            status = CBF_TOOL_EXIT_USAGE;
+    }
+    return status;
 }
 
 /* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
@@ -205,7 +429,7 @@ static int cmd_sniff(const char *path)
     return CBF_TOOL_EXIT_OK;
 }
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--version") == 0) {
         printf("cbf-c %s (spec %s)\n", CBF_TOOLKIT_VERSION, CBF_SPEC_REVISION);
@@ -223,4 +447,10 @@ int main(int argc, char **argv)
         return cmd_sniff(argv[2]);
     usage();
     return CBF_TOOL_EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    stdout_begin();
+    return stdout_end(run(argc, argv));
 }

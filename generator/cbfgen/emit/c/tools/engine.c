@@ -412,7 +412,7 @@ int cbf_tool_is_cut(const uint8_t *buf, size_t n)
     return 1;
 }
 
-long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int version, int profile, uint8_t **out,
                          const cbf_tool_sink *sink)
 {
     const char *file = cbf_tool_name(name);
@@ -422,7 +422,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int pr
     *out = NULL;
     out_begin(sink);
     if (n > CBF_TOOL_MAX_CUT_SIZE) {
-        err_printf("cbf-c: %s: larger than %lu bytes, the most CUT text the engine reads\n", file,
+        err_printf("cbf-c: %s: larger than %lu bytes, the most the text of a CBF file can hold\n", file,
                    (unsigned long)CBF_TOOL_MAX_CUT_SIZE);
         return -1;
     }
@@ -435,7 +435,7 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int pr
             err_printf("cbf-c: %s: out of memory for the CBF it encodes to\n", file);
             return -1;
         }
-        len = cbf_cut_encode((const char *)text, n, profile, *out, cap, &err);
+        len = cbf_cut_encode_as((const char *)text, n, version, profile, *out, cap, &err);
         if (len == CBF_ERR_BUFFER && cap == CBF_TOOL_MAX_FILE_SIZE)
             break;
         cap = CBF_TOOL_MAX_FILE_SIZE;

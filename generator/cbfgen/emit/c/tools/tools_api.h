@@ -53,10 +53,11 @@ int cbf_tool_path_buffer(const char *name, const uint8_t *buf, size_t n, const c
 int cbf_tool_is_cut(const uint8_t *buf, size_t n);
 /** The most CUT text the engine reads: 64 times the largest CBF file (cbf encode's bound). */
 #define CBF_TOOL_MAX_CUT_SIZE (64u * CBF_TOOL_MAX_FILE_SIZE)
-/** cbf-c encode of one CUT text: the CBF it encodes to (cbf_cut_encode under profile) in *out, a buffer of
- * the heap the caller frees, and its size; or -1, *out NULL, and one line on sink->err naming the file, the
- * line (and column) and what is wrong. */
-long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int profile, uint8_t **out,
+/** cbf-c encode of one CUT text: the CBF it encodes to (cbf_cut_encode_as: version, CBF_V__UNKNOWN for
+ * the text's own or the default, under profile) in *out, a buffer of the heap the caller frees, and its
+ * size; or -1, *out NULL, and one line on sink->err naming the file, the line (and column) and what is
+ * wrong. */
+long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int version, int profile, uint8_t **out,
                          const cbf_tool_sink *sink);
 
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
@@ -74,6 +75,19 @@ long cbf_tool_read_file(const char *path, uint8_t *buf, size_t cap, const char *
 /** As cbf_tool_read_file, into a buffer of the heap sized to the file, *out (the caller frees it); *why
  * "out of memory" when it cannot be had. */
 long cbf_tool_read_file_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
+/** As cbf_tool_read_file_alloc, "-" being standard input (read to its end; cbf's rule for an input). */
+long cbf_tool_read_input_alloc(const char *path, size_t cap, uint8_t **out, const char **why);
 /** cbf_tool_cutters_buffer and cbf_tool_machine_buffer of a file read whole (at most its max_bytes). */
 int cbf_tool_cutters_file(const char *path, cbf_options *opt);
 int cbf_tool_machine_file(const char *path, cbf_options *opt);
+/** Whether an output path can be written, before the work is done (cbf's _check_output): 1; or 0 and one
+ * line in why[0..cap) naming the output and what is wrong (its folder does not exist, it is a directory,
+ * a block device or a socket). "-" (standard output) can always be tried. */
+int cbf_tool_check_output(const char *path, char *why, size_t cap);
+/** data[0..n) written to path: to a regular file atomically (a temporary file beside the final target of
+ * a symlink, written whole, synced, closed and renamed over the target; on any failure removed: the
+ * target is as it was); into a character device or FIFO directly; "-": standard output, where what was
+ * written to a regular file is cut off again on failure. 1; or 0 and one line in why[0..cap) naming the
+ * output ("standard output" for "-") and the system's reason. Every write is checked: a full disk or
+ * /dev/full is a failure, never a short file. */
+int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *why, size_t cap);

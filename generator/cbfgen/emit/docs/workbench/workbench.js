@@ -582,7 +582,7 @@ async function check(readFile) {
   const cut = runCommand(['cbf-c', 'sniff', chosen], files).stdout.trim() === 'cut';
   showCut(null);
   if (cut) {
-    const enc = runCommand(['cbf-c', 'encode', '--profile', profile, chosen], files, true);
+    const enc = runCommand(['cbf-c', 'encode', '--profile', profile, chosen, '-o', '-'], files, true);
     if (enc.status !== 0) {
       showCutError(enc, chosen, profile, mine);
       return;
