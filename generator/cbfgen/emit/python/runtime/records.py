@@ -904,7 +904,7 @@ def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
 def _field(parts: list[Any], j: int, pick: Any) -> Any:
     """Field j of the parts concatenated, at ``pick`` (None: all, as concatenated)."""
     got = parts[0][j] if len(parts) == 1 else np.concatenate([p[j] for p in parts])
-    return got if pick is None else got[pick]
+    return got if pick is None else got.take(pick, axis=0)  # take: several times a 2-d fancy index
 
 
 def _part_of(parts: list[Any], at: Any) -> list[int]:
@@ -951,10 +951,13 @@ def _continuity_end(r: Records, check: Check) -> None:
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
     # measured (a valid file's motions all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
-    dvec = start[todo].astype(np.float64)
-    dvec -= end[todo - 1]
+    if todo.size == 0:
+        return
+    first = start.take(todo, axis=0)
+    dvec = first.astype(np.float64)
+    dvec -= end.take(todo - 1, axis=0)
     d = np.sqrt(_rowsum(dvec * dvec))
-    keep = _finite_rows(start[todo]) & (d > T.TOL["position_mm"])
+    keep = _finite_rows(first) & (d > T.TOL["position_mm"])
     bad = todo[keep]
     if bad.size == 0:
         return
@@ -983,7 +986,9 @@ def _orientation_end(r: Records, check: Check) -> None:
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
     todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
-    s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
+    if todo.size == 0:
+        return
+    s, prev = start.take(todo, axis=0).astype(np.float64), end.take(todo - 1, axis=0).astype(np.float64)
     prev_ok = _finite_rows(prev) & (np.sqrt(_rowsum(prev * prev)) > 0.0)
     s_ok = _finite_rows(s) & (np.sqrt(_rowsum(s * s)) > 0.0)
     cx = _cross(s, prev)
@@ -1052,18 +1057,166 @@ def _shapes_balanced(parts: list[Any], motion: list[Any]) -> bool:
     binary search, no pass over the file's records). Only a quick yes: on False the loop decides."""
     if len({p[2].shape[1] for p in parts}) != 1:
         return False
-    rows, (kinds, names, counts) = _in_file_order(
-        [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
-    if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
-        return False
-    opened, closed = rows[0::2], rows[1::2]
-    if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
-        return False
+    starts, ends = [p for p in parts if p[1] == 0], [p for p in parts if p[1] == 1]
+    if len(starts) == 1 and len(ends) == 1:
+        # one start command and one end command (a part each): no merge into file order; they
+        # alternate from a start when each start comes before its end and each end before the next start
+        (opened, _, s_names, s_counts, _), (closed, _, e_names, e_counts, _) = starts[0], ends[0]
+        if len(opened) != len(closed) or not ((opened < closed).all() and (closed[:-1] < opened[1:]).all()):
+            return False
+        if not ((s_names == e_names).all() and (s_counts == e_counts).all()):
+            return False
+        counts = s_counts
+    else:
+        rows, (kinds, names, counts) = _in_file_order(
+            [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
+        if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
+            return False
+        opened, closed = rows[0::2], rows[1::2]
+        if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
+            return False
+        counts = counts[0::2]
     inside = np.zeros(len(opened), dtype=np.int64)  # motions after each start, before its end
+    after = opened + 1
     for m in motion:
         inside += np.searchsorted(m, closed)
-        inside -= np.searchsorted(m, opened + 1)
-    return bool((inside == counts[0::2]).all())
+        inside -= np.searchsorted(m, after)
+    return bool((inside == counts).all())
+
+
+# -- one test for the bounded checks of a layout -----------------------------------------
+# finite, positive, range and machine_limits each bound the binary32 arguments of a layout from
+# below and above (finite: the largest binary32; positive: the least one above 0; range: its
+# limits as the least / greatest binary32 inside them; machine_limits: its binary32 bounds). When
+# every float of a layout's records lies within the tightest bounds of its words (a NaN never
+# does), none of those kernels has anything to report there, and they are not called: one test of
+# three array operations over the layout's floats instead of a few operations a check and target.
+# Only a quick yes: where some value lies outside, the kernels run and decide.
+@dataclass(frozen=True)
+class _Bounds:
+    """A layout's bounded checks as one test: the float words tested (None: every word of the
+    arguments), each one's lowest and highest binary32 within bounds, and the plan without the
+    kernels the test stands for."""
+
+    cols: Any
+    lo: Any
+    hi: Any
+    rest: tuple[tuple[Check, Any], ...]
+
+
+_BOUNDS: dict[tuple[int, int, str, int], tuple[Machine, Any, _Bounds | None]] = {}
+
+
+def _at_least32(x: float, strict: bool) -> float:
+    """The least binary32 y with y >= x (y > x when strict): v >= y <=> v >= x (> x) for binary32 v."""
+    with np.errstate(over="ignore"):
+        y = np.float32(x)
+    if float(y) < x or (strict and float(y) == x):
+        y = np.nextafter(y, np.float32(np.inf))
+    return math.nan if strict and y == np.inf else float(y)
+
+
+def _at_most32(x: float, strict: bool) -> float:
+    """The greatest binary32 y with y <= x (y < x when strict)."""
+    return -_at_least32(-x, strict)
+
+
+def _float32_words(lay: T.LayoutInfo, name: str) -> list[int] | None:
+    """The 4-byte words of argument ``name`` when it is binary32 at a word offset, else None."""
+    f = next((a for a in lay.args if a.name == name), None)
+    if f is None or f.kind != "float" or f.numpy != "f4" or f.offset % 4:
+        return None
+    return [f.offset // 4 + k for k in range(f.size // 4)]
+
+
+def _bounds_of(r: Records, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...], elsewhere: frozenset[str]
+               ) -> _Bounds | None:
+    """The bounded-check test of a layout (made once a layout, plan, version and machine)."""
+    key = (id(lay), id(plan), r.version, id(r.machine))
+    got = _BOUNDS.get(key)
+    if got is None or got[0] is not r.machine or got[1] is not plan:
+        if len(_BOUNDS) > 512:
+            _BOUNDS.clear()
+        got = _BOUNDS[key] = (r.machine, plan, _make_bounds(r.machine, lay, plan, elsewhere))
+    return got[2]
+
+
+def _make_bounds(machine: Machine, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...],
+                 elsewhere: frozenset[str]) -> _Bounds | None:
+    if lay.size % 4 or _float_words(lay) is None:
+        return None
+    cmd = T.BY_CODE[lay.code]
+    words = lay.size // 4
+    lo, hi = [-math.inf] * words, [math.inf] * words
+    bounded: set[int] = set()
+
+    def bound(ws: list[int], low: float, high: float) -> None:
+        for w in ws:
+            lo[w], hi[w] = max(lo[w], low), min(hi[w], high)
+            bounded.add(w)
+
+    rest: list[tuple[Check, Any]] = []
+    for check, fn in plan:
+        if check["id"] in elsewhere:
+            continue
+        covered, kind = True, check["kind"] if fn is KERNELS[check["kind"]].batch else None
+        if kind == "finite":
+            big = float(np.finfo(np.float32).max)
+            for f in lay.args:
+                if f.kind == "float":
+                    bound(_float32_words(lay, f.name) or [], -big, big)
+        elif kind in ("positive", "range"):
+            names = [nm for t in _targets_of(check, cmd) for nm in t if any(a.name == nm for a in lay.args)]
+            if any(_float32_words(lay, nm) is None for nm in names):
+                covered = False
+            elif kind == "positive":
+                for nm in names:
+                    bound(_float32_words(lay, nm) or [], _at_least32(0.0, True), math.inf)
+            else:
+                low = -math.inf if check["min"] is None else _at_least32(float(check["min"]), check["min_exclusive"])
+                high = math.inf if check["max"] is None else _at_most32(float(check["max"]), check["max_exclusive"])
+                for nm in names:
+                    bound(_float32_words(lay, nm) or [], low, high)
+        elif kind == "machine_limits":
+            rules = machine_rules(check, cmd.name, lay.variant)
+            have = [(f, limit) for f, limit, _ in rules if any(a.name == f.name for a in lay.args)]
+            if any(f.per or _float32_words(lay, f.name) is None for f, _ in have):
+                covered = False
+            else:
+                for f, limit in have:
+                    lim = machine.limits[limit]
+                    ws = _float32_words(lay, f.name) or []
+                    for k, w in enumerate(ws):
+                        j = k if len(lim.lo32) > 1 else 0
+                        bound([w], lim.lo32[j], lim.hi32[j])
+        else:
+            covered = False
+        if not covered:
+            rest.append((check, fn))
+    if len(rest) == len([x for x in plan if x[0]["id"] not in elsewhere]) or not bounded:
+        return None
+    order = sorted(bounded)
+    cols = None if order == list(range(words)) else np.asarray(order, dtype=np.intp)
+    return _Bounds(cols, np.asarray([lo[w] for w in order], dtype=np.float32),
+                   np.asarray([hi[w] for w in order], dtype=np.float32), tuple(rest))
+
+
+def _targets_of(check: Check, cmd: T.CommandInfo) -> Iterator[tuple[str, ...]]:
+    for t in check["targets"]:
+        if t["command"] == cmd.name:
+            yield tuple(t["args"])
+
+
+def _within(b: Batch, q: _Bounds) -> bool:
+    """Every bounded float of the batch within its bounds (NaN is not)."""
+    if b.bytes_ is None:
+        return False
+    v = b.bytes_.view(T.BO + "f4")
+    if q.cols is not None:
+        v = v.take(q.cols, axis=1)
+    ok = np.greater_equal(v, q.lo)
+    ok &= np.less_equal(v, q.hi)
+    return bool(ok.all())
 
 
 Applies = Callable[[Check, T.LayoutInfo, T.CommandInfo], bool]
@@ -1189,7 +1342,11 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
             if kernel.every is not None:
                 kernel.every(r, check)
         for b in _batches(r):
-            for check, fn in _plan(cutters is not None, b.lay):
+            plan = _plan(cutters is not None, b.lay)
+            q = _bounds_of(r, b.lay, plan, elsewhere)
+            if q is not None and _within(b, q):
+                plan = q.rest
+            for check, fn in plan:
                 if check["id"] not in elsewhere:
                     fn(r, check, b)
         for check, kernel in active:
