@@ -357,21 +357,29 @@ def _sequence(r: Records, check: Check) -> None:
     seq, wrap = r.head["sequence"], T.SEQ_MASK
     expected = np.arange(len(r.off), dtype=np.int64)
     expected &= wrap  # in place: the peak of a file of empty records is here
-    bad = np.nonzero(seq != expected)[0]
+    differ = seq != expected
     del expected
+    if not differ.any():
+        return
+    bad = np.flatnonzero(differ)
     at = r.off[bad] + T.RECORD_FIELDS[T.I_SEQ].offset
     r.add(check, bad, at, bad, lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
 
 
 def _reserved(r: Records, check: Check) -> None:
     res = r.head["reserved"]
-    bad = np.nonzero(res != 0)[0]
+    if not res.any():
+        return
+    bad = np.flatnonzero(res)
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_RES].offset, bad, lambda i: f"reserved byte is 0x{res[i]:02X}")
 
 
 def _code_copy(r: Records, check: Check) -> None:
     copy, code = r.head["code_copy"], r.head["code"]
-    bad = np.nonzero(copy != code)[0]
+    differ = copy != code
+    if not differ.any():
+        return
+    bad = np.flatnonzero(differ)
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_COPY].offset, bad,
           lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
 
@@ -418,9 +426,10 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
 def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
     """The records ``rows`` whose stored argument checksum is not ``want`` (computed, per row)."""
     got = r.head["checksum"][rows]
-    bad = np.flatnonzero(got != want)
-    if bad.size == 0:
+    differ = got != want
+    if not differ.any():  # (a quick no: flatnonzero costs several times as much)
         return
+    bad = np.flatnonzero(differ)
     bad = bad[np.argsort(rows[bad], kind="stable")]  # a size group's rows are by layout: in file order
     at, stored, computed = rows[bad], got[bad], want[bad]
     r.add(check, at, r.off[at] + T.ARG_CHECKSUM.offset, np.arange(bad.size),
@@ -492,7 +501,29 @@ def _carries(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
     return _judges_head(check) or any(ck.tag == check["field"] for ck in lay.checksums)
 
 
+@lru_cache(maxsize=16)
+def _code_faults(version: str, profile: str) -> NDArray[np.bool_]:
+    """Per (code, argument size) index (``_key``): an unknown code, a command not available in the
+    version, or a size no layout of it accepts (what unknown_code, availability, arg_size flag)."""
+    known, avail = _tables(version, profile)[:2]
+    return (~(known & avail)[:, None] | _size_bad(version, profile).reshape(256, 256)).reshape(-1)  # type: ignore[no-any-return]
+
+
+_FINE = "codes and sizes fine"  # r.state's key of _codes_fine's answer
+
+
+def _codes_fine(r: Records) -> bool:
+    """No record has a code, or a (code, argument size), that unknown_code, availability or arg_size
+    flags: one look-up a record for the three (asked once a validation)."""
+    got = r.state.get(_FINE)
+    if got is None:
+        got = r.state[_FINE] = not _code_faults(r.version, r.profile).take(_key(r)).any()
+    return bool(got)
+
+
 def _unknown_code(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code = r.head["code"]
     known = _tables(r.version, r.profile)[0]
     bad = np.flatnonzero(~known.take(code))  # take: several times a fancy index by a byte column
@@ -501,6 +532,8 @@ def _unknown_code(r: Records, check: Check) -> None:
 
 
 def _availability(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code, version = r.head["code"], r.version
     known, avail = _tables(version, r.profile)[:2]
     bad = np.flatnonzero((known & ~avail).take(code))
@@ -517,6 +550,8 @@ def _availability(r: Records, check: Check) -> None:
 
 
 def _arg_size(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
     bad = np.flatnonzero(_size_bad(version, profile).take(_key(r)))
 
@@ -694,6 +729,10 @@ def _ordered(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         if not all(nm in cols for nm in names):
             continue
+        stored = [b.raw[nm] for nm in names]  # as stored: binary32 orders as its float64 widening
+        pairs = zip(stored, stored[1:], strict=False)
+        if all(c.ndim == 1 for c in stored) and not any((x > y).any() for x, y in pairs):
+            continue  # no pair out of order anywhere (a quick no; NaN compares false, as in the test below)
         vals = np.stack([cols[nm] for nm in names], axis=1)
         fin = _finite_rows(vals)
         bad = np.nonzero(fin & _any_cols(vals[:, :-1] > vals[:, 1:]))[0]
@@ -708,16 +747,23 @@ def _nondecreasing(r: Records, check: Check, b: Batch) -> None:
     held = r.state.setdefault(check["id"], {})  # command.argument -> [(rows, values, offsets)]
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
-            v = b.cols[nm]
-            fin = np.flatnonzero(np.isfinite(v))
-            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[fin], v[fin], b.at(nm)[fin]))
+            v = b.raw[nm]  # as stored (widened where parts are joined: binary32 to float64 is exact)
+            fin = np.isfinite(v)
+            if fin.all():
+                held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows, v, b.at(nm)))
+                continue
+            keep = np.flatnonzero(fin)
+            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[keep], v[keep], b.at(nm)[keep]))
 
 
 def _nondecreasing_end(r: Records, check: Check) -> None:
     """Each finite value against the last finite value of the same command argument."""
     for key, parts in r.state.pop(check["id"], {}).items():
         rows, (values, offs) = _in_file_order(parts)
-        bad = np.flatnonzero(values[1:] < values[:-1]) + 1
+        falls = values[1:] < values[:-1]
+        if not falls.any():
+            continue
+        bad = np.flatnonzero(falls) + 1
         prev = values[bad - 1]
         r.add(check, rows[bad], offs[bad], np.arange(bad.size),
               _falls(key, prev, values[bad]))
@@ -879,8 +925,11 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
     at = b.aoff + next((f.offset for f in b.lay.args if f.name == m.get("start")), 0)
     # rows and offsets narrowed as Records.add keeps them (held until the end: 4 bytes each, not 8)
     narrow = _narrow(r)
-    r.state.setdefault(check["id"], []).append((b.rows.astype(narrow), start, _ends(m, cols, n), at.astype(narrow),
-                                                b.cmd.name))
+    # a point's or line's end as stored (no copy): a part flagged plain has its ends that are not
+    # finite taken as NaN (as _ends makes them) by the end kernel, on the few rows it measures
+    end = cols[m["end"]][:, -3:] if plain else _ends(m, cols, n)
+    r.state.setdefault(check["id"], []).append((b.rows.astype(narrow), start, end, at.astype(narrow),
+                                                b.cmd.name, plain))
 
 
 def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
@@ -943,20 +992,29 @@ def _same_rows(x: Any, y: Any) -> Any:
 
 
 def _continuity_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])  # (rows, start, end, start offsets, command name) a layout
+    # (rows, start, end, start offsets, command name, plain) a layout
+    parts = r.state.pop(check["id"], [])
     if not parts:
         return
     cat, order = _merge_order(parts)
     start, end = _field(cat, 1, order), _field(cat, 2, order)
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
-    # measured (a valid file's motions all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
-    if todo.size == 0:
+    # measured (a valid file's motions all start so). (A plain end that is not finite is not where
+    # a motion starts either: NaN below, as geometry.motion_end.)
+    same = _same_rows(start[1:], end[:-1])
+    if same.all():
         return
-    first = start.take(todo, axis=0)
+    todo = np.flatnonzero(~same) + 1
+    first, prev = start.take(todo, axis=0), end.take(todo - 1, axis=0)
     dvec = first.astype(np.float64)
-    dvec -= end.take(todo - 1, axis=0)
+    dvec -= prev
     d = np.sqrt(_rowsum(dvec * dvec))
+    plain = [p[5] for p in cat]
+    if any(plain):
+        unknown = ~_finite_rows(prev)  # where the last motion ended is not known
+        if not all(plain):
+            unknown &= np.asarray(plain)[_part_of(cat, todo - 1 if order is None else order[todo - 1])]
+        d[unknown] = np.nan
     keep = _finite_rows(first) & (d > T.TOL["position_mm"])
     bad = todo[keep]
     if bad.size == 0:
@@ -985,7 +1043,13 @@ def _orientation_end(r: Records, check: Check) -> None:
     tol = T.TOL["orientation_deg"]
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
+    if tol >= 0:
+        same = _same_rows(start[1:], end[:-1])
+        if same.all():
+            return
+        todo = np.flatnonzero(~same) + 1
+    else:
+        todo = np.arange(1, len(start))
     if todo.size == 0:
         return
     s, prev = start.take(todo, axis=0).astype(np.float64), end.take(todo - 1, axis=0).astype(np.float64)
