@@ -1002,6 +1002,7 @@ def _continuity_end(r: Records, check: Check) -> None:
     # measured (a valid file's motions all start so). (A plain end that is not finite is not where
     # a motion starts either: NaN below, as geometry.motion_end.)
     same = _same_rows(start[1:], end[:-1])
+    same |= np.isnan(start[1:, 0])  # a start that is not finite (a point has none) is not measured below
     if same.all():
         return
     todo = np.flatnonzero(~same) + 1
@@ -1045,6 +1046,7 @@ def _orientation_end(r: Records, check: Check) -> None:
     # are measured (a valid file's paths all start so).
     if tol >= 0:
         same = _same_rows(start[1:], end[:-1])
+        same |= np.isnan(start[1:, 0])  # a start that is not finite (a set has none) is not measured below
         if same.all():
             return
         todo = np.flatnonzero(~same) + 1
