@@ -55,13 +55,14 @@ class Batch:
     rows: Any
     aoff: Any
     cols: Mapping[str, Any]  # floats as float64
-    raw: dict[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
+    raw: Mapping[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
     plain: dict[str, bool] = field(default_factory=dict)  # string argument -> every row a plain string
     bytes_: Any = None  # the argument bytes, rows x layout size
     # the records of every layout of this argument size the file uses, batched together: (the
-    # position of the first layout in _size_order, their rows, their argument bytes)
-    group: tuple[int, Any, Any] | None = None
+    # position of the first layout in _size_order, their rows, their argument bytes, where their
+    # rows start in the order of _batches)
+    group: tuple[int, Any, Any, int] | None = None
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -145,16 +146,25 @@ def _head(a: NDArray[np.uint8], off: NDArray[np.int64]) -> dict[str, Any]:
     items, each field a strided view of them (1-, 2-, 4- and 8-byte fields; others are assembled
     from their bytes). The views hold the gathered heads, as many bytes as copies of every field
     would, and spare a copy a field."""
-    plain = [f for f in T.RECORD_FIELDS if f.size in (1, 2, 4, 8)]
-    dtype = np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
-                      "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
+    plain, dtype = _head_dtype()
     rows = _gather(a, off, T.HEAD_SIZE)
     heads = rows.view(dtype)[:, 0]
     out = {f.role or f.name: heads[f.name] for f in plain}  # views of the rows (copies cost more than they save)
     for f in T.RECORD_FIELDS:
-        if f not in plain:
+        if f.size not in _PLAIN_SIZES:
             out[f.role or f.name] = _uint(rows, f)
     return out
+
+
+_PLAIN_SIZES = (1, 2, 4, 8)
+
+
+@lru_cache(maxsize=1)
+def _head_dtype() -> tuple[list[T.FieldInfo], np.dtype[Any]]:
+    """The head fields of 1, 2, 4 or 8 bytes, and the structured dtype of a head that holds them."""
+    plain = [f for f in T.RECORD_FIELDS if f.size in _PLAIN_SIZES]
+    return plain, np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
+                            "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
 
 
 _DTYPES: dict[int, np.dtype[Any]] = {}
@@ -225,6 +235,8 @@ def _key(r: Records) -> Any:
 
 _KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
 _NO_LAYOUT = "rows of no layout"  # r.state's key of the records no layout fits (made by _batches)
+_ORDER = "rows by layout"  # r.state's key of every record by layout position (made by _batches; a group's rows
+# are a slice of it)
 
 
 @lru_cache(maxsize=16)
@@ -254,6 +266,7 @@ def _batches(r: Records) -> Iterator[Batch]:
     bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
     del pos
     r.state[_NO_LAYOUT] = order[:bounds[0]]  # position 0 first: the records no layout fits, in file order
+    r.state[_ORDER] = order
     p, count = 0, len(by_pos)
     while p < count:
         q = p + 1
@@ -265,19 +278,56 @@ def _batches(r: Records) -> Iterator[Batch]:
             aoff = r.off[rows] + T.HEAD_SIZE
             lay0 = lays[by_pos[p]]
             data = _gather(r.a, aoff, lay0.size)
-            group = (p, rows, data)
+            group = (p, rows, data, lo)
             for k in range(p, q):
                 if bounds[k + 1] > bounds[k]:
                     yield _batch(lays[by_pos[k]], group, bounds[k] - lo, bounds[k + 1] - lo, aoff)
         p = q
 
 
-def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any], lo: int, hi: int, aoff: Any) -> Batch:
+def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any, int], lo: int, hi: int, aoff: Any) -> Batch:
     """The batch of one layout: rows lo .. hi of its size group."""
     rows, data = group[1][lo:hi], group[2][lo:hi]
-    arr = data.view(_dtype(lay))[:, 0] if lay.size else None
-    raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+    raw = _Raw(lay, data)
     return Batch(lay, T.BY_CODE[lay.code], rows, aoff[lo:hi], _Columns(raw), raw, bytes_=data, group=group)
+
+
+class _Raw(Mapping[str, Any]):
+    """A layout's arguments as stored, each a view of the batch's argument bytes, made when a
+    kernel first reads one (where the bounds test stands for the float kernels, often none is)."""
+
+    __slots__ = ("_arr", "_data", "_lay")
+
+    def __init__(self, lay: T.LayoutInfo, data: Any) -> None:
+        self._lay, self._data = lay, data
+        self._arr: Any = None
+
+    def __getitem__(self, name: str) -> Any:
+        if self._arr is None:
+            if name not in _names(self._lay):
+                raise KeyError(name)
+            self._arr = self._data.view(_dtype(self._lay))[:, 0]
+        return self._arr[name]
+
+    def __contains__(self, name: object) -> bool:
+        return name in _names(self._lay)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(_names(self._lay))
+
+    def __len__(self) -> int:
+        return len(_names(self._lay))
+
+
+_NAMES: dict[int, dict[str, None]] = {}
+
+
+def _names(lay: T.LayoutInfo) -> dict[str, None]:
+    """A layout's argument names, in order (made once a layout)."""
+    got = _NAMES.get(id(lay))
+    if got is None:
+        got = _NAMES[id(lay)] = dict.fromkeys(f.name for f in lay.args)
+    return got
 
 
 class _Columns(Mapping[str, Any]):
@@ -286,7 +336,7 @@ class _Columns(Mapping[str, Any]):
 
     __slots__ = ("_done", "_raw")
 
-    def __init__(self, raw: dict[str, Any]) -> None:
+    def __init__(self, raw: Mapping[str, Any]) -> None:
         self._raw = raw
         self._done: dict[str, Any] = {}
 
@@ -406,21 +456,27 @@ def _arg_sums(cov: tuple[str, int], rows: NDArray[np.uint8]) -> NDArray[np.int64
 
 
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
-    """The checksums of the records of a layout (of every layout of its argument size, when the
-    first of them comes), from the argument bytes the batch gathered, against the stored ones."""
+    """The checksums of the records of every layout of a batch's argument size (when the first of
+    them comes), from the argument bytes the batch gathered; the end kernel compares them with the
+    stored ones, for every record at once."""
     cov = _head_coverage()
     if cov is None:
         return
     if b.group is None:
-        rows, data = b.rows, b.bytes_
-    else:
-        key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
-        if key in r.state:
-            return
-        r.state[key] = True
-        rows, data = b.group[1], b.group[2]
-    r.state[check["id"]] = True  # the batches judge the records that have a layout
-    _report_sums(r, check, rows, _arg_sums(cov, data))
+        r.state.setdefault(check["id"], None)  # (no size group: judged here, none left for the end)
+        _report_sums(r, check, b.rows, _arg_sums(cov, b.bytes_))
+        return
+    key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
+    if key in r.state:
+        return
+    r.state[key] = True
+    # the batches judge the records that have a layout: their checksums in the order _batches put
+    # the records in (a group's rows are a slice of it: no scatter), in the stored field's type
+    want = r.state.get(check["id"])
+    if want is None:
+        want = r.state[check["id"]] = np.zeros(len(r.off), dtype=r.head["checksum"].dtype)
+    lo = b.group[3]
+    want[lo:lo + len(b.group[1])] = _arg_sums(cov, b.group[2])
 
 
 def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
@@ -443,7 +499,17 @@ def _arg_checksum(r: Records, check: Check) -> None:
         # The batches judged the records of each layout; the others (no layout fits: _batches
         # keeps them) are summed here, one argument size at a time, their arguments gathered as
         # rows (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
-        left = r.state.get(_NO_LAYOUT) if r.state.pop(check["id"], None) else None
+        judged = check["id"] in r.state
+        want = r.state.pop(check["id"], None)
+        left = r.state.get(_NO_LAYOUT) if judged else None
+        if want is not None:  # the records of each layout at once, in the order _batches put them in
+            order = r.state[_ORDER]
+            done = slice(len(r.state[_NO_LAYOUT]), len(order))
+            differ = chk.take(order[done]) != want[done]
+            if differ.any():
+                at = np.flatnonzero(differ)
+                rows = order[done][at]
+                _report_sums(r, check, rows, want[done][at])
         if left is None:  # no batch judged any: every record here
             left = np.arange(len(off))
         if left.size:
