@@ -260,7 +260,7 @@ def _batches(r: Records) -> Iterator[Batch]:
     per-call cost once a size, not once a layout); each layout's rows are a slice of them."""
     lays = _tables(r.version, r.profile)[4]
     pos_of, by_pos, first = _size_order(r.version, r.profile)
-    pos = pos_of.take(_key(r))  # 0: no layout fits
+    pos = _positions(r)  # 0: no layout fits
     # the rows of every layout at once, by size then layout, each in file order: one stable sort
     order = np.argsort(pos, kind="stable")
     bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
@@ -576,14 +576,45 @@ def _code_faults(version: str, profile: str) -> NDArray[np.bool_]:
 
 
 _FINE = "codes and sizes fine"  # r.state's key of _codes_fine's answer
+_POS = "layout positions"  # r.state's key of _positions' column
+
+
+@lru_cache(maxsize=16)
+def _position_faults(version: str, profile: str) -> Any:
+    """Per (code, argument size) index: the position + 1 of its layout in _size_order (0: none),
+    with the top bit of the byte set where _code_faults has a fault (None: 128 layouts or more)."""
+    pos_of = _size_order(version, profile)[0]
+    if pos_of.dtype != np.uint8 or pos_of.max(initial=0) >= 0x80:
+        return None
+    return pos_of | (_code_faults(version, profile).astype(np.uint8) << 7)
+
+
+def _positions(r: Records) -> Any:
+    """Every record's layout position (_size_order, 0: no layout fits); one look-up a record also
+    answers _codes_fine (the look-up kept only until both have read it)."""
+    got = r.state.pop(_POS, None)
+    if got is None:
+        both = _position_faults(r.version, r.profile)
+        if both is None:
+            return _size_order(r.version, r.profile)[0].take(_key(r))
+        got = both.take(_key(r))
+    got &= 0x7F
+    return got
 
 
 def _codes_fine(r: Records) -> bool:
     """No record has a code, or a (code, argument size), that unknown_code, availability or arg_size
-    flags: one look-up a record for the three (asked once a validation)."""
+    flags: one look-up a record for the three (asked once a validation), made with the layout
+    positions (_positions) where it can be."""
     got = r.state.get(_FINE)
     if got is None:
-        got = r.state[_FINE] = not _code_faults(r.version, r.profile).take(_key(r)).any()
+        both = _position_faults(r.version, r.profile)
+        if both is None:
+            got = not _code_faults(r.version, r.profile).take(_key(r)).any()
+        else:
+            looked = r.state[_POS] = both.take(_key(r))
+            got = not np.count_nonzero(looked >= 0x80)
+        r.state[_FINE] = got
     return bool(got)
 
 
@@ -702,13 +733,16 @@ def _plain_strings(b: Batch, name: str) -> bool:
     on rows of a few bytes pay a loop set-up a row."""
     got = b.plain.get(name)
     if got is None:
-        col = b.raw[name]
+        f = next(a for a in b.lay.args if a.name == name)
+        # the field's bytes from the batch's argument bytes (no copy when it is the whole row)
+        col = b.raw[name] if b.bytes_ is None else b.bytes_[:, f.offset:f.offset + f.size]
         width = col.shape[1]
         flat = np.ascontiguousarray(col).reshape(-1)
         used = flat != 0
         rise = used[1:] > used[:-1]  # a byte after a NUL (where a row starts: the row before's end)
         rise[width - 1::width] = False
-        got = not rise.any() and not (used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20))).any()
+        got = not np.count_nonzero(rise) and not np.count_nonzero(
+            used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20)))
         b.plain[name] = got
     return got
 
@@ -1208,11 +1242,13 @@ def _shapes_balanced(parts: list[Any], motion: list[Any]) -> bool:
         if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
             return False
         counts = counts[0::2]
-    inside = np.zeros(len(opened), dtype=np.int64)  # motions after each start, before its end
-    after = opened + 1
-    for m in motion:
-        inside += np.searchsorted(m, closed)
-        inside -= np.searchsorted(m, after)
+    if not motion:
+        return bool((counts == 0).all())
+    # the motions after each start and before its end; the parts' rows as one ascending run (a stable
+    # sort of a few ascending runs merges them), searched once for the starts and once for the ends
+    moves = motion[0] if len(motion) == 1 else np.sort(np.concatenate(motion), kind="stable")
+    inside = np.searchsorted(moves, closed)
+    inside -= np.searchsorted(moves, opened + 1)
     return bool((inside == counts).all())
 
 
@@ -1231,7 +1267,7 @@ class _Bounds:
     kernels the test stands for."""
 
     cols: Any
-    lo: Any
+    lo: Any  # a column: one bound a tested word
     hi: Any
     rest: tuple[tuple[Check, Any], ...]
 
@@ -1329,8 +1365,8 @@ def _make_bounds(machine: Machine, lay: T.LayoutInfo, plan: tuple[tuple[Check, A
         return None
     order = sorted(bounded)
     cols = None if order == list(range(words)) else np.asarray(order, dtype=np.intp)
-    return _Bounds(cols, np.asarray([lo[w] for w in order], dtype=np.float32),
-                   np.asarray([hi[w] for w in order], dtype=np.float32), tuple(rest))
+    return _Bounds(cols, np.asarray([lo[w] for w in order], dtype=np.float32)[:, None],
+                   np.asarray([hi[w] for w in order], dtype=np.float32)[:, None], tuple(rest))
 
 
 def _targets_of(check: Check, cmd: T.CommandInfo) -> Iterator[tuple[str, ...]]:
@@ -1340,15 +1376,16 @@ def _targets_of(check: Check, cmd: T.CommandInfo) -> Iterator[tuple[str, ...]]:
 
 
 def _within(b: Batch, q: _Bounds) -> bool:
-    """Every bounded float of the batch within its bounds (NaN is not)."""
+    """Every bounded float of the batch within its bounds (NaN is not). The words are compared a
+    word at a time (transposed: a bound a row), not a record at a time: numpy sets its inner loop
+    up for every row, and a record's row holds a few words."""
     if b.bytes_ is None:
         return False
-    v = b.bytes_.view(T.BO + "f4")
-    if q.cols is not None:
-        v = v.take(q.cols, axis=1)
+    v = b.bytes_.view(T.BO + "f4").T
+    v = np.ascontiguousarray(v) if q.cols is None else v.take(q.cols, axis=0)
     ok = np.greater_equal(v, q.lo)
     ok &= np.less_equal(v, q.hi)
-    return bool(ok.all())
+    return bool(np.count_nonzero(ok) == ok.size)
 
 
 Applies = Callable[[Check, T.LayoutInfo, T.CommandInfo], bool]
