@@ -405,15 +405,28 @@ def _rowsum(x: Any) -> Any:
 # -- head kernels (every record) -------------------------------------------------------
 def _sequence(r: Records, check: Check) -> None:
     seq, wrap = r.head["sequence"], T.SEQ_MASK
-    expected = np.arange(len(r.off), dtype=np.int64)
-    expected &= wrap  # in place: the peak of a file of empty records is here
-    differ = seq != expected
-    del expected
+    first = _first_numbers(wrap, seq.dtype)
+    if first is not None and len(r.off) <= len(first):
+        differ = seq != first[:len(r.off)]  # the numbers before the first wrap, made once, in the field's type
+    else:
+        expected = np.arange(len(r.off), dtype=np.int64)
+        expected &= wrap  # in place: the peak of a file of empty records is here
+        differ = seq != expected
+        del expected
     if not differ.any():
         return
     bad = np.flatnonzero(differ)
     at = r.off[bad] + T.RECORD_FIELDS[T.I_SEQ].offset
     r.add(check, bad, at, bad, lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
+
+
+@lru_cache(maxsize=4)
+def _first_numbers(wrap: int, dtype: np.dtype[Any]) -> Any:
+    """0 .. wrap in the sequence field's type (a record's expected number, up to the first wrap),
+    when that is at most 65,536 numbers of an unsigned type that holds them (else None)."""
+    if dtype.kind != "u" or wrap >= 1 << 16 or wrap >= 1 << (8 * dtype.itemsize):
+        return None
+    return np.arange(wrap + 1, dtype=dtype)
 
 
 def _reserved(r: Records, check: Check) -> None:
