@@ -107,4 +107,6 @@ def test_gather_and_row_sums_are_exact() -> None:
         rows = records._gather(a, starts, width)
         assert rows.tolist() == [a[s:s + width].tolist() for s in starts.tolist()]
         assert rowsums.row_checksums("sum", rows, 8).tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
+        sums32 = rowsums.exact_sums32(rows)  # binary32 sums (what the argument checksums store where they fit)
+        assert sums32 is not None and sums32.tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
     assert records._gather(a, np.zeros(0, dtype=np.int64), 8).shape == (0, 8)

@@ -62,6 +62,19 @@ def _sum(rows: Rows) -> NDArray[np.int64]:
     return _blocks(rows, lambda part: np.einsum("ij->i", part.astype(np.int64)))
 
 
+def exact_sums32(rows: Rows) -> Any:
+    """The byte sum of each row as binary32 (exact: every partial sum is an integer below 2**24),
+    or None when a row is too wide for that; for a caller that stores the sums in a narrower
+    integer type anyway (no int64 copy)."""
+    width = rows.shape[1]
+    if width * 255 >= _EXACT32 or rows.shape[0] > _BLOCK // 2:
+        return None
+    ones = _ONES.get(width)
+    if ones is None:
+        ones = _ONES[width] = np.ones(width, dtype=np.float32)
+    return np.ascontiguousarray(rows, dtype=np.uint8).astype(np.float32) @ ones
+
+
 def _weighted(rows: Rows, modulus: int) -> NDArray[np.int64]:
     """(sum2 << bits) | sum1 of a Fletcher checksum over rows of words (modulus 2**bits - 1):
     sum1 = the words' sum, sum2 = the sum of the running sums = sum of (m - k) x word k."""

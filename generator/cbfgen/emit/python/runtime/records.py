@@ -37,7 +37,7 @@ from .findings import (
 from .machine import DEFAULT as DEFAULT_MACHINE
 from .machine import Limit, Machine, breach, machine_rules
 from .optfiles import CUTTER_NAME, CUTTER_VALUES
-from .rowsums import row_checksums
+from .rowsums import exact_sums32, row_checksums
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -488,8 +488,9 @@ def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
     want = r.state.get(check["id"])
     if want is None:
         want = r.state[check["id"]] = np.zeros(len(r.off), dtype=r.head["checksum"].dtype)
-    lo = b.group[3]
-    want[lo:lo + len(b.group[1])] = _arg_sums(cov, b.group[2])
+    lo, data = b.group[3], b.group[2]
+    sums = exact_sums32(data) if cov == ("sum", 1) and 255 * data.shape[1] < 1 << (8 * T.ARG_CHECKSUM.size) else None
+    want[lo:lo + len(b.group[1])] = _arg_sums(cov, data) if sums is None else sums
 
 
 def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
