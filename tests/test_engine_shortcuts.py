@@ -4,10 +4,12 @@ records.py skips work where a quick test shows there is nothing to find: the bat
 a layout are planned once (``Kernel.applies``: a kernel is not called on a layout it has
 nothing in), and a string column that is printable ASCII then NULs only, tested as a whole, is
 not looked at row by row, nor a layout's binary32 floats whose exponent bits, tested as one flat
-run, show them all finite, nor a header string field that is plain. Here the same files are
-validated with the shortcuts and without them (every batch kernel on every layout, every string
-column row by row, every float field by field, every header string by the kernels), and the row
-gather and the argument byte sums are compared with plain Python. These are the engine's own
+run, show them all finite, nor a header string field that is plain, nor the finite, positive,
+range and machine_limits kernels of a layout whose floats all lie within the tightest of their
+bounds (``_within``, round 6). Here the same files are validated with the shortcuts and without
+them (every batch kernel on every layout, every string column row by row, every float field by
+field, every header string by the kernels), and the row gather and the argument byte sums are
+compared with plain Python. These are the engine's own
 private helpers, so the test reaches into records.py on purpose.
 """
 
