@@ -303,9 +303,9 @@ class _Raw(Mapping[str, Any]):
         self._arr: Any = None
 
     def __getitem__(self, name: str) -> Any:
+        if name not in _names(self._lay):
+            raise KeyError(name)  # (as a dict: Mapping.get relies on it)
         if self._arr is None:
-            if name not in _names(self._lay):
-                raise KeyError(name)
             self._arr = self._data.view(_dtype(self._lay))[:, 0]
         return self._arr[name]
 
