@@ -31,6 +31,18 @@ def _median(fn: Any, reps: int) -> float:
     return statistics.median(out)
 
 
+def _interleaved(first: Any, second: Any, reps: int) -> tuple[float, float]:
+    """Medians of ``reps`` wall times of each function, the two timed in turn."""
+    a: list[float] = []
+    b: list[float] = []
+    for _ in range(reps):
+        for fn, out in ((first, a), (second, b)):
+            t = time.perf_counter()
+            fn()
+            out.append(time.perf_counter() - t)
+    return statistics.median(a), statistics.median(b)
+
+
 def diff_rows(big: Path, work: Path, reps: int) -> dict[str, Any]:
     """cbf diff vs GNU diff on the 65,535-record file: identical input, and one record changed."""
     import cbf
@@ -62,8 +74,10 @@ def diff_rows(big: Path, work: Path, reps: int) -> dict[str, Any]:
             res = subprocess.run([gnu, str(work / "a.cut"), str(work / b_cut)], stdout=subprocess.DEVNULL)
             assert res.returncode == rc
 
-        t_gnu = _median(run_gnu, reps)
-        t_cbf = _median(lambda b_model=b_model: semdiff.diff(model, b_model, tol), reps)
+        # interleaved, a repetition of each in turn: timed one after the other (all of GNU diff's, then
+        # all of cbf's), a change of load on the shared machine between the halves moved the ratio
+        # by 2x (bench/NOTES.md, round 6: 3.73x in one run, 0.87-1.81x in six runs of the same code)
+        t_gnu, t_cbf = _interleaved(run_gnu, lambda b_model=b_model: semdiff.diff(model, b_model, tol), reps)
         out[name] = {"cbf_s": t_cbf, "gnu_diff_s": t_gnu, "ratio": t_cbf / t_gnu}
     return out
 

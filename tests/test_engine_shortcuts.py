@@ -4,10 +4,12 @@ records.py skips work where a quick test shows there is nothing to find: the bat
 a layout are planned once (``Kernel.applies``: a kernel is not called on a layout it has
 nothing in), and a string column that is printable ASCII then NULs only, tested as a whole, is
 not looked at row by row, nor a layout's binary32 floats whose exponent bits, tested as one flat
-run, show them all finite, nor a header string field that is plain. Here the same files are
-validated with the shortcuts and without them (every batch kernel on every layout, every string
-column row by row, every float field by field, every header string by the kernels), and the row
-gather and the argument byte sums are compared with plain Python. These are the engine's own
+run, show them all finite, nor a header string field that is plain, nor the finite, positive,
+range and machine_limits kernels of a layout whose floats all lie within the tightest of their
+bounds (``_within``, round 6). Here the same files are validated with the shortcuts and without
+them (every batch kernel on every layout, every string column row by row, every float field by
+field, every header string by the kernels), and the row gather and the argument byte sums are
+compared with plain Python. These are the engine's own
 private helpers, so the test reaches into records.py on purpose.
 """
 
@@ -39,6 +41,7 @@ def _both(data: bytes, **opts: Any) -> tuple[list[cbf.Finding], list[cbf.Finding
         mp.setattr(records, "_plain_strings", lambda b, name: False)
         mp.setattr(records, "_all_finite32", lambda b: False)
         mp.setattr(records, "_plain_bytes", lambda raw: False)
+        mp.setattr(records, "_within", lambda b, q: False)
         slow = cbf.validate(data, **opts)
     return fast, slow
 
@@ -106,4 +109,6 @@ def test_gather_and_row_sums_are_exact() -> None:
         rows = records._gather(a, starts, width)
         assert rows.tolist() == [a[s:s + width].tolist() for s in starts.tolist()]
         assert rowsums.row_checksums("sum", rows, 8).tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
+        sums32 = rowsums.exact_sums32(rows)  # binary32 sums (what the argument checksums store where they fit)
+        assert sums32 is not None and sums32.tolist() == [int(a[s:s + width].sum()) for s in starts.tolist()]
     assert records._gather(a, np.zeros(0, dtype=np.int64), 8).shape == (0, 8)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import struct
 from array import array
 from collections.abc import Iterable, Iterator, Sequence
+from functools import lru_cache
 from typing import Any
 
 from . import tables as T
@@ -59,13 +60,7 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
     head, at = T.HEAD_SIZE, T.ARG_SIZE_OFFSET
     last = n - head
     a = np.frombuffer(buf, dtype=np.uint8)
-    known = np.zeros(256, dtype=bool)
-    sized = np.zeros((256, 256), dtype=bool)  # (code, argument size) of some layout
-    for c in T.COMMANDS:
-        if c.code < 256:
-            known[c.code] = True
-            for lay in c.layouts:
-                sized[c.code, lay.size] = lay.size < 256
+    known, sized = _head_tables()
     f_code, f_copy, f_res = (T.RECORD_FIELDS[i] for i in (T.I_CODE, T.I_COPY, T.I_RES))
     parts = []
     for s in range(start, last + 1, _BLOCK):
@@ -115,6 +110,22 @@ def _frame_ahead(buf: Buffer, offsets: array[int]) -> int:
         have = np.concatenate((have, more))
         jump = jump[jump]
     return _chain_end(cand, nxt, have, n, offsets)  # in file order: each pass appends what follows
+
+
+@lru_cache(maxsize=1)
+def _head_tables() -> tuple[Any, Any]:
+    """The codes the spec knows, and the (code, argument size) pairs of some layout, as tables
+    (made once: rebuilding them cost about 30 us a file)."""
+    import numpy as np
+
+    known = np.zeros(256, dtype=bool)
+    sized = np.zeros((256, 256), dtype=bool)  # (code, argument size) of some layout
+    for c in T.COMMANDS:
+        if c.code < 256:
+            known[c.code] = True
+            for lay in c.layouts:
+                sized[c.code, lay.size] = lay.size < 256
+    return known, sized
 
 
 def _chain_end(cand: Any, nxt: Any, chain: Any, n: int, offsets: array[int]) -> int:

@@ -37,7 +37,7 @@ from .findings import (
 from .machine import DEFAULT as DEFAULT_MACHINE
 from .machine import Limit, Machine, breach, machine_rules
 from .optfiles import CUTTER_NAME, CUTTER_VALUES
-from .rowsums import row_checksums
+from .rowsums import exact_sums32, row_checksums
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -55,13 +55,14 @@ class Batch:
     rows: Any
     aoff: Any
     cols: Mapping[str, Any]  # floats as float64
-    raw: dict[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
+    raw: Mapping[str, Any]  # the arguments as stored (floats binary32: exact, half the memory)
     nul: dict[str, Any] = field(default_factory=dict)  # string argument -> where its first NUL is
     plain: dict[str, bool] = field(default_factory=dict)  # string argument -> every row a plain string
     bytes_: Any = None  # the argument bytes, rows x layout size
     # the records of every layout of this argument size the file uses, batched together: (the
-    # position of the first layout in _size_order, their rows, their argument bytes)
-    group: tuple[int, Any, Any] | None = None
+    # position of the first layout in _size_order, their rows, their argument bytes, where their
+    # rows start in the order of _batches)
+    group: tuple[int, Any, Any, int] | None = None
 
     def at(self, name: str) -> Any:
         """The file offset of argument ``name`` in every row."""
@@ -145,16 +146,25 @@ def _head(a: NDArray[np.uint8], off: NDArray[np.int64]) -> dict[str, Any]:
     items, each field a strided view of them (1-, 2-, 4- and 8-byte fields; others are assembled
     from their bytes). The views hold the gathered heads, as many bytes as copies of every field
     would, and spare a copy a field."""
-    plain = [f for f in T.RECORD_FIELDS if f.size in (1, 2, 4, 8)]
-    dtype = np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
-                      "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
+    plain, dtype = _head_dtype()
     rows = _gather(a, off, T.HEAD_SIZE)
     heads = rows.view(dtype)[:, 0]
     out = {f.role or f.name: heads[f.name] for f in plain}  # views of the rows (copies cost more than they save)
     for f in T.RECORD_FIELDS:
-        if f not in plain:
+        if f.size not in _PLAIN_SIZES:
             out[f.role or f.name] = _uint(rows, f)
     return out
+
+
+_PLAIN_SIZES = (1, 2, 4, 8)
+
+
+@lru_cache(maxsize=1)
+def _head_dtype() -> tuple[list[T.FieldInfo], np.dtype[Any]]:
+    """The head fields of 1, 2, 4 or 8 bytes, and the structured dtype of a head that holds them."""
+    plain = [f for f in T.RECORD_FIELDS if f.size in _PLAIN_SIZES]
+    return plain, np.dtype({"names": [f.name for f in plain], "formats": [f"{T.BO}u{f.size}" for f in plain],
+                            "offsets": [f.offset for f in plain], "itemsize": T.HEAD_SIZE})
 
 
 _DTYPES: dict[int, np.dtype[Any]] = {}
@@ -225,6 +235,8 @@ def _key(r: Records) -> Any:
 
 _KEY = "(code, size)"  # r.state's key of _key's column (check ids are never this)
 _NO_LAYOUT = "rows of no layout"  # r.state's key of the records no layout fits (made by _batches)
+_ORDER = "rows by layout"  # r.state's key of every record by layout position (made by _batches; a group's rows
+# are a slice of it)
 
 
 @lru_cache(maxsize=16)
@@ -248,12 +260,13 @@ def _batches(r: Records) -> Iterator[Batch]:
     per-call cost once a size, not once a layout); each layout's rows are a slice of them."""
     lays = _tables(r.version, r.profile)[4]
     pos_of, by_pos, first = _size_order(r.version, r.profile)
-    pos = pos_of.take(_key(r))  # 0: no layout fits
+    pos = _positions(r)  # 0: no layout fits
     # the rows of every layout at once, by size then layout, each in file order: one stable sort
     order = np.argsort(pos, kind="stable")
     bounds = np.cumsum(np.bincount(pos, minlength=len(lays) + 1)).tolist()
     del pos
     r.state[_NO_LAYOUT] = order[:bounds[0]]  # position 0 first: the records no layout fits, in file order
+    r.state[_ORDER] = order
     p, count = 0, len(by_pos)
     while p < count:
         q = p + 1
@@ -265,19 +278,56 @@ def _batches(r: Records) -> Iterator[Batch]:
             aoff = r.off[rows] + T.HEAD_SIZE
             lay0 = lays[by_pos[p]]
             data = _gather(r.a, aoff, lay0.size)
-            group = (p, rows, data)
+            group = (p, rows, data, lo)
             for k in range(p, q):
                 if bounds[k + 1] > bounds[k]:
                     yield _batch(lays[by_pos[k]], group, bounds[k] - lo, bounds[k + 1] - lo, aoff)
         p = q
 
 
-def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any], lo: int, hi: int, aoff: Any) -> Batch:
+def _batch(lay: T.LayoutInfo, group: tuple[int, Any, Any, int], lo: int, hi: int, aoff: Any) -> Batch:
     """The batch of one layout: rows lo .. hi of its size group."""
     rows, data = group[1][lo:hi], group[2][lo:hi]
-    arr = data.view(_dtype(lay))[:, 0] if lay.size else None
-    raw = {f.name: arr[f.name] for f in lay.args} if arr is not None else {}
+    raw = _Raw(lay, data)
     return Batch(lay, T.BY_CODE[lay.code], rows, aoff[lo:hi], _Columns(raw), raw, bytes_=data, group=group)
+
+
+class _Raw(Mapping[str, Any]):
+    """A layout's arguments as stored, each a view of the batch's argument bytes, made when a
+    kernel first reads one (where the bounds test stands for the float kernels, often none is)."""
+
+    __slots__ = ("_arr", "_data", "_lay")
+
+    def __init__(self, lay: T.LayoutInfo, data: Any) -> None:
+        self._lay, self._data = lay, data
+        self._arr: Any = None
+
+    def __getitem__(self, name: str) -> Any:
+        if name not in _names(self._lay):
+            raise KeyError(name)  # (as a dict: Mapping.get relies on it)
+        if self._arr is None:
+            self._arr = self._data.view(_dtype(self._lay))[:, 0]
+        return self._arr[name]
+
+    def __contains__(self, name: object) -> bool:
+        return name in _names(self._lay)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(_names(self._lay))
+
+    def __len__(self) -> int:
+        return len(_names(self._lay))
+
+
+_NAMES: dict[int, dict[str, None]] = {}
+
+
+def _names(lay: T.LayoutInfo) -> dict[str, None]:
+    """A layout's argument names, in order (made once a layout)."""
+    got = _NAMES.get(id(lay))
+    if got is None:
+        got = _NAMES[id(lay)] = dict.fromkeys(f.name for f in lay.args)
+    return got
 
 
 class _Columns(Mapping[str, Any]):
@@ -286,7 +336,7 @@ class _Columns(Mapping[str, Any]):
 
     __slots__ = ("_done", "_raw")
 
-    def __init__(self, raw: dict[str, Any]) -> None:
+    def __init__(self, raw: Mapping[str, Any]) -> None:
         self._raw = raw
         self._done: dict[str, Any] = {}
 
@@ -355,23 +405,44 @@ def _rowsum(x: Any) -> Any:
 # -- head kernels (every record) -------------------------------------------------------
 def _sequence(r: Records, check: Check) -> None:
     seq, wrap = r.head["sequence"], T.SEQ_MASK
-    expected = np.arange(len(r.off), dtype=np.int64)
-    expected &= wrap  # in place: the peak of a file of empty records is here
-    bad = np.nonzero(seq != expected)[0]
-    del expected
+    first = _first_numbers(wrap, seq.dtype)
+    if first is not None and len(r.off) <= len(first):
+        differ = seq != first[:len(r.off)]  # the numbers before the first wrap, made once, in the field's type
+    else:
+        expected = np.arange(len(r.off), dtype=np.int64)
+        expected &= wrap  # in place: the peak of a file of empty records is here
+        differ = seq != expected
+        del expected
+    if not differ.any():
+        return
+    bad = np.flatnonzero(differ)
     at = r.off[bad] + T.RECORD_FIELDS[T.I_SEQ].offset
     r.add(check, bad, at, bad, lambda i: f"sequence number {seq[i]}, expected {i & wrap}")
 
 
+@lru_cache(maxsize=4)
+def _first_numbers(wrap: int, dtype: np.dtype[Any]) -> Any:
+    """0 .. wrap in the sequence field's type (a record's expected number, up to the first wrap),
+    when that is at most 65,536 numbers of an unsigned type that holds them (else None)."""
+    if dtype.kind != "u" or wrap >= 1 << 16 or wrap >= 1 << (8 * dtype.itemsize):
+        return None
+    return np.arange(wrap + 1, dtype=dtype)
+
+
 def _reserved(r: Records, check: Check) -> None:
     res = r.head["reserved"]
-    bad = np.nonzero(res != 0)[0]
+    if not res.any():
+        return
+    bad = np.flatnonzero(res)
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_RES].offset, bad, lambda i: f"reserved byte is 0x{res[i]:02X}")
 
 
 def _code_copy(r: Records, check: Check) -> None:
     copy, code = r.head["code_copy"], r.head["code"]
-    bad = np.nonzero(copy != code)[0]
+    differ = copy != code
+    if not differ.any():
+        return
+    bad = np.flatnonzero(differ)
     r.add(check, bad, r.off[bad] + T.RECORD_FIELDS[T.I_COPY].offset, bad,
           lambda i: f"code copy 0x{copy[i]:02X} differs from code 0x{code[i]:02X}")
 
@@ -398,29 +469,37 @@ def _arg_sums(cov: tuple[str, int], rows: NDArray[np.uint8]) -> NDArray[np.int64
 
 
 def _arg_checksum_batch(r: Records, check: Check, b: Batch) -> None:
-    """The checksums of the records of a layout (of every layout of its argument size, when the
-    first of them comes), from the argument bytes the batch gathered, against the stored ones."""
+    """The checksums of the records of every layout of a batch's argument size (when the first of
+    them comes), from the argument bytes the batch gathered; the end kernel compares them with the
+    stored ones, for every record at once."""
     cov = _head_coverage()
     if cov is None:
         return
     if b.group is None:
-        rows, data = b.rows, b.bytes_
-    else:
-        key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
-        if key in r.state:
-            return
-        r.state[key] = True
-        rows, data = b.group[1], b.group[2]
-    r.state[check["id"]] = True  # the batches judge the records that have a layout
-    _report_sums(r, check, rows, _arg_sums(cov, data))
+        r.state.setdefault(check["id"], None)  # (no size group: judged here, none left for the end)
+        _report_sums(r, check, b.rows, _arg_sums(cov, b.bytes_))
+        return
+    key = f"{check['id']} size group {b.group[0]}"  # r.state keys are strings
+    if key in r.state:
+        return
+    r.state[key] = True
+    # the batches judge the records that have a layout: their checksums in the order _batches put
+    # the records in (a group's rows are a slice of it: no scatter), in the stored field's type
+    want = r.state.get(check["id"])
+    if want is None:
+        want = r.state[check["id"]] = np.zeros(len(r.off), dtype=r.head["checksum"].dtype)
+    lo, data = b.group[3], b.group[2]
+    sums = exact_sums32(data) if cov == ("sum", 1) and 255 * data.shape[1] < 1 << (8 * T.ARG_CHECKSUM.size) else None
+    want[lo:lo + len(b.group[1])] = _arg_sums(cov, data) if sums is None else sums
 
 
 def _report_sums(r: Records, check: Check, rows: Any, want: Any) -> None:
     """The records ``rows`` whose stored argument checksum is not ``want`` (computed, per row)."""
     got = r.head["checksum"][rows]
-    bad = np.flatnonzero(got != want)
-    if bad.size == 0:
+    differ = got != want
+    if not differ.any():  # (a quick no: flatnonzero costs several times as much)
         return
+    bad = np.flatnonzero(differ)
     bad = bad[np.argsort(rows[bad], kind="stable")]  # a size group's rows are by layout: in file order
     at, stored, computed = rows[bad], got[bad], want[bad]
     r.add(check, at, r.off[at] + T.ARG_CHECKSUM.offset, np.arange(bad.size),
@@ -434,7 +513,17 @@ def _arg_checksum(r: Records, check: Check) -> None:
         # The batches judged the records of each layout; the others (no layout fits: _batches
         # keeps them) are summed here, one argument size at a time, their arguments gathered as
         # rows (memory: the arguments of one size; a cumulative sum would hold 8 bytes a file byte).
-        left = r.state.get(_NO_LAYOUT) if r.state.pop(check["id"], None) else None
+        judged = check["id"] in r.state
+        want = r.state.pop(check["id"], None)
+        left = r.state.get(_NO_LAYOUT) if judged else None
+        if want is not None:  # the records of each layout at once, in the order _batches put them in
+            order = r.state[_ORDER]
+            done = slice(len(r.state[_NO_LAYOUT]), len(order))
+            differ = chk.take(order[done]) != want[done]
+            if differ.any():
+                at = np.flatnonzero(differ)
+                rows = order[done][at]
+                _report_sums(r, check, rows, want[done][at])
         if left is None:  # no batch judged any: every record here
             left = np.arange(len(off))
         if left.size:
@@ -492,7 +581,60 @@ def _carries(check: Check, lay: T.LayoutInfo, cmd: T.CommandInfo) -> bool:
     return _judges_head(check) or any(ck.tag == check["field"] for ck in lay.checksums)
 
 
+@lru_cache(maxsize=16)
+def _code_faults(version: str, profile: str) -> NDArray[np.bool_]:
+    """Per (code, argument size) index (``_key``): an unknown code, a command not available in the
+    version, or a size no layout of it accepts (what unknown_code, availability, arg_size flag)."""
+    known, avail = _tables(version, profile)[:2]
+    return (~(known & avail)[:, None] | _size_bad(version, profile).reshape(256, 256)).reshape(-1)  # type: ignore[no-any-return]
+
+
+_FINE = "codes and sizes fine"  # r.state's key of _codes_fine's answer
+_POS = "layout positions"  # r.state's key of _positions' column
+
+
+@lru_cache(maxsize=16)
+def _position_faults(version: str, profile: str) -> Any:
+    """Per (code, argument size) index: the position + 1 of its layout in _size_order (0: none),
+    with the top bit of the byte set where _code_faults has a fault (None: 128 layouts or more)."""
+    pos_of = _size_order(version, profile)[0]
+    if pos_of.dtype != np.uint8 or pos_of.max(initial=0) >= 0x80:
+        return None
+    return pos_of | (_code_faults(version, profile).astype(np.uint8) << 7)
+
+
+def _positions(r: Records) -> Any:
+    """Every record's layout position (_size_order, 0: no layout fits); one look-up a record also
+    answers _codes_fine (the look-up kept only until both have read it)."""
+    got = r.state.pop(_POS, None)
+    if got is None:
+        both = _position_faults(r.version, r.profile)
+        if both is None:
+            return _size_order(r.version, r.profile)[0].take(_key(r))
+        got = both.take(_key(r))
+    got &= 0x7F
+    return got
+
+
+def _codes_fine(r: Records) -> bool:
+    """No record has a code, or a (code, argument size), that unknown_code, availability or arg_size
+    flags: one look-up a record for the three (asked once a validation), made with the layout
+    positions (_positions) where it can be."""
+    got = r.state.get(_FINE)
+    if got is None:
+        both = _position_faults(r.version, r.profile)
+        if both is None:
+            got = not _code_faults(r.version, r.profile).take(_key(r)).any()
+        else:
+            looked = r.state[_POS] = both.take(_key(r))
+            got = not np.count_nonzero(looked >= 0x80)
+        r.state[_FINE] = got
+    return bool(got)
+
+
 def _unknown_code(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code = r.head["code"]
     known = _tables(r.version, r.profile)[0]
     bad = np.flatnonzero(~known.take(code))  # take: several times a fancy index by a byte column
@@ -501,6 +643,8 @@ def _unknown_code(r: Records, check: Check) -> None:
 
 
 def _availability(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code, version = r.head["code"], r.version
     known, avail = _tables(version, r.profile)[:2]
     bad = np.flatnonzero((known & ~avail).take(code))
@@ -517,6 +661,8 @@ def _availability(r: Records, check: Check) -> None:
 
 
 def _arg_size(r: Records, check: Check) -> None:
+    if _codes_fine(r):
+        return
     code, nb, version, profile = r.head["code"], r.head["arg_size"], r.version, r.profile
     bad = np.flatnonzero(_size_bad(version, profile).take(_key(r)))
 
@@ -604,13 +750,16 @@ def _plain_strings(b: Batch, name: str) -> bool:
         got = _plain_rows(b.raw[name])
         b.plain[name] = got
     if got is None:
-        col = b.raw[name]
+        f = next(a for a in b.lay.args if a.name == name)
+        # the field's bytes from the batch's argument bytes (no copy when it is the whole row)
+        col = b.raw[name] if b.bytes_ is None else b.bytes_[:, f.offset:f.offset + f.size]
         width = col.shape[1]
         flat = np.ascontiguousarray(col).reshape(-1)
         used = flat != 0
         rise = used[1:] > used[:-1]  # a byte after a NUL (where a row starts: the row before's end)
         rise[width - 1::width] = False
-        got = not rise.any() and not (used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20))).any()
+        got = not np.count_nonzero(rise) and not np.count_nonzero(
+            used & ((flat - np.uint8(0x20)) > np.uint8(0x7E - 0x20)))
         b.plain[name] = got
     return got
 
@@ -708,6 +857,10 @@ def _ordered(r: Records, check: Check, b: Batch) -> None:
     for names in _targets(check, b):
         if not all(nm in cols for nm in names):
             continue
+        stored = [b.raw[nm] for nm in names]  # as stored: binary32 orders as its float64 widening
+        pairs = zip(stored, stored[1:], strict=False)
+        if all(c.ndim == 1 for c in stored) and not any((x > y).any() for x, y in pairs):
+            continue  # no pair out of order anywhere (a quick no; NaN compares false, as in the test below)
         vals = np.stack([cols[nm] for nm in names], axis=1)
         fin = _finite_rows(vals)
         bad = np.nonzero(fin & _any_cols(vals[:, :-1] > vals[:, 1:]))[0]
@@ -722,16 +875,23 @@ def _nondecreasing(r: Records, check: Check, b: Batch) -> None:
     held = r.state.setdefault(check["id"], {})  # command.argument -> [(rows, values, offsets)]
     for names in _targets(check, b):
         for nm in (n for n in names if n in b.cols):
-            v = b.cols[nm]
-            fin = np.flatnonzero(np.isfinite(v))
-            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[fin], v[fin], b.at(nm)[fin]))
+            v = b.raw[nm]  # as stored (widened where parts are joined: binary32 to float64 is exact)
+            fin = np.isfinite(v)
+            if fin.all():
+                held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows, v, b.at(nm)))
+                continue
+            keep = np.flatnonzero(fin)
+            held.setdefault(f"{b.cmd.name}.{nm}", []).append((b.rows[keep], v[keep], b.at(nm)[keep]))
 
 
 def _nondecreasing_end(r: Records, check: Check) -> None:
     """Each finite value against the last finite value of the same command argument."""
     for key, parts in r.state.pop(check["id"], {}).items():
         rows, (values, offs) = _in_file_order(parts)
-        bad = np.flatnonzero(values[1:] < values[:-1]) + 1
+        falls = values[1:] < values[:-1]
+        if not falls.any():
+            continue
+        bad = np.flatnonzero(falls) + 1
         prev = values[bad - 1]
         r.add(check, rows[bad], offs[bad], np.arange(bad.size),
               _falls(key, prev, values[bad]))
@@ -897,8 +1057,11 @@ def _continuity(r: Records, check: Check, b: Batch) -> None:
     at = b.aoff + next((f.offset for f in b.lay.args if f.name == m.get("start")), 0)
     # rows and offsets narrowed as Records.add keeps them (held until the end: 4 bytes each, not 8)
     narrow = _narrow(r)
-    r.state.setdefault(check["id"], []).append((b.rows.astype(narrow), start, _ends(m, cols, n), at.astype(narrow),
-                                                b.cmd.name))
+    # a point's or line's end as stored (no copy): a part flagged plain has its ends that are not
+    # finite taken as NaN (as _ends makes them) by the end kernel, on the few rows it measures
+    end = cols[m["end"]][:, -3:] if plain else _ends(m, cols, n)
+    r.state.setdefault(check["id"], []).append((b.rows.astype(narrow), start, end, at.astype(narrow),
+                                                b.cmd.name, plain))
 
 
 def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
@@ -922,7 +1085,7 @@ def _merge_order(parts: list[Any]) -> tuple[list[Any], Any]:
 def _field(parts: list[Any], j: int, pick: Any) -> Any:
     """Field j of the parts concatenated, at ``pick`` (None: all, as concatenated)."""
     got = parts[0][j] if len(parts) == 1 else np.concatenate([p[j] for p in parts])
-    return got if pick is None else got[pick]
+    return got if pick is None else got.take(pick, axis=0)  # take: several times a 2-d fancy index
 
 
 def _part_of(parts: list[Any], at: Any) -> list[int]:
@@ -961,18 +1124,31 @@ def _same_rows(x: Any, y: Any) -> Any:
 
 
 def _continuity_end(r: Records, check: Check) -> None:
-    parts = r.state.pop(check["id"], [])  # (rows, start, end, start offsets, command name) a layout
+    # (rows, start, end, start offsets, command name, plain) a layout
+    parts = r.state.pop(check["id"], [])
     if not parts:
         return
     cat, order = _merge_order(parts)
     start, end = _field(cat, 1, order), _field(cat, 2, order)
     # A motion that starts exactly where the last one ended is 0 mm away: only the others are
-    # measured (a valid file's motions all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1
-    dvec = start[todo].astype(np.float64)
-    dvec -= end[todo - 1]
+    # measured (a valid file's motions all start so). (A plain end that is not finite is not where
+    # a motion starts either: NaN below, as geometry.motion_end.)
+    same = _same_rows(start[1:], end[:-1])
+    same |= np.isnan(start[1:, 0])  # a start that is not finite (a point has none) is not measured below
+    if same.all():
+        return
+    todo = np.flatnonzero(~same) + 1
+    first, prev = start.take(todo, axis=0), end.take(todo - 1, axis=0)
+    dvec = first.astype(np.float64)
+    dvec -= prev
     d = np.sqrt(_rowsum(dvec * dvec))
-    keep = _finite_rows(start[todo]) & (d > T.TOL["position_mm"])
+    plain = [p[5] for p in cat]
+    if any(plain):
+        unknown = ~_finite_rows(prev)  # where the last motion ended is not known
+        if not all(plain):
+            unknown &= np.asarray(plain)[_part_of(cat, todo - 1 if order is None else order[todo - 1])]
+        d[unknown] = np.nan
+    keep = _finite_rows(first) & (d > T.TOL["position_mm"])
     bad = todo[keep]
     if bad.size == 0:
         return
@@ -1000,8 +1176,17 @@ def _orientation_end(r: Records, check: Check) -> None:
     tol = T.TOL["orientation_deg"]
     # A path that starts exactly on the orientation in force turns 0 degrees: only the others
     # are measured (a valid file's paths all start so).
-    todo = np.flatnonzero(~_same_rows(start[1:], end[:-1])) + 1 if tol >= 0 else np.arange(1, len(start))
-    s, prev = start[todo].astype(np.float64), end[todo - 1].astype(np.float64)
+    if tol >= 0:
+        same = _same_rows(start[1:], end[:-1])
+        same |= np.isnan(start[1:, 0])  # a start that is not finite (a set has none) is not measured below
+        if same.all():
+            return
+        todo = np.flatnonzero(~same) + 1
+    else:
+        todo = np.arange(1, len(start))
+    if todo.size == 0:
+        return
+    s, prev = start.take(todo, axis=0).astype(np.float64), end.take(todo - 1, axis=0).astype(np.float64)
     prev_ok = _finite_rows(prev) & (np.sqrt(_rowsum(prev * prev)) > 0.0)
     s_ok = _finite_rows(s) & (np.sqrt(_rowsum(s * s)) > 0.0)
     cx = _cross(s, prev)
@@ -1070,18 +1255,169 @@ def _shapes_balanced(parts: list[Any], motion: list[Any]) -> bool:
     binary search, no pass over the file's records). Only a quick yes: on False the loop decides."""
     if len({p[2].shape[1] for p in parts}) != 1:
         return False
-    rows, (kinds, names, counts) = _in_file_order(
-        [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
-    if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
+    starts, ends = [p for p in parts if p[1] == 0], [p for p in parts if p[1] == 1]
+    if len(starts) == 1 and len(ends) == 1:
+        # one start command and one end command (a part each): no merge into file order; they
+        # alternate from a start when each start comes before its end and each end before the next start
+        (opened, _, s_names, s_counts, _), (closed, _, e_names, e_counts, _) = starts[0], ends[0]
+        if len(opened) != len(closed) or not ((opened < closed).all() and (closed[:-1] < opened[1:]).all()):
+            return False
+        if not ((s_names == e_names).all() and (s_counts == e_counts).all()):
+            return False
+        counts = s_counts
+    else:
+        rows, (kinds, names, counts) = _in_file_order(
+            [(p[0], np.full(len(p[0]), p[1], dtype=np.int8), p[2], p[3]) for p in parts])
+        if len(rows) % 2 or not ((kinds[0::2] == 0).all() and (kinds[1::2] == 1).all()):
+            return False
+        opened, closed = rows[0::2], rows[1::2]
+        if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
+            return False
+        counts = counts[0::2]
+    if not motion:
+        return bool((counts == 0).all())
+    # the motions after each start and before its end; the parts' rows as one ascending run (a stable
+    # sort of a few ascending runs merges them), searched once for the starts and once for the ends
+    moves = motion[0] if len(motion) == 1 else np.sort(np.concatenate(motion), kind="stable")
+    inside = np.searchsorted(moves, closed)
+    inside -= np.searchsorted(moves, opened + 1)
+    return bool((inside == counts).all())
+
+
+# -- one test for the bounded checks of a layout -----------------------------------------
+# finite, positive, range and machine_limits each bound the binary32 arguments of a layout from
+# below and above (finite: the largest binary32; positive: the least one above 0; range: its
+# limits as the least / greatest binary32 inside them; machine_limits: its binary32 bounds). When
+# every float of a layout's records lies within the tightest bounds of its words (a NaN never
+# does), none of those kernels has anything to report there, and they are not called: one test of
+# three array operations over the layout's floats instead of a few operations a check and target.
+# Only a quick yes: where some value lies outside, the kernels run and decide.
+@dataclass(frozen=True)
+class _Bounds:
+    """A layout's bounded checks as one test: the float words tested (None: every word of the
+    arguments), each one's lowest and highest binary32 within bounds, and the plan without the
+    kernels the test stands for."""
+
+    cols: Any
+    lo: Any  # a column: one bound a tested word
+    hi: Any
+    rest: tuple[tuple[Check, Any], ...]
+
+
+_BOUNDS: dict[tuple[int, int, str, int], tuple[Machine, Any, _Bounds | None]] = {}
+
+
+def _at_least32(x: float, strict: bool) -> float:
+    """The least binary32 y with y >= x (y > x when strict): v >= y <=> v >= x (> x) for binary32 v."""
+    with np.errstate(over="ignore"):
+        y = np.float32(x)
+    if float(y) < x or (strict and float(y) == x):
+        y = np.nextafter(y, np.float32(np.inf))
+    return math.nan if strict and y == np.inf else float(y)
+
+
+def _at_most32(x: float, strict: bool) -> float:
+    """The greatest binary32 y with y <= x (y < x when strict)."""
+    return -_at_least32(-x, strict)
+
+
+def _float32_words(lay: T.LayoutInfo, name: str) -> list[int] | None:
+    """The 4-byte words of argument ``name`` when it is binary32 at a word offset, else None."""
+    f = next((a for a in lay.args if a.name == name), None)
+    if f is None or f.kind != "float" or f.numpy != "f4" or f.offset % 4:
+        return None
+    return [f.offset // 4 + k for k in range(f.size // 4)]
+
+
+def _bounds_of(r: Records, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...], elsewhere: frozenset[str]
+               ) -> _Bounds | None:
+    """The bounded-check test of a layout (made once a layout, plan, version and machine)."""
+    key = (id(lay), id(plan), r.version, id(r.machine))
+    got = _BOUNDS.get(key)
+    if got is None or got[0] is not r.machine or got[1] is not plan:
+        if len(_BOUNDS) > 512:
+            _BOUNDS.clear()
+        got = _BOUNDS[key] = (r.machine, plan, _make_bounds(r.machine, lay, plan, elsewhere))
+    return got[2]
+
+
+def _make_bounds(machine: Machine, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...],
+                 elsewhere: frozenset[str]) -> _Bounds | None:
+    if lay.size % 4 or _float_words(lay) is None:
+        return None
+    cmd = T.BY_CODE[lay.code]
+    words = lay.size // 4
+    lo, hi = [-math.inf] * words, [math.inf] * words
+    bounded: set[int] = set()
+
+    def bound(ws: list[int], low: float, high: float) -> None:
+        for w in ws:
+            lo[w], hi[w] = max(lo[w], low), min(hi[w], high)
+            bounded.add(w)
+
+    rest: list[tuple[Check, Any]] = []
+    for check, fn in plan:
+        if check["id"] in elsewhere:
+            continue
+        covered, kind = True, check["kind"] if fn is KERNELS[check["kind"]].batch else None
+        if kind == "finite":
+            big = float(np.finfo(np.float32).max)
+            for f in lay.args:
+                if f.kind == "float":
+                    bound(_float32_words(lay, f.name) or [], -big, big)
+        elif kind in ("positive", "range"):
+            names = [nm for t in _targets_of(check, cmd) for nm in t if any(a.name == nm for a in lay.args)]
+            if any(_float32_words(lay, nm) is None for nm in names):
+                covered = False
+            elif kind == "positive":
+                for nm in names:
+                    bound(_float32_words(lay, nm) or [], _at_least32(0.0, True), math.inf)
+            else:
+                low = -math.inf if check["min"] is None else _at_least32(float(check["min"]), check["min_exclusive"])
+                high = math.inf if check["max"] is None else _at_most32(float(check["max"]), check["max_exclusive"])
+                for nm in names:
+                    bound(_float32_words(lay, nm) or [], low, high)
+        elif kind == "machine_limits":
+            rules = machine_rules(check, cmd.name, lay.variant)
+            have = [(f, limit) for f, limit, _ in rules if any(a.name == f.name for a in lay.args)]
+            if any(f.per or _float32_words(lay, f.name) is None for f, _ in have):
+                covered = False
+            else:
+                for f, limit in have:
+                    lim = machine.limits[limit]
+                    ws = _float32_words(lay, f.name) or []
+                    for k, w in enumerate(ws):
+                        j = k if len(lim.lo32) > 1 else 0
+                        bound([w], lim.lo32[j], lim.hi32[j])
+        else:
+            covered = False
+        if not covered:
+            rest.append((check, fn))
+    if len(rest) == len([x for x in plan if x[0]["id"] not in elsewhere]) or not bounded:
+        return None
+    order = sorted(bounded)
+    cols = None if order == list(range(words)) else np.asarray(order, dtype=np.intp)
+    return _Bounds(cols, np.asarray([lo[w] for w in order], dtype=np.float32)[:, None],
+                   np.asarray([hi[w] for w in order], dtype=np.float32)[:, None], tuple(rest))
+
+
+def _targets_of(check: Check, cmd: T.CommandInfo) -> Iterator[tuple[str, ...]]:
+    for t in check["targets"]:
+        if t["command"] == cmd.name:
+            yield tuple(t["args"])
+
+
+def _within(b: Batch, q: _Bounds) -> bool:
+    """Every bounded float of the batch within its bounds (NaN is not). The words are compared a
+    word at a time (transposed: a bound a row), not a record at a time: numpy sets its inner loop
+    up for every row, and a record's row holds a few words."""
+    if b.bytes_ is None:
         return False
-    opened, closed = rows[0::2], rows[1::2]
-    if not ((names[0::2] == names[1::2]).all() and (counts[0::2] == counts[1::2]).all()):
-        return False
-    inside = np.zeros(len(opened), dtype=np.int64)  # motions after each start, before its end
-    for m in motion:
-        inside += np.searchsorted(m, closed)
-        inside -= np.searchsorted(m, opened + 1)
-    return bool((inside == counts[0::2]).all())
+    v = b.bytes_.view(T.BO + "f4").T
+    v = np.ascontiguousarray(v) if q.cols is None else v.take(q.cols, axis=0)
+    ok = np.greater_equal(v, q.lo)
+    ok &= np.less_equal(v, q.hi)
+    return bool(np.count_nonzero(ok) == ok.size)
 
 
 Applies = Callable[[Check, T.LayoutInfo, T.CommandInfo], bool]
@@ -1207,7 +1543,11 @@ def record_findings(buf: bytes, offsets: Sequence[int], version: str, profile: s
             if kernel.every is not None:
                 kernel.every(r, check)
         for b in _batches(r):
-            for check, fn in _plan(cutters is not None, b.lay):
+            plan = _plan(cutters is not None, b.lay)
+            q = _bounds_of(r, b.lay, plan, elsewhere)
+            if q is not None and _within(b, q):
+                plan = q.rest
+            for check, fn in plan:
                 if check["id"] not in elsewhere:
                     fn(r, check, b)
         for check, kernel in active:

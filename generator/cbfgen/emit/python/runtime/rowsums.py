@@ -43,6 +43,7 @@ def _blocks(rows: Rows, fn: Callable[[Rows], Any], block: int = _BLOCK) -> NDArr
     return out
 
 
+_ONES: dict[int, Any] = {}
 _EXACT32 = 1 << 24  # binary32 holds every integer below this, so sums below it add exactly
 
 
@@ -54,9 +55,24 @@ def _sum(rows: Rows) -> NDArray[np.int64]:
     block, so the widened copy holds what the uint16 one did. Wider rows: einsum on int64."""
     width = rows.shape[1]
     if width * 255 < _EXACT32:
-        ones = np.ones(width, dtype=np.float32)
+        ones = _ONES.get(width)
+        if ones is None:
+            ones = _ONES[width] = np.ones(width, dtype=np.float32)  # one a width (a few microseconds a call)
         return _blocks(rows, lambda part: part.astype(np.float32) @ ones, _BLOCK // 2)
     return _blocks(rows, lambda part: np.einsum("ij->i", part.astype(np.int64)))
+
+
+def exact_sums32(rows: Rows) -> Any:
+    """The byte sum of each row as binary32 (exact: every partial sum is an integer below 2**24),
+    or None when a row is too wide for that; for a caller that stores the sums in a narrower
+    integer type anyway (no int64 copy)."""
+    width = rows.shape[1]
+    if width * 255 >= _EXACT32 or rows.shape[0] > _BLOCK // 2:
+        return None
+    ones = _ONES.get(width)
+    if ones is None:
+        ones = _ONES[width] = np.ones(width, dtype=np.float32)
+    return np.ascontiguousarray(rows, dtype=np.uint8).astype(np.float32) @ ones
 
 
 def _weighted(rows: Rows, modulus: int) -> NDArray[np.int64]:
