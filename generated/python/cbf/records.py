@@ -1343,64 +1343,80 @@ def _bounds_of(r: Records, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...
     return got[2]
 
 
+class _Box:
+    """The tightest [lo, hi] of each float32 word of a layout that the checks folded so far allow."""
+
+    def __init__(self, words: int) -> None:
+        self.lo, self.hi = [-math.inf] * words, [math.inf] * words
+        self.bounded: set[int] = set()
+
+    def bound(self, ws: list[int], low: float, high: float) -> None:
+        for w in ws:
+            self.lo[w], self.hi[w] = max(self.lo[w], low), min(self.hi[w], high)
+            self.bounded.add(w)
+
+
+def _fold_finite(box: _Box, check: Check, lay: T.LayoutInfo, machine: Machine) -> bool:
+    big = float(np.finfo(np.float32).max)
+    for f in lay.args:
+        if f.kind == "float":
+            box.bound(_float32_words(lay, f.name) or [], -big, big)
+    return True
+
+
+def _fold_range(box: _Box, check: Check, lay: T.LayoutInfo, machine: Machine) -> bool:
+    """A positive or a range check: its bounds on the layout's float32 targets (False: a target is
+    not float32 words, and the check runs as its kernel)."""
+    cmd = T.BY_CODE[lay.code]
+    names = [nm for t in _targets_of(check, cmd) for nm in t if any(a.name == nm for a in lay.args)]
+    if any(_float32_words(lay, nm) is None for nm in names):
+        return False
+    if check["kind"] == "positive":
+        low, high = _at_least32(0.0, True), math.inf
+    else:
+        low = -math.inf if check["min"] is None else _at_least32(float(check["min"]), check["min_exclusive"])
+        high = math.inf if check["max"] is None else _at_most32(float(check["max"]), check["max_exclusive"])
+    for nm in names:
+        box.bound(_float32_words(lay, nm) or [], low, high)
+    return True
+
+
+def _fold_machine(box: _Box, check: Check, lay: T.LayoutInfo, machine: Machine) -> bool:
+    rules = machine_rules(check, T.BY_CODE[lay.code].name, lay.variant)
+    have = [(f, limit) for f, limit, _ in rules if any(a.name == f.name for a in lay.args)]
+    if any(f.per or _float32_words(lay, f.name) is None for f, _ in have):
+        return False
+    for f, limit in have:
+        lim = machine.limits[limit]
+        for k, w in enumerate(_float32_words(lay, f.name) or []):
+            j = k if len(lim.lo32) > 1 else 0
+            box.bound([w], lim.lo32[j], lim.hi32[j])
+    return True
+
+
+# The check kinds whose batch kernel one bounds test can stand for, and how each folds into the box.
+_FOLDS: dict[str, Callable[[_Box, Check, T.LayoutInfo, Machine], bool]] = {
+    "finite": _fold_finite, "positive": _fold_range, "range": _fold_range, "machine_limits": _fold_machine}
+
+
 def _make_bounds(machine: Machine, lay: T.LayoutInfo, plan: tuple[tuple[Check, Any], ...],
                  elsewhere: frozenset[str]) -> _Bounds | None:
     if lay.size % 4 or _float_words(lay) is None:
         return None
-    cmd = T.BY_CODE[lay.code]
     words = lay.size // 4
-    lo, hi = [-math.inf] * words, [math.inf] * words
-    bounded: set[int] = set()
-
-    def bound(ws: list[int], low: float, high: float) -> None:
-        for w in ws:
-            lo[w], hi[w] = max(lo[w], low), min(hi[w], high)
-            bounded.add(w)
-
+    box = _Box(words)
     rest: list[tuple[Check, Any]] = []
-    for check, fn in plan:
-        if check["id"] in elsewhere:
-            continue
-        covered, kind = True, check["kind"] if fn is KERNELS[check["kind"]].batch else None
-        if kind == "finite":
-            big = float(np.finfo(np.float32).max)
-            for f in lay.args:
-                if f.kind == "float":
-                    bound(_float32_words(lay, f.name) or [], -big, big)
-        elif kind in ("positive", "range"):
-            names = [nm for t in _targets_of(check, cmd) for nm in t if any(a.name == nm for a in lay.args)]
-            if any(_float32_words(lay, nm) is None for nm in names):
-                covered = False
-            elif kind == "positive":
-                for nm in names:
-                    bound(_float32_words(lay, nm) or [], _at_least32(0.0, True), math.inf)
-            else:
-                low = -math.inf if check["min"] is None else _at_least32(float(check["min"]), check["min_exclusive"])
-                high = math.inf if check["max"] is None else _at_most32(float(check["max"]), check["max_exclusive"])
-                for nm in names:
-                    bound(_float32_words(lay, nm) or [], low, high)
-        elif kind == "machine_limits":
-            rules = machine_rules(check, cmd.name, lay.variant)
-            have = [(f, limit) for f, limit, _ in rules if any(a.name == f.name for a in lay.args)]
-            if any(f.per or _float32_words(lay, f.name) is None for f, _ in have):
-                covered = False
-            else:
-                for f, limit in have:
-                    lim = machine.limits[limit]
-                    ws = _float32_words(lay, f.name) or []
-                    for k, w in enumerate(ws):
-                        j = k if len(lim.lo32) > 1 else 0
-                        bound([w], lim.lo32[j], lim.hi32[j])
-        else:
-            covered = False
-        if not covered:
+    mine = [(check, fn) for check, fn in plan if check["id"] not in elsewhere]
+    for check, fn in mine:
+        fold = _FOLDS.get(check["kind"]) if fn is KERNELS[check["kind"]].batch else None
+        if fold is None or not fold(box, check, lay, machine):
             rest.append((check, fn))
-    if len(rest) == len([x for x in plan if x[0]["id"] not in elsewhere]) or not bounded:
+    if len(rest) == len(mine) or not box.bounded:
         return None
-    order = sorted(bounded)
+    order = sorted(box.bounded)
     cols = None if order == list(range(words)) else np.asarray(order, dtype=np.intp)
-    return _Bounds(cols, np.asarray([lo[w] for w in order], dtype=np.float32)[:, None],
-                   np.asarray([hi[w] for w in order], dtype=np.float32)[:, None], tuple(rest))
+    return _Bounds(cols, np.asarray([box.lo[w] for w in order], dtype=np.float32)[:, None],
+                   np.asarray([box.hi[w] for w in order], dtype=np.float32)[:, None], tuple(rest))
 
 
 def _targets_of(check: Check, cmd: T.CommandInfo) -> Iterator[tuple[str, ...]]:
