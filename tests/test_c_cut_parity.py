@@ -1,6 +1,9 @@
 """The C CUT reader (cbf_cut_encode, `cbf-c encode`, issue 34: a dropped CUT file) against Python's
 (cbf.cut.from_cut, then codec.pack_file with every derived value filled): the same text gives the
-same bytes, or both refuse it, and the C refusal names the line Python names.
+same bytes, or both refuse it, and the C refusal names the line Python names. As `cbf encode`,
+`cbf-c encode` then refuses bytes that do not validate under the profile (writer.encode: an error, or a
+string_ascii finding): such a text is refused by both with the same line (the record's CUT line, the
+check and its message), which the bytes the reader made decide.
 
 The texts come from the golden files, never from today's command list: the CUT text Python writes for
 every golden .cbf under every profile, the docs' golden CUT forms (the companion document's complete
@@ -20,8 +23,10 @@ from c_programs import built
 
 from cbf import codec
 from cbf import tables as T
+from cbf.cli import _cut_line_of
 from cbf.cut import from_cut, to_cut
 from cbf.errors import CbfError
+from cbf.writer import encode
 from cbfgen.emit.docs import golden as docs_golden
 from cbfgen.loader import load
 
@@ -37,13 +42,27 @@ def _cbf_c() -> Path:
 
 def _python(data: bytes, profile: str) -> tuple[bytes | None, int | None]:
     """Python's bytes for the text, or None and the line its refusal names (None: no line)."""
+    want, line, _ = _python_said(data, profile)
+    return want, line
+
+
+def _python_said(data: bytes, profile: str) -> tuple[bytes | None, int | None, str | None]:
+    """_python, and when the reader's bytes are refused by the writer's judgement (writer.encode validates
+    them), what cbf encode says of it after "cbf: FILE: " (cli.py: the record's CUT line, else the offset)."""
     try:
         text = data.decode("utf-8")
-        return codec.pack_file(from_cut(text, profile=profile), profile=profile), None
+        model = from_cut(text, profile=profile)
+        packed = codec.pack_file(model, profile=profile)
     except UnicodeDecodeError:
-        return None, None
+        return None, None, None
     except (CbfError, ValueError) as exc:
-        return None, getattr(exc, "line", None)
+        return None, getattr(exc, "line", None), None
+    try:
+        return encode(model, profile=profile), None, None
+    except CbfError as exc:
+        assert packed  # the reader made bytes: the writer refuses them
+        line = _cut_line_of(text, str(exc))
+        return None, line, (f"line {line}: {exc.message}" if line is not None else str(exc))
 
 
 def _c(path: Path, profile: str) -> tuple[bytes | None, str, int]:
@@ -56,7 +75,7 @@ def _judge(tmp: Path, name: str, data: bytes, profile: str) -> str | None:
     """None when C and Python agree on the text, else what differs."""
     path = tmp / f"{name}.cut"
     path.write_bytes(data)
-    want, line = _python(data, profile)
+    want, line, said = _python_said(data, profile)
     got, err, status = _c(path, profile)
     if want is not None:
         if got != want:
@@ -69,6 +88,8 @@ def _judge(tmp: Path, name: str, data: bytes, profile: str) -> str | None:
         return f"{name} [{profile}]: the refusal is not one line naming the file: {err!r}"
     if line is not None and f": line {line}" not in lines[0]:
         return f"{name} [{profile}]: Python names line {line}, C says {lines[0]!r}"
+    if said is not None and lines[0] != f"cbf-c: {path.name}: {said}":
+        return f"{name} [{profile}]: cbf says {said!r}, C says {lines[0]!r}"
     return None
 
 
