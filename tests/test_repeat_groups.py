@@ -504,7 +504,7 @@ def test_c_cut_reader_reads_a_group_line_as_python_does(revised: Revised, tmp_pa
     for name, (text, want, line) in cases.items():
         path = tmp_path / f"{name}.cut"
         path.write_text(text, encoding="ascii")
-        got = subprocess.run([str(exe), "encode", str(path)], capture_output=True)
+        got = subprocess.run([str(exe), "encode", str(path), "-o", "-"], capture_output=True)
         if want is not None:
             assert got.returncode == 0 and got.stdout.hex() == want, (name, got.stderr)
         else:
