@@ -579,15 +579,43 @@ int cbf_tool_encode_judge(const char *name, const uint8_t *text, size_t n, const
 #define CBF_TOOL_MOST_DEPRECATION_WARNINGS 10u
 
 static unsigned long ndeprecated;
+static held_finding first_deprecated[CBF_TOOL_MOST_DEPRECATION_WARNINGS]; /* the first in cbf's order */
+static size_t nfirst;
 
 static int is_deprecation(int order) { return strcmp(cbf_tool_check_kinds[order], "deprecated") == 0; }
 
-static void hold_deprecated(void *user, const cbf_finding *f)
+/* Count each deprecated record; keep the first CBF_TOOL_MOST_DEPRECATION_WARNINGS in cbf's order (memory
+ * bounded however many records a file deprecates). */
+static void keep_deprecated(void *user, const cbf_finding *f)
 {
-    if (!is_deprecation(check_rank(f->check)))
+    held_finding h;
+    size_t k, len = strlen(f->message) + 1u;
+    char *copy;
+    (void)user;
+    h.order = check_rank(f->check);
+    if (!is_deprecation(h.order))
         return;
     ndeprecated++;
-    hold_finding(user, f);
+    h.record = f->record;
+    h.error = f->severity == CBF_SEVERITY_ERROR;
+    h.offset = (unsigned long)f->offset;
+    h.check = f->check;
+    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS && finding_cmp(&h, &first_deprecated[nfirst - 1u]) >= 0)
+        return;
+    copy = (char *)malloc(len);
+    if (!copy) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(copy, f->message, len);
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS)
+        free(first_deprecated[--nfirst].message);
+    for (k = nfirst; k > 0 && finding_cmp(&h, &first_deprecated[k - 1u]) < 0; k--)
+        first_deprecated[k] = first_deprecated[k - 1u];
+    first_deprecated[k] = h;
+    first_deprecated[k].message = copy;
+    nfirst++;
 }
 
 void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len, const cbf_tool_sink *sink)
@@ -603,22 +631,19 @@ void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len
     out_begin(sink);
     memset(&opt, 0, sizeof opt);
     opt.profile = CBF_TOOL_DEFAULT_PROFILE; /* as cbf: validate's findings under its default profile */
-    nheld = 0;
+    nfirst = 0;
     ndeprecated = 0;
     out_of_memory = 0;
-    (void)cbf_validate(cbf, len, &opt, hold_deprecated, NULL);
-    if (nheld)
-        qsort(held, nheld, sizeof *held, finding_cmp);
+    (void)cbf_validate(cbf, len, &opt, keep_deprecated, NULL);
     label = cbf_tool_name(output);
-    for (k = 0; k < nheld; k++) {
-        if (k < CBF_TOOL_MOST_DEPRECATION_WARNINGS)
-            err_printf("cbf-c: warning: %s: record %ld at offset %lu: %s (check %s, %s)\n", label, held[k].record,
-                       held[k].offset, cbf_quoted(held[k].message, CBF_QUOTE_TEXT), held[k].check,
-                       held[k].error ? "error" : "warning");
-        free(held[k].message);
+    for (k = 0; k < nfirst; k++) {
+        err_printf("cbf-c: warning: %s: record %ld at offset %lu: %s (check %s, %s)\n", label,
+                   first_deprecated[k].record, first_deprecated[k].offset,
+                   cbf_quoted(first_deprecated[k].message, CBF_QUOTE_TEXT), first_deprecated[k].check,
+                   first_deprecated[k].error ? "error" : "warning");
+        free(first_deprecated[k].message);
     }
-    nheld = 0;
-    if (ndeprecated > CBF_TOOL_MOST_DEPRECATION_WARNINGS)
-        err_printf("cbf-c: warning: %s: %lu more deprecated record(s)\n", label,
-                   ndeprecated - (unsigned long)CBF_TOOL_MOST_DEPRECATION_WARNINGS);
+    nfirst = 0;
+    if (ndeprecated > (unsigned long)k)
+        err_printf("cbf-c: warning: %s: %lu more deprecated record(s)\n", label, ndeprecated - (unsigned long)k);
 }
