@@ -52,7 +52,7 @@ def _python_said(data: bytes, profile: str) -> tuple[bytes | None, int | None, s
     try:
         text = data.decode("utf-8")
         model = from_cut(text, profile=profile)
-        packed = codec.pack_file(model, profile=profile)
+        codec.pack_file(model, profile=profile)  # the bytes the reader makes (the writer then judges them)
     except UnicodeDecodeError:
         return None, None, None
     except (CbfError, ValueError) as exc:
@@ -60,7 +60,6 @@ def _python_said(data: bytes, profile: str) -> tuple[bytes | None, int | None, s
     try:
         return encode(model, profile=profile), None, None
     except CbfError as exc:
-        assert packed  # the reader made bytes: the writer refuses them
         line = _cut_line_of(text, str(exc))
         return None, line, (f"line {line}: {exc.message}" if line is not None else str(exc))
 
