@@ -15,6 +15,7 @@ line twice, a wrong check_sum)."""
 from __future__ import annotations
 
 import functools
+import os
 import subprocess
 from pathlib import Path
 
@@ -38,6 +39,41 @@ PROFILES = list(T.PROFILES)
 @functools.cache
 def _cbf_c() -> Path:
     return built("cbf-c")
+
+
+# The C CUT reader alone (cbf_cut_encode, what the workbench page shows a dropped CUT file as): the bytes of a
+# text whose file cbf-c encode then refuses (it does not validate) are compared through it.
+READER = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+int main(int argc, char **argv)
+{
+    static char text[1 << 24];
+    static uint8_t out[1 << 24];
+    cbf_cut_error err;
+    FILE *fp = argc == 3 ? fopen(argv[2], "rb") : NULL;
+    size_t n = fp ? fread(text, 1, sizeof text, fp) : 0;
+    long len = cbf_cut_encode(text, n, cbf_profile_find(argv[1]), out, sizeof out, &err);
+    if (len < 0)
+        return 2;
+    return fwrite(out, 1, (size_t)len, stdout) == (size_t)len ? 0 : 3;
+}
+"""
+
+
+@functools.cache
+def _reader() -> Path:
+    _cbf_c()  # skips without gcc
+    folder = REPO / "build" / "c" / "tests"  # one program per pytest process (xdist workers)
+    folder.mkdir(parents=True, exist_ok=True)
+    src, exe = folder / f"cut_reader_{os.getpid()}.c", folder / f"cut_reader_{os.getpid()}"
+    src.write_text(READER, encoding="utf-8")
+    subprocess.run(["gcc", "-std=c99", "-O0", "-I", str(REPO / "generated" / "c"), "-o", str(exe), str(src), "-lm"],
+                   check=True, capture_output=True)
+    return exe
 
 
 def _python(data: bytes, profile: str) -> tuple[bytes | None, int | None]:
@@ -89,6 +125,11 @@ def _judge(tmp: Path, name: str, data: bytes, profile: str) -> str | None:
         return f"{name} [{profile}]: Python names line {line}, C says {lines[0]!r}"
     if said is not None and lines[0] != f"cbf-c: {path.name}: {said}":
         return f"{name} [{profile}]: cbf says {said!r}, C says {lines[0]!r}"
+    if said is not None:  # the writer refused the reader's bytes: C's reader made the same ones
+        read = subprocess.run([str(_reader()), profile, str(path)], capture_output=True, timeout=60)
+        if read.returncode != 0 or read.stdout != codec.pack_file(from_cut(data.decode(), profile=profile),
+                                                                  profile=profile):
+            return f"{name} [{profile}]: C's CUT reader (cbf_cut_encode) made other bytes than Python's"
     return None
 
 
