@@ -14,9 +14,11 @@ line twice, a wrong check_sum)."""
 
 from __future__ import annotations
 
+import atexit
 import functools
-import os
+import shutil
 import subprocess
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -67,9 +69,9 @@ int main(int argc, char **argv)
 @functools.cache
 def _reader() -> Path:
     _cbf_c()  # skips without gcc
-    folder = REPO / "build" / "c" / "tests"  # one program per pytest process (xdist workers)
-    folder.mkdir(parents=True, exist_ok=True)
-    src, exe = folder / f"cut_reader_{os.getpid()}.c", folder / f"cut_reader_{os.getpid()}"
+    folder = Path(tempfile.mkdtemp(prefix="cut_reader_"))
+    atexit.register(shutil.rmtree, folder, True)
+    src, exe = folder / "cut_reader.c", folder / "cut_reader"
     src.write_text(READER, encoding="utf-8")
     subprocess.run(["gcc", "-std=c99", "-O0", "-I", str(REPO / "generated" / "c"), "-o", str(exe), str(src), "-lm"],
                    check=True, capture_output=True)
