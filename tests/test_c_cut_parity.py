@@ -1,6 +1,9 @@
 """The C CUT reader (cbf_cut_encode, `cbf-c encode`, issue 34: a dropped CUT file) against Python's
 (cbf.cut.from_cut, then codec.pack_file with every derived value filled): the same text gives the
-same bytes, or both refuse it, and the C refusal names the line Python names.
+same bytes, or both refuse it, and the C refusal names the line Python names. As `cbf encode`,
+`cbf-c encode` then refuses bytes that do not validate under the profile (writer.encode: an error, or a
+string_ascii finding): such a text is refused by both with the same line (the record's CUT line, the
+check and its message), which the bytes the reader made decide.
 
 The texts come from the golden files, never from today's command list: the CUT text Python writes for
 every golden .cbf under every profile, the docs' golden CUT forms (the companion document's complete
@@ -11,8 +14,11 @@ line twice, a wrong check_sum)."""
 
 from __future__ import annotations
 
+import atexit
 import functools
+import shutil
 import subprocess
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -20,8 +26,10 @@ from c_programs import built
 
 from cbf import codec
 from cbf import tables as T
+from cbf.cli import _cut_line_of
 from cbf.cut import from_cut, to_cut
 from cbf.errors import CbfError
+from cbf.writer import encode
 from cbfgen.emit.docs import golden as docs_golden
 from cbfgen.loader import load
 
@@ -35,15 +43,63 @@ def _cbf_c() -> Path:
     return built("cbf-c")
 
 
+# The C CUT reader alone (cbf_cut_encode, what the workbench page shows a dropped CUT file as): the bytes of a
+# text whose file cbf-c encode then refuses (it does not validate) are compared through it.
+READER = r"""
+#define CBF_IMPLEMENTATION
+#include "cbf.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+int main(int argc, char **argv)
+{
+    static char text[1 << 24];
+    static uint8_t out[1 << 24];
+    cbf_cut_error err;
+    FILE *fp = argc == 3 ? fopen(argv[2], "rb") : NULL;
+    size_t n = fp ? fread(text, 1, sizeof text, fp) : 0;
+    long len = cbf_cut_encode(text, n, cbf_profile_find(argv[1]), out, sizeof out, &err);
+    if (len < 0)
+        return 2;
+    return fwrite(out, 1, (size_t)len, stdout) == (size_t)len ? 0 : 3;
+}
+"""
+
+
+@functools.cache
+def _reader() -> Path:
+    _cbf_c()  # skips without gcc
+    folder = Path(tempfile.mkdtemp(prefix="cut_reader_"))
+    atexit.register(shutil.rmtree, folder, True)
+    src, exe = folder / "cut_reader.c", folder / "cut_reader"
+    src.write_text(READER, encoding="utf-8")
+    subprocess.run(["gcc", "-std=c99", "-O0", "-I", str(REPO / "generated" / "c"), "-o", str(exe), str(src), "-lm"],
+                   check=True, capture_output=True)
+    return exe
+
+
 def _python(data: bytes, profile: str) -> tuple[bytes | None, int | None]:
     """Python's bytes for the text, or None and the line its refusal names (None: no line)."""
+    want, line, _ = _python_said(data, profile)
+    return want, line
+
+
+def _python_said(data: bytes, profile: str) -> tuple[bytes | None, int | None, str | None]:
+    """_python, and when the reader's bytes are refused by the writer's judgement (writer.encode validates
+    them), what cbf encode says of it after "cbf: FILE: " (cli.py: the record's CUT line, else the offset)."""
     try:
         text = data.decode("utf-8")
-        return codec.pack_file(from_cut(text, profile=profile), profile=profile), None
+        model = from_cut(text, profile=profile)
+        codec.pack_file(model, profile=profile)  # the bytes the reader makes (the writer then judges them)
     except UnicodeDecodeError:
-        return None, None
+        return None, None, None
     except (CbfError, ValueError) as exc:
-        return None, getattr(exc, "line", None)
+        return None, getattr(exc, "line", None), None
+    try:
+        return encode(model, profile=profile), None, None
+    except CbfError as exc:
+        line = _cut_line_of(text, str(exc))
+        return None, line, (f"line {line}: {exc.message}" if line is not None else str(exc))
 
 
 def _c(path: Path, profile: str) -> tuple[bytes | None, str, int]:
@@ -56,7 +112,7 @@ def _judge(tmp: Path, name: str, data: bytes, profile: str) -> str | None:
     """None when C and Python agree on the text, else what differs."""
     path = tmp / f"{name}.cut"
     path.write_bytes(data)
-    want, line = _python(data, profile)
+    want, line, said = _python_said(data, profile)
     got, err, status = _c(path, profile)
     if want is not None:
         if got != want:
@@ -69,6 +125,13 @@ def _judge(tmp: Path, name: str, data: bytes, profile: str) -> str | None:
         return f"{name} [{profile}]: the refusal is not one line naming the file: {err!r}"
     if line is not None and f": line {line}" not in lines[0]:
         return f"{name} [{profile}]: Python names line {line}, C says {lines[0]!r}"
+    if said is not None and lines[0] != f"cbf-c: {path.name}: {said}":
+        return f"{name} [{profile}]: cbf says {said!r}, C says {lines[0]!r}"
+    if said is not None:  # the writer refused the reader's bytes: C's reader made the same ones
+        read = subprocess.run([str(_reader()), profile, str(path)], capture_output=True, timeout=60)
+        if read.returncode != 0 or read.stdout != codec.pack_file(from_cut(data.decode(), profile=profile),
+                                                                  profile=profile):
+            return f"{name} [{profile}]: C's CUT reader (cbf_cut_encode) made other bytes than Python's"
     return None
 
 

@@ -203,6 +203,23 @@ def _cut_beyond_binary32(tmp: Path) -> list[Input]:
     return [Input(_cut(tmp, "beyond.cut", lines), (f"line {HEAD_LINES + FLOAT_REC + 1}",))]
 
 
+def _fails_a_check(tmp: Path) -> list[Input]:
+    """CUT text that reads, but whose file fails an error check: the one float of a record that a check of kind
+    positive targets, set to -1 (the model's check and VALID's record)."""
+    for check in T.checks_of("positive"):
+        names = {t["command"] for t in check.get("targets", ())}
+        rec = next((i for i, r in enumerate(MODEL.records) if T.BY_CODE[r.code].name in names
+                    and _one_float(_layout(i))), None)
+        if check["severity"] == "error" and rec is not None:
+            break
+    else:
+        pytest.skip("no error check of kind positive targets a record of one float in VALID")
+    lines = list(CUT_LINES)
+    lines[HEAD_LINES + rec] = f"{keyword(T.BY_CODE[MODEL.records[rec].code])} -1"
+    return [Input(_cut(tmp, "fails.cut", lines), (f"line {HEAD_LINES + rec + 1}: record {rec}: ",
+                                                  f"check {check['id']}: "))]
+
+
 def _json_beyond_binary32(tmp: Path) -> list[Input]:
     arg, path = _float_path()
     out = []
@@ -345,6 +362,8 @@ INPUTS: dict[str, Callable[[Path], list[Input]]] = {
     "text after the arguments of any CUT keyword (`cbf_record`, `check_sum`, `cbf_field` included)": _trailing_text,
     "a `cbf_version` that is not two numbers 0 to 255 (a 5,000-digit one included)": _long_version,
     "a CUT number beyond the binary32 range (a 310-digit integer)": _cut_beyond_binary32,
+    "CUT text that reads, but whose file would fail an error-severity check under the profile (a number a "
+    "positive check bounds, as -1): a writer writes files that validate": _fails_a_check,
     "a JSON number beyond the binary32 range (`1e400`, `1e1000000000000000000`), `NaN` or `Infinity` (write NaN "
     "and infinity as a bit pattern)": _json_beyond_binary32,
     "a JSON float bit pattern other than `0x` and exactly 8 hex digits": _bad_bit_pattern,

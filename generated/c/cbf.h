@@ -1112,12 +1112,16 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
  * version is refused with its line. */
 long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
                        cbf_cut_error *err);
+/** The line of CUT text[0..n) that holds record `record` (from 0: the lines that are not empty and not a
+ * header, header_ext, check_sum, version or field line), as cbf encode names the record of a file it
+ * refuses (cli.py, _cut_line_of); 0 when the text holds fewer records. */
+unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long record);
 
 /** Run every check of the spec; each finding goes to fn. Returns the number
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1121 "cbf.h"
+#line 1125 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1283,7 +1287,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1287 "cbf.h"
+#line 1291 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1376,7 +1380,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1380 "cbf.h"
+#line 1384 "cbf.h"
 /* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
  * runtime/checksums.c implements each family once and switches on it with no default (a family
  * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
@@ -2558,7 +2562,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2562 "cbf.h"
+#line 2566 "cbf.h"
 /* ==== BEGIN runtime/quote.c: verbatim from generator/cbfgen/emit/c/runtime/quote.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/quote.c"
 /* ---- the one quoting rule for names and values from input (issue #35) ----
@@ -2697,7 +2701,7 @@ const char *cbf_quoted(const char *s, int mode)
     return buf;
 }
 /* ==== END runtime/quote.c ==== */
-#line 2701 "cbf.h"
+#line 2705 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2814,7 +2818,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2818 "cbf.h"
+#line 2822 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -3040,7 +3044,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 3044 "cbf.h"
+#line 3048 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3297,7 +3301,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3301 "cbf.h"
+#line 3305 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3475,7 +3479,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3479 "cbf.h"
+#line 3483 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3769,7 +3773,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3773 "cbf.h"
+#line 3777 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4944,7 +4948,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4948 "cbf.h"
+#line 4952 "cbf.h"
 /* ==== BEGIN runtime/path.c: verbatim from generator/cbfgen/emit/c/runtime/path.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/path.c"
 /* ---- the drawn path of a motion record (issue 34: the workbench draws curves with the engine's geometry) ----
@@ -5146,7 +5150,7 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     }
 }
 /* ==== END runtime/path.c ==== */
-#line 5150 "cbf.h"
+#line 5154 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5312,7 +5316,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5316 "cbf.h"
+#line 5320 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5349,7 +5353,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5353 "cbf.h"
+#line 5357 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6335,7 +6339,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6339 "cbf.h"
+#line 6343 "cbf.h"
 /* ---- the CUT text form's syntax (spec `cut`), read by cbf_cut_encode (runtime/cut.c) ---- */
 #define CBF__CUT_LOWER 1 /* keywords compare in lower case */
 static const char cbf__cut_header[] = "header";
@@ -7269,8 +7273,28 @@ long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uin
         return rc;
     return len;
 }
+
+unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long record)
+{
+    cbf__cutp c;
+    size_t at = 0;
+    unsigned long seen = 0;
+    if (!text)
+        return 0;
+    memset(&c, 0, sizeof c);
+    c.t = text;
+    while (cbf__cut_line(&c, n, &at)) {
+        if (c.kwlen == 0 || cbf__cut_kw(&c, cbf__cut_header, 1) || cbf__cut_kw(&c, cbf__cut_header_ext, 1)
+            || cbf__cut_kw(&c, cbf__cut_checksum, 1) || cbf__cut_kw(&c, cbf__cut_version, 1)
+            || cbf__cut_kw(&c, cbf__cut_field, 1))
+            continue; /* cbf's _cut_line_of: every word read in the keyword case */
+        if (seen++ == record)
+            return c.line;
+    }
+    return 0;
+}
 /* ==== END runtime/cut.c ==== */
-#line 7274 "cbf.h"
+#line 7298 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

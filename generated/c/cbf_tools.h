@@ -77,6 +77,18 @@ int cbf_tool_is_cut(const uint8_t *buf, size_t n);
  * wrong. */
 long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int version, int profile, uint8_t **out,
                          const cbf_tool_sink *sink);
+/** cbf encode's judgement of cbf[0..len), the CBF that CUT text[0..n) (the file name) encoded to under profile
+ * (cbf_tool_cut_buffer): a writer makes files that validate, so the first finding in cbf's order that is an
+ * error or of a string_ascii check refuses it: one line on sink->err naming the file, the CUT line of the
+ * record concerned (else the finding's offset) and the check, as cbf's; CBF_TOOL_EXIT_USAGE. Else
+ * CBF_TOOL_EXIT_OK and nothing printed. */
+int cbf_tool_encode_judge(const char *name, const uint8_t *text, size_t n, const uint8_t *cbf, size_t len, int profile,
+                          const cbf_tool_sink *sink);
+/** cbf encode's warnings once cbf[0..len) is written to output (its name): one line on sink->err for each
+ * record of a command or layout the file's version deprecates (the findings of the spec's checks of kind
+ * deprecated, under the default profile, in cbf's order), at most ten, then one line counting the rest.
+ * Nothing when the spec deprecates nothing. The exit status is not changed by them. */
+void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len, const cbf_tool_sink *sink);
 
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
@@ -110,7 +122,7 @@ int cbf_tool_check_output(const char *path, char *why, size_t cap);
  * /dev/full is a failure, never a short file. */
 int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *why, size_t cap);
 /* ==== END tools/tools_api.h ==== */
-#line 114 "cbf_tools.h"
+#line 126 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
@@ -121,6 +133,7 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
 #define CBF_TOOLS_IMPLEMENTATION_DONE
 #include <errno.h>
 #include <float.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -148,6 +161,10 @@ static const char *const cbf_tool_profile_names[CBF_PROFILE__COUNT] = { "default
 /* The spec's checks in their order: findings print in cbf's one order (header first, then by
  * record, check order, offset, message), whatever order the engine reports them in. */
 static const char *const cbf_tool_check_order[CBF_CHECK__COUNT] = { "4.2", "4.3", "6.1.1", "part_number_first", "6.1.2", "6.2.1", "6.2.2", "6.3.1", "6.3.2", "6.4.1", "6.4.2", "6.4.3", "6.4.4", "6.4.5", "7.2.3.1", "7.2.2.4", "version_supported", "unknown_command", "trailing_bytes", "reserved_nonzero", "string_tail", "string_ascii", "non_finite", "speed_positive", "accel_positive", "cutter_positive", "normal_nonzero", "checkpoint_range", "checkpoint_falling", "fcparms_order", "orientation_jump", "machine_limits", "shape" };
+/* Each check's kind (the registry's name), in the same order: cbf encode refuses a result with an error or a
+ * string_ascii finding and warns for each record a deprecated check finds (cli.py, _encode_one and
+ * _warn_deprecated). */
+static const char *const cbf_tool_check_kinds[CBF_CHECK__COUNT] = { "truncated_header", "truncated_record", "part_number", "descriptor_word", "cutter_table", "file_checksum", "command_count", "header_checksum", "magic", "sequence", "code_copy", "arg_size", "arg_checksum", "continuity", "availability", "availability", "version", "unknown_code", "trailing", "reserved_byte", "string_tail", "string_ascii", "finite", "positive", "positive", "positive", "nonzero_vector", "range", "nondecreasing", "ordered", "orientation", "machine_limits", "shape" };
 
 /* ---- option files (issue 28): the rules of generator/cbfgen/option_files.yaml, completed from the
  * spec (cbfgen/options.py), the same that cbf/option_files.json gives cbf. Every refusal is one line
@@ -297,7 +314,7 @@ static void err_printf(const char *fmt, ...)
     va_end(ap);
 }
 /* ==== END tools/output.c ==== */
-#line 301 "cbf_tools.h"
+#line 318 "cbf_tools.h"
 /* ==== BEGIN tools/optfiles.c: verbatim from generator/cbfgen/emit/c/tools/optfiles.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/optfiles.c"
 static char opt_why[8192];
@@ -1906,7 +1923,7 @@ int cbf_tool_machine_buffer(const char *name, const char *text, size_t n, cbf_op
 
 const char *cbf_tool_why(void) { return opt_last_why; }
 /* ==== END tools/optfiles.c ==== */
-#line 1910 "cbf_tools.h"
+#line 1927 "cbf_tools.h"
 /* ==== BEGIN tools/files.c: verbatim from generator/cbfgen/emit/c/tools/files.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/files.c"
 /* ---- the file layer: the only code of the tools that opens a file (cbf_tool.c's command line and the
@@ -2485,7 +2502,7 @@ int cbf_tool_write_file(const char *path, const uint8_t *data, size_t n, char *w
 }
 #endif
 /* ==== END tools/files.c ==== */
-#line 2489 "cbf_tools.h"
+#line 2506 "cbf_tools.h"
 /* ==== BEGIN tools/engine.c: verbatim from generator/cbfgen/emit/c/tools/engine.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/tools/engine.c"
 /* ---- cbf-c's engine on a buffer: frame, validate with options, dump (README, "Exit codes") ----
@@ -2945,8 +2962,200 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     }
     return len;
 }
+
+/* ---- cbf encode's judgement of the file it made, and its warnings (cli.py: _encode_one, writer.encode,
+ * _cut_line_of, _warn_deprecated). Both are driven by the checks' kinds (cbf_tool_check_kinds): no
+ * command or check is named here. ---- */
+
+/* Whether cbf encode refuses a result with this finding: an error, or a finding of a check of kind
+ * string_ascii (a writer writes strings in ASCII, N4). */
+static int refuses(const cbf_finding *f, int order)
+{
+    return f->severity == CBF_SEVERITY_ERROR || strcmp(cbf_tool_check_kinds[order], "string_ascii") == 0;
+}
+
+static held_finding refusal; /* the first refusing finding in cbf's order (finding_cmp) */
+static int refused;
+
+static void keep_refusal(void *user, const cbf_finding *f)
+{
+    held_finding h;
+    size_t len = strlen(f->message) + 1u;
+    char *copy;
+    (void)user;
+    h.order = check_rank(f->check);
+    if (!refuses(f, h.order))
+        return;
+    h.record = f->record;
+    h.error = f->severity == CBF_SEVERITY_ERROR;
+    h.offset = (unsigned long)f->offset;
+    h.check = f->check;
+    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
+    if (refused && finding_cmp(&h, &refusal) >= 0)
+        return;
+    copy = (char *)malloc(len);
+    if (!copy) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(copy, f->message, len);
+    free(refusal.message);
+    refusal = h;
+    refusal.message = copy;
+    refused = 1;
+}
+
+static int word_byte(unsigned char c)
+{
+    return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c >= 0x80u;
+}
+
+/* The CUT line of the record what cbf says names ("record N", the first such word: cbf's _cut_line_of),
+ * 0 when it names none or the text holds no such record. */
+static unsigned long said_record_line(const char *said, const uint8_t *text, size_t n)
+{
+    static const char word[] = "record ";
+    const char *p;
+    for (p = strstr(said, word); p; p = strstr(p + 1, word)) {
+        const char *d = p + sizeof word - 1u;
+        unsigned long want = 0;
+        size_t k = 0;
+        int big = 0;
+        if (p > said && word_byte((unsigned char)p[-1]))
+            continue;
+        for (; d[k] >= '0' && d[k] <= '9'; k++) {
+            if (want > (ULONG_MAX - 9u) / 10u)
+                big = 1;
+            else
+                want = want * 10u + (unsigned long)(d[k] - '0');
+        }
+        if (!k || word_byte((unsigned char)d[k]))
+            continue;
+        return big ? 0 : cbf_cut_record_line((const char *)text, n, want);
+    }
+    return 0;
+}
+
+int cbf_tool_encode_judge(const char *name, const uint8_t *text, size_t n, const uint8_t *cbf, size_t len, int profile,
+                          const cbf_tool_sink *sink)
+{
+    const char *file = cbf_tool_name(name);
+    cbf_options opt;
+    char *said;
+    size_t cap;
+    unsigned long line;
+    out_begin(sink);
+    memset(&opt, 0, sizeof opt);
+    opt.profile = profile;
+    refused = 0;
+    out_of_memory = 0;
+    refusal.message = NULL;
+    (void)cbf_validate(cbf, len, &opt, keep_refusal, NULL);
+    if (out_of_memory) {
+        free(refusal.message);
+        refusal.message = NULL;
+        err_printf("cbf-c: %s: out of memory judging the CBF it encodes to\n", file);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!refused)
+        return CBF_TOOL_EXIT_OK;
+    /* EncodeError: "{record N|file}: the result would fail check C: message", at the finding's offset */
+    cap = strlen(refusal.message) + strlen(refusal.check) + 96u;
+    said = (char *)malloc(cap);
+    if (!said) {
+        err_printf("cbf-c: %s: out of memory judging the CBF it encodes to\n", file);
+    } else {
+        if (refusal.record >= 0)
+            (void)snprintf(said, cap, "record %ld: the result would fail check %s: %s", refusal.record, refusal.check,
+                           refusal.message);
+        else
+            (void)snprintf(said, cap, "file: the result would fail check %s: %s", refusal.check, refusal.message);
+        line = said_record_line(said, text, n);
+        if (line)
+            err_printf("cbf-c: %s: line %lu: %s\n", file, line, cbf_quoted(said, CBF_QUOTE_TEXT));
+        else
+            err_printf("cbf-c: %s: offset %lu: %s\n", file, refusal.offset, cbf_quoted(said, CBF_QUOTE_TEXT));
+        free(said);
+    }
+    free(refusal.message);
+    refusal.message = NULL;
+    return CBF_TOOL_EXIT_USAGE;
+}
+
+/* The most deprecated records cbf encode names one by one (cli.py, _warn_deprecated's `most`). */
+#define CBF_TOOL_MOST_DEPRECATION_WARNINGS 10u
+
+static unsigned long ndeprecated;
+static held_finding first_deprecated[CBF_TOOL_MOST_DEPRECATION_WARNINGS]; /* the first in cbf's order */
+static size_t nfirst;
+
+static int is_deprecation(int order) { return strcmp(cbf_tool_check_kinds[order], "deprecated") == 0; }
+
+/* Count each deprecated record; keep the first CBF_TOOL_MOST_DEPRECATION_WARNINGS in cbf's order (memory
+ * bounded however many records a file deprecates). */
+static void keep_deprecated(void *user, const cbf_finding *f)
+{
+    held_finding h;
+    size_t k, len = strlen(f->message) + 1u;
+    char *copy;
+    (void)user;
+    h.order = check_rank(f->check);
+    if (!is_deprecation(h.order))
+        return;
+    ndeprecated++;
+    h.record = f->record;
+    h.error = f->severity == CBF_SEVERITY_ERROR;
+    h.offset = (unsigned long)f->offset;
+    h.check = f->check;
+    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS && finding_cmp(&h, &first_deprecated[nfirst - 1u]) >= 0)
+        return;
+    copy = (char *)malloc(len);
+    if (!copy) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(copy, f->message, len);
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS)
+        free(first_deprecated[--nfirst].message);
+    for (k = nfirst; k > 0 && finding_cmp(&h, &first_deprecated[k - 1u]) < 0; k--)
+        first_deprecated[k] = first_deprecated[k - 1u];
+    first_deprecated[k] = h;
+    first_deprecated[k].message = copy;
+    nfirst++;
+}
+
+void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len, const cbf_tool_sink *sink)
+{
+    const char *label;
+    cbf_options opt;
+    size_t k;
+    int any = 0;
+    for (k = 0; k < (size_t)CBF_CHECK__COUNT && !any; k++)
+        any = is_deprecation((int)k);
+    if (!any) /* the spec deprecates nothing: no record to warn for, and no validation to pay */
+        return;
+    out_begin(sink);
+    memset(&opt, 0, sizeof opt);
+    opt.profile = CBF_TOOL_DEFAULT_PROFILE; /* as cbf: validate's findings under its default profile */
+    nfirst = 0;
+    ndeprecated = 0;
+    out_of_memory = 0;
+    (void)cbf_validate(cbf, len, &opt, keep_deprecated, NULL);
+    label = cbf_tool_name(output);
+    for (k = 0; k < nfirst; k++) {
+        err_printf("cbf-c: warning: %s: record %ld at offset %lu: %s (check %s, %s)\n", label,
+                   first_deprecated[k].record, first_deprecated[k].offset,
+                   cbf_quoted(first_deprecated[k].message, CBF_QUOTE_TEXT), first_deprecated[k].check,
+                   first_deprecated[k].error ? "error" : "warning");
+        free(first_deprecated[k].message);
+    }
+    nfirst = 0;
+    if (ndeprecated > (unsigned long)k)
+        err_printf("cbf-c: warning: %s: %lu more deprecated record(s)\n", label, ndeprecated - (unsigned long)k);
+}
 /* ==== END tools/engine.c ==== */
-#line 2950 "cbf_tools.h"
+#line 3159 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif

@@ -130,6 +130,10 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
  * version is refused with its line. */
 long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
                        cbf_cut_error *err);
+/** The line of CUT text[0..n) that holds record `record` (from 0: the lines that are not empty and not a
+ * header, header_ext, check_sum, version or field line), as cbf encode names the record of a file it
+ * refuses (cli.py, _cut_line_of); 0 when the text holds fewer records. */
+unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long record);
 
 /** Run every check of the spec; each finding goes to fn. Returns the number
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */

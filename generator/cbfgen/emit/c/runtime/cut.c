@@ -911,3 +911,23 @@ long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uin
         return rc;
     return len;
 }
+
+unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long record)
+{
+    cbf__cutp c;
+    size_t at = 0;
+    unsigned long seen = 0;
+    if (!text)
+        return 0;
+    memset(&c, 0, sizeof c);
+    c.t = text;
+    while (cbf__cut_line(&c, n, &at)) {
+        if (c.kwlen == 0 || cbf__cut_kw(&c, cbf__cut_header, 1) || cbf__cut_kw(&c, cbf__cut_header_ext, 1)
+            || cbf__cut_kw(&c, cbf__cut_checksum, 1) || cbf__cut_kw(&c, cbf__cut_version, 1)
+            || cbf__cut_kw(&c, cbf__cut_field, 1))
+            continue; /* cbf's _cut_line_of: every word read in the keyword case */
+        if (seen++ == record)
+            return c.line;
+    }
+    return 0;
+}

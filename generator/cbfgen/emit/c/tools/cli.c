@@ -322,10 +322,16 @@ static int encode_one(const char *path, const encode_options *o)
                 "numbers, count or checksums to keep\n", cbf_tool_name(path));
     else {
         len = cbf_tool_cut_buffer(path, text, (size_t)n, o->version, o->profile, &cbf, &std_sink);
+        /* the result validates under the profile, or is refused (cbf's writer.encode), --check too */
+        if (len >= 0 && cbf_tool_encode_judge(path, text, (size_t)n, cbf, (size_t)len, o->profile, &std_sink)
+                            != CBF_TOOL_EXIT_OK)
+            len = -1;
         if (len >= 0 && o->output && !cbf_tool_write_file(o->output, cbf, (size_t)len, why, sizeof why)) {
             fprintf(stderr, "cbf-c: %s\n", why);
             len = -1;
         }
+        if (len >= 0 && o->output) /* after writing, as cbf: a deprecated record is a warning, exit 0 */
+            cbf_tool_encode_warnings(o->output, cbf, (size_t)len, &std_sink);
     }
     free(text);
     free(cbf);

@@ -455,3 +455,195 @@ long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int ve
     }
     return len;
 }
+
+/* ---- cbf encode's judgement of the file it made, and its warnings (cli.py: _encode_one, writer.encode,
+ * _cut_line_of, _warn_deprecated). Both are driven by the checks' kinds (cbf_tool_check_kinds): no
+ * command or check is named here. ---- */
+
+/* Whether cbf encode refuses a result with this finding: an error, or a finding of a check of kind
+ * string_ascii (a writer writes strings in ASCII, N4). */
+static int refuses(const cbf_finding *f, int order)
+{
+    return f->severity == CBF_SEVERITY_ERROR || strcmp(cbf_tool_check_kinds[order], "string_ascii") == 0;
+}
+
+static held_finding refusal; /* the first refusing finding in cbf's order (finding_cmp) */
+static int refused;
+
+static void keep_refusal(void *user, const cbf_finding *f)
+{
+    held_finding h;
+    size_t len = strlen(f->message) + 1u;
+    char *copy;
+    (void)user;
+    h.order = check_rank(f->check);
+    if (!refuses(f, h.order))
+        return;
+    h.record = f->record;
+    h.error = f->severity == CBF_SEVERITY_ERROR;
+    h.offset = (unsigned long)f->offset;
+    h.check = f->check;
+    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
+    if (refused && finding_cmp(&h, &refusal) >= 0)
+        return;
+    copy = (char *)malloc(len);
+    if (!copy) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(copy, f->message, len);
+    free(refusal.message);
+    refusal = h;
+    refusal.message = copy;
+    refused = 1;
+}
+
+static int word_byte(unsigned char c)
+{
+    return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c >= 0x80u;
+}
+
+/* The CUT line of the record what cbf says names ("record N", the first such word: cbf's _cut_line_of),
+ * 0 when it names none or the text holds no such record. */
+static unsigned long said_record_line(const char *said, const uint8_t *text, size_t n)
+{
+    static const char word[] = "record ";
+    const char *p;
+    for (p = strstr(said, word); p; p = strstr(p + 1, word)) {
+        const char *d = p + sizeof word - 1u;
+        unsigned long want = 0;
+        size_t k = 0;
+        int big = 0;
+        if (p > said && word_byte((unsigned char)p[-1]))
+            continue;
+        for (; d[k] >= '0' && d[k] <= '9'; k++) {
+            if (want > (ULONG_MAX - 9u) / 10u)
+                big = 1;
+            else
+                want = want * 10u + (unsigned long)(d[k] - '0');
+        }
+        if (!k || word_byte((unsigned char)d[k]))
+            continue;
+        return big ? 0 : cbf_cut_record_line((const char *)text, n, want);
+    }
+    return 0;
+}
+
+int cbf_tool_encode_judge(const char *name, const uint8_t *text, size_t n, const uint8_t *cbf, size_t len, int profile,
+                          const cbf_tool_sink *sink)
+{
+    const char *file = cbf_tool_name(name);
+    cbf_options opt;
+    char *said;
+    size_t cap;
+    unsigned long line;
+    out_begin(sink);
+    memset(&opt, 0, sizeof opt);
+    opt.profile = profile;
+    refused = 0;
+    out_of_memory = 0;
+    refusal.message = NULL;
+    (void)cbf_validate(cbf, len, &opt, keep_refusal, NULL);
+    if (out_of_memory) {
+        free(refusal.message);
+        refusal.message = NULL;
+        err_printf("cbf-c: %s: out of memory judging the CBF it encodes to\n", file);
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!refused)
+        return CBF_TOOL_EXIT_OK;
+    /* EncodeError: "{record N|file}: the result would fail check C: message", at the finding's offset */
+    cap = strlen(refusal.message) + strlen(refusal.check) + 96u;
+    said = (char *)malloc(cap);
+    if (!said) {
+        err_printf("cbf-c: %s: out of memory judging the CBF it encodes to\n", file);
+    } else {
+        if (refusal.record >= 0)
+            (void)snprintf(said, cap, "record %ld: the result would fail check %s: %s", refusal.record, refusal.check,
+                           refusal.message);
+        else
+            (void)snprintf(said, cap, "file: the result would fail check %s: %s", refusal.check, refusal.message);
+        line = said_record_line(said, text, n);
+        if (line)
+            err_printf("cbf-c: %s: line %lu: %s\n", file, line, cbf_quoted(said, CBF_QUOTE_TEXT));
+        else
+            err_printf("cbf-c: %s: offset %lu: %s\n", file, refusal.offset, cbf_quoted(said, CBF_QUOTE_TEXT));
+        free(said);
+    }
+    free(refusal.message);
+    refusal.message = NULL;
+    return CBF_TOOL_EXIT_USAGE;
+}
+
+/* The most deprecated records cbf encode names one by one (cli.py, _warn_deprecated's `most`). */
+#define CBF_TOOL_MOST_DEPRECATION_WARNINGS 10u
+
+static unsigned long ndeprecated;
+static held_finding first_deprecated[CBF_TOOL_MOST_DEPRECATION_WARNINGS]; /* the first in cbf's order */
+static size_t nfirst;
+
+static int is_deprecation(int order) { return strcmp(cbf_tool_check_kinds[order], "deprecated") == 0; }
+
+/* Count each deprecated record; keep the first CBF_TOOL_MOST_DEPRECATION_WARNINGS in cbf's order (memory
+ * bounded however many records a file deprecates). */
+static void keep_deprecated(void *user, const cbf_finding *f)
+{
+    held_finding h;
+    size_t k, len = strlen(f->message) + 1u;
+    char *copy;
+    (void)user;
+    h.order = check_rank(f->check);
+    if (!is_deprecation(h.order))
+        return;
+    ndeprecated++;
+    h.record = f->record;
+    h.error = f->severity == CBF_SEVERITY_ERROR;
+    h.offset = (unsigned long)f->offset;
+    h.check = f->check;
+    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS && finding_cmp(&h, &first_deprecated[nfirst - 1u]) >= 0)
+        return;
+    copy = (char *)malloc(len);
+    if (!copy) {
+        out_of_memory = 1;
+        return;
+    }
+    memcpy(copy, f->message, len);
+    if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS)
+        free(first_deprecated[--nfirst].message);
+    for (k = nfirst; k > 0 && finding_cmp(&h, &first_deprecated[k - 1u]) < 0; k--)
+        first_deprecated[k] = first_deprecated[k - 1u];
+    first_deprecated[k] = h;
+    first_deprecated[k].message = copy;
+    nfirst++;
+}
+
+void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len, const cbf_tool_sink *sink)
+{
+    const char *label;
+    cbf_options opt;
+    size_t k;
+    int any = 0;
+    for (k = 0; k < (size_t)CBF_CHECK__COUNT && !any; k++)
+        any = is_deprecation((int)k);
+    if (!any) /* the spec deprecates nothing: no record to warn for, and no validation to pay */
+        return;
+    out_begin(sink);
+    memset(&opt, 0, sizeof opt);
+    opt.profile = CBF_TOOL_DEFAULT_PROFILE; /* as cbf: validate's findings under its default profile */
+    nfirst = 0;
+    ndeprecated = 0;
+    out_of_memory = 0;
+    (void)cbf_validate(cbf, len, &opt, keep_deprecated, NULL);
+    label = cbf_tool_name(output);
+    for (k = 0; k < nfirst; k++) {
+        err_printf("cbf-c: warning: %s: record %ld at offset %lu: %s (check %s, %s)\n", label,
+                   first_deprecated[k].record, first_deprecated[k].offset,
+                   cbf_quoted(first_deprecated[k].message, CBF_QUOTE_TEXT), first_deprecated[k].check,
+                   first_deprecated[k].error ? "error" : "warning");
+        free(first_deprecated[k].message);
+    }
+    nfirst = 0;
+    if (ndeprecated > (unsigned long)k)
+        err_printf("cbf-c: warning: %s: %lu more deprecated record(s)\n", label, ndeprecated - (unsigned long)k);
+}

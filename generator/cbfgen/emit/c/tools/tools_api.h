@@ -59,6 +59,18 @@ int cbf_tool_is_cut(const uint8_t *buf, size_t n);
  * wrong. */
 long cbf_tool_cut_buffer(const char *name, const uint8_t *text, size_t n, int version, int profile, uint8_t **out,
                          const cbf_tool_sink *sink);
+/** cbf encode's judgement of cbf[0..len), the CBF that CUT text[0..n) (the file name) encoded to under profile
+ * (cbf_tool_cut_buffer): a writer makes files that validate, so the first finding in cbf's order that is an
+ * error or of a string_ascii check refuses it: one line on sink->err naming the file, the CUT line of the
+ * record concerned (else the finding's offset) and the check, as cbf's; CBF_TOOL_EXIT_USAGE. Else
+ * CBF_TOOL_EXIT_OK and nothing printed. */
+int cbf_tool_encode_judge(const char *name, const uint8_t *text, size_t n, const uint8_t *cbf, size_t len, int profile,
+                          const cbf_tool_sink *sink);
+/** cbf encode's warnings once cbf[0..len) is written to output (its name): one line on sink->err for each
+ * record of a command or layout the file's version deprecates (the findings of the spec's checks of kind
+ * deprecated, under the default profile, in cbf's order), at most ten, then one line counting the rest.
+ * Nothing when the spec deprecates nothing. The exit status is not changed by them. */
+void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len, const cbf_tool_sink *sink);
 
 /** Option files (a cutter table, 6.1.2; a machine file): text[0..n) read by the rules cbf reads them by
  * (name: the file's name, whose extension says CSV, JSON or YAML). 1 and opt's cutters (or machine) set to
