@@ -6567,45 +6567,28 @@ static int cbf__cut_same(const char *a, const char *b, size_t bn)
     return a[bn] == 0;
 }
 
-/* A number of the spec's float_pattern (an optional minus, digits, an optional point and digits), rounded
- * once to the binary32 nearest its decimal value (ties to even; cbf.floats.read_decimal): its elem bytes
- * written to dst. Beyond the binary32 range it is refused. */
-static int cbf__cut_number(cbf__cutp *c, const char *name, unsigned elem, uint8_t *dst)
+/* The refusal of a number's place that holds no number: what is there instead, or that nothing is. */
+static int cbf__cut_not_number(cbf__cutp *c, const char *name)
 {
-    char show[96], buf[CBF__CUT_INT_DIGITS + CBF__CUT_FRAC_DIGITS + 8u];
-    size_t s, p, d0, d1, f0, f1, k, at = 0;
-    cbf__cut_skip(c);
-    s = p = c->pos;
-    if (p < c->le && c->t[p] == '-')
-        p++;
-    d0 = p;
-    while (p < c->le && cbf__cut_digit(c->t[p]))
-        p++;
-    d1 = p;
-    if (d1 == d0) {
-        size_t e = c->pos, ws;
-        int label = !cbf__cut_same(name, c->t + c->kw, c->kwlen); /* not "speed: speed: ..." */
-        while (e < c->le && c->t[e] != ' ')
-            e++;
-        ws = e - c->pos;
-        if (ws)
-            return cbf__cut_fail(c, "%s%s%s is not a number", label ? name : "", label ? ": " : "",
-                                 cbf__cut_show(show, sizeof show, c->t + c->pos, ws));
-        return cbf__cut_fail(c, "%s%sa number is missing", label ? name : "", label ? ": " : "");
-    }
-    f0 = f1 = p;
-    if (p < c->le && c->t[p] == '.') {
-        f0 = ++p;
-        while (p < c->le && cbf__cut_digit(c->t[p]))
-            p++;
-        f1 = p;
-    }
-    c->pos = p;
-    while (d0 < d1 && c->t[d0] == '0')
-        d0++;
-    if (d1 - d0 > CBF__CUT_INT_DIGITS)
-        return cbf__cut_fail(c, "%s: %s is outside the binary32 range", name, cbf__cut_show(show, sizeof show, c->t + s, p - s));
-    if (c->t[s] == '-')
+    char show[96];
+    size_t e = c->pos, ws;
+    int label = !cbf__cut_same(name, c->t + c->kw, c->kwlen); /* not "speed: speed: ..." */
+    while (e < c->le && c->t[e] != ' ')
+        e++;
+    ws = e - c->pos;
+    if (ws)
+        return cbf__cut_fail(c, "%s%s%s is not a number", label ? name : "", label ? ": " : "",
+                             cbf__cut_show(show, sizeof show, c->t + c->pos, ws));
+    return cbf__cut_fail(c, "%s%sa number is missing", label ? name : "", label ? ": " : "");
+}
+
+/* The number's decimal text for strtof/strtod into buf: its sign, "0", its integer digits d0..d1 (leading
+ * zeros dropped), ".", its first CBF__CUT_FRAC_DIGITS fraction digits f0..f1, and a 1 standing for the digits
+ * past those when one of them is not zero: at most CBF__CUT_INT_DIGITS + CBF__CUT_FRAC_DIGITS + 5 chars. */
+static void cbf__cut_decimal(const cbf__cutp *c, int neg, size_t d0, size_t d1, size_t f0, size_t f1, char *buf)
+{
+    size_t k, at = 0;
+    if (neg)
         buf[at++] = '-';
     buf[at++] = '0';
     for (k = d0; k < d1; k++)
@@ -6619,6 +6602,14 @@ static int cbf__cut_number(cbf__cutp *c, const char *name, unsigned elem, uint8_
             break;
         }
     buf[at] = 0;
+}
+
+/* The decimal text buf rounded once to elem bytes (binary32 or binary64) into dst; the number's text
+ * c->t[s..p) named in the refusal when it rounds beyond the range. */
+static int cbf__cut_round(cbf__cutp *c, const char *name, unsigned elem, const char *buf, size_t s, size_t p,
+                          uint8_t *dst)
+{
+    char show[96];
     if (elem == 4u) {
         uint32_t bits = cbf__f4_bits(strtof(buf, NULL));
         if ((bits & 0x7FFFFFFFu) == 0x7F800000u)
@@ -6633,6 +6624,43 @@ static int cbf__cut_number(cbf__cutp *c, const char *name, unsigned elem, uint8_
         cbf__put_u64(dst, bits);
     }
     return CBF_OK;
+}
+
+/* The end of a run of digits from p (p itself when there is none). */
+static size_t cbf__cut_digits(const cbf__cutp *c, size_t p)
+{
+    while (p < c->le && cbf__cut_digit(c->t[p]))
+        p++;
+    return p;
+}
+
+/* A number of the spec's float_pattern (an optional minus, digits, an optional point and digits), rounded
+ * once to the binary32 nearest its decimal value (ties to even; cbf.floats.read_decimal): its elem bytes
+ * written to dst. Beyond the binary32 range it is refused. */
+static int cbf__cut_number(cbf__cutp *c, const char *name, unsigned elem, uint8_t *dst)
+{
+    char show[96], buf[CBF__CUT_INT_DIGITS + CBF__CUT_FRAC_DIGITS + 8u];
+    size_t s, p, d0, d1, f0, f1;
+    cbf__cut_skip(c);
+    s = p = c->pos;
+    if (p < c->le && c->t[p] == '-')
+        p++;
+    d0 = p;
+    d1 = p = cbf__cut_digits(c, p);
+    if (d1 == d0)
+        return cbf__cut_not_number(c, name);
+    f0 = f1 = p;
+    if (p < c->le && c->t[p] == '.') {
+        f0 = ++p;
+        f1 = p = cbf__cut_digits(c, p);
+    }
+    c->pos = p;
+    while (d0 < d1 && c->t[d0] == '0')
+        d0++;
+    if (d1 - d0 > CBF__CUT_INT_DIGITS)
+        return cbf__cut_fail(c, "%s: %s is outside the binary32 range", name, cbf__cut_show(show, sizeof show, c->t + s, p - s));
+    cbf__cut_decimal(c, c->t[s] == '-', d0, d1, f0, f1, buf);
+    return cbf__cut_round(c, name, elem, buf, s, p, dst);
 }
 
 /* An integer of elem bytes (sint: an optional minus), ASCII digits within the field's range. */
@@ -6868,6 +6896,8 @@ static long cbf__cut_bad_string(const cbf_field_info *f, const uint8_t *base)
 /* The reading's state beyond the line: the header as the text sets it, which line set each field. */
 typedef struct cbf__cutdoc {
     int version, layout, profile;
+    unsigned major, minor;                           /* the version as the text names it */
+    unsigned long version_line;                      /* its version line (0: none) */
     uint8_t header[CBF_HEADER_SIZE];
     unsigned long set_on[CBF__CUT_MAX_HEADER_FIELDS]; /* header field -> the line that set it (0: none) */
     unsigned long sum_line;                          /* the check_sum line (0: none) */
@@ -7132,19 +7162,180 @@ long cbf_cut_encode(const char *text, size_t n, int profile, uint8_t *out, size_
     return cbf_cut_encode_as(text, n, CBF_V__UNKNOWN, profile, out, cap, err);
 }
 
+/* The header the text starts from: the version asked for (or the default) unless a version line names
+ * one, its header layout, the header's fields as cbf_header_init fills them, the version fields as the text
+ * names them; the writer begun on out (*full: out cannot hold a header). */
+static int cbf__cut_begin(cbf__cutp *c, cbf__cutdoc *d, size_t n, int version, cbf_writer *w, uint8_t *out, size_t cap,
+                          int *full)
+{
+    cbf_header h;
+    const cbf_field_info *hf;
+    size_t i = version == CBF_V__UNKNOWN ? (size_t)CBF_DEFAULT_VERSION : (size_t)version; /* without a version line */
+    size_t nf;
+    int rc;
+    d->major = (unsigned)cbf__versions[i].major;
+    d->minor = cbf__versions[i].minor < 0 ? 0u : (unsigned)cbf__versions[i].minor;
+    if ((rc = cbf__cut_version_line(c, n, version, &d->major, &d->minor, &d->version_line)) != CBF_OK)
+        return rc;
+    d->version = cbf_version_find(d->major, d->minor);
+    if (d->version == CBF_V__UNKNOWN)
+        return cbf__cut_say(c->err, d->version_line ? d->version_line : 1u, 0, "version %u.%u is not a version of this spec",
+                            d->major, d->minor);
+    d->layout = cbf_version_header_layout(d->version);
+    (void)cbf_header_init(&h, d->version);
+    h.major = d->major;
+    h.minor = d->minor;
+    if (cbf_header_encode(&h, d->header, sizeof d->header) < 0)
+        return CBF_ERR_ARGUMENT;
+    nf = cbf_header_fields(d->layout, &hf);
+    for (i = 0; i < nf; i++) /* the version as the text names it */
+        if (hf[i].role == CBF_ROLE_VERSION_MAJOR || hf[i].role == CBF_ROLE_VERSION_MINOR)
+            cbf__put_u(d->header + hf[i].offset, hf[i].role == CBF_ROLE_VERSION_MAJOR ? d->major : d->minor, hf[i].elem);
+    (void)cbf_header_decode(d->header, sizeof d->header, &h);
+    rc = cbf_encode_begin(w, out, cap, &h);
+    if (rc == CBF_ERR_BUFFER)
+        *full = 1;
+    else if (rc != CBF_OK)
+        return rc;
+    return CBF_OK;
+}
+
+/* A header line (header, header_ext, check_sum, cbf_field) into d: 1 when the line is one (CBF_ERR_SYNTAX
+ * when it is refused), 0 when it is not. */
+static int cbf__cut_header_line(cbf__cutp *c, cbf__cutdoc *d)
+{
+    int rc;
+    if (cbf__cut_kw(c, cbf__cut_header, 1))
+        rc = cbf__cut_descriptor(c, d, CBF_ROLE_IMPLANT_DESCRIPTOR);
+    else if (cbf__cut_kw(c, cbf__cut_header_ext, 1))
+        rc = cbf__cut_descriptor(c, d, CBF_ROLE_CONFIGURATION_DESCRIPTOR);
+    else if (cbf__cut_kw(c, cbf__cut_checksum, 1))
+        rc = cbf__cut_sum(c, d);
+    else if (cbf__cut_kw(c, cbf__cut_field, 0))
+        rc = cbf__cut_set_field(c, d);
+    else
+        return 0;
+    return rc ? CBF_ERR_SYNTAX : 1;
+}
+
+/* A record line (cbf_record, or a command's keyword and its arguments): its code, reserved byte and nb
+ * argument bytes; CBF_OK or a refusal. */
+static int cbf__cut_record_line(cbf__cutp *c, const cbf__cutdoc *d, int *code, unsigned *reserved, uint8_t *args,
+                                size_t *nb)
+{
+    char show[96];
+    int lay;
+    if (cbf__cut_kw(c, cbf__cut_record, 0))
+        return cbf__cut_raw(c, code, reserved, args, nb) ? CBF_ERR_SYNTAX : CBF_OK;
+    *code = cbf__cut_command(c);
+    if (*code < 0)
+        return cbf__cut_say(c->err, c->line, 0, "unknown keyword %s", cbf__cut_show(show, sizeof show, c->t + c->kw, c->kwlen));
+    lay = cbf__cut_layout(cbf__cmd_index(*code), d->version, d->profile);
+    if (lay < 0)
+        return cbf__cut_fail(c, "not available in version %s", cbf_version_name(d->version));
+    return cbf__cut_args(c, lay, args, nb) ? CBF_ERR_SYNTAX : CBF_OK;
+}
+
+/* The writing: the writer, how many records the text holds, and the first that cannot be written. */
+typedef struct cbf__cutw {
+    cbf_writer w;
+    uint8_t *out;
+    int full;                /* out is too small: the text is still read to its end */
+    unsigned long records;   /* the records read */
+    unsigned long bad_line;  /* the line of the first record that cannot be written (0: none) */
+    char *why;               /* why it cannot, why_cap bytes */
+    size_t why_cap;
+} cbf__cutw;
+
+/* A record read into the writing (written while every record before could be, and out holds it);
+ * CBF_OK, or the refusal of one too many records. */
+static int cbf__cut_put(const cbf__cutp *c, const cbf__cutdoc *d, cbf__cutw *o, int code, unsigned reserved,
+                        const uint8_t *args, size_t nb)
+{
+    const cbf_field_info *f;
+    int rc;
+    if (++o->records > (unsigned long)CBF_LIMIT_MAX_COMMANDS)
+        return cbf__cut_say(c->err, c->line, 0, "%lu commands, at most %lu", o->records, (unsigned long)CBF_LIMIT_MAX_COMMANDS);
+    if (o->bad_line)
+        return CBF_OK; /* a record before cannot be written: the text is still read to its end */
+    if (cbf__cut_unwritable(d, o->records - 1u, code, args, nb, o->why, o->why_cap)) {
+        o->bad_line = c->line;
+        return CBF_OK;
+    }
+    if (o->full)
+        return CBF_OK;
+    rc = cbf_encode_record(&o->w, code, args, nb);
+    if (rc == CBF_ERR_BUFFER) {
+        o->full = 1;
+    } else if (rc != CBF_OK) {
+        (void)snprintf(o->why, o->why_cap, "record %lu: cannot be written (%s)", o->records - 1u, cbf_strerror(rc));
+        o->bad_line = c->line;
+    } else if (reserved && (f = cbf__record_field_by_role(CBF_ROLE_RESERVED)) != NULL) {
+        /* the head's reserved byte as the text gives it (cbf_record) */
+        cbf__put_u(o->out + o->w.records_end - nb - CBF_RECORD_HEAD_SIZE + f->offset, reserved, f->elem);
+    }
+    return CBF_OK;
+}
+
+/* A version the text names but that is not written: refused, naming the writable ones; else CBF_OK. */
+static int cbf__cut_writable(const cbf__cutdoc *d, cbf_cut_error *err)
+{
+    char list[128];
+    size_t k, used = 0;
+    if (cbf_version_writable(d->version))
+        return CBF_OK;
+    list[0] = 0;
+    for (k = 0; k < (size_t)CBF__NVERSIONS; k++)
+        if (cbf_version_writable((int)k) && used < sizeof list)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", used ? ", " : "", cbf_version_name((int)k));
+    return cbf__cut_say(err, d->version_line ? d->version_line : 1u, 0, "header: version %u.%u is not writable (writable: %s)",
+                        d->major, d->minor, list);
+}
+
+/* A header string field the format does not carry (the line that set it named): refused; else CBF_OK. */
+static int cbf__cut_header_strings(const cbf__cutdoc *d, cbf_cut_error *err)
+{
+    const cbf_field_info *hf;
+    size_t nf = cbf_header_fields(d->layout, &hf), i;
+    for (i = 0; i < nf; i++) {
+        long bad = cbf__cut_bad_string(&hf[i], d->header);
+        if (bad >= 0)
+            return cbf__cut_say(err, i < CBF__CUT_MAX_HEADER_FIELDS && d->set_on[i] ? d->set_on[i] : 1u, 0,
+                                "header: the result would fail check %s: %s holds non-ASCII byte 0x%02X at position %ld "
+                                "(strings are printable ASCII, padded)", cbf__cut_check_of(CBF__KIND_STRING_ASCII),
+                                hf[i].name, (unsigned)d->header[hf[i].offset + (size_t)bad], bad);
+    }
+    return CBF_OK;
+}
+
+/* The text read to its end: the file it writes (its length), or why it does not. */
+static long cbf__cut_finish(const cbf__cutdoc *d, cbf__cutw *o, cbf_cut_error *err)
+{
+    int rc;
+    long len;
+    if ((rc = cbf__cut_writable(d, err)) != CBF_OK || (rc = cbf__cut_header_strings(d, err)) != CBF_OK)
+        return rc;
+    if (o->bad_line)
+        return cbf__cut_say(err, o->bad_line, 0, "%s", o->why);
+    if (o->full)
+        return CBF_ERR_BUFFER;
+    memcpy(o->out, d->header, CBF_HEADER_SIZE); /* the header fields as the text set them; the rest is filled */
+    if ((rc = cbf__cut_fill(&o->w, d->layout, d->profile)) != CBF_OK)
+        return cbf__cut_say(err, 0, 0, "the text does not encode (%s)", cbf_strerror(rc));
+    len = (long)o->w.len;
+    if (d->sum_line && (rc = cbf__cut_sum_agrees(d, o->out, (size_t)len, err)) != CBF_OK)
+        return rc;
+    return len;
+}
+
 long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uint8_t *out, size_t cap,
                        cbf_cut_error *err)
 {
     cbf__cutp c;
     cbf__cutdoc d;
-    cbf_header h;
-    cbf_writer w;
-    const cbf_field_info *hf;
-    size_t at = 0, nf, i;
-    unsigned major, minor;
-    unsigned long vline, records = 0, bad_line = 0;
-    int rc, full = 0;
-    long len;
+    cbf__cutw o;
+    size_t at = 0;
+    int rc;
     uint8_t args[CBF_LIMIT_MAX_ARG_SIZE + 8u];
     char why[sizeof err->message];
     if (!err || (!text && n) || !out || profile < 0 || profile >= CBF_PROFILE__COUNT || version < CBF_V__UNKNOWN
@@ -7153,34 +7344,14 @@ long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uin
     memset(err, 0, sizeof *err);
     memset(&d, 0, sizeof d);
     memset(&c, 0, sizeof c);
+    memset(&o, 0, sizeof o);
     c.t = text;
     c.err = err;
     d.profile = profile;
-    if ((rc = cbf__cut_chars(text, n, err)) != CBF_OK)
-        return rc;
-    i = version == CBF_V__UNKNOWN ? (size_t)CBF_DEFAULT_VERSION : (size_t)version; /* without a version line */
-    major = (unsigned)cbf__versions[i].major;
-    minor = cbf__versions[i].minor < 0 ? 0u : (unsigned)cbf__versions[i].minor;
-    if ((rc = cbf__cut_version_line(&c, n, version, &major, &minor, &vline)) != CBF_OK)
-        return rc;
-    d.version = cbf_version_find(major, minor);
-    if (d.version == CBF_V__UNKNOWN)
-        return cbf__cut_say(err, vline ? vline : 1u, 0, "version %u.%u is not a version of this spec", major, minor);
-    d.layout = cbf_version_header_layout(d.version);
-    (void)cbf_header_init(&h, d.version);
-    h.major = major;
-    h.minor = minor;
-    if (cbf_header_encode(&h, d.header, sizeof d.header) < 0)
-        return CBF_ERR_ARGUMENT;
-    nf = cbf_header_fields(d.layout, &hf);
-    for (i = 0; i < nf; i++) /* the version as the text names it */
-        if (hf[i].role == CBF_ROLE_VERSION_MAJOR || hf[i].role == CBF_ROLE_VERSION_MINOR)
-            cbf__put_u(d.header + hf[i].offset, hf[i].role == CBF_ROLE_VERSION_MAJOR ? major : minor, hf[i].elem);
-    (void)cbf_header_decode(d.header, sizeof d.header, &h);
-    rc = cbf_encode_begin(&w, out, cap, &h);
-    if (rc == CBF_ERR_BUFFER)
-        full = 1;
-    else if (rc != CBF_OK)
+    o.out = out;
+    o.why = why;
+    o.why_cap = sizeof why;
+    if ((rc = cbf__cut_chars(text, n, err)) != CBF_OK || (rc = cbf__cut_begin(&c, &d, n, version, &o.w, out, cap, &o.full)) != CBF_OK)
         return rc;
     why[0] = 0;
     c.line = 0;
@@ -7190,88 +7361,16 @@ long cbf_cut_encode_as(const char *text, size_t n, int version, int profile, uin
         size_t nb = 0;
         if (c.kwlen == 0 || cbf__cut_kw(&c, cbf__cut_version, 0))
             continue;
-        if (cbf__cut_kw(&c, cbf__cut_header, 1) || cbf__cut_kw(&c, cbf__cut_header_ext, 1)) {
-            if (cbf__cut_descriptor(&c, &d, cbf__cut_kw(&c, cbf__cut_header, 1) ? CBF_ROLE_IMPLANT_DESCRIPTOR
-                                                                                 : CBF_ROLE_CONFIGURATION_DESCRIPTOR))
-                return CBF_ERR_SYNTAX;
+        if ((rc = cbf__cut_header_line(&c, &d)) != 0) {
+            if (rc < 0)
+                return rc;
             continue;
         }
-        if (cbf__cut_kw(&c, cbf__cut_checksum, 1)) {
-            if (cbf__cut_sum(&c, &d))
-                return CBF_ERR_SYNTAX;
-            continue;
-        }
-        if (cbf__cut_kw(&c, cbf__cut_field, 0)) {
-            if (cbf__cut_set_field(&c, &d))
-                return CBF_ERR_SYNTAX;
-            continue;
-        }
-        if (cbf__cut_kw(&c, cbf__cut_record, 0)) {
-            if (cbf__cut_raw(&c, &code, &reserved, args, &nb))
-                return CBF_ERR_SYNTAX;
-        } else {
-            char show[96];
-            int lay;
-            code = cbf__cut_command(&c);
-            if (code < 0)
-                return cbf__cut_say(err, c.line, 0, "unknown keyword %s", cbf__cut_show(show, sizeof show, text + c.kw, c.kwlen));
-            lay = cbf__cut_layout(cbf__cmd_index(code), d.version, profile);
-            if (lay < 0)
-                return cbf__cut_fail(&c, "not available in version %s", cbf_version_name(d.version));
-            if (cbf__cut_args(&c, lay, args, &nb))
-                return CBF_ERR_SYNTAX;
-        }
-        if (++records > (unsigned long)CBF_LIMIT_MAX_COMMANDS)
-            return cbf__cut_say(err, c.line, 0, "%lu commands, at most %lu", records, (unsigned long)CBF_LIMIT_MAX_COMMANDS);
-        if (bad_line)
-            continue; /* a record before cannot be written: the text is still read to its end */
-        if (cbf__cut_unwritable(&d, records - 1u, code, args, nb, why, sizeof why)) {
-            bad_line = c.line;
-            continue;
-        }
-        if (full)
-            continue;
-        rc = cbf_encode_record(&w, code, args, nb);
-        if (rc == CBF_ERR_BUFFER) {
-            full = 1;
-        } else if (rc != CBF_OK) {
-            (void)snprintf(why, sizeof why, "record %lu: cannot be written (%s)", records - 1u, cbf_strerror(rc));
-            bad_line = c.line;
-        } else if (reserved) { /* the head's reserved byte as the text gives it (cbf_record) */
-            const cbf_field_info *f = cbf__record_field_by_role(CBF_ROLE_RESERVED);
-            if (f)
-                cbf__put_u(out + w.records_end - nb - CBF_RECORD_HEAD_SIZE + f->offset, reserved, f->elem);
-        }
+        if ((rc = cbf__cut_record_line(&c, &d, &code, &reserved, args, &nb)) != CBF_OK
+            || (rc = cbf__cut_put(&c, &d, &o, code, reserved, args, nb)) != CBF_OK)
+            return rc;
     }
-    if (!cbf_version_writable(d.version)) {
-        char list[128];
-        size_t k, used = 0;
-        list[0] = 0;
-        for (k = 0; k < (size_t)CBF__NVERSIONS; k++)
-            if (cbf_version_writable((int)k) && used < sizeof list)
-                used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", used ? ", " : "", cbf_version_name((int)k));
-        return cbf__cut_say(err, vline ? vline : 1u, 0, "header: version %u.%u is not writable (writable: %s)", major,
-                            minor, list);
-    }
-    for (i = 0; i < nf; i++) {
-        long bad = cbf__cut_bad_string(&hf[i], d.header);
-        if (bad >= 0)
-            return cbf__cut_say(err, i < CBF__CUT_MAX_HEADER_FIELDS && d.set_on[i] ? d.set_on[i] : 1u, 0,
-                                "header: the result would fail check %s: %s holds non-ASCII byte 0x%02X at position %ld "
-                                "(strings are printable ASCII, padded)", cbf__cut_check_of(CBF__KIND_STRING_ASCII),
-                                hf[i].name, (unsigned)d.header[hf[i].offset + (size_t)bad], bad);
-    }
-    if (bad_line)
-        return cbf__cut_say(err, bad_line, 0, "%s", why);
-    if (full)
-        return CBF_ERR_BUFFER;
-    memcpy(out, d.header, CBF_HEADER_SIZE); /* the header fields as the text set them; the rest is filled */
-    if ((rc = cbf__cut_fill(&w, d.layout, profile)) != CBF_OK)
-        return cbf__cut_say(err, 0, 0, "the text does not encode (%s)", cbf_strerror(rc));
-    len = (long)w.len;
-    if (d.sum_line && (rc = cbf__cut_sum_agrees(&d, out, (size_t)len, err)) != CBF_OK)
-        return rc;
-    return len;
+    return cbf__cut_finish(&d, &o, err);
 }
 
 unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long record)
@@ -7294,7 +7393,7 @@ unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long reco
     return 0;
 }
 /* ==== END runtime/cut.c ==== */
-#line 7298 "cbf.h"
+#line 7397 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

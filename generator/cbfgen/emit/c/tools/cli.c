@@ -338,6 +338,98 @@ static int encode_one(const char *path, const encode_options *o)
     return len < 0 ? CBF_TOOL_EXIT_USAGE : CBF_TOOL_EXIT_OK;
 }
 
+/* Whether an option of cbf-c encode takes the next argument as its value. */
+static int encode_valued(const char *a)
+{
+    return strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "-o") == 0
+           || strcmp(a, "--output") == 0 || strcmp(a, "--input-format") == 0;
+}
+
+/* An option of cbf-c encode that takes a value, into o: 1, or 0 after one line on stderr. */
+static int encode_value(const char *a, const char *value, encode_options *o)
+{
+    if (strcmp(a, "--profile") == 0) {
+        o->profile = cbf_profile_find(value);
+        if (o->profile < 0)
+            fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(value, CBF_QUOTE_NAME));
+        return o->profile >= 0;
+    }
+    if (strcmp(a, "--version") == 0) {
+        o->version = parse_version(value);
+        return o->version >= 0;
+    }
+    if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+        o->output = value;
+        return 1;
+    }
+    o->json = strcmp(value, "json") == 0 ? 1 : strcmp(value, "cut") == 0 ? 0 : -2; /* --input-format */
+    if (o->json == -2)
+        fprintf(stderr, "cbf-c: --input-format: %s is neither cut nor json\n", cbf_quoted(value, CBF_QUOTE_NAME));
+    return o->json != -2;
+}
+
+/* The arguments of cbf-c encode into o, *check, *files (the files named) and *first (the first of them):
+ * CBF_TOOL_EXIT_OK, or CBF_TOOL_EXIT_USAGE after one line (or the usage) on stderr. */
+static int encode_arguments(int argc, char **argv, encode_options *o, int *check, int *files, const char **first)
+{
+    int i;
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (encode_valued(a)) {
+            if (i + 1 >= argc) {
+                usage();
+                return CBF_TOOL_EXIT_USAGE;
+            }
+            if (!encode_value(a, argv[++i], o))
+                return CBF_TOOL_EXIT_USAGE;
+        } else if (strcmp(a, "--keep-stored") == 0) {
+            o->keep = 1;
+        } else if (strcmp(a, "--check") == 0) {
+            *check = 1;
+        } else if (a[0] == '-' && a[1]) {
+            usage();
+            return CBF_TOOL_EXIT_USAGE;
+        } else if (!(*files)++) {
+            *first = a;
+        }
+    }
+    return CBF_TOOL_EXIT_OK;
+}
+
+/* What the arguments ask is something cbf-c encode does (files, and -o or --check but not both, one file
+ * with -o): CBF_TOOL_EXIT_OK, or CBF_TOOL_EXIT_USAGE after one line on stderr. */
+static int encode_request_ok(int check, int files, const encode_options *o)
+{
+    if (check && o->output) {
+        fprintf(stderr, "cbf-c encode: --check writes nothing: drop -o\n");
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!files || (!check && !o->output)) {
+        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", files ? "-o/--output" : "FILE");
+        usage();
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    if (!check && files > 1) {
+        fprintf(stderr, "cbf-c encode: one FILE with -o; several only with --check\n");
+        return CBF_TOOL_EXIT_USAGE;
+    }
+    return CBF_TOOL_EXIT_OK;
+}
+
+/* cbf-c encode --check: every file, in order; the worst status. */
+static int encode_check(int argc, char **argv, const encode_options *o)
+{
+    int i, status = CBF_TOOL_EXIT_OK;
+    for (i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "--input-format") == 0)
+            i++;
+        else if (!(a[0] == '-' && a[1]) && encode_one(a, o) != CBF_TOOL_EXIT_OK)
+            status = CBF_TOOL_EXIT_USAGE;
+    }
+    return status;
+}
+
 /* cbf-c encode [--profile P] [--version V] [--input-format cut] FILE -o OUT, or --check FILE...: CUT text to
  * the CBF it encodes to, written to OUT (- for standard output) as cbf encode writes it: atomically, every
  * write checked, nothing written on any refusal; with --check each file only encoded, one line for each
@@ -346,75 +438,19 @@ static int encode_one(const char *path, const encode_options *o)
 static int cmd_encode(int argc, char **argv)
 {
     encode_options o;
-    int i, check = 0, files = 0, status = CBF_TOOL_EXIT_OK;
+    int check = 0, files = 0;
     const char *first = NULL;
     o.profile = CBF_TOOL_DEFAULT_PROFILE;
     o.version = CBF_V__UNKNOWN;
     o.keep = 0;
     o.json = -1;
     o.output = NULL;
-    for (i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        int valued = strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "-o") == 0
-                     || strcmp(a, "--output") == 0 || strcmp(a, "--input-format") == 0;
-        if (valued && i + 1 >= argc) {
-            usage();
-            return CBF_TOOL_EXIT_USAGE;
-        }
-        if (strcmp(a, "--profile") == 0) {
-            o.profile = cbf_profile_find(argv[++i]);
-            if (o.profile < 0) {
-                fprintf(stderr, "cbf-c: unknown profile %s\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
-                return CBF_TOOL_EXIT_USAGE;
-            }
-        } else if (strcmp(a, "--version") == 0) {
-            o.version = parse_version(argv[++i]);
-            if (o.version < 0)
-                return CBF_TOOL_EXIT_USAGE;
-        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-            o.output = argv[++i];
-        } else if (strcmp(a, "--input-format") == 0) {
-            i++;
-            o.json = strcmp(argv[i], "json") == 0 ? 1 : strcmp(argv[i], "cut") == 0 ? 0 : -2;
-            if (o.json == -2) {
-                fprintf(stderr, "cbf-c: --input-format: %s is neither cut nor json\n", cbf_quoted(argv[i], CBF_QUOTE_NAME));
-                return CBF_TOOL_EXIT_USAGE;
-            }
-        } else if (strcmp(a, "--keep-stored") == 0) {
-            o.keep = 1;
-        } else if (strcmp(a, "--check") == 0) {
-            check = 1;
-        } else if (a[0] == '-' && a[1]) {
-            usage();
-            return CBF_TOOL_EXIT_USAGE;
-        } else if (!files++) {
-            first = a;
-        }
-    }
-    if (check && o.output) {
-        fprintf(stderr, "cbf-c encode: --check writes nothing: drop -o\n");
+    if (encode_arguments(argc, argv, &o, &check, &files, &first) != CBF_TOOL_EXIT_OK
+        || encode_request_ok(check, files, &o) != CBF_TOOL_EXIT_OK)
         return CBF_TOOL_EXIT_USAGE;
-    }
-    if (!files || (!check && !o.output)) {
-        fprintf(stderr, "cbf-c encode: the following arguments are required: %s\n", files ? "-o/--output" : "FILE");
-        usage();
-        return CBF_TOOL_EXIT_USAGE;
-    }
-    if (!check) {
-        if (files > 1) {
-            fprintf(stderr, "cbf-c encode: one FILE with -o; several only with --check\n");
-            return CBF_TOOL_EXIT_USAGE;
-        }
+    if (!check)
         return encode_one(first, &o);
-    }
-    for (i = 0; i < argc; i++) { /* --check: every file, in order; the worst status */
-        const char *a = argv[i];
-        if (strcmp(a, "--profile") == 0 || strcmp(a, "--version") == 0 || strcmp(a, "--input-format") == 0)
-            i++;
-        else if (!(a[0] == '-' && a[1]) && encode_one(a, &o) != CBF_TOOL_EXIT_OK)
-            status = CBF_TOOL_EXIT_USAGE;
-    }
-    return status;
+    return encode_check(argc, argv, &o);
 }
 
 /* cbf-c sniff FILE: "cut" when the engine reads it as CUT text (cbf_tool_is_cut), else "cbf". Only the
