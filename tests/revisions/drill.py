@@ -117,6 +117,12 @@ class FixtureError(Exception):
     """A fixture that does not apply: str() names the fixture, the edit and why."""
 
 
+class FixtureUnmet(FixtureError):
+    """A fixture whose stated precondition (`requires:`) the spec it meets does not hold, typically because that
+    spec already holds what the fixture adds (a deprecation of a layout a revision already deprecated): the drill
+    and the tests skip it there, saying why (str() names the fixture and the reason)."""
+
+
 @dataclass(frozen=True)
 class Fixture:
     name: str
@@ -134,11 +140,67 @@ def fixtures() -> list[Path]:
     return sorted(HERE.glob("*.yaml"))
 
 
+def applicable(spec: dict[str, Any] | None = None, paths: list[Path] | None = None) -> list[Fixture]:
+    """The fixtures (default: all) whose precondition spec holds (default: this tree's), loaded for it: a
+    fixture whose `requires:` a revision already met (drill.unmet) is left out, not failed."""
+    base = spec if spec is not None else read_spec(REPO / SPEC)
+    out = []
+    for path in paths if paths is not None else fixtures():
+        try:
+            out.append(load_fixture(path, base))
+        except FixtureUnmet:
+            continue
+    return out
+
+
+# A fixture's `requires:` block (a top-level key, to the next one): read and rendered alone, before the rest, so that
+# a precondition naming what the spec lacks is said as unmet, not as a ${...} that names nothing.
+_REQUIRES = re.compile(r"^requires:[^\n]*\n(?:(?:[ #][^\n]*)?\n)*", re.MULTILINE)
+
+
+def unmet(path: Path, spec: dict[str, Any]) -> str | None:
+    """Why the fixture at path does not apply to spec (a parsed spec/cbf.yaml), None when it does. A fixture
+    states what its hand-written files assume of the spec in `requires:`, a list of:
+        {layout: NAME[/variant], version: V}   the command (its layout `variant`) has a layout in version V
+        {not_deprecated: NAME[/variant]}       no deprecating check names it (nor, for a layout, its command)
+    Strings are rendered (${...}) for spec; a ${...} naming nothing there is itself the reason."""
+    m = _REQUIRES.search(path.read_text(encoding="utf-8"))
+    if m is None:
+        return None
+    try:
+        items = yaml.load(render(m.group(0), spec, path.name), Loader=_YAML_LOADER)["requires"] or []
+    except FixtureError as exc:
+        return str(exc)
+    cmds = {str(c["name"]): c for c in spec.get("commands", ())}
+    for item in items:
+        if "layout" in item:
+            name, _, variant = str(item["layout"]).partition("/")
+            version = str(item["version"])
+            lays = [lay for lay in (cmds[name]["layouts"] if name in cmds else ())
+                    if (not variant or lay.get("variant") == variant) and version in lay.get("versions", ())]
+            if not lays:
+                return f"the spec has no {item['layout']} layout in version {version}"
+        elif "not_deprecated" in item:
+            what = str(item["not_deprecated"])
+            names = {what, what.partition("/")[0]}
+            by = [str(c.get("id")) for c in spec.get("checks", ()) if c.get("kind") == "deprecated"
+                  and names & {str(d) for d in c.get("deprecates", ())}]
+            if by:
+                return f"the spec already deprecates {what} (check {', '.join(by)})"
+        else:
+            raise FixtureError(f"{path.name}: requires: unknown condition {item!r}")
+    return None
+
+
 def load_fixture(path: Path, spec: dict[str, Any] | None = None) -> Fixture:
-    """The fixture at path, its ${...} ids chosen for spec (a parsed spec/cbf.yaml; default this tree's)."""
+    """The fixture at path, its ${...} ids chosen for spec (a parsed spec/cbf.yaml; default this tree's).
+    FixtureUnmet when spec does not hold the fixture's `requires:` (unmet)."""
     try:
         text = path.read_text(encoding="utf-8")
         base = spec if spec is not None else read_spec(REPO / SPEC)
+        why = unmet(path, base)
+        if why is not None:
+            raise FixtureUnmet(f"{path.name}: skipped, its precondition does not hold: {why}")
         doc = yaml.load(render(text, base, path.name), Loader=_YAML_LOADER)
     except (OSError, yaml.YAMLError) as exc:
         raise FixtureError(f"{path}: {' '.join(str(exc).split())}") from None
@@ -726,13 +788,19 @@ def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: b
             problems = check_diff(fx, REPO / SPEC, revised_spec(fx, REPO / SPEC, root / "build" / "drill" / fx.name))
             _said(fx, problems, t, "alone")
             results[fx.name] = not problems
+        applied = []
         try:
             for fx in chosen:
-                apply(fx, root)
+                try:
+                    apply(fx, root)
+                except FixtureUnmet as exc:  # the fixtures before it already hold what it adds: said, left out
+                    print(f"  skip {exc} (on top of {', '.join(f.name for f in applied) or 'nothing'})")
+                    continue
+                applied.append(fx)
         except FixtureError as exc:
             print(f"  FAIL the fixtures do not apply together: {exc}")
             return dict.fromkeys(results, False)
-        print(f"together: {', '.join(fx.name for fx in chosen)}, applied to one copy of the tree "
+        print(f"together: {', '.join(fx.name for fx in applied)}, applied to one copy of the tree "
               f"({time.monotonic() - t0:.1f} s with the copy)")
         ok = _run_steps(root, quick, keep_going)
         return {name: good and ok for name, good in results.items()}
@@ -783,14 +851,22 @@ def main(argv: list[str] | None = None) -> int:
         if args.cmd == "apply":
             apply(load_fixture(args.fixture), args.root)
             return 0
-        chosen = [load_fixture(p) for p in (args.fixture or fixtures())]
+        chosen, skipped = [], []
+        for p in args.fixture or fixtures():
+            try:
+                chosen.append(load_fixture(p))
+            except FixtureUnmet as exc:  # this tree's spec already holds what it adds: said, not drilled
+                print(f"{p.stem}: {exc}", flush=True)
+                skipped.append(p.stem)
         if args.quick and not args.fixture:
             chosen = [fx for fx in chosen if fx.name not in IN_TREE]
     except FixtureError as exc:
         print(f"drill: {exc}", file=sys.stderr)
         return 2
     t0 = time.monotonic()
-    if (args.together or (args.quick and not args.fixture)) and len(chosen) > 1:
+    if not chosen:
+        results: dict[str, bool] = {}
+    elif (args.together or (args.quick and not args.fixture)) and len(chosen) > 1:
         results = drill_together(chosen, args.quick, args.keep, args.keep_going)
     elif args.jobs > 1 and len(chosen) > 1:
         results = _in_parallel(chosen, args)
@@ -798,7 +874,8 @@ def main(argv: list[str] | None = None) -> int:
         results = {fx.name: drill(fx, args.quick, args.keep, args.keep_going) for fx in chosen}
     bad = [n for n, good in results.items() if not good]
     print(f"revision drill{' (quick)' if args.quick else ''}: {len(results) - len(bad)} of {len(results)} "
-          f"fixture(s) pass in {time.monotonic() - t0:.0f} s" + (f"; failing: {', '.join(bad)}" if bad else ""))
+          f"fixture(s) pass in {time.monotonic() - t0:.0f} s" + (f"; failing: {', '.join(bad)}" if bad else "")
+          + (f"; skipped (precondition unmet, said above): {', '.join(skipped)}" if skipped else ""))
     return 1 if bad else 0
 
 
