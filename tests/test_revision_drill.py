@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import hashlib
+import os
 import re
 import shutil
 import subprocess
@@ -232,7 +233,9 @@ def test_make_breaking_reads_the_spec_at_a_git_ref(tmp_path: Path) -> None:
     for fx in (_fixture_with(True), _fixture_with(False)):
         new = drill.revised_spec(fx, SPEC, tmp_path / fx.name)
         direct = subprocess.run([sys.executable, "-m", "cbfgen", "diff", str(head), str(new), "--old-name",
-                                 "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True, text=True)
+                                 "HEAD:spec/cbf.yaml"], cwd=REPO, capture_output=True, text=True,
+                                env=dict(os.environ, PYTHONPATH=os.pathsep.join(  # cbfgen, whoever runs pytest
+                                    [str(REPO / "generator"), os.environ.get("PYTHONPATH", "")])))
         res = subprocess.run(["make", "-s", "breaking", "BASE=HEAD", f"NEW_SPEC={new}"], cwd=REPO,
                              capture_output=True, text=True)
         assert direct.returncode in (0, 1, 3), direct.stderr

@@ -19,8 +19,10 @@ regenerated), a check that generated/ is fresh (the README's order leaves
 nothing to regenerate), and every golden case judged as its expectation says:
 a case the fixture judges differently without its new expectation fails,
 with the proposed one shown), `make conformance`
-(every binding) and the test suite (in the copy indexed as a git repository,
-as a commit of the revision would track it). `--quick` runs the subset `make test`
+(every binding), a commit of the revision (the copy is committed before the
+fixture, as a clone is) and a check that it changed no file outside
+REVISION_PATHS, and the test suite (the drill's own tests included, but for
+their pairwise one: every fixture on top of this revision). `--quick` runs the subset `make test`
 uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
 the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
 then applies them all to ONE tree, where the steps run once (drill_together);
@@ -87,8 +89,19 @@ if str(REPO / "generator") not in sys.path:
 HERE = Path(__file__).resolve().parent
 SPEC = "spec/cbf.yaml"
 _TOKEN = re.compile(r"\[([^\]]*)\]|([^.\[\]]+)")
-# The drill's own test compares fixtures with the unrevised spec: not run inside a revision.
+# The drill's own test, in a revised tree, applies every fixture on top of that revision (each one's `cbfgen diff`
+# alone, its ids chosen there, its precondition said: the fixtures survive a revision of each kind), about 17 CPU s.
+# The quick drill leaves it out (`make test` runs it in its own tree); the full drill leaves out its pairwise test
+# (every fixture on top of every other on top of the revision: 30 CPU s more, and the pairs are this file's run in
+# the unrevised tree).
 SELF_TESTS = ("tests/test_revision_drill.py",)
+SELF_DESELECT = ("tests/test_revision_drill.py::test_each_fixture_applies_on_top_of_each_other",)
+# What a revision made as the README says may change (issue 37, Done-when): the spec, what `make revision`
+# generates and assembles (generated/, the golden .cbf files and the docs made from them), the golden cases and
+# expectations a revision adds, the failure lists' entries, and the report its conformance writes (README, "Stage
+# the revision"). The full drill commits the tree before the fixture and the revision after `make revision` and
+# conformance (as the README's "commit, make test"), and fails on a file changed anywhere else.
+REVISION_PATHS = ("spec/", "generated/", "conformance/golden/", "conformance/failures/", "conformance/report.json")
 # The subset of `make test` (`--quick`), measured to keep `make test` under ten minutes on
 # 2 cores: conformance of the bindings whose runtimes implement the checks and of one Kaitai
 # parser (QUICK_BINDINGS; the full drill runs every binding), and the suites that read the
@@ -396,6 +409,16 @@ def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
     return reserving[0] if reserving else ranked[0]
 
 
+def _drill_revision(doc: dict[str, Any], where: str) -> str:
+    """${drill_revision}: the name a fixture gives its revision (meta.revision), from the spec's own: its revision
+    before any drill suffix, then "-drill-" and the fixture's name ("03-drill-new-command" on rev 03, "04-drill-..."
+    after a real revision 04), and "-again" when the spec already bears that name (the fixture applied on top of
+    its own result, as the drill's tests do in its revised tree: a revision names itself anew)."""
+    current = str(doc.get("meta", {}).get("revision", ""))
+    name = f"{current.split('-drill-')[0]}-drill-{Path(where).stem.replace('_', '-')}"
+    return name if name != current else f"{name}-again"
+
+
 def render(text: str, doc: dict[str, Any], where: str) -> str:
     """text with each ${...} replaced by its value for the spec doc (FixtureError for an unknown one)."""
     values = variables(doc)
@@ -407,6 +430,8 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
             return values[var]
         if var in ("code", "dec") and arg in by_name:
             return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
+        if var == "drill_revision" and arg is None:  # what the fixture names its revision (meta.revision)
+            return _drill_revision(doc, where)
         if var == "name" and arg is not None:
             return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
         if var in ("version_with", "major_with") and arg in by_name:  # a version whose files may hold the command
@@ -686,7 +711,23 @@ def quick_cases(root: Path) -> list[str]:
 
 
 # The links copy_tree makes to this checkout's .venv and node_modules are not the revision's files.
-INDEX_SH = "git init -q && printf '/.venv\\n/node_modules\\n' >> .git/info/exclude && git add -A"
+_GIT = "git -c user.name=drill -c user.email=drill@localhost -c commit.gpgsign=false"
+BASE_SH = (f"git init -q && printf '/.venv\\n/node_modules\\n' >> .git/info/exclude && git add -A && "
+           f"{_GIT} commit -q --no-verify -m 'the tree before the revision'")
+COMMIT_SH = f"git add -A && {_GIT} commit -q --no-verify --allow-empty -m 'the revision'"
+
+
+def outside(root: Path) -> int:
+    """`drill.py outside ROOT`: the files the last commit of the tree at ROOT (the revision) changed, by area;
+    exit 1 when one lies outside REVISION_PATHS."""
+    names = subprocess.run(["git", "diff", "--name-only", "HEAD~1", "HEAD"], cwd=root, check=True,
+                           capture_output=True, text=True).stdout.split()
+    bad = [n for n in names if not n.startswith(REVISION_PATHS)]
+    areas = {a: sum(n.startswith(a) for n in names) for a in REVISION_PATHS}
+    print("changed: " + ", ".join(f"{a} {k}" for a, k in areas.items() if k) + f"; elsewhere {len(bad)}")
+    for n in bad:
+        print(f"  outside {', '.join(REVISION_PATHS)}: {n}")
+    return 1 if bad else 0
 
 
 Step = tuple[str, list[str], dict[str, str]]  # (what, argv, extra environment)
@@ -698,7 +739,8 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
     py = str(REPO / ".venv" / "bin" / "python") if (REPO / ".venv").exists() else sys.executable
     tests = [t for t in QUICK_TESTS if (root / t).exists()] if quick else ["tests"]
     pytest = [py, "-m", "pytest", "-p", "no:cacheprovider", "-q", *([] if keep_going else ["-x"]), *tests,
-              *(f"--ignore={t}" for t in SELF_TESTS), *(f"--deselect={t}" for t in (QUICK_DESELECT if quick else ()))]
+              *(f"--ignore={t}" for t in (SELF_TESTS if quick else ())),
+              *(f"--deselect={t}" for t in (QUICK_DESELECT if quick else SELF_DESELECT))]
     if quick:
         runner = [py, "-m", "conformance.runner", "--report", str(root / "build" / "drill-report.json"),
                   *(a for b in QUICK_BINDINGS for a in ("--binding", b)),
@@ -713,9 +755,14 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
     # expectation (else the proposed ones are shown and the step fails). Conformance is the drill's own step.
     revision: Step = ("make revision (generate, golden, generated/ fresh, expectations)",
                 [py, "-m", "conformance.revise", "--no-conformance", *(f"--make-arg={a}" for a in make[3:])], env)
-    # The copy is not a checkout: the full suite reads the files a commit of the revision would track
-    # (test_python_dist's `git ls-files generated`), so the revised tree, regenerated, is indexed as one.
-    index: list[Step] = [] if quick else [("index the revised tree (git init, git add -A)", ["sh", "-c", INDEX_SH], {})]
+    # The copy is a checkout of the tree before the revision (drill: BASE_SH); the revision, regenerated, is
+    # committed as the README says before `make test` (the full suite reads what git tracks: test_python_dist's
+    # `git ls-files generated`, test_revision_drill's `make breaking BASE=HEAD`), and it changed no file outside
+    # REVISION_PATHS.
+    index: list[Step] = [] if quick else [
+        ("commit the revision (git add -A, git commit)", ["sh", "-c", COMMIT_SH], {}),
+        ("no file changed outside " + ", ".join(REVISION_PATHS), [py, str(Path(__file__).resolve()), "outside",
+                                                                  str(root)], {})]
     return [revision,
             *conformance,
             *index,
@@ -753,6 +800,8 @@ def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> boo
     try:
         t0 = time.monotonic()
         copy_tree(root)
+        if not quick:  # a checkout of the tree before the revision: the revision's commit shows what it changed
+            subprocess.run(["sh", "-c", BASE_SH], cwd=root, check=True, capture_output=True)
         apply(fx, root)
         problems = check_diff(fx, REPO / SPEC, root / SPEC)
         _said(fx, problems, t0, "with the copy")
@@ -778,6 +827,8 @@ def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: b
     try:
         t0 = time.monotonic()
         copy_tree(root)
+        if not quick:  # a checkout of the tree before the revisions: their commit shows what they changed
+            subprocess.run(["sh", "-c", BASE_SH], cwd=root, check=True, capture_output=True)
         for fx in chosen:
             if quick:  # the same check_diff on the same specs as test_cbfgen_diff_classifies_the_fixture, which
                 # `make test` runs beside the quick drill for every fixture (about 1.2 CPU s a fixture)
@@ -837,6 +888,8 @@ def main(argv: list[str] | None = None) -> int:
     a = sub.add_parser("apply", help="apply a fixture to a tree")
     a.add_argument("fixture", type=Path)
     a.add_argument("root", type=Path)
+    o = sub.add_parser("outside", help="the files the revision committed at ROOT changed outside REVISION_PATHS")
+    o.add_argument("root", type=Path)
     r = sub.add_parser("run", help="run the drill")
     r.add_argument("fixture", nargs="*", type=Path)
     r.add_argument("--quick", action="store_true",
@@ -851,6 +904,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.cmd == "apply":
             apply(load_fixture(args.fixture), args.root)
             return 0
+        if args.cmd == "outside":
+            return outside(args.root)
         chosen, skipped = [], []
         for p in args.fixture or fixtures():
             try:
