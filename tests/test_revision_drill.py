@@ -28,6 +28,7 @@ from revisions import drill
 from cbfgen import loader
 from cbfgen.diff import diff
 from cbfgen.model import Spec
+from conformance.runner.reasons import failure_class
 
 REPO = Path(__file__).resolve().parents[1]
 SPEC = REPO / "spec" / "cbf.yaml"
@@ -174,6 +175,10 @@ def test_a_fixture_adds_golden_cases_and_expectations_only(path: Path, tmp_path:
         if edit["op"] == "append_line":  # a new case a Kaitai parser cannot decode, listed as a known failure
             assert re.fullmatch(r"conformance/failures/kaitai-[a-z]+\.txt", rel), rel
             assert any(str(edit["value"]).startswith(c.split("/")[-1][: -len(".hex")] + " ") for c in fx.files), edit
+            # by case and reason, as `make failures` writes it (a failure class): never a message, which a revision
+            # of the header or another fixture's moves (issue 37, point 3)
+            reason = str(edit["value"]).split(" ", 1)[1]
+            assert failure_class(reason) == reason, f"{edit['value']!r}: list a class, not a message"
             continue
         if edit["op"] == "sub_text":  # a known failure's message the revision changes (a Kaitai parser's path)
             assert re.fullmatch(r"conformance/failures/kaitai-[a-z]+\.txt", rel), rel
