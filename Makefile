@@ -59,13 +59,18 @@ GENERATED_TRACKED := $(shell git ls-files generated 2>/dev/null || find generate
   -not -path 'generated/docs/site/*' -not -path 'generated/kaitai/java/target/*' 2>/dev/null)
 GENERATE_INPUTS = $(shell find spec generator conformance -type f -not -path '*/__pycache__/*' \
   -not -name '*.tmp' 2>/dev/null) $(wildcard $(GENERATED_TRACKED))
-GENERATE_FORCE = $(if $(filter-out $(wildcard $(GENERATED_TRACKED)),$(GENERATED_TRACKED)),FORCE)
+# A file of generated/ that cbfgen itself removed (a renamed or dropped command's page) is gone by design: the
+# stamp's recipe lists those (git's deleted files of generated/ right after generation), and only another missing
+# file forces a run. Else a revision that removes one is never fresh until committed, and `make revision`'s
+# freshness check fails in a clone (the drill's rename fixture, once its copy became a checkout).
+GENERATED_REMOVED := $(shell cat $(STAMPS)/generate-py.removed 2>/dev/null)
+GENERATE_FORCE = $(if $(filter-out $(wildcard $(GENERATED_TRACKED)) $(GENERATED_REMOVED),$(GENERATED_TRACKED)),FORCE)
 .PHONY: FORCE
 FORCE:
 generate-py: venv $(STAMPS)/generate-py  ## run every Python emitter (no ksc)
 $(STAMPS)/generate-py: $(GENERATE_INPUTS) $(VENV)/.stamp $(GENERATE_FORCE)
 	$(PY) -m cbfgen --spec spec/cbf.yaml --out generated --no-ksc
-	@mkdir -p $(@D) && touch $@
+	@mkdir -p $(@D) && { git ls-files --deleted -- generated 2>/dev/null || true; } > $(@D)/generate-py.removed && touch $@
 
 # One make process runs the Python emitters once, then the later steps (ksc, ...).
 generate: generate-py $(GENERATE_POST)  ## regenerate generated/ from the spec

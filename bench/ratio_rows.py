@@ -77,7 +77,10 @@ def spec_diff_rows(work: Path, env: dict[str, str], reps: int) -> dict[str, Any]
     old = REPO / "spec" / "cbf.yaml"
     new = old
     for fx_path in drill.fixtures():
-        fx = drill.load_fixture(fx_path, drill.read_spec(new))
+        try:
+            fx = drill.load_fixture(fx_path, drill.read_spec(new))
+        except drill.FixtureUnmet:  # the fixtures before it already hold what it adds
+            continue
         new = drill.revised_spec(fx, new, work / fx.name)
     py = sys.executable
     t0 = time.perf_counter()

@@ -10,7 +10,12 @@
 #                             the tree, then `cbfgen diff` (the classification the fixture
 #                             states), `make revision` without conformance (generate, golden,
 #                             generated/ fresh, expectations), `make conformance` (every
-#                             binding) and the whole pytest suite;
+#                             binding), a commit of the revision (the copy is committed before
+#                             the fixture) and a check that it changed no file outside spec/,
+#                             generated/, conformance/golden/, conformance/failures/ and
+#                             conformance/report.json (drill.REVISION_PATHS), and the whole
+#                             pytest suite (test_revision_drill.py too, but for its pairwise test:
+#                             every fixture on top of this revision, each one's precondition said);
 #                             then every fixture applied on top of the others in ONE copy
 #                             (`drill.py run --together`) and the same steps, the whole suite, there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures

@@ -27,8 +27,8 @@ def main(argv: list[str]) -> int:
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(drill.REPO / "generator"), str(drill.REPO),
                                                       os.environ.get("PYTHONPATH", "")]))
     bad = 0
-    for path in drill.fixtures():
-        fx = drill.load_fixture(path)
+    for fx in drill.applicable():  # a fixture whose precondition this spec already holds is left out
+        path = fx.path
         if not (fx.breaking or fx.text_breaking):
             continue
         where = out / path.stem
