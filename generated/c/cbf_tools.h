@@ -2977,28 +2977,44 @@ static int refuses(const cbf_finding *f, int order)
 static held_finding refusal; /* the first refusing finding in cbf's order (finding_cmp) */
 static int refused;
 
-static void keep_refusal(void *user, const cbf_finding *f)
+/* f as a held finding of rank order, its message borrowed (compared only: kept_message copies it). */
+static held_finding borrowed(const cbf_finding *f, int order)
 {
     held_finding h;
-    size_t len = strlen(f->message) + 1u;
-    char *copy;
-    (void)user;
-    h.order = check_rank(f->check);
-    if (!refuses(f, h.order))
-        return;
+    h.order = order;
     h.record = f->record;
     h.error = f->severity == CBF_SEVERITY_ERROR;
     h.offset = (unsigned long)f->offset;
     h.check = f->check;
-    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
-    if (refused && finding_cmp(&h, &refusal) >= 0)
-        return;
-    copy = (char *)malloc(len);
+    h.message = (char *)(uintptr_t)f->message;
+    return h;
+}
+
+/* A copy of f's message to keep past the callback; NULL (out_of_memory set) when none can be made. */
+static char *kept_message(const cbf_finding *f)
+{
+    size_t len = strlen(f->message) + 1u;
+    char *copy = (char *)malloc(len);
     if (!copy) {
         out_of_memory = 1;
-        return;
+        return NULL;
     }
     memcpy(copy, f->message, len);
+    return copy;
+}
+
+static void keep_refusal(void *user, const cbf_finding *f)
+{
+    held_finding h;
+    char *copy;
+    (void)user;
+    h = borrowed(f, check_rank(f->check));
+    if (!refuses(f, h.order))
+        return;
+    if (refused && finding_cmp(&h, &refusal) >= 0)
+        return;
+    if (!(copy = kept_message(f)))
+        return;
     free(refusal.message);
     refusal = h;
     refusal.message = copy;
@@ -3096,26 +3112,17 @@ static int is_deprecation(int order) { return strcmp(cbf_tool_check_kinds[order]
 static void keep_deprecated(void *user, const cbf_finding *f)
 {
     held_finding h;
-    size_t k, len = strlen(f->message) + 1u;
+    size_t k;
     char *copy;
     (void)user;
-    h.order = check_rank(f->check);
+    h = borrowed(f, check_rank(f->check));
     if (!is_deprecation(h.order))
         return;
     ndeprecated++;
-    h.record = f->record;
-    h.error = f->severity == CBF_SEVERITY_ERROR;
-    h.offset = (unsigned long)f->offset;
-    h.check = f->check;
-    h.message = (char *)(uintptr_t)f->message; /* compared only, not kept */
     if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS && finding_cmp(&h, &first_deprecated[nfirst - 1u]) >= 0)
         return;
-    copy = (char *)malloc(len);
-    if (!copy) {
-        out_of_memory = 1;
+    if (!(copy = kept_message(f)))
         return;
-    }
-    memcpy(copy, f->message, len);
     if (nfirst == CBF_TOOL_MOST_DEPRECATION_WARNINGS)
         free(first_deprecated[--nfirst].message);
     for (k = nfirst; k > 0 && finding_cmp(&h, &first_deprecated[k - 1u]) < 0; k--)
@@ -3155,7 +3162,7 @@ void cbf_tool_encode_warnings(const char *output, const uint8_t *cbf, size_t len
         err_printf("cbf-c: warning: %s: %lu more deprecated record(s)\n", label, ndeprecated - (unsigned long)k);
 }
 /* ==== END tools/engine.c ==== */
-#line 3159 "cbf_tools.h"
+#line 3166 "cbf_tools.h"
 #ifdef __cplusplus
 }
 #endif
