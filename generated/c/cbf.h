@@ -994,6 +994,9 @@ const char *cbf_strerror(int err);
 enum { CBF_QUOTE_NAME = 0, CBF_QUOTE_TEXT = 1 };
 size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode);
 const char *cbf_quoted(const char *s, int mode);
+/** How many bytes of s[0..n) are whole UTF-8 characters before the first that is none (a byte that starts
+ * none, an overlong form, a surrogate, beyond U+10FFFF, a character cut by the end): n when all are. */
+size_t cbf_utf8_prefix(const uint8_t *s, size_t n);
 /** Name of a command code, or NULL when the code is unknown. */
 const char *cbf_command_name(int code);
 /** 1 when the command has a layout in the version, else 0. */
@@ -1121,7 +1124,7 @@ unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long reco
  *  of error-severity findings, or CBF_ERR_ARGUMENT. */
 long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *opt, cbf_finding_fn fn, void *user);
 /* ==== END runtime/api.h ==== */
-#line 1125 "cbf.h"
+#line 1128 "cbf.h"
 /** One encoder a layout: cbf_args_encode and cbf_encode_record for that layout's struct. */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args);
 int cbf_encode_checkpoint_v1(cbf_writer *w, const struct cbf_checkpoint_v1_args *args);
@@ -1287,7 +1290,7 @@ typedef char cbf__assert_char_bits[(((unsigned char)-1) == 255) ? 1 : -1];
 #define CBF__PBIT(p) (1u << (p))
 #define CBF__PI 3.14159265358979323846
 /* ==== END runtime/prologue.h ==== */
-#line 1291 "cbf.h"
+#line 1294 "cbf.h"
 /* ==== BEGIN runtime/tables.h: verbatim from generator/cbfgen/emit/c/runtime/tables.h, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/tables.h"
 /* ---- the shapes of the spec's tables (filled by the generated section that follows) -- */
@@ -1380,7 +1383,7 @@ static const double cbf__tol_position = CBF_TOLERANCE_POSITION_MM;
 static const double cbf__tol_orientation = CBF_TOLERANCE_ORIENTATION_DEG;
 static const double cbf__tol_cutter = CBF_TOLERANCE_CUTTER_MM;
 /* ==== END runtime/tables.h ==== */
-#line 1384 "cbf.h"
+#line 1387 "cbf.h"
 /* ---- checksum algorithm kinds (cbfgen/registry.py ALGORITHMS), as parameters ------------
  * runtime/checksums.c implements each family once and switches on it with no default (a family
  * the registry gains and the engine lacks is a -Wswitch error); a kind is a row here. A CRC's
@@ -2562,7 +2565,7 @@ void cbf_member_set_uint(const cbf_field_info *f, void *obj, uint32_t v)
     else memcpy(m, &v, 4);
 }
 /* ==== END runtime/bytes.c ==== */
-#line 2566 "cbf.h"
+#line 2569 "cbf.h"
 /* ==== BEGIN runtime/quote.c: verbatim from generator/cbfgen/emit/c/runtime/quote.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/quote.c"
 /* ---- the one quoting rule for names and values from input (issue #35) ----
@@ -2619,6 +2622,18 @@ static size_t cbf__utf8(const unsigned char *s, size_t n, uint32_t *cp)
         return 0;
     *cp = c;
     return len;
+}
+
+size_t cbf_utf8_prefix(const uint8_t *s, size_t n)
+{
+    size_t i = 0, len;
+    uint32_t c;
+    while (i < n) {
+        if (!(len = cbf__utf8(s + i, n - i, &c)))
+            return i;
+        i += len;
+    }
+    return n;
 }
 
 static int cbf__plain(uint32_t c)
@@ -2701,7 +2716,7 @@ const char *cbf_quoted(const char *s, int mode)
     return buf;
 }
 /* ==== END runtime/quote.c ==== */
-#line 2705 "cbf.h"
+#line 2720 "cbf.h"
 /* ==== BEGIN runtime/groups.c: verbatim from generator/cbfgen/emit/c/runtime/groups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/groups.c"
 /* ---- repeated argument groups (issue 25, point 3): nb = size + group_item * n ----------- */
@@ -2818,7 +2833,7 @@ long cbf_layout_items(int layout, size_t nb)
     return cbf__group_n(&cbf__layouts[layout], nb);
 }
 /* ==== END runtime/groups.c ==== */
-#line 2822 "cbf.h"
+#line 2837 "cbf.h"
 /* ==== BEGIN runtime/lookups.c: verbatim from generator/cbfgen/emit/c/runtime/lookups.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/lookups.c"
 /* ---- look-ups ------------------------------------------------------------ */
@@ -3044,7 +3059,7 @@ int cbf_args_candidates(int code, int version, int *out, int cap)
     return n;
 }
 /* ==== END runtime/lookups.c ==== */
-#line 3048 "cbf.h"
+#line 3063 "cbf.h"
 /* ==== BEGIN runtime/checksums.c: verbatim from generator/cbfgen/emit/c/runtime/checksums.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/checksums.c"
 /* ---- checksums -----------------------------------------------------------
@@ -3301,7 +3316,7 @@ static int cbf__fill_argcks(int layout, uint8_t *rec, size_t nb)
     return any;
 }
 /* ==== END runtime/checksums.c ==== */
-#line 3305 "cbf.h"
+#line 3320 "cbf.h"
 /* ==== BEGIN runtime/reader.c: verbatim from generator/cbfgen/emit/c/runtime/reader.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/reader.c"
 /* ---- header and records --------------------------------------------------- */
@@ -3479,7 +3494,7 @@ whole:
     return 1;
 }
 /* ==== END runtime/reader.c ==== */
-#line 3483 "cbf.h"
+#line 3498 "cbf.h"
 /* ==== BEGIN runtime/writer.c: verbatim from generator/cbfgen/emit/c/runtime/writer.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/writer.c"
 /* ---- writer ---------------------------------------------------------------- */
@@ -3773,7 +3788,7 @@ long cbf_encode_end(cbf_writer *w, int profile, int fill)
     return (long)w->len;
 }
 /* ==== END runtime/writer.c ==== */
-#line 3777 "cbf.h"
+#line 3792 "cbf.h"
 /* ---- one encoder a layout (cbf_encode_<layout>) -------------------------- */
 int cbf_encode_checkpoint(cbf_writer *w, const struct cbf_checkpoint_args *args)
 {
@@ -4948,7 +4963,7 @@ CBF__INLINE uint32_t cbf__sum_fixed(const uint8_t *p, size_t n)
     return acc;
 }
 /* ==== END runtime/validator.c ==== */
-#line 4952 "cbf.h"
+#line 4967 "cbf.h"
 /* ==== BEGIN runtime/path.c: verbatim from generator/cbfgen/emit/c/runtime/path.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/path.c"
 /* ---- the drawn path of a motion record (issue 34: the workbench draws curves with the engine's geometry) ----
@@ -5150,7 +5165,7 @@ size_t cbf_motion_path(int layout, const uint8_t *args, size_t nargs, const doub
     }
 }
 /* ==== END runtime/path.c ==== */
-#line 5154 "cbf.h"
+#line 5169 "cbf.h"
 /* ---- machine limits (decision L1; machine.h.j2) ------------------------------ */
 const char *const cbf_machine_limit_names[CBF_MACHINE__COUNT] = { "workspace", "speed", "acceleration", "cutter_length", "cutter_radius" };
 const char *const cbf_machine_limit_units[CBF_MACHINE__COUNT] = { "mm", "m/s", "m/s^2", "mm", "mm" };
@@ -5316,7 +5331,7 @@ CBF__INLINE void cbf__machine_at(cbf__vctx *v, int cmd, int layout, unsigned j, 
         cbf__machine_breach(v, cmd, layout, j, x, n, finite, rec, off);
 }
 /* ==== END runtime/machine.c ==== */
-#line 5320 "cbf.h"
+#line 5335 "cbf.h"
 /* ==== BEGIN runtime/group_checks.c: verbatim from generator/cbfgen/emit/c/runtime/group_checks.c, edit it there ==== */
 #line 1 "generator/cbfgen/emit/c/runtime/group_checks.c"
 /* ---- the record checks of a repeated argument group (issue 25, point 3) ---------------- */
@@ -5353,7 +5368,7 @@ static inline void cbf__machine_group(cbf__vctx *v, int cmd, int layout, unsigne
     }
 }
 /* ==== END runtime/group_checks.c ==== */
-#line 5357 "cbf.h"
+#line 5372 "cbf.h"
 /* ---- validation: the record checks of each layout, and cbf_validate ---------
  * The checks of a record whose arguments decode, one function a layout, in a
  * fixed order: finite floats and strings (argument order), the checks with
@@ -6339,7 +6354,7 @@ CBF__HOT long cbf_validate(const uint8_t *buf, size_t len, const cbf_options *op
     return v.errors;
 }
 /* ==== END runtime/validate.c ==== */
-#line 6343 "cbf.h"
+#line 6358 "cbf.h"
 /* ---- the CUT text form's syntax (spec `cut`), read by cbf_cut_encode (runtime/cut.c) ---- */
 #define CBF__CUT_LOWER 1 /* keywords compare in lower case */
 static const char cbf__cut_header[] = "header";
@@ -7393,7 +7408,7 @@ unsigned long cbf_cut_record_line(const char *text, size_t n, unsigned long reco
     return 0;
 }
 /* ==== END runtime/cut.c ==== */
-#line 7397 "cbf.h"
+#line 7412 "cbf.h"
 #ifdef __cplusplus
 }
 #endif

@@ -12,6 +12,9 @@ const char *cbf_strerror(int err);
 enum { CBF_QUOTE_NAME = 0, CBF_QUOTE_TEXT = 1 };
 size_t cbf_quote(char *out, size_t cap, const char *s, size_t n, int mode);
 const char *cbf_quoted(const char *s, int mode);
+/** How many bytes of s[0..n) are whole UTF-8 characters before the first that is none (a byte that starts
+ * none, an overlong form, a surrogate, beyond U+10FFFF, a character cut by the end): n when all are. */
+size_t cbf_utf8_prefix(const uint8_t *s, size_t n);
 /** Name of a command code, or NULL when the code is unknown. */
 const char *cbf_command_name(int code);
 /** 1 when the command has a layout in the version, else 0. */

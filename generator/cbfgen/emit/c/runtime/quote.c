@@ -54,6 +54,18 @@ static size_t cbf__utf8(const unsigned char *s, size_t n, uint32_t *cp)
     return len;
 }
 
+size_t cbf_utf8_prefix(const uint8_t *s, size_t n)
+{
+    size_t i = 0, len;
+    uint32_t c;
+    while (i < n) {
+        if (!(len = cbf__utf8(s + i, n - i, &c)))
+            return i;
+        i += len;
+    }
+    return n;
+}
+
 static int cbf__plain(uint32_t c)
 {
     if (c < 0x80u)

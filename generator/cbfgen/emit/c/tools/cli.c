@@ -229,37 +229,6 @@ static int looks_like_json(const char *path, const uint8_t *text, size_t n)
     return i < n && text[i] == '{';
 }
 
-/* The first byte of t[0..n) that does not start a UTF-8 character (where a strict decoder stops: a byte
- * that starts none, an overlong form, a surrogate, beyond U+10FFFF, a character cut by the end), or n. */
-static size_t not_utf8(const uint8_t *t, size_t n)
-{
-    size_t i = 0, k, more;
-    while (i < n) {
-        unsigned c = t[i], lo = 0x80u, hi = 0xBFu;
-        if (c < 0x80u) {
-            i++;
-            continue;
-        }
-        if (c >= 0xC2u && c <= 0xDFu)
-            more = 1;
-        else if (c >= 0xE0u && c <= 0xEFu) {
-            more = 2;
-            lo = c == 0xE0u ? 0xA0u : 0x80u; /* no overlong form */
-            hi = c == 0xEDu ? 0x9Fu : 0xBFu; /* no surrogate */
-        } else if (c >= 0xF0u && c <= 0xF4u) {
-            more = 3;
-            lo = c == 0xF0u ? 0x90u : 0x80u;
-            hi = c == 0xF4u ? 0x8Fu : 0xBFu; /* nothing beyond U+10FFFF */
-        } else
-            return i;
-        for (k = 1; k <= more; k++)
-            if (i + k >= n || t[i + k] < (k == 1 ? lo : 0x80u) || t[i + k] > (k == 1 ? hi : 0xBFu))
-                return i;
-        i += more + 1u;
-    }
-    return n;
-}
-
 /* Whether text holds nothing but white space (cbf encode: "empty input: nothing to encode"). */
 static int is_blank(const uint8_t *text, size_t n)
 {
@@ -298,7 +267,7 @@ static int encode_one(const char *path, const encode_options *o)
         fprintf(stderr, "cbf-c: %s: %s\n", cbf_tool_name(path), cause);
     if (n < 0)
         return CBF_TOOL_EXIT_USAGE;
-    bad = not_utf8(text, (size_t)n);
+    bad = cbf_utf8_prefix(text, (size_t)n); /* the runtime's one UTF-8 reader (quote.c) */
     if (bad < (size_t)n) { /* text is UTF-8 before anything else is asked of it: cbf's line */
         for (k = 0; k < bad; k++)
             line += text[k] == '\n';
