@@ -221,7 +221,9 @@ def canonical_schema(spec: Spec) -> dict[str, Any]:
         "additionalProperties": False,
         "required": ["header", "records"],
         "properties": {
-            "header": {"oneOf": headers},
+            # anyOf, not oneOf: two versions may lay their headers out alike (a revision adding a version
+            # whose header is a copy of another's), and a header valid under both is still one header.
+            "header": {"anyOf": headers},
             "records": {"type": "array", "maxItems": spec.limits["max_commands"] + 1_000_000,
                         "items": {"type": "object", "additionalProperties": False,
                                   "required": ["command"], "properties": rec_props}},
