@@ -21,12 +21,15 @@ a case the fixture judges differently without its new expectation fails,
 with the proposed one shown), `make conformance`
 (every binding), a commit of the revision (the copy is committed before the
 fixture, as a clone is) and a check that it changed no file outside
-REVISION_PATHS, and the test suite (the drill's own tests included, but for
-their pairwise one: every fixture on top of this revision). `--quick` runs the subset `make test`
-uses (QUICK_BINDINGS, QUICK_TESTS and quick_cases below; mk/revision.mk has
-the times); without FIXTURE it checks each fixture's `cbfgen diff` alone and
-then applies them all to ONE tree, where the steps run once (drill_together);
-`--together` does that with every step in full (every fixture on top of the others).
+REVISION_PATHS, the test suite (the drill's own tests included, but for
+their pairwise one), and the quick drill in the revised tree (what `make test`
+runs there: every fixture on top of this revision, its own kind included).
+`--quick` runs the subset `make test` uses (QUICK_BINDINGS, QUICK_TESTS and
+quick_cases below; mk/revision.mk has the times); without FIXTURE it checks
+each fixture's `cbfgen diff` alone and then applies them all to ONE tree, twice
+over (QUICK_ROUNDS: each fixture then meets a tree holding its own revision),
+where the steps run once (drill_together); `--together` does that with every
+step in full (every fixture on top of the others, once).
 It prints one line per step with its time and exits 1 when a step fails,
 showing the end of that step's output.
 
@@ -63,6 +66,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import functools
 import json
 import os
 import re
@@ -122,6 +126,11 @@ QUICK_DESELECT = ("tests/test_golden_assembly.py::test_reassembles_to_committed_
 # instead of 6 a fixture (the main tree's testee, which conformance and reliability run, stays at -O1).
 # The quick drill's conformance leaves out the golden files larger than this (quick_cases).
 QUICK_MAX_BYTES = 256 * 1024
+# The quick drill applies the fixtures twice over, the second round on top of the first: each fixture then meets a
+# tree that holds its own revision, as `make test`'s quick drill does in a tree a real revision of that kind left
+# (the README's walkthrough ends with `make test`). A fixture whose precondition its first round met says so and
+# is left out (drill.unmet); the others choose new ids and add files of their own. About 1 CPU s more than one round.
+QUICK_ROUNDS = 2
 # The test of `make test` that checks each fixture's `cbfgen diff` alone (the quick drill does not repeat it).
 DIFF_ALONE_TEST = "tests/test_revision_drill.py::test_cbfgen_diff_classifies_the_fixture"
 QUICK_C_SAN = "C_SAN=-g0 -O0 -fsanitize=address,undefined -fno-sanitize-recover=all"
@@ -176,6 +185,7 @@ def unmet(path: Path, spec: dict[str, Any]) -> str | None:
     states what its hand-written files assume of the spec in `requires:`, a list of:
         {layout: NAME[/variant], version: V}   the command (its layout `variant`) has a layout in version V
         {not_deprecated: NAME[/variant]}       no deprecating check names it (nor, for a layout, its command)
+        {unranged: NAME}                       no range check judges the command's arguments, in any version
     Strings are rendered (${...}) for spec; a ${...} naming nothing there is itself the reason."""
     m = _REQUIRES.search(path.read_text(encoding="utf-8"))
     if m is None:
@@ -200,6 +210,12 @@ def unmet(path: Path, spec: dict[str, Any]) -> str | None:
                   and names & {str(d) for d in c.get("deprecates", ())}]
             if by:
                 return f"the spec already deprecates {what} (check {', '.join(by)})"
+        elif "unranged" in item:
+            what = str(item["unranged"])
+            by = [str(c.get("id")) for c in spec.get("checks", ()) if c.get("kind") == "range"
+                  and any(t.get("command") == what for t in c.get("targets", ()))]
+            if by:
+                return f"a range check already judges {what} (check {', '.join(by)})"
         else:
             raise FixtureError(f"{path.name}: requires: unknown condition {item!r}")
     return None
@@ -235,10 +251,34 @@ def read_spec(path: Path) -> Any:
 # A fixture names what it adds through ${...}, chosen for the spec it applies to, so that it applies on top
 # of any spec: after a real revision, and after another fixture (the quick drill applies them one after the
 # other to one tree). ${code:NAME} and ${dec:NAME} are a command's code in hex (two digits) and decimal;
-# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name. ${version_with:NAME} and
-# ${major_with:NAME}: the newest writable version whose files may hold the command (_version_with).
+# ${name:BASE} is BASE, or BASE_2, BASE_3 ... when a command already has that name, ${slug:BASE} the same in
+# lower case (a golden file's name: the fixture applied on top of its own revision adds files of its own).
+# ${version_with:NAME} and ${major_with:NAME}: the newest writable version whose files may hold the command
+# (_version_with); ${unranged_version:NAME} and ${unranged_major:NAME} the same where no range check judges it.
 _VAR = re.compile(r"\$\{([a-z][a-z0-9_]*)(?::([A-Za-z0-9_]+))?\}")
 _FIRST_FREE_CODE = 0x70  # where the search for a free command code starts (the drill's PROBE)
+
+
+# A golden file's source writes a record's code and its copy as one byte twice at the head of a line (`77 77 04 00`).
+_GOLDEN_CODE = re.compile(r"^([0-9a-f]{2}) \1 [0-9a-f]{2} [0-9a-f]{2}\b", re.MULTILINE)
+
+
+@functools.cache
+def golden_codes() -> frozenset[int]:
+    """The command codes the golden files' records hold, those of no command included (framing.unknown_command's
+    is a code no command has): a fixture's new command takes none of them, so that no golden case changes meaning
+    under it (its unknown code would become a known command of another size). Read once from this checkout's
+    golden sources; a fixture's own golden files hold the codes of its own commands, which the spec then has."""
+    return frozenset(int(m.group(1), 16) for hexfile in sorted((REPO / "conformance" / "golden").glob("*.hex"))
+                     for m in _GOLDEN_CODE.finditer(hexfile.read_text("utf-8")))
+
+
+@functools.cache
+def fixture_commands() -> frozenset[str]:
+    """The commands the fixtures' own golden files hold (each named by ${code:NAME}): a revision the drill makes never
+    drops them from a version (new_version's ${drop})."""
+    return frozenset(m.group(2) for path in fixtures() for m in _VAR.finditer(path.read_text(encoding="utf-8"))
+                     if m.group(1) == "code" and m.group(2))
 
 
 def _key(v: dict[str, Any]) -> tuple[int, int]:
@@ -264,14 +304,17 @@ def variables(doc: dict[str, Any]) -> dict[str, str]:
     nid = str(newest["id"])
     major = max(int(v["major"]) for v in versions) + 1
     cmds = list(doc["commands"])
-    used_codes = {int(c["code"]) for c in cmds}
+    used_codes = {int(c["code"]) for c in cmds} | golden_codes()
     code = next(c for c in [*range(_FIRST_FREE_CODE, 256), *range(1, _FIRST_FREE_CODE)] if c not in used_codes)
     ids = {str(x.get(k)) for group in ("checks", "versions", "commands") for x in doc.get(group, ())
            for k in ("id", "clause")} | {str(lay.get("clause")) for c in cmds for lay in c.get("layouts", ())}
     ids |= {str(c.get("number")) for c in doc.get("meta", {}).get("clauses", ())}  # a clause the document has
     clause = next(f"9.{n}" for n in range(1, 1000) if f"9.{n}" not in ids)
-    # The command a new version drops: the first of the newest version whose arguments are all f4 in one layout.
-    drop = next((c for c in cmds for lay in c["layouts"] if nid in lay["versions"]
+    # The command a new version drops: the first of the newest version whose arguments are all f4 in one layout and
+    # that no fixture's golden file holds (fixture_commands): applied again on top of its own revision, the fixture
+    # drops another, and every other fixture's golden files still find their commands in the newest version.
+    held_by_fixtures = fixture_commands()
+    drop = next((c for c in cmds for lay in c["layouts"] if nid in lay["versions"] and c["name"] not in held_by_fixtures
                  and lay.get("args") and all(a.get("type") == "f4" for a in lay["args"])),
                 None)
     drop_lay: dict[str, Any] = next((lay for lay in drop["layouts"] if nid in lay["versions"]), {}) if drop else {}
@@ -392,20 +435,28 @@ def _real_rename(doc: dict[str, Any]) -> dict[str, str]:
             "real_rename_to": next(n for n in (base, *(f"{base}_{i}" for i in range(2, 100))) if n not in names)}
 
 
-def _version_with(doc: dict[str, Any], name: str) -> dict[str, Any]:
+def _ranged(doc: dict[str, Any], name: str, vid: str) -> bool:
+    """Whether a range check of the spec judges the command name's arguments in version vid."""
+    return any(c.get("kind") == "range" and (c.get("versions") is None or vid in c["versions"])
+               and any(t.get("command") == name for t in c.get("targets", ())) for c in doc.get("checks", ()))
+
+
+def _version_with(doc: dict[str, Any], name: str, unranged: bool = False) -> dict[str, Any]:
     """The newest writable version that has the command name and whose header reserves the checksum bytes (a golden
     file written with _header_v3.inc holds zeros there), else the newest writable one that has it: a fixture's
     golden file of such a version holding the command stays valid after a revision that drops it from a new
-    version (a 5.0 without POINT)."""
+    version (a 5.0 without POINT). unranged: only a version where no range check judges the command's arguments
+    (${unranged_version:NAME}: a fixture bounding them there meets no other bound, its own of an earlier
+    application included, and no golden file another bound there made)."""
     cmd = next(c for c in doc["commands"] if c["name"] == name)
     headers = doc.get("headers", {})
-    ranked = sorted((v for v in doc["versions"] if v.get("writable") and _has(cmd, str(v["id"]))), key=_key,
-                    reverse=True)
+    ranked = sorted((v for v in doc["versions"] if v.get("writable") and _has(cmd, str(v["id"]))
+                     and not (unranged and _ranged(doc, name, str(v["id"])))), key=_key, reverse=True)
     reserving = [v for v in ranked if any(f.get("role") == "reserved" and f.get("offset") == 10
                                           and f.get("size", 0) >= 4
                                           for f in headers.get(v["header"], {}).get("fields", ()))]
     if not ranked:
-        raise FixtureError(f"no writable version has {name}")
+        raise FixtureError(f"no writable version has {name}" + (" unjudged by a range check" if unranged else ""))
     return reserving[0] if reserving else ranked[0]
 
 
@@ -423,6 +474,7 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
     """text with each ${...} replaced by its value for the spec doc (FixtureError for an unknown one)."""
     values = variables(doc)
     by_name = {str(c["name"]): int(c["code"]) for c in doc["commands"]}
+    had = {str(n) for c in doc["commands"] for n in c.get("former_names", ())}
 
     def one(m: re.Match[str]) -> str:
         var, arg = m.group(1), m.group(2)
@@ -432,11 +484,17 @@ def render(text: str, doc: dict[str, Any], where: str) -> str:
             return f"{by_name[arg]:02x}" if var == "code" else str(by_name[arg])
         if var == "drill_revision" and arg is None:  # what the fixture names its revision (meta.revision)
             return _drill_revision(doc, where)
-        if var == "name" and arg is not None:
-            return next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name)
+        if var in ("name", "slug") and arg is not None:  # slug: the name in lower case, for a golden file's name
+            # free of every name a command has or had (a former name stays a command's: a rename on top of its own
+            # revision never takes back the name it gave up)
+            name = next(n for n in (arg, *(f"{arg}_{i}" for i in range(2, 100))) if n not in by_name and n not in had)
+            return name if var == "name" else name.lower()
         if var in ("version_with", "major_with") and arg in by_name:  # a version whose files may hold the command
             v = _version_with(doc, arg)
             return str(v["id"]) if var == "version_with" else str(v["major"])
+        if var in ("unranged_version", "unranged_major") and arg in by_name:  # ... and no range check judges it in
+            v = _version_with(doc, arg, unranged=True)
+            return str(v["id"]) if var == "unranged_version" else str(v["major"])
         if var in ("now", "formerly") and arg is not None:  # a command as the spec calls it now, and its past names
             cmd = next((c for c in doc["commands"] if c["name"] == arg or arg in c.get("former_names", ())), None)
             if cmd is not None:
@@ -598,14 +656,23 @@ def apply(fx: Fixture, root: Path) -> None:
     the files it adds. An edit of another file marked `optional: true` is skipped when that file is missing
     (a golden case of a version the spec at root does not have)."""
     fx = load_fixture(fx.path, read_spec(root / SPEC))
+    # A file the fixture adds names what it is for by ids chosen for this spec (${free_clause}, ${name:...}): one
+    # the tree already holds (a fixed name, on a tree that holds this fixture's own revision) would be overwritten.
+    taken = sorted(rel for rel in fx.files if (root / rel).exists())
+    if taken:
+        raise FixtureError(f"{fx.path.name}: adds {', '.join(taken)}, which the tree already holds: name an added "
+                           "file by the ids the fixture chooses for the spec")
     docs: dict[str, Any] = {}
     for i, edit in enumerate(fx.edits):
         rel = str(edit.get("file", SPEC))
         if rel != SPEC and edit.get("optional") and not (root / rel).exists():
             continue
         if edit.get("op") == "append_line":  # a line of a text file (a binding's known-failure list)
+            line = str(edit["value"]).rstrip("\n")
+            if (root / rel).exists() and line in (root / rel).read_text(encoding="utf-8").splitlines():
+                raise FixtureError(f"{fx.path.name}: edit {i + 1} ({rel}): the line {line!r} is already there")
             with (root / rel).open("a", encoding="utf-8") as fh:
-                fh.write(str(edit["value"]).rstrip("\n") + "\n")
+                fh.write(line + "\n")
             continue
         if edit.get("op") == "sub_text":  # a regular-expression replacement in a text file (a failure list)
             text = (root / rel).read_text(encoding="utf-8")
@@ -763,10 +830,16 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
         ("commit the revision (git add -A, git commit)", ["sh", "-c", COMMIT_SH], {}),
         ("no file changed outside " + ", ".join(REVISION_PATHS), [py, str(Path(__file__).resolve()), "outside",
                                                                   str(root)], {})]
+    # `make test` in the revised tree runs the quick drill there: every fixture on top of this revision, each kind
+    # on top of its own (the README's walkthrough ends with `make test`; the test suite above is not all of it).
+    on_top: list[Step] = [] if quick else [
+        ("the quick drill on top (make revision-drill-quick)", [py, str(root / "tests" / "revisions" / "drill.py"),
+                                                               "run", "--quick"], env)]
     return [revision,
             *conformance,
             *index,
-            ("pytest" + (" (subset)" if quick else ""), pytest, env)]
+            ("pytest" + (" (subset)" if quick else ""), pytest, env),
+            *on_top]
 
 
 def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
@@ -814,7 +887,8 @@ def drill(fx: Fixture, quick: bool, keep: bool, keep_going: bool = False) -> boo
             shutil.rmtree(root, ignore_errors=True)
 
 
-def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: bool = False) -> dict[str, bool]:
+def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: bool = False,
+                   rounds: int = 1) -> dict[str, bool]:
     """The quick drill: each fixture's `cbfgen diff` checked alone (on the spec it alone revises), then every
     fixture applied, one after the other, to ONE copy of the tree, and the steps run once there (one generation,
     one golden assembly, one testee build, one conformance run, one test run: half the CPU of a tree a
@@ -839,15 +913,16 @@ def drill_together(chosen: list[Fixture], quick: bool, keep: bool, keep_going: b
             problems = check_diff(fx, REPO / SPEC, revised_spec(fx, REPO / SPEC, root / "build" / "drill" / fx.name))
             _said(fx, problems, t, "alone")
             results[fx.name] = not problems
-        applied = []
+        applied: list[Fixture] = []
         try:
-            for fx in chosen:
-                try:
-                    apply(fx, root)
-                except FixtureUnmet as exc:  # the fixtures before it already hold what it adds: said, left out
-                    print(f"  skip {exc} (on top of {', '.join(f.name for f in applied) or 'nothing'})")
-                    continue
-                applied.append(fx)
+            for _ in range(rounds):
+                for fx in chosen:
+                    try:
+                        apply(fx, root)
+                    except FixtureUnmet as exc:  # the fixtures before it already hold what it adds: said, left out
+                        print(f"  skip {exc} (on top of {', '.join(f.name for f in applied) or 'nothing'})")
+                        continue
+                    applied.append(fx)
         except FixtureError as exc:
             print(f"  FAIL the fixtures do not apply together: {exc}")
             return dict.fromkeys(results, False)
@@ -899,6 +974,9 @@ def main(argv: list[str] | None = None) -> int:
     r.add_argument("--jobs", type=int, default=1, help="fixtures drilled at once (each in its own process)")
     r.add_argument("--together", action="store_true",
                    help="apply the fixtures (default: all) to one tree and run every step there once")
+    r.add_argument("--rounds", type=int, default=None,
+                   help="together: apply the fixtures this many times over, each round on top of the last (default: "
+                        f"{QUICK_ROUNDS} for the quick drill, 1 with --together)")
     args = ap.parse_args(argv)
     try:
         if args.cmd == "apply":
@@ -922,7 +1000,8 @@ def main(argv: list[str] | None = None) -> int:
     if not chosen:
         results: dict[str, bool] = {}
     elif (args.together or (args.quick and not args.fixture)) and len(chosen) > 1:
-        results = drill_together(chosen, args.quick, args.keep, args.keep_going)
+        rounds = args.rounds or (QUICK_ROUNDS if args.quick else 1)
+        results = drill_together(chosen, args.quick, args.keep, args.keep_going, rounds)
     elif args.jobs > 1 and len(chosen) > 1:
         results = _in_parallel(chosen, args)
     else:
