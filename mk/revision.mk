@@ -14,16 +14,18 @@
 #                             the fixture) and a check that it changed no file outside spec/,
 #                             generated/, conformance/golden/, conformance/failures/ and
 #                             conformance/report.json (drill.REVISION_PATHS), and the whole
-#                             pytest suite (test_revision_drill.py too, but for its pairwise test:
-#                             every fixture on top of this revision, each one's precondition said);
+#                             pytest suite (test_revision_drill.py too, but for its pairwise test),
+#                             then the quick drill in the revised tree (what `make test` runs
+#                             there: every fixture on top of this revision, its own kind too);
 #                             then every fixture applied on top of the others in ONE copy
-#                             (`drill.py run --together`) and the same steps, the whole suite, there.
+#                             (`drill.py run --together`) and the same steps there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
 #                             whose kind no in-tree test makes (IN_TREE: a new command is made
 #                             by tests/test_new_command.py, another checksum algorithm by
 #                             tests/test_golden_checksums.py, both in `make test`), each one's
 #                             `cbfgen diff` checked alone, then all of them applied to ONE copy
-#                             of the tree (drill_together): generate, golden, conformance of
+#                             of the tree, twice over (drill.QUICK_ROUNDS: each fixture then
+#                             meets its own revision; drill_together): generate, golden, conformance of
 #                             QUICK_BINDINGS (python, c, kaitai-javascript: the two runtimes that
 #                             implement the checks and one Kaitai parser) on the golden files up
 #                             to QUICK_MAX_BYTES (not the 65,535-record case), and the pytest

@@ -219,6 +219,29 @@ def test_a_fixture_that_does_not_apply_names_the_edit(tmp_path: Path) -> None:
         drill.load_fixture(bad)
 
 
+def test_a_fixture_never_overwrites_what_the_tree_holds(tmp_path: Path) -> None:
+    """A file a fixture adds that the tree already holds (a fixed name, on a tree holding the fixture's own
+    revision), or a failure-list line already there, refuses the fixture with both named, before anything is
+    written: the drill never silently replaces a golden case or lists a case twice."""
+    fx = next(fx for fx in drill.applicable() if fx.files and any(e.get("op") == "append_line" for e in fx.edits))
+    for rel in {drill.SPEC, *(e["file"] for e in fx.edits if "file" in e)}:
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(REPO / rel, tmp_path / rel)
+    held = next(iter(fx.files))
+    (tmp_path / held).parent.mkdir(parents=True, exist_ok=True)
+    (tmp_path / held).write_text("# already here\n", encoding="utf-8")
+    before = (tmp_path / drill.SPEC).read_bytes()
+    with pytest.raises(drill.FixtureError, match=rf"{re.escape(fx.path.name)}: adds {re.escape(held)}.*already"):
+        drill.apply(fx, tmp_path)
+    assert (tmp_path / drill.SPEC).read_bytes() == before and (tmp_path / held).read_text() == "# already here\n"
+    (tmp_path / held).unlink()
+    edit = next(e for e in fx.edits if e.get("op") == "append_line")
+    with (tmp_path / edit["file"]).open("a", encoding="utf-8") as fh:
+        fh.write(str(edit["value"]) + "\n")
+    with pytest.raises(drill.FixtureError, match="is already there"):
+        drill.apply(fx, tmp_path)
+
+
 def _fixture_with(breaking: bool) -> drill.Fixture:
     return next(fx for fx in (_fixture_for(p, SPEC) for p in FIXTURES if _unmet(p, SPEC) is None)
                 if fx.breaking == breaking)
@@ -324,15 +347,16 @@ def _judged(fx: drill.Fixture, base: Path, revised: Path, models: tuple[Spec, Sp
 
 @pytest.mark.parametrize("first", FIXTURES, ids=[p.stem for p in FIXTURES])
 def test_each_fixture_applies_on_top_of_each_other(first: Path, tmp_path: Path) -> None:
-    """Fixture B applied to fixture A's revised spec (every ordered pair, the spec edits only) gives a spec the
-    loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause taken
-    twice) and cbfgen diff of A's spec against it says what B states."""
+    """Fixture B applied to fixture A's revised spec (every ordered pair, A on top of itself included: the tree a
+    real revision of A's kind leaves, where `make test`'s quick drill applies A again; the spec edits only) gives
+    a spec the loader accepts, B's ids are free there (no file of A's is added again, no version, code or clause
+    taken twice) and cbfgen diff of A's spec against it says what B states."""
     _skip_unmet(first)
     a = _fixture_for(first, SPEC)
     base, a_here = _revised(a, SPEC, tmp_path / "a")
     spec_a = load(base)
     for other in FIXTURES:
-        if other == first or _unmet(other, SPEC) is not None:
+        if _unmet(other, SPEC) is not None:
             continue
         if _unmet(other, base) is not None:  # A made what B adds (B states it): B says so instead of applying
             with pytest.raises(drill.FixtureUnmet, match=re.escape(other.name)):
@@ -404,6 +428,25 @@ def test_fixture_ids_are_chosen_for_the_spec(tmp_path: Path) -> None:
     cmd = model.commands[-1]
     assert drill.render(f"${{code:{cmd.name}}} ${{dec:{cmd.name}}}", doc, "t") == f"{cmd.code:02x} {cmd.code}"
     assert drill.render(f"${{name:{cmd.name}}}", doc, "t") == f"{cmd.name}_2"
+    assert drill.render(f"${{slug:{cmd.name}}}", doc, "t") == f"{cmd.name}_2".lower()
+    # a new command's code is one no golden file's record holds either (framing.unknown_command's unknown code)
+    assert drill.golden_codes() - {c.code for c in model.commands}, "no golden file holds an unknown code"
+    assert int(v["free_code"]) not in drill.golden_codes()
+    taken = dict(doc, commands=[*doc["commands"], *({"name": f"X{c}", "code": c, "layouts": []} for c in
+                                                    sorted(drill.golden_codes() - {c.code for c in model.commands}))])
+    assert int(drill.variables(taken)["free_code"]) == int(v["free_code"])
+    # ${unranged_version:NAME}: a writable version of the command where no range check judges it; a range check on
+    # that version moves it to another (or, on none left, names nothing: the fixture's precondition is unmet)
+    target = next(c for c in model.commands if any(x.writable and c.layouts_for(x.id) for x in model.versions)
+                  and not any(k.kind == "range" and any(t.command == c.name for t in k.targets) for k in model.checks))
+    first = drill.render(f"${{unranged_version:{target.name}}}", doc, "t")
+    bounded = dict(doc, checks=[*doc["checks"], {"id": "x", "kind": "range", "versions": [first],
+                                                 "targets": [{"command": target.name}]}])
+    then = drill.render(f"${{unranged_version:{target.name}}}", bounded, "t")
+    assert then != first and target.layouts_for(then)
+    everywhere = dict(doc, checks=[*doc["checks"], {"id": "x", "kind": "range", "targets": [{"command": target.name}]}])
+    with pytest.raises(drill.FixtureError, match="unjudged by a range check"):
+        drill.render(f"${{unranged_version:{target.name}}}", everywhere, "t")
     with pytest.raises(drill.FixtureError, match=r"t: \$\{code:NO_SUCH\} names nothing"):
         drill.render("${code:NO_SUCH}", doc, "t")
 
@@ -474,3 +517,6 @@ def test_a_fixture_states_its_precondition_and_is_skipped_where_it_is_already_me
     assert drill.unmet(bare, _read_spec(SPEC)) == f"the spec has no NO_SUCH/x layout in version {newest}"
     bare.write_text('title: t\nrequires:\n  - {not_deprecated: "${code:NO_SUCH}"}\nadds: nothing\n', encoding="utf-8")
     assert "${code:NO_SUCH} names nothing in this spec" in str(drill.unmet(bare, _read_spec(SPEC)))
+    ranged = next(str(t.command) for k in load(SPEC).checks if k.kind == "range" for t in k.targets)
+    bare.write_text(f'title: t\nrequires:\n  - {{unranged: {ranged}}}\nadds: nothing\n', encoding="utf-8")
+    assert f"a range check already judges {ranged} (check " in str(drill.unmet(bare, _read_spec(SPEC)))
