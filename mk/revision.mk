@@ -13,12 +13,11 @@
 #                             binding), a commit of the revision (the copy is committed before
 #                             the fixture) and a check that it changed no file outside spec/,
 #                             generated/, conformance/golden/, conformance/failures/ and
-#                             conformance/report.json (drill.REVISION_PATHS), and the whole
-#                             pytest suite (test_revision_drill.py too, but for its pairwise test),
-#                             then the quick drill in the revised tree (what `make test` runs
-#                             there: every fixture on top of this revision, its own kind too);
-#                             then every fixture applied on top of the others in ONE copy
-#                             (`drill.py run --together`) and the same steps there.
+#                             conformance/report.json (drill.REVISION_PATHS), and `make test`
+#                             in the revised tree (CI=true; its quick drill applies every fixture
+#                             on top of this revision, its own kind too): the README's walkthrough
+#                             to its end; then every fixture applied on top of the others in ONE
+#                             copy (`drill.py run --together`) and the same steps there.
 #   revision-drill-quick      the subset `make test` runs (tests/revisions/drill.py): the fixtures
 #                             whose kind no in-tree test makes (IN_TREE: a new command is made
 #                             by tests/test_new_command.py, another checksum algorithm by

@@ -21,9 +21,9 @@ a case the fixture judges differently without its new expectation fails,
 with the proposed one shown), `make conformance`
 (every binding), a commit of the revision (the copy is committed before the
 fixture, as a clone is) and a check that it changed no file outside
-REVISION_PATHS, the test suite (the drill's own tests included, but for
-their pairwise one), and the quick drill in the revised tree (what `make test`
-runs there: every fixture on top of this revision, its own kind included).
+REVISION_PATHS, and `make test` in the revised tree (CI=true: the README's
+walkthrough ends there; it runs the quick drill there too, every fixture on
+top of this revision, its own kind included).
 `--quick` runs the subset `make test` uses (QUICK_BINDINGS, QUICK_TESTS and
 quick_cases below; mk/revision.mk has the times); without FIXTURE it checks
 each fixture's `cbfgen diff` alone and then applies them all to ONE tree, twice
@@ -93,13 +93,8 @@ if str(REPO / "generator") not in sys.path:
 HERE = Path(__file__).resolve().parent
 SPEC = "spec/cbf.yaml"
 _TOKEN = re.compile(r"\[([^\]]*)\]|([^.\[\]]+)")
-# The drill's own test, in a revised tree, applies every fixture on top of that revision (each one's `cbfgen diff`
-# alone, its ids chosen there, its precondition said: the fixtures survive a revision of each kind), about 17 CPU s.
-# The quick drill leaves it out (`make test` runs it in its own tree); the full drill leaves out its pairwise test
-# (every fixture on top of every other on top of the revision: 30 CPU s more, and the pairs are this file's run in
-# the unrevised tree).
+# The quick drill leaves the drill's own test out (`make test` runs it in its own tree).
 SELF_TESTS = ("tests/test_revision_drill.py",)
-SELF_DESELECT = ("tests/test_revision_drill.py::test_each_fixture_applies_on_top_of_each_other",)
 # What a revision made as the README says may change (issue 37, Done-when): the spec, what `make revision`
 # generates and assembles (generated/, the golden .cbf files and the docs made from them), the golden cases and
 # expectations a revision adds, the failure lists' entries, and the report its conformance writes (README, "Stage
@@ -804,10 +799,9 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
     make = ["make", "-C", str(root), "-o", ".venv/.stamp", "-o", "node_modules/.stamp"]
     env = {"PYTHONPATH": os.pathsep.join(str(root / p) for p in ("generator", "generated/python", "."))}
     py = str(REPO / ".venv" / "bin" / "python") if (REPO / ".venv").exists() else sys.executable
-    tests = [t for t in QUICK_TESTS if (root / t).exists()] if quick else ["tests"]
+    tests = [t for t in QUICK_TESTS if (root / t).exists()]
     pytest = [py, "-m", "pytest", "-p", "no:cacheprovider", "-q", *([] if keep_going else ["-x"]), *tests,
-              *(f"--ignore={t}" for t in (SELF_TESTS if quick else ())),
-              *(f"--deselect={t}" for t in (QUICK_DESELECT if quick else SELF_DESELECT))]
+              *(f"--ignore={t}" for t in SELF_TESTS), *(f"--deselect={t}" for t in QUICK_DESELECT)]
     if quick:
         runner = [py, "-m", "conformance.runner", "--report", str(root / "build" / "drill-report.json"),
                   *(a for b in QUICK_BINDINGS for a in ("--binding", b)),
@@ -830,16 +824,15 @@ def _steps(root: Path, quick: bool, keep_going: bool = False) -> list[Step]:
         ("commit the revision (git add -A, git commit)", ["sh", "-c", COMMIT_SH], {}),
         ("no file changed outside " + ", ".join(REVISION_PATHS), [py, str(Path(__file__).resolve()), "outside",
                                                                   str(root)], {})]
-    # `make test` in the revised tree runs the quick drill there: every fixture on top of this revision, each kind
-    # on top of its own (the README's walkthrough ends with `make test`; the test suite above is not all of it).
-    on_top: list[Step] = [] if quick else [
-        ("the quick drill on top (make revision-drill-quick)", [py, str(root / "tests" / "revisions" / "drill.py"),
-                                                               "run", "--quick"], env)]
-    return [revision,
-            *conformance,
-            *index,
-            ("pytest" + (" (subset)" if quick else ""), pytest, env),
-            *on_top]
+    # Then `make test` in the revised tree, as the README's walkthrough ends and as a fresh clone's CI runs it (CI=true,
+    # no stdin): every check, the quick drill there (every fixture on top of this revision, its own kind included),
+    # lint, the docs and the browser check, reliability, the report git holds. The quick drill runs its subset.
+    last: Step = (("pytest (subset)", pytest, env) if quick else
+                  ("make test (CI=true)", [*make, "test"], {"CI": "true"}))
+    return [revision, *conformance, *index, last]
+
+
+_FAILED = re.compile(r"^FAILED |^ERROR |\*\*\* |^E  |: error:|FAIL ")
 
 
 def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
@@ -853,8 +846,11 @@ def _run_steps(root: Path, quick: bool, keep_going: bool) -> bool:
         good = res.returncode == 0
         print(f"  {'ok' if good else 'FAIL':<4} {name} ({time.monotonic() - t:.1f} s)", flush=True)
         if not good:
-            tail = (res.stdout + res.stderr).strip().splitlines()[-(80 if keep_going else 40):]
-            print("\n".join("       | " + line for line in tail))
+            lines = (res.stdout + res.stderr).strip().splitlines()
+            tail = lines[-(80 if keep_going else 40):]
+            # make test's output is long: the lines that say what failed first (pytest's, make's), then its end
+            said = [line for line in lines[: len(lines) - len(tail)] if _FAILED.search(line)][:30]
+            print("\n".join("       | " + line for line in [*said, *(["       ..."] if said else []), *tail]))
             return False
     return True
 
