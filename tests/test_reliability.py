@@ -22,6 +22,7 @@ from conformance.reliability.mutate import (
     transpositions,
     truncations,
 )
+from conformance.runner import testee
 from conformance.runner.testee import Binding
 
 REPO = Path(__file__).resolve().parents[1]
@@ -157,3 +158,15 @@ def test_the_report_names_an_out_path_outside_the_repository(tmp_path: Path) -> 
 
     assert shown(tmp_path / "r.json") == str((tmp_path / "r.json").resolve())
     assert shown(REPO / "build" / "reliability" / "r.json") == str(Path("build") / "reliability" / "r.json")
+
+
+def test_a_testee_that_exits_mid_campaign_is_named_on_one_line(tmp_path: Path) -> None:
+    """A binding's testee that exits on a file (a Kaitai printer that met an integer type it did not know) stops
+    the campaign with its binding's name, not a traceback from deep in the pool."""
+    pool = Pool(Binding(name="exits", command=[sys.executable, "-c", "import sys; sys.stdin.readline()"],
+                        cwd=tmp_path))
+    try:
+        with pytest.raises(testee.TesteeError, match=r"^exits: testee exited \(its stderr is above\)$"):
+            pool.many([{"op": "decode", "file": str(tmp_path / "x.cbf")}])
+    finally:
+        pool.close()

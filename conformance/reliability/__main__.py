@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from conformance.runner.run import ROOT
+from conformance.runner.testee import TesteeError
 
 from .campaign import (
     REPO,
@@ -166,4 +167,8 @@ def _load(path: Path) -> dict[str, Any]:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except TesteeError as exc:  # a testee that exits or times out mid-campaign: a binding's bug, named on one line
+        print(f"reliability: the campaign stopped: {exc}", file=sys.stderr)
+        sys.exit(1)

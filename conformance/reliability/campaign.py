@@ -23,7 +23,7 @@ import yaml
 
 from conformance.runner.compare import f32_bits, first_difference, is_nan_bits
 from conformance.runner.run import ROOT, load_bindings
-from conformance.runner.testee import Binding, Testee
+from conformance.runner.testee import Binding, Testee, TesteeError
 
 from .mutate import (
     Framing,
@@ -61,7 +61,11 @@ class Pool:
         self.testee.start()
 
     def many(self, requests: list[dict[str, Any]]) -> list[dict[str, Any]]:
-        return self.testee.many(requests)
+        try:
+            return self.testee.many(requests)
+        except TesteeError as exc:  # said with the binding's name: the campaign stops on one line, no traceback
+            said = str(exc) if str(exc).startswith(f"{self.binding.name}: ") else f"{self.binding.name}: {exc}"
+            raise TesteeError(f"{said} (its stderr is above)") from None
 
     def close(self) -> None:
         self.testee.stop()

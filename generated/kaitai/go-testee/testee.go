@@ -103,6 +103,10 @@ func value(f field, v reflect.Value) interface{} {
 		return hex.EncodeToString(v.Bytes())
 	case "string":
 		return v.String()
+	}
+	switch v.Kind() { // an integer of the width and signedness its type gives (s1..s8 read as Go's intN)
+	case reflect.Int, reflect.Int8, reflect.Int16, reflect.Int32, reflect.Int64:
+		return v.Int()
 	default:
 		return v.Uint()
 	}
