@@ -40,7 +40,8 @@
 # re-assemble the goldens `make golden` just wrote, and builds its ASan/UBSan testee at -O0
 # (QUICK_DESELECT, QUICK_C_SAN). Round 5, 17 fixtures (15 quick: prose_edit, new_section, header_move,
 # polyline_new_version and rename_real added): 28-37 s and 21 CPU s (user + sys) at load 2-4, its first step
-# `make revision` 7-14 s.
+# `make revision` 7-14 s. Round 7, the fixtures applied twice over (QUICK_ROUNDS): 23 s alone on the idle machine,
+# 40 s inside a fresh clone's `make test` (beside its other checks).
 BASE ?= HEAD
 # Fixtures drilled at once by `make revision-drill`, a tree each (one per core of the 2-core CI machine).
 DRILL_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
