@@ -77,6 +77,9 @@ a { color: inherit; text-decoration: none; }
 .toc li.sub { padding-left: 1.5em; font-size: 8pt; }
 .toc li .dots { flex: 1; border-bottom: 1px dotted #999; margin-bottom: 0.3em; }
 """
+# A table's caption as the document writes it ("Table 5.1: ..."): the PDF makes it the table's <caption>, and a
+# page whose text opens with one starts a table (blank_pages).
+_CAPTION = re.compile(r"Table [0-9.]+:")
 FRAME = "font-size:7.5px;width:100%;margin:0 0.6in;display:flex;justify-content:space-between;color:#444"
 HEADER = '<div style="{style}"><span>{title}</span><span>{kind}</span><span>{part}</span></div>'
 FOOTER = ('<div style="{style}"><span>{owner}</span><span>{mark}</span>'
@@ -156,7 +159,7 @@ def _localise(page: Page, held: dict[str, str]) -> str:
     first_row = "<table>\n<thead>\n<tr>\n<th>Ver#</th>"  # table 5.1: one page
     body = body.replace(first_row, first_row.replace("<table>", '<table class="one-page">'))
     # "Table N: ..." before its table becomes the table's caption, so the two stay on one page
-    return re.sub(r'<p>((?:<a id="[^"]*"></a>\s*)?)(Table [0-9.]+:[^<]*)</p>\n(<table[^>]*>)',
+    return re.sub(r'<p>((?:<a id="[^"]*"></a>\s*)?)(' + _CAPTION.pattern + r'[^<]*)</p>\n(<table[^>]*>)',
                   r"\1\3<caption>\2</caption>", body)
 
 
@@ -375,7 +378,8 @@ def build(spec: Spec, browser_path: str, out: Path, version: str,
     part_starts = {p for c, p in zip([None, *chs], [*toc, *chapter_pages([c.title for c in chs], outline)],
                                      strict=True) if p is not None and (c is None or c.part)}
     pages = pdf_pages(out)
-    problems += [f"{out.name}: {p}" for p in blank_pages([fill for fill, _ in pages], part_starts)]
+    tables = frozenset(n for n, (_, text) in enumerate(pages, 1) if _CAPTION.match(text))
+    problems += [f"{out.name}: {p}" for p in blank_pages([fill for fill, _ in pages], part_starts, tables)]
     problems += [f"{out.name}: {p}" for p in navigation_printed([c.nav for c in chs], [t for _, t in pages])]
     return len(reader.pages), problems
 
@@ -412,10 +416,12 @@ def pdf_pages(pdf: Path) -> list[tuple[float, str]]:
     return out
 
 
-def blank_pages(fills: list[float], part_starts: set[int]) -> list[str]:
+def blank_pages(fills: list[float], part_starts: set[int], table_starts: frozenset[int] = frozenset()) -> list[str]:
     """Every page left mostly blank that is not the last page of a part (the page before a part starts,
-    and the document's last page, may end anywhere)."""
-    lasts = {p - 1 for p in part_starts} | {len(fills)}
+    and the document's last page, may end anywhere) nor the page before one that opens with a table's
+    caption (table_starts: a table kept on one page, such as table 5.1, moved whole to the next page when
+    the rest of this one could not hold it: a revision's longer command table)."""
+    lasts = {p - 1 for p in part_starts} | {p - 1 for p in table_starts} | {len(fills)}
     return [f"page {n} is mostly blank (its text ends {fill:.0%} down the page) and no part ends there"
             for n, fill in enumerate(fills, 1) if fill < BLANK and n not in lasts]
 
